@@ -1,0 +1,244 @@
+// The `tessera` command's small framework: subcommand registry, argument parsing with generated
+// --help, one-line JSON statistics and timing helpers. Each subcommand lives in its own
+// cmd_<name>.cpp and registers itself with a static `cli::registrar`, so adding a capability never
+// touches another file.
+#pragma once
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include <tessera/core/executor.hpp>
+#include <tessera/core/status.hpp>
+#include <tessera/core/vec.hpp>
+
+namespace cli {
+
+using tessera::index_t;
+
+/// One option of a subcommand. `value` names the argument ("WxH", "FILE"); empty for a flag.
+struct option_spec {
+  std::string name;  ///< with dashes: "--out"
+  std::string value;
+  std::string help;
+};
+
+class arguments;
+
+struct command {
+  std::string name;     ///< "synth", or "wang build" for a two-word command
+  std::string summary;  ///< one line for `tessera --help`
+  std::string usage;    ///< "tessera synth --exemplar E.png --size WxH --out O.png [options]"
+  std::vector<option_spec> options;
+  std::function<int(const arguments&)> run;
+  std::string positional = {};  ///< name of positional arguments ("FILE"), empty if none
+};
+
+/// Options most commands share.
+inline std::vector<option_spec> common_options() {
+  return {{"--seed", "S", "random seed (default 1); same seed, same output"},
+          {"--threads", "T", "worker threads (default: all cores); output does not depend on it"},
+          {"--stats", "", "print one JSON line of timings and quality figures to stdout"},
+          {"--repeat", "N", "run the timed step N times and report the median (default 1)"}};
+}
+
+/// Parsed arguments of one subcommand.
+class arguments {
+ public:
+  /// Parses argv[first..argc). Unknown options and missing values are errors (message in `error`).
+  static std::optional<arguments> parse(const command& cmd, int argc, char** argv, int first, std::string& error) {
+    arguments a;
+    a.command_ = cmd.name;
+    for (int i = first; i < argc; ++i) {
+      std::string arg = argv[i];
+      if (arg == "--help" || arg == "-h") {
+        a.values_["--help"] = "";
+        continue;
+      }
+      if (arg.size() > 2 && arg.rfind("--", 0) == 0) {
+        std::string value;
+        bool inline_value = false;
+        if (auto eq = arg.find('='); eq != std::string::npos) {
+          value = arg.substr(eq + 1);
+          arg = arg.substr(0, eq);
+          inline_value = true;
+        }
+        auto it = std::find_if(cmd.options.begin(), cmd.options.end(), [&](const option_spec& o) { return o.name == arg; });
+        if (it == cmd.options.end()) {
+          error = "unknown option " + arg + " (see tessera " + cmd.name + " --help)";
+          return std::nullopt;
+        }
+        if (!it->value.empty() && !inline_value) {
+          if (i + 1 >= argc) {
+            error = "option " + arg + " needs a value " + it->value;
+            return std::nullopt;
+          }
+          value = argv[++i];
+        }
+        a.values_[arg] = value;
+      } else {
+        if (cmd.positional.empty()) {
+          error = "unexpected argument '" + arg + "' (see tessera " + cmd.name + " --help)";
+          return std::nullopt;
+        }
+        a.positional_.push_back(arg);
+      }
+    }
+    return a;
+  }
+
+  [[nodiscard]] const std::string& command_name() const { return command_; }
+  [[nodiscard]] bool has(std::string_view name) const { return values_.count(std::string(name)) != 0; }
+  [[nodiscard]] std::string str(std::string_view name, std::string fallback = {}) const {
+    auto it = values_.find(std::string(name));
+    return it == values_.end() ? fallback : it->second;
+  }
+  [[nodiscard]] const std::vector<std::string>& positional() const { return positional_; }
+
+  /// A required option: status naming it when absent.
+  [[nodiscard]] tessera::result<std::string> required(std::string_view name) const {
+    if (!has(name)) return tessera::status::invalid_argument("missing required option " + std::string(name));
+    return str(name);
+  }
+  [[nodiscard]] tessera::result<long long> integer(std::string_view name, long long fallback) const {
+    if (!has(name)) return fallback;
+    const std::string s = str(name);
+    char* end = nullptr;
+    const long long v = std::strtoll(s.c_str(), &end, 10);
+    if (s.empty() || *end != '\0') return bad(name, s, "an integer");
+    return v;
+  }
+  [[nodiscard]] tessera::result<double> number(std::string_view name, double fallback) const {
+    if (!has(name)) return fallback;
+    const std::string s = str(name);
+    char* end = nullptr;
+    const double v = std::strtod(s.c_str(), &end);
+    if (s.empty() || *end != '\0') return bad(name, s, "a number");
+    return v;
+  }
+  /// "WxH" (or a single "N" meaning N x N).
+  [[nodiscard]] tessera::result<std::pair<index_t, index_t>> size(std::string_view name) const {
+    const std::string s = str(name);
+    std::vector<double> v;
+    if (!split_numbers(s, 'x', v) || (v.size() != 1 && v.size() != 2)) return bad(name, s, "WxH");
+    const auto w = static_cast<index_t>(v[0]), h = static_cast<index_t>(v.size() == 2 ? v[1] : v[0]);
+    if (w <= 0 || h <= 0 || double(w) != v[0]) return bad(name, s, "positive integers WxH");
+    return std::pair{w, h};
+  }
+  /// Comma-separated numbers, exactly `count` of them ("x,y,z").
+  [[nodiscard]] tessera::result<std::vector<double>> numbers(std::string_view name, std::size_t count) const {
+    const std::string s = str(name);
+    std::vector<double> v;
+    if (!split_numbers(s, ',', v) || v.size() != count)
+      return bad(name, s, std::to_string(count) + " comma-separated numbers");
+    return v;
+  }
+  [[nodiscard]] std::uint64_t seed() const { return static_cast<std::uint64_t>(integer("--seed", 1).value_or(1)); }
+  [[nodiscard]] int threads() const { return static_cast<int>(integer("--threads", 0).value_or(0)); }
+  [[nodiscard]] int repeat() const { return static_cast<int>(std::max<long long>(1, integer("--repeat", 1).value_or(1))); }
+  [[nodiscard]] bool stats() const { return has("--stats"); }
+
+ private:
+  static tessera::status bad(std::string_view name, const std::string& value, const std::string& expected) {
+    return tessera::status::invalid_argument(std::string(name) + " expects " + expected + ", got '" + value + "'");
+  }
+  static bool split_numbers(const std::string& s, char sep, std::vector<double>& out) {
+    std::size_t start = 0;
+    while (start <= s.size()) {
+      const std::size_t end = std::min(s.find(sep, start), s.size());
+      const std::string part = s.substr(start, end - start);
+      char* stop = nullptr;
+      const double v = std::strtod(part.c_str(), &stop);
+      if (part.empty() || *stop != '\0') return false;
+      out.push_back(v);
+      start = end + 1;
+    }
+    return !out.empty();
+  }
+
+  std::string command_;
+  std::map<std::string, std::string> values_;
+  std::vector<std::string> positional_;
+};
+
+/// The registry of subcommands, filled by static registrars before main runs.
+inline std::vector<command>& registry() {
+  static std::vector<command> commands;
+  return commands;
+}
+struct registrar {
+  explicit registrar(command c) { registry().push_back(std::move(c)); }
+};
+
+/// Prints an error for a failed status; returns the process exit code (1).
+inline int fail(const arguments& args, const tessera::status& s) {
+  std::fprintf(stderr, "tessera %s: %s\n", args.command_name().c_str(), s.to_string().c_str());
+  return 1;
+}
+
+/// One JSON object on one line: json_line().add("width", 512).add("name", "x").print();
+class json_line {
+ public:
+  json_line& add(std::string_view key, double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.6g", v);
+    return raw(key, buf);
+  }
+  json_line& add(std::string_view key, long long v) { return raw(key, std::to_string(v)); }
+  json_line& add(std::string_view key, int v) { return raw(key, std::to_string(v)); }
+  json_line& add(std::string_view key, index_t v) { return raw(key, std::to_string(v)); }
+  json_line& add(std::string_view key, bool v) { return raw(key, v ? "true" : "false"); }
+  json_line& add(std::string_view key, std::string_view v) { return raw(key, quote(v)); }
+  json_line& add(std::string_view key, const char* v) { return add(key, std::string_view(v)); }
+  /// Adds an already-formatted JSON value (an array, a nested object).
+  json_line& raw(std::string_view key, std::string_view json) {
+    if (!body_.empty()) body_ += ",";
+    body_ += quote(key) + ":" + std::string(json);
+    return *this;
+  }
+  [[nodiscard]] std::string str() const { return "{" + body_ + "}"; }
+  void print() const { std::printf("%s\n", str().c_str()); }
+
+  static std::string quote(std::string_view s) {
+    std::string out = "\"";
+    for (char c : s) {
+      if (c == '"' || c == '\\') out += '\\', out += c;
+      else if (c == '\n') out += "\\n";
+      else if (static_cast<unsigned char>(c) < 0x20) {
+        char buf[8];
+        std::snprintf(buf, sizeof buf, "\\u%04x", c);
+        out += buf;
+      } else out += c;
+    }
+    return out + "\"";
+  }
+
+ private:
+  std::string body_;
+};
+
+/// Wall-clock milliseconds of one call.
+template <class F>
+double time_ms(F&& f) {
+  const auto t0 = std::chrono::steady_clock::now();
+  f();
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+/// Median wall-clock milliseconds over `repeat` calls (at least one).
+template <class F>
+double median_ms(int repeat, F&& f) {
+  std::vector<double> t;
+  for (int i = 0; i < std::max(1, repeat); ++i) t.push_back(time_ms(f));
+  std::sort(t.begin(), t.end());
+  return t[t.size() / 2];
+}
+
+}  // namespace cli

@@ -1,0 +1,48 @@
+// tessera/core/config.hpp: namespace macros, index type, TESSERA_ASSERT, exception detection.
+//
+// TESSERA_ASSERT checks tessera's own invariants, never caller input (caller input is validated and
+// reported through `status`). Define TESSERA_ASSERT before including tessera to route it to an
+// engine's own assertion handler. By default it is active unless NDEBUG is defined; define
+// TESSERA_ENABLE_ASSERTS to keep it in release builds.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+
+#define TESSERA_NAMESPACE_BEGIN \
+  namespace tessera {           \
+  inline namespace v0 {
+#define TESSERA_NAMESPACE_END \
+  }                           \
+  }
+
+#if defined(__cpp_exceptions) || defined(__EXCEPTIONS) || defined(_CPPUNWIND)
+#define TESSERA_HAS_EXCEPTIONS 1
+#else
+#define TESSERA_HAS_EXCEPTIONS 0
+#endif
+
+TESSERA_NAMESPACE_BEGIN
+
+/// Signed index and size type used throughout tessera (pixels, vertices, faces, cells).
+using index_t = std::ptrdiff_t;
+
+namespace detail {
+[[noreturn]] inline void assertion_failed(const char* expr, const char* file, int line) noexcept {
+  std::fprintf(stderr, "tessera: internal assertion failed: %s (%s:%d)\n", expr, file, line);
+  std::abort();
+}
+}  // namespace detail
+
+TESSERA_NAMESPACE_END
+
+#ifndef TESSERA_ASSERT
+#if !defined(NDEBUG) || defined(TESSERA_ENABLE_ASSERTS)
+#define TESSERA_ASSERT(cond) \
+  ((cond) ? static_cast<void>(0) : ::tessera::detail::assertion_failed(#cond, __FILE__, __LINE__))
+#else
+#define TESSERA_ASSERT(cond) static_cast<void>(0)
+#endif
+#endif

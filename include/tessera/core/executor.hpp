@@ -1,0 +1,164 @@
+// tessera/core/executor.hpp: where parallel loops run. An Executor has
+// `parallel_for(begin, end, fn)` calling fn(i) once for every i in [begin, end), in any order and on
+// any thread. tessera's algorithms only hand it work whose result does not depend on that order, so
+// output is bit-identical for every executor and thread count. Plug an engine's job system in by
+// writing a type with that one member.
+#pragma once
+
+#include <algorithm>
+#include <atomic>
+#include <concepts>
+#include <condition_variable>
+#include <cstdint>
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include "config.hpp"
+
+TESSERA_NAMESPACE_BEGIN
+
+template <class E>
+concept Executor = requires(E& e, index_t n, void (*fn)(index_t)) { e.parallel_for(index_t{0}, n, fn); };
+
+/// Runs every loop on the calling thread, in index order.
+struct serial_executor {
+  template <class F>
+  void parallel_for(index_t begin, index_t end, F&& fn) const {
+    for (index_t i = begin; i < end; ++i) fn(i);
+  }
+  [[nodiscard]] int concurrency() const noexcept { return 1; }
+};
+
+namespace detail {
+inline thread_local bool inside_parallel_for = false;
+}  // namespace detail
+
+/// A fixed pool of std::threads. parallel_for splits the range into chunks taken dynamically by the
+/// workers and the calling thread; it returns when all are done. A parallel_for issued from inside a
+/// running one runs serially on its thread (no deadlock). If fn throws, the first exception is
+/// rethrown on the calling thread after the loop stops. Calls from several threads are serialized.
+class thread_pool_executor {
+ public:
+  /// `threads` workers in total including the caller; 0 means std::thread::hardware_concurrency().
+  explicit thread_pool_executor(int threads = 0) {
+    if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    threads_ = threads;
+    workers_.reserve(static_cast<std::size_t>(threads - 1));
+    for (int t = 1; t < threads; ++t) workers_.emplace_back([this] { worker_loop(); });
+  }
+  thread_pool_executor(const thread_pool_executor&) = delete;
+  thread_pool_executor& operator=(const thread_pool_executor&) = delete;
+  ~thread_pool_executor() {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      stop_ = true;
+    }
+    wake_.notify_all();
+    for (auto& w : workers_) w.join();
+  }
+
+  [[nodiscard]] int concurrency() const noexcept { return threads_; }
+
+  template <class F>
+  void parallel_for(index_t begin, index_t end, F&& fn) {
+    if (end <= begin) return;
+    if (threads_ == 1 || end - begin == 1 || detail::inside_parallel_for) {
+      for (index_t i = begin; i < end; ++i) fn(i);
+      return;
+    }
+    std::lock_guard<std::mutex> one_loop_at_a_time(submit_);
+    using Fn = std::remove_reference_t<F>;
+    job j;
+    j.invoke = [](void* ctx, index_t i) { (*static_cast<Fn*>(ctx))(i); };
+    j.ctx = const_cast<void*>(static_cast<const void*>(std::addressof(fn)));
+    j.begin = begin;
+    j.end = end;
+    j.chunk = std::max<index_t>(1, (end - begin) / (static_cast<index_t>(threads_) * 8));
+    j.next.store(begin, std::memory_order_relaxed);
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      current_ = &j;
+      busy_ = static_cast<int>(workers_.size());
+      ++generation_;
+    }
+    wake_.notify_all();
+    run_chunks(j);
+    {
+      std::unique_lock<std::mutex> lock(mutex_);
+      done_.wait(lock, [&] { return busy_ == 0; });
+      current_ = nullptr;
+    }
+#if TESSERA_HAS_EXCEPTIONS
+    if (j.error) std::rethrow_exception(j.error);
+#endif
+  }
+
+ private:
+  struct job {
+    void (*invoke)(void*, index_t) = nullptr;
+    void* ctx = nullptr;
+    index_t begin = 0, end = 0, chunk = 1;
+    std::atomic<index_t> next{0};
+#if TESSERA_HAS_EXCEPTIONS
+    std::mutex error_mutex;
+    std::exception_ptr error;
+#endif
+  };
+
+  static void run_chunks(job& j) {
+    detail::inside_parallel_for = true;
+    for (;;) {
+      const index_t s = j.next.fetch_add(j.chunk, std::memory_order_relaxed);
+      if (s >= j.end) break;
+      const index_t e = std::min(j.end, s + j.chunk);
+#if TESSERA_HAS_EXCEPTIONS
+      try {
+        for (index_t i = s; i < e; ++i) j.invoke(j.ctx, i);
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(j.error_mutex);
+        if (!j.error) j.error = std::current_exception();
+        j.next.store(j.end, std::memory_order_relaxed);
+      }
+#else
+      for (index_t i = s; i < e; ++i) j.invoke(j.ctx, i);
+#endif
+    }
+    detail::inside_parallel_for = false;
+  }
+
+  void worker_loop() {
+    std::uint64_t seen = 0;
+    for (;;) {
+      job* j = nullptr;
+      {
+        std::unique_lock<std::mutex> lock(mutex_);
+        wake_.wait(lock, [&] { return stop_ || generation_ != seen; });
+        if (stop_) return;
+        seen = generation_;
+        j = current_;
+      }
+      run_chunks(*j);
+      {
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (--busy_ == 0) done_.notify_one();
+      }
+    }
+  }
+
+  int threads_ = 1;
+  std::vector<std::thread> workers_;
+  std::mutex submit_;
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  std::condition_variable done_;
+  job* current_ = nullptr;
+  std::uint64_t generation_ = 0;
+  int busy_ = 0;
+  bool stop_ = false;
+};
+
+TESSERA_NAMESPACE_END

@@ -1,0 +1,108 @@
+// tessera/core/image_buffer.hpp: an owning image of C interleaved channels of T, rows packed.
+// This is what algorithms use internally; callers may use it too. Models WritableImage.
+// Also: copying any Image into a buffer and a buffer out into any WritableImage, which is how
+// algorithms convert at their entry points (kernels are instantiated per channel type and count,
+// not per user type).
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "config.hpp"
+#include "image.hpp"
+#include "image_checks.hpp"
+#include "image_view.hpp"
+#include "status.hpp"
+
+TESSERA_NAMESPACE_BEGIN
+
+template <class T, int C>
+class image_buffer {
+ public:
+  using value_type = T;
+  using pixel_type = pixel<T, C>;
+  static_assert(Channel<T>, "image_buffer channels must be uint8_t, uint16_t or float");
+  static_assert(C >= 1 && C <= max_channels, "image_buffer channel count must be 1 to 4");
+  static constexpr int channels = C;
+
+  image_buffer() = default;
+  /// Unchecked (asserts the size); use create() for sizes that come from a caller.
+  image_buffer(index_t width, index_t height, const pixel_type& fill = {})
+      : width_(width), height_(height) {
+    TESSERA_ASSERT(validate_image_extent(width, height, C, "image_buffer").ok());
+    data_.resize(static_cast<std::size_t>(width * height * C));
+    for (index_t i = 0; i < width * height; ++i)
+      for (int c = 0; c < C; ++c) data_[static_cast<std::size_t>(i * C + c)] = fill[static_cast<std::size_t>(c)];
+  }
+
+  /// Validated construction: a status when the size is not positive or overflows.
+  static result<image_buffer> create(index_t width, index_t height, const pixel_type& fill = {}) {
+    if (auto s = validate_image_extent(width, height, C, "image_buffer"); !s) return s;
+    return image_buffer(width, height, fill);
+  }
+
+  [[nodiscard]] index_t width() const noexcept { return width_; }
+  [[nodiscard]] index_t height() const noexcept { return height_; }
+  [[nodiscard]] index_t stride() const noexcept { return width_ * C; }
+  [[nodiscard]] bool empty() const noexcept { return data_.empty(); }
+  [[nodiscard]] T* data() noexcept { return data_.data(); }
+  [[nodiscard]] const T* data() const noexcept { return data_.data(); }
+  [[nodiscard]] T* row(index_t y) noexcept { return data_.data() + y * width_ * C; }
+  [[nodiscard]] const T* row(index_t y) const noexcept { return data_.data() + y * width_ * C; }
+  [[nodiscard]] T* pixel_ptr(index_t x, index_t y) noexcept { return row(y) + x * C; }
+  [[nodiscard]] const T* pixel_ptr(index_t x, index_t y) const noexcept { return row(y) + x * C; }
+  [[nodiscard]] std::size_t size_bytes() const noexcept { return data_.size() * sizeof(T); }
+
+  [[nodiscard]] pixel_type read(index_t x, index_t y) const noexcept { return cview().read(x, y); }
+  void write(index_t x, index_t y, const pixel_type& v) noexcept { view().write(x, y, v); }
+
+  [[nodiscard]] image_view<T, C> view() noexcept { return {data_.data(), width_, height_, width_ * C}; }
+  [[nodiscard]] image_view<const T, C> view() const noexcept { return cview(); }
+  [[nodiscard]] image_view<const T, C> cview() const noexcept { return {data_.data(), width_, height_, width_ * C}; }
+
+  friend bool operator==(const image_buffer& a, const image_buffer& b) noexcept {
+    return a.width_ == b.width_ && a.height_ == b.height_ && a.data_ == b.data_;
+  }
+
+ private:
+  std::vector<T> data_;
+  index_t width_ = 0;
+  index_t height_ = 0;
+};
+
+/// Copies any Image into an owning buffer of pixel type (T, C), converting pixels with
+/// convert_pixel. Fails on an empty or overflowing image.
+template <Channel T, int C, Image I>
+result<image_buffer<T, C>> to_buffer(const I& img, std::string_view what = "image") {
+  if (auto s = validate_image(img, what); !s) return s;
+  const index_t w = width_of(img), h = height_of(img);
+  image_buffer<T, C> out(w, h);
+  for (index_t y = 0; y < h; ++y) {
+    T* dst = out.row(y);
+    for (index_t x = 0; x < w; ++x) {
+      const auto p = convert_pixel<pixel<T, C>>(image_traits<I>::read(img, x, y));
+      for (int c = 0; c < C; ++c) dst[x * C + c] = p[static_cast<std::size_t>(c)];
+    }
+  }
+  return out;
+}
+
+/// Copies any Image into a buffer of its own channel type and count.
+template <Image I>
+result<image_buffer<channel_t<I>, channels_v<I>>> to_buffer(const I& img, std::string_view what = "image") {
+  return to_buffer<channel_t<I>, channels_v<I>>(img, what);
+}
+
+/// Copies `src` into `dst` pixel by pixel, converting pixel types. The sizes must match.
+template <Image S, WritableImage D>
+status copy_image(const S& src, D& dst) {
+  if (auto s = validate_image(src, "source"); !s) return s;
+  if (auto s = validate_same_size(src, "source", dst, "destination"); !s) return s;
+  const index_t w = width_of(src), h = height_of(src);
+  for (index_t y = 0; y < h; ++y)
+    for (index_t x = 0; x < w; ++x)
+      image_traits<D>::write(dst, x, y, convert_pixel<pixel_t<D>>(image_traits<S>::read(src, x, y)));
+  return {};
+}
+
+TESSERA_NAMESPACE_END

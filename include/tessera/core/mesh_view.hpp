@@ -1,0 +1,81 @@
+// tessera/core/mesh_view.hpp: a non-owning triangle mesh over raw buffers, the way engines keep
+// them: positions as float or double (x, y, z first in each vertex record, records `position_stride`
+// scalars apart, so interleaved vertex buffers fit), 32-bit indices three per face, and optional
+// per-corner uvs (two floats per corner, six per face). Models Mesh and UVMesh.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <type_traits>
+
+#include "config.hpp"
+#include "mesh.hpp"
+#include "status.hpp"
+
+TESSERA_NAMESPACE_BEGIN
+
+template <class Scalar = float, class Index = std::uint32_t>
+class mesh_view {
+  static_assert(std::is_same_v<Scalar, float> || std::is_same_v<Scalar, double>, "mesh_view positions are float or double");
+  static_assert(std::is_same_v<Index, std::uint32_t> || std::is_same_v<Index, std::int32_t>, "mesh_view indices are 32-bit");
+
+ public:
+  mesh_view() = default;
+  /// Unchecked: use make_mesh_view() to validate caller-supplied buffers.
+  mesh_view(const Scalar* positions, index_t vertex_count, const Index* indices, index_t face_count,
+            const float* corner_uvs = nullptr, index_t position_stride = 3) noexcept
+      : positions_(positions), indices_(indices), uvs_(corner_uvs), num_vertices_(vertex_count),
+        num_faces_(face_count), stride_(position_stride) {}
+
+  [[nodiscard]] index_t num_vertices() const noexcept { return num_vertices_; }
+  [[nodiscard]] index_t num_faces() const noexcept { return num_faces_; }
+  [[nodiscard]] index_t face_vertex(index_t f, int k) const noexcept {
+    return static_cast<index_t>(indices_[3 * f + k]);
+  }
+  [[nodiscard]] std::array<Scalar, 3> position(index_t v) const noexcept {
+    const Scalar* p = positions_ + v * stride_;
+    return {p[0], p[1], p[2]};
+  }
+  [[nodiscard]] bool has_uvs() const noexcept { return uvs_ != nullptr; }
+  [[nodiscard]] std::array<float, 2> corner_uv(index_t f, int k) const noexcept {
+    const float* t = uvs_ + 6 * f + 2 * k;
+    return {t[0], t[1]};
+  }
+  [[nodiscard]] const Scalar* positions() const noexcept { return positions_; }
+  [[nodiscard]] const Index* indices() const noexcept { return indices_; }
+  [[nodiscard]] index_t position_stride() const noexcept { return stride_; }
+
+ private:
+  const Scalar* positions_ = nullptr;
+  const Index* indices_ = nullptr;
+  const float* uvs_ = nullptr;
+  index_t num_vertices_ = 0;
+  index_t num_faces_ = 0;
+  index_t stride_ = 3;
+};
+
+/// Validates raw buffers and returns a view: non-negative counts, non-null pointers for non-zero
+/// counts, `position_stride` >= 3, counts that fit 32-bit indices. Index ranges, NaN positions and
+/// degenerate faces are checked by validate_mesh() (core/tri_mesh.hpp) since that reads every element.
+template <class Scalar, class Index>
+result<mesh_view<Scalar, Index>> make_mesh_view(const Scalar* positions, index_t vertex_count, const Index* indices,
+                                                index_t face_count, const float* corner_uvs = nullptr,
+                                                index_t position_stride = 3) {
+  if (vertex_count < 0 || face_count < 0)
+    return status::invalid_argument(
+        detail::cat("mesh_view: counts must be non-negative, got ", vertex_count, " vertices and ", face_count, " faces"));
+  if (position_stride < 3)
+    return status::invalid_argument(detail::cat("mesh_view: position_stride must be at least 3, got ", position_stride));
+  constexpr index_t limit = std::numeric_limits<std::int32_t>::max() / 6;
+  if (vertex_count > limit || face_count > limit || vertex_count > std::numeric_limits<index_t>::max() / position_stride)
+    return status::size_overflow(detail::cat("mesh_view: ", vertex_count, " vertices / ", face_count,
+                                             " faces exceed what 32-bit indices can address"));
+  if (vertex_count > 0 && positions == nullptr)
+    return status::invalid_argument(detail::cat("mesh_view: positions is null for ", vertex_count, " vertices"));
+  if (face_count > 0 && indices == nullptr)
+    return status::invalid_argument(detail::cat("mesh_view: indices is null for ", face_count, " faces"));
+  return mesh_view<Scalar, Index>(positions, vertex_count, indices, face_count, corner_uvs, position_stride);
+}
+
+TESSERA_NAMESPACE_END

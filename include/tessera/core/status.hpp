@@ -1,0 +1,151 @@
+// tessera/core/status.hpp: the error model. Every public entry point that can fail on caller input
+// returns a `status` (or a `result<T>`) whose message names the parameter and the offending value.
+// tessera itself never throws; exceptions raised by user callbacks pass through unchanged.
+#pragma once
+
+#include <charconv>
+#include <concepts>
+#include <cstdio>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <utility>
+
+#include "config.hpp"
+
+TESSERA_NAMESPACE_BEGIN
+
+/// What kind of failure a `status` reports.
+enum class status_code {
+  ok = 0,
+  invalid_argument,  ///< a parameter is outside its documented domain
+  out_of_range,      ///< an index or window lies outside the valid range
+  size_overflow,     ///< sizes whose product or byte count does not fit the index type
+  io_error,          ///< a file could not be opened, read or written
+  parse_error,       ///< a file is malformed or truncated
+  unsupported,       ///< a valid request that this build or format cannot serve
+  cancelled,         ///< the progress callback or cancellation token asked to stop
+  not_converged,     ///< an iterative solver did not reach its tolerance
+  internal_error     ///< a failure that is not the caller's fault (for example a singular solve)
+};
+
+/// Human-readable name of a status code ("invalid_argument", ...).
+constexpr std::string_view to_string(status_code c) noexcept {
+  switch (c) {
+    case status_code::ok: return "ok";
+    case status_code::invalid_argument: return "invalid_argument";
+    case status_code::out_of_range: return "out_of_range";
+    case status_code::size_overflow: return "size_overflow";
+    case status_code::io_error: return "io_error";
+    case status_code::parse_error: return "parse_error";
+    case status_code::unsupported: return "unsupported";
+    case status_code::cancelled: return "cancelled";
+    case status_code::not_converged: return "not_converged";
+    case status_code::internal_error: return "internal_error";
+  }
+  return "unknown";
+}
+
+/// Success, or a failure code with a message. Default-constructed means success.
+/// Test with `if (!s) ...` or `s.ok()`.
+class [[nodiscard]] status {
+ public:
+  status() = default;
+  status(status_code code, std::string message) : code_(code), message_(std::move(message)) {}
+
+  [[nodiscard]] bool ok() const noexcept { return code_ == status_code::ok; }
+  explicit operator bool() const noexcept { return ok(); }
+  [[nodiscard]] status_code code() const noexcept { return code_; }
+  [[nodiscard]] const std::string& message() const noexcept { return message_; }
+  /// "ok" or "<code>: <message>".
+  [[nodiscard]] std::string to_string() const {
+    if (ok()) return "ok";
+    std::string s(tessera::to_string(code_));
+    s += ": ";
+    s += message_;
+    return s;
+  }
+
+  static status invalid_argument(std::string m) { return {status_code::invalid_argument, std::move(m)}; }
+  static status out_of_range(std::string m) { return {status_code::out_of_range, std::move(m)}; }
+  static status size_overflow(std::string m) { return {status_code::size_overflow, std::move(m)}; }
+  static status io_error(std::string m) { return {status_code::io_error, std::move(m)}; }
+  static status parse_error(std::string m) { return {status_code::parse_error, std::move(m)}; }
+  static status unsupported(std::string m) { return {status_code::unsupported, std::move(m)}; }
+  static status cancelled(std::string m = "cancelled by the caller") { return {status_code::cancelled, std::move(m)}; }
+  static status not_converged(std::string m) { return {status_code::not_converged, std::move(m)}; }
+  static status internal_error(std::string m) { return {status_code::internal_error, std::move(m)}; }
+
+ private:
+  status_code code_ = status_code::ok;
+  std::string message_;
+};
+
+/// A value or the `status` explaining why there is none (like std::expected<T, status>).
+template <class T>
+class [[nodiscard]] result {
+ public:
+  result(T value) : value_(std::move(value)) {}  // NOLINT(google-explicit-constructor)
+  result(status error) : error_(std::move(error)) {  // NOLINT(google-explicit-constructor)
+    TESSERA_ASSERT(!error_.ok());
+  }
+
+  [[nodiscard]] bool ok() const noexcept { return value_.has_value(); }
+  explicit operator bool() const noexcept { return ok(); }
+  /// The failure; an ok status when a value is held.
+  [[nodiscard]] const status& error() const noexcept { return error_; }
+
+  [[nodiscard]] T& value() & { TESSERA_ASSERT(ok()); return *value_; }
+  [[nodiscard]] const T& value() const& { TESSERA_ASSERT(ok()); return *value_; }
+  [[nodiscard]] T&& value() && { TESSERA_ASSERT(ok()); return std::move(*value_); }
+  T& operator*() & { return value(); }
+  const T& operator*() const& { return value(); }
+  T&& operator*() && { return std::move(*this).value(); }
+  T* operator->() { return &value(); }
+  const T* operator->() const { return &value(); }
+  template <class U>
+  [[nodiscard]] T value_or(U&& fallback) const& {
+    return ok() ? *value_ : static_cast<T>(std::forward<U>(fallback));
+  }
+
+ private:
+  std::optional<T> value_;
+  status error_;
+};
+
+namespace detail {
+inline void append_to(std::string& out, std::string_view s) { out += s; }
+inline void append_to(std::string& out, const char* s) { out += s; }
+inline void append_to(std::string& out, const std::string& s) { out += s; }
+inline void append_to(std::string& out, char c) { out += c; }
+inline void append_to(std::string& out, bool b) { out += b ? "true" : "false"; }
+template <class T>
+  requires std::integral<T> && (!std::same_as<T, bool>) && (!std::same_as<T, char>)
+void append_to(std::string& out, T v) {
+  char buf[32];
+  auto r = std::to_chars(buf, buf + sizeof buf, v);
+  out.append(buf, r.ptr);
+}
+template <std::floating_point T>
+void append_to(std::string& out, T v) {
+  char buf[48];
+  int n = std::snprintf(buf, sizeof buf, "%.9g", static_cast<double>(v));
+  out.append(buf, static_cast<std::size_t>(n > 0 ? n : 0));
+}
+template <class T>
+  requires std::is_enum_v<T>
+void append_to(std::string& out, T v) {
+  append_to(out, static_cast<std::underlying_type_t<T>>(v));
+}
+
+/// Concatenates strings and numbers into a message: cat("width must be > 0, got ", w).
+template <class... Args>
+std::string cat(const Args&... args) {
+  std::string out;
+  (append_to(out, args), ...);
+  return out;
+}
+}  // namespace detail
+
+TESSERA_NAMESPACE_END

@@ -1,0 +1,131 @@
+// tessera/core/tile_coloring.hpp: the vocabulary of Wang tile colourings. A colouring assigns a
+// colour to each side of each face (a grid cell of a tiled plane, or a quad of a polycube). Sides are
+// numbered 0 north, 1 east, 2 south, 3 west. North and south sides are horizontal edges and draw from
+// `num_colors(north)` colours; east and west sides are vertical edges with `num_colors(east)` colours.
+//
+// Grid convention (used by every grid colouring in tessera): face = row * cols + col, row 0 at the
+// top, rows growing southwards (like image y), columns growing eastwards (like image x). So the north
+// side of (col, row) touches the south side of (col, row - 1), and its east side the west side of
+// (col + 1, row).
+#pragma once
+
+#include <array>
+#include <concepts>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "config.hpp"
+#include "status.hpp"
+
+TESSERA_NAMESPACE_BEGIN
+
+/// Side numbers, usable wherever an int side is expected.
+inline constexpr int side_north = 0;
+inline constexpr int side_east = 1;
+inline constexpr int side_south = 2;
+inline constexpr int side_west = 3;
+
+/// The side facing `side` across an edge (north <-> south, east <-> west).
+constexpr int opposite_side(int side) noexcept { return (side + 2) & 3; }
+/// True for north and south (horizontal edges).
+constexpr bool is_horizontal_side(int side) noexcept { return (side & 1) == 0; }
+
+/// A colouring of the sides of `num_faces()` faces.
+template <class C>
+concept TileColoring = requires(const C& c, index_t face, int side) {
+  { c.num_faces() } -> std::convertible_to<index_t>;
+  { c.num_colors(side) } -> std::convertible_to<int>;
+  { c.edge_color(face, side) } -> std::convertible_to<int>;
+};
+
+/// A colouring stored explicitly, four colours per face in side order [north, east, south, west].
+struct stored_tile_coloring {
+  int horizontal_colors = 1;  ///< colours of north/south sides
+  int vertical_colors = 1;    ///< colours of east/west sides
+  std::vector<std::array<int, 4>> colors;
+
+  [[nodiscard]] index_t num_faces() const noexcept { return static_cast<index_t>(colors.size()); }
+  [[nodiscard]] int num_colors(int side) const noexcept { return is_horizontal_side(side) ? horizontal_colors : vertical_colors; }
+  [[nodiscard]] int edge_color(index_t face, int side) const noexcept {
+    return colors[static_cast<std::size_t>(face)][static_cast<std::size_t>(side)];
+  }
+};
+
+/// Copies any colouring into a stored one.
+template <TileColoring C>
+stored_tile_coloring store_coloring(const C& c) {
+  stored_tile_coloring s{static_cast<int>(c.num_colors(side_north)), static_cast<int>(c.num_colors(side_east)), {}};
+  s.colors.resize(static_cast<std::size_t>(c.num_faces()));
+  for (index_t f = 0; f < c.num_faces(); ++f)
+    for (int side = 0; side < 4; ++side)
+      s.colors[static_cast<std::size_t>(f)][static_cast<std::size_t>(side)] = static_cast<int>(c.edge_color(f, side));
+  return s;
+}
+
+/// Checks that colour counts are positive and every side's colour lies in [0, num_colors(side)).
+template <TileColoring C>
+status check_color_ranges(const C& c) {
+  for (int side = 0; side < 2; ++side)
+    if (c.num_colors(side) < 1)
+      return status::invalid_argument(detail::cat("tile colouring: ", side == 0 ? "horizontal" : "vertical",
+                                                  " edges need at least one colour, got ", c.num_colors(side)));
+  for (index_t f = 0; f < c.num_faces(); ++f)
+    for (int side = 0; side < 4; ++side) {
+      const int col = c.edge_color(f, side);
+      if (col < 0 || col >= c.num_colors(side))
+        return status::out_of_range(detail::cat("tile colouring: face ", f, " side ", side, " has colour ", col,
+                                                ", outside [0, ", c.num_colors(side), ")"));
+    }
+  return {};
+}
+
+/// Checks colour ranges and that every pair of touching sides carries the same colour.
+/// `neighbor(face, side)` returns the (face, side) across that edge, or std::nullopt on a border.
+template <TileColoring C, class Neighbor>
+status check_coloring(const C& c, Neighbor&& neighbor) {
+  if (auto s = check_color_ranges(c); !s) return s;
+  for (index_t f = 0; f < c.num_faces(); ++f)
+    for (int side = 0; side < 4; ++side) {
+      const std::optional<std::pair<index_t, int>> other = neighbor(f, side);
+      if (!other) continue;
+      const int a = c.edge_color(f, side), b = c.edge_color(other->first, other->second);
+      if (a != b)
+        return status::invalid_argument(detail::cat("tile colouring: face ", f, " side ", side, " has colour ", a,
+                                                    " but the touching face ", other->first, " side ", other->second,
+                                                    " has colour ", b));
+    }
+  return {};
+}
+
+/// Neighbours on a cols x rows grid (see the convention above); `toroidal` wraps both directions.
+struct grid_neighbors {
+  index_t cols = 0, rows = 0;
+  bool toroidal = false;
+  std::optional<std::pair<index_t, int>> operator()(index_t face, int side) const {
+    index_t col = face % cols, row = face / cols;
+    static constexpr int dx[4] = {0, 1, 0, -1}, dy[4] = {-1, 0, 1, 0};
+    col += dx[side];
+    row += dy[side];
+    if (toroidal) {
+      col = (col + cols) % cols;
+      row = (row + rows) % rows;
+    } else if (col < 0 || col >= cols || row < 0 || row >= rows) {
+      return std::nullopt;
+    }
+    return std::pair<index_t, int>{row * cols + col, opposite_side(side)};
+  }
+};
+
+/// check_coloring for a colouring of a cols x rows grid; also checks that it has cols * rows faces.
+template <TileColoring C>
+status check_grid_coloring(const C& c, index_t cols, index_t rows, bool toroidal = false) {
+  if (cols <= 0 || rows <= 0)
+    return status::invalid_argument(detail::cat("tile colouring: grid must be positive, got ", cols, " x ", rows));
+  if (c.num_faces() != cols * rows)
+    return status::invalid_argument(detail::cat("tile colouring: has ", c.num_faces(), " faces, a ", cols, " x ", rows,
+                                                " grid needs ", cols * rows));
+  return check_coloring(c, grid_neighbors{cols, rows, toroidal});
+}
+
+TESSERA_NAMESPACE_END

@@ -1,0 +1,167 @@
+// tessera/core/tri_mesh.hpp: tessera's owning triangle mesh (double positions, optional per-corner
+// uvs), validation of any Mesh, conversion of any Mesh into a tri_mesh, and per-face / per-vertex
+// geometry (normals, areas, bounding box). Connectivity (adjacency, boundary, components) is in
+// core/mesh_topology.hpp.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <string_view>
+#include <vector>
+
+#include "config.hpp"
+#include "mesh.hpp"
+#include "status.hpp"
+#include "vec.hpp"
+
+TESSERA_NAMESPACE_BEGIN
+
+/// Owning triangle mesh. Plain data: `positions`, `faces` (three vertex indices, counter-clockwise
+/// seen from the front) and `uvs` (empty, or one uv triple per face). Models Mesh and UVMesh.
+struct tri_mesh {
+  std::vector<vec3> positions;
+  std::vector<std::array<index_t, 3>> faces;
+  std::vector<std::array<vec2, 3>> uvs;
+
+  [[nodiscard]] index_t num_vertices() const noexcept { return static_cast<index_t>(positions.size()); }
+  [[nodiscard]] index_t num_faces() const noexcept { return static_cast<index_t>(faces.size()); }
+  [[nodiscard]] index_t face_vertex(index_t f, int k) const noexcept {
+    return faces[static_cast<std::size_t>(f)][static_cast<std::size_t>(k)];
+  }
+  [[nodiscard]] const vec3& position(index_t v) const noexcept { return positions[static_cast<std::size_t>(v)]; }
+  [[nodiscard]] bool has_uvs() const noexcept { return !uvs.empty(); }
+  [[nodiscard]] const vec2& corner_uv(index_t f, int k) const noexcept {
+    return uvs[static_cast<std::size_t>(f)][static_cast<std::size_t>(k)];
+  }
+
+  index_t add_vertex(vec3 p) {
+    positions.push_back(p);
+    return num_vertices() - 1;
+  }
+  index_t add_face(index_t a, index_t b, index_t c) {
+    faces.push_back({a, b, c});
+    return num_faces() - 1;
+  }
+  /// Appends another mesh (its vertices translated by `offset`), renumbering its indices. Uvs are kept
+  /// only when both meshes have them (or this one is empty).
+  void append(const tri_mesh& other, vec3 offset = {}) {
+    const bool keep_uvs = other.has_uvs() && (has_uvs() || faces.empty());
+    if (!keep_uvs) uvs.clear();
+    const index_t base = num_vertices();
+    positions.reserve(positions.size() + other.positions.size());
+    for (const vec3& p : other.positions) positions.push_back(p + offset);
+    faces.reserve(faces.size() + other.faces.size());
+    for (const auto& f : other.faces) faces.push_back({f[0] + base, f[1] + base, f[2] + base});
+    if (keep_uvs) uvs.insert(uvs.end(), other.uvs.begin(), other.uvs.end());
+  }
+  friend bool operator==(const tri_mesh&, const tri_mesh&) = default;
+};
+
+/// Checks any Mesh: non-negative counts, face indices in range, no face repeating a vertex
+/// (degenerate), finite positions and uvs. `what` names the mesh in the message. Zero-area faces with
+/// three distinct vertices are accepted. O(V + F).
+template <Mesh M>
+status validate_mesh(const M& m, std::string_view what = "mesh") {
+  const index_t nv = num_vertices(m), nf = num_faces(m);
+  if (nv < 0 || nf < 0)
+    return status::invalid_argument(detail::cat(what, ": negative vertex or face count (", nv, ", ", nf, ")"));
+  for (index_t v = 0; v < nv; ++v) {
+    const vec3 p = vertex_position(m, v);
+    if (!is_finite(p))
+      return status::invalid_argument(detail::cat(what, ": vertex ", v, " has a non-finite position (", p.x, ", ", p.y,
+                                                  ", ", p.z, ")"));
+  }
+  for (index_t f = 0; f < nf; ++f) {
+    index_t idx[3];
+    for (int k = 0; k < 3; ++k) {
+      idx[k] = face_vertex(m, f, k);
+      if (idx[k] < 0 || idx[k] >= nv)
+        return status::out_of_range(detail::cat(what, ": face ", f, " corner ", k, " refers to vertex ", idx[k],
+                                                " but the mesh has ", nv, " vertices"));
+    }
+    if (idx[0] == idx[1] || idx[1] == idx[2] || idx[0] == idx[2])
+      return status::invalid_argument(detail::cat(what, ": face ", f, " is degenerate (vertices ", idx[0], ", ", idx[1],
+                                                  ", ", idx[2], ")"));
+  }
+  if constexpr (UVMesh<M>) {
+    if (mesh_traits<M>::has_uvs(m))
+      for (index_t f = 0; f < nf; ++f)
+        for (int k = 0; k < 3; ++k)
+          if (!is_finite(to_vec2(mesh_traits<M>::corner_uv(m, f, k))))
+            return status::invalid_argument(detail::cat(what, ": face ", f, " corner ", k, " has a non-finite uv"));
+  }
+  return {};
+}
+
+/// Validates any Mesh and copies it into a tri_mesh (uvs too, when it has them).
+template <Mesh M>
+result<tri_mesh> to_tri_mesh(const M& m, std::string_view what = "mesh") {
+  if (auto s = validate_mesh(m, what); !s) return s;
+  tri_mesh out;
+  const index_t nv = num_vertices(m), nf = num_faces(m);
+  out.positions.resize(static_cast<std::size_t>(nv));
+  for (index_t v = 0; v < nv; ++v) out.positions[static_cast<std::size_t>(v)] = vertex_position(m, v);
+  out.faces.resize(static_cast<std::size_t>(nf));
+  for (index_t f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k) out.faces[static_cast<std::size_t>(f)][static_cast<std::size_t>(k)] = face_vertex(m, f, k);
+  if constexpr (UVMesh<M>) {
+    if (mesh_traits<M>::has_uvs(m)) {
+      out.uvs.resize(static_cast<std::size_t>(nf));
+      for (index_t f = 0; f < nf; ++f)
+        for (int k = 0; k < 3; ++k)
+          out.uvs[static_cast<std::size_t>(f)][static_cast<std::size_t>(k)] = to_vec2(mesh_traits<M>::corner_uv(m, f, k));
+    }
+  }
+  return out;
+}
+
+/// The three corner positions of face f.
+template <Mesh M>
+std::array<vec3, 3> face_corners(const M& m, index_t f) {
+  return {vertex_position(m, face_vertex(m, f, 0)), vertex_position(m, face_vertex(m, f, 1)),
+          vertex_position(m, face_vertex(m, f, 2))};
+}
+
+/// Un-normalized normal of face f: (b - a) x (c - a), length twice the area.
+template <Mesh M>
+vec3 face_area_normal(const M& m, index_t f) {
+  const auto c = face_corners(m, f);
+  return cross(c[1] - c[0], c[2] - c[0]);
+}
+
+/// Unit normal per face (zero for zero-area faces).
+template <Mesh M>
+std::vector<vec3> face_normals(const M& m) {
+  std::vector<vec3> n(static_cast<std::size_t>(num_faces(m)));
+  for (index_t f = 0; f < num_faces(m); ++f) n[static_cast<std::size_t>(f)] = normalized(face_area_normal(m, f));
+  return n;
+}
+
+/// Unit normal per vertex: area-weighted average of incident face normals (zero where a vertex has
+/// no face of non-zero area).
+template <Mesh M>
+std::vector<vec3> vertex_normals(const M& m) {
+  std::vector<vec3> n(static_cast<std::size_t>(num_vertices(m)));
+  for (index_t f = 0; f < num_faces(m); ++f) {
+    const vec3 an = face_area_normal(m, f);
+    for (int k = 0; k < 3; ++k) n[static_cast<std::size_t>(face_vertex(m, f, k))] += an;
+  }
+  for (vec3& v : n) v = normalized(v);
+  return n;
+}
+
+/// Area of face f.
+template <Mesh M>
+double face_area(const M& m, index_t f) {
+  return 0.5 * norm(face_area_normal(m, f));
+}
+
+/// Bounding box of all vertices (empty box for a mesh without vertices).
+template <Mesh M>
+aabb bounding_box(const M& m) {
+  aabb b;
+  for (index_t v = 0; v < num_vertices(m); ++v) b.extend(vertex_position(m, v));
+  return b;
+}
+
+TESSERA_NAMESPACE_END
