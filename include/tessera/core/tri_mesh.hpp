@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cmath>
+#include <concepts>
 #include <string_view>
 #include <type_traits>
 #include <vector>
@@ -70,9 +71,14 @@ struct tri_mesh {
 /// Checks any Mesh: non-negative counts, face indices in range, no face repeating a vertex
 /// (degenerate), finite positions and uvs (and, for tri_mesh, one uv triple per face when it has
 /// uvs). `what` names the mesh in the message. Zero-area faces with three distinct vertices are
-/// accepted. Returns invalid_argument, or out_of_range for a bad index. O(V + F).
+/// accepted. When mesh_traits<M> has `static status validate(const M&, std::string_view what)`
+/// (checks only the adapter can make, e.g. OpenMesh's non-triangle faces and deleted elements), that
+/// runs first. Returns invalid_argument, or out_of_range for a bad index. O(V + F).
 template <Mesh M>
 status validate_mesh(const M& m, std::string_view what = "mesh") {
+  if constexpr (requires { { mesh_traits<M>::validate(m, what) } -> std::same_as<status>; }) {
+    if (auto s = mesh_traits<M>::validate(m, what); !s) return s;
+  }
   const index_t nv = num_vertices(m), nf = num_faces(m);
   if (nv < 0 || nf < 0)
     return status::invalid_argument(detail::cat(what, ": negative vertex or face count (", nv, ", ", nf, ")"));
