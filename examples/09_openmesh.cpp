@@ -43,7 +43,7 @@ PolyMesh make_sheet(int n) {
 
 int main(int argc, char** argv) {
   const std::string dir = argc > 1 ? argv[1] : ".";
-  OpenMesh::omlog().disable();  // keep OpenMesh's progress chatter out of the output
+  omlog().disable();  // keep OpenMesh's progress chatter out of the output
 
   // [snippet:openmesh]
   PolyMesh sheet = make_sheet(12);
