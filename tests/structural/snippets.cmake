@@ -38,7 +38,7 @@ foreach(_src IN LISTS _sources)
       message(FATAL_ERROR "${_src}: snippet '${_name}' has no '// [/snippet]' line")
     endif()
     string(SUBSTRING "${_rest}" 0 ${_end} _body)
-    string(REGEX REPLACE "[ \t]*$" "" _body "${_body}")  # drop the end marker's indentation
+    string(REGEX REPLACE "[ \t]+$" "" _body "${_body}")  # drop the end marker's indentation
     if(DEFINED _snippet_${_name})
       message(FATAL_ERROR "${_src}: snippet '${_name}' is defined twice")
     endif()
