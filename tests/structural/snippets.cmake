@@ -39,6 +39,12 @@ foreach(_src IN LISTS _sources)
     endif()
     string(SUBSTRING "${_rest}" 0 ${_end} _body)
     string(REGEX REPLACE "[ \t]+$" "" _body "${_body}")  # drop the end marker's indentation
+    # Dedent: remove the indentation all non-empty lines share (snippets cut from inside a function).
+    set(_body "\n${_body}")
+    while(_body MATCHES "\n " AND NOT _body MATCHES "\n[^ \n]")
+      string(REPLACE "\n " "\n" _body "${_body}")
+    endwhile()
+    string(SUBSTRING "${_body}" 1 -1 _body)
     if(DEFINED _snippet_${_name})
       message(FATAL_ERROR "${_src}: snippet '${_name}' is defined twice")
     endif()
