@@ -78,6 +78,8 @@ concept member_uv_mesh = member_mesh<M> && requires(const M& m, index_t f, int k
 }  // namespace detail
 
 /// Reaches a mesh type. The primary template forwards to members; specialize it for foreign types.
+/// A specialization may add `static status validate(const M&, std::string_view what)` for checks only
+/// it can make (a polygon mesh's non-triangle faces); validate_mesh() calls it before its own checks.
 template <class M>
 struct mesh_traits {
   static index_t num_vertices(const M& m) requires detail::member_mesh<M> { return static_cast<index_t>(m.num_vertices()); }

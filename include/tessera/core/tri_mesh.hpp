@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cmath>
+#include <concepts>
 #include <string_view>
 #include <vector>
 
@@ -59,9 +60,14 @@ struct tri_mesh {
 
 /// Checks any Mesh: non-negative counts, face indices in range, no face repeating a vertex
 /// (degenerate), finite positions and uvs. `what` names the mesh in the message. Zero-area faces with
-/// three distinct vertices are accepted. O(V + F).
+/// three distinct vertices are accepted. When mesh_traits<M> has `static status validate(const M&,
+/// std::string_view what)` (checks only the adapter can make, e.g. OpenMesh's non-triangle faces and
+/// deleted elements), that runs first. O(V + F).
 template <Mesh M>
 status validate_mesh(const M& m, std::string_view what = "mesh") {
+  if constexpr (requires { { mesh_traits<M>::validate(m, what) } -> std::same_as<status>; }) {
+    if (auto s = mesh_traits<M>::validate(m, what); !s) return s;
+  }
   const index_t nv = num_vertices(m), nf = num_faces(m);
   if (nv < 0 || nf < 0)
     return status::invalid_argument(detail::cat(what, ": negative vertex or face count (", nv, ", ", nf, ")"));
