@@ -57,10 +57,16 @@ TEST_CASE("tri_mesh: building and appending", "[tri_mesh]") {
   empty.append(u);
   REQUIRE(empty.uvs.size() == 2);
   REQUIRE(tessera::validate_mesh(empty).ok());
-  empty.append(m);  // m has no uvs: the result has none
+  tri_mesh points_only;
+  points_only.add_vertex({7, 7, 7});
+  empty.append(points_only);  // no faces: the uvs stay
+  REQUIRE(empty.uvs.size() == 2);
+  REQUIRE(tessera::validate_mesh(empty).ok());
+  empty.append(m);  // m has faces without uvs: the result has none
   REQUIRE_FALSE(empty.has_uvs());
   REQUIRE(tessera::validate_mesh(empty).ok());
   REQUIRE(empty.num_faces() == 3);
+  REQUIRE(empty.num_vertices() == 10);
 }
 
 TEST_CASE("tri_mesh: validate_mesh reports each problem", "[tri_mesh]") {

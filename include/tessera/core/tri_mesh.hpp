@@ -53,10 +53,12 @@ struct tri_mesh {
     uvs.push_back(corner_uvs);
     return num_faces() - 1;
   }
-  /// Appends another mesh (its vertices translated by `offset`), renumbering its indices. Uvs are kept
-  /// only when both meshes have them (or this one is empty).
+  /// Appends another mesh (its vertices translated by `offset`), renumbering its indices. The result
+  /// has uvs when every face of both meshes has them (a mesh without faces does not count); otherwise
+  /// all uvs are dropped, since uvs must cover every face.
   void append(const tri_mesh& other, vec3 offset = {}) {
-    const bool keep_uvs = other.has_uvs() && (has_uvs() || faces.empty());
+    const bool keep_uvs = (has_uvs() || faces.empty()) && (other.has_uvs() || other.faces.empty()) &&
+                          (has_uvs() || other.has_uvs());
     if (!keep_uvs) uvs.clear();
     const index_t base = num_vertices();
     positions.reserve(positions.size() + other.positions.size());
