@@ -4,6 +4,8 @@
 #
 # Layout for the lead: one function per family (demo_<family>), each a self-contained block that
 # writes under "$OUT/<family>" and runs in a few seconds; add a block and list it in DEMO_BLOCKS.
+# demo_foundation runs first and leaves the procedural exemplars in "$OUT/foundation/<kind>.png"
+# (grass sand rock bricks cells weave dots, 128 x 128) for the later blocks.
 set -euo pipefail
 source "$(dirname "$0")/common.sh"
 
@@ -44,13 +46,21 @@ demo_foundation() {
       echo "(skipping $name: not built; OpenMesh missing?)"
     fi
   done
+  if has_command sample; then
+    step "foundation: tessera sample (procedural exemplars used by the other demos)"
+    local kind
+    for kind in grass sand rock bricks cells weave dots; do
+      run "$TESSERA" sample "$kind" --size 128x128 --seed 1 --out "$out/$kind.png"
+    done
+  fi
   if has_command info; then
     step "foundation: tessera info / convert"
     run "$TESSERA" info "$out/01_hello.png"
     run "$TESSERA" info "$out/07_eigen_mesh.obj"
     if has_command convert; then
-      run "$TESSERA" convert "$out/07_eigen_mesh.obj" "$out/07_eigen_mesh.ply"
+      run "$TESSERA" convert "$out/07_eigen_mesh.obj" "$out/07_eigen_mesh.ply" --binary
       run "$TESSERA" info "$out/07_eigen_mesh.ply"
+      run "$TESSERA" convert "$out/01_hello.png" "$out/01_hello_grey16.png" --channels 1 --depth 16
     fi
   fi
 }
