@@ -5,10 +5,13 @@
 // west strip is out of phase with their north strip. Here the horizontal strips are drawn at random
 // and then every vertical strip is chosen, among all exemplar positions, to agree with the
 // horizontal strips where they would overlap at tile corners: for a vertical candidate the cost is
-// the SSD between its corner squares and those of every horizontal strip, over the four corner
-// configurations (north-west, north-east, south-west, south-east). The horizontal strips are then
-// re-chosen the same way against the vertical ones. A candidate is drawn among those within
-// (1 + tolerance) of the best, away from the strips already chosen for the same direction.
+// the mean squared difference between its corner squares and those of every horizontal strip, over
+// the four corner configurations (north-west, north-east, south-west, south-east), plus the mean
+// squared difference across the strip's centre line (the tile edge): edges placed where the
+// exemplar is calm keep the few pixels that differ across an edge (at tile corners) inconspicuous.
+// The horizontal strips are then re-chosen the same way against the vertical ones. A candidate is
+// drawn among those within (1 + tolerance) of the best, away from the strips already chosen for the
+// same direction.
 #pragma once
 
 #include <cmath>
@@ -53,6 +56,17 @@ class edge_sample_chooser {
   [[nodiscard]] float at(int c, index_t x, index_t y) const noexcept {
     return src_.planes[static_cast<std::size_t>((c * src_.height() + y) * src_.width() + x)];
   }
+  // mean squared difference across the centre line of a strip (the tile edge it stands for)
+  [[nodiscard]] double centre_cost(strip_origin o, bool horizontal) const noexcept {
+    double sum = 0;
+    for (index_t k = 0; k < ts_; ++k)
+      for (int c = 0; c < C; ++c) {
+        const double d = horizontal ? static_cast<double>(at(c, o.x + k, o.y + ov_ - 1)) - at(c, o.x + k, o.y + ov_)
+                                    : static_cast<double>(at(c, o.x + ov_ - 1, o.y + k)) - at(c, o.x + ov_, o.y + k);
+        sum += d * d;
+      }
+    return sum / static_cast<double>(ts_);
+  }
   // SSD over the four corner squares between horizontal strip h and vertical strip v
   [[nodiscard]] double corner_cost(strip_origin h, strip_origin v) const noexcept {
     const index_t ts = ts_, ov = ov_;
@@ -90,7 +104,7 @@ class edge_sample_chooser {
         any_distinct = any_distinct || distinct[i];
         double c = 0;
         for (const strip_origin& o : others) c += horizontal ? corner_cost({x, y}, o) : corner_cost(o, {x, y});
-        cost[i] = c;
+        cost[i] = c / static_cast<double>(4 * ov_ * ov_ * static_cast<index_t>(others.size())) + centre_cost({x, y}, horizontal);
       }
     // an exemplar too small for distinct strips allows repeats
     auto allowed = [&](std::size_t i) { return !any_distinct || distinct[i]; };
