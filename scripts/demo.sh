@@ -35,9 +35,14 @@ demo_foundation() {
   local out=$OUT/foundation
   mkdir -p "$out"
   step "foundation: examples"
-  for exe in "$BUILD"/examples/example_*; do
-    [[ -x $exe ]] || continue
-    run "$exe" "$out"
+  local src name
+  for src in "$TESSERA_ROOT"/examples/[0-9][0-9]_*.cpp; do
+    name=$(basename "$src" .cpp)
+    if [[ -x $BUILD/examples/example_$name ]]; then
+      run "$BUILD/examples/example_$name" "$out"
+    else
+      echo "(skipping $name: not built; OpenMesh missing?)"
+    fi
   done
   if has_command info; then
     step "foundation: tessera info / convert"
