@@ -512,7 +512,7 @@ status fill_canvas(const quilt_source<T, C>& src, quilt_canvas<T, C>& canvas, co
       return status::cancelled();
   }
   // every empty pixel lies in some site window, so nothing is left empty
-  for (auto st : canvas.state) TESSERA_ASSERT(st != pixel_state::empty);
+  TESSERA_ASSERT(std::find(canvas.state.begin(), canvas.state.end(), pixel_state::empty) == canvas.state.end());
   return {};
 }
 

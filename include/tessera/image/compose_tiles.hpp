@@ -113,10 +113,11 @@ template <Channel T, int C, class Coloring, WritableImage O, Executor X = serial
           std::memcpy(dst + ox * C, set.tile_row(row_tiles[c - c0], ty) + tx * C, static_cast<std::size_t>(n * C) * sizeof(T));
           ox += n;
         }
-        if (options.outline)
-          for (index_t x = 0; x < w; ++x)
-            if (outlined(options.x + x, py))
-              for (int k = 0; k < C; ++k) dst[x * C + k] = line[static_cast<std::size_t>(k)];
+        if (options.outline) {
+          const bool whole_row = ty == 0;  // a tile's first row; otherwise only first columns
+          for (index_t x = whole_row ? 0 : (ts - (options.x % ts + ts) % ts) % ts; x < w; x += whole_row ? 1 : ts)
+            for (int k = 0; k < C; ++k) dst[x * C + k] = line[static_cast<std::size_t>(k)];
+        }
       } else {
         for (index_t ox = 0; ox < w; ++ox) {
           const index_t px = options.x + ox, c = floor_div(px, ts), tx = px - c * ts;

@@ -1,4 +1,4 @@
-// tessera/image/wang_tile_io.hpp: Wang tile directories — DIR/tile_<index>.png plus DIR/tiles.json
+// tessera/io/wang_tiles.hpp: Wang tile directories — DIR/tile_<index>.png plus DIR/tiles.json
 // (tiling/tile_manifest.hpp) — written by `tessera wang build` and read by `tessera wang tile`.
 // Needs PNG support: link tessera::io (stb).
 #pragma once
@@ -10,9 +10,9 @@
 #include "../core/config.hpp"
 #include "../core/image_buffer.hpp"
 #include "../core/status.hpp"
-#include "../io/png.hpp"
+#include "../image/wang_tiles.hpp"
 #include "../tiling/tile_manifest.hpp"
-#include "wang_tiles.hpp"
+#include "png.hpp"
 
 TESSERA_NAMESPACE_BEGIN
 

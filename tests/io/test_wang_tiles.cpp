@@ -1,4 +1,4 @@
-#include <tessera/image/wang_tile_io.hpp>
+#include <tessera/io/wang_tiles.hpp>
 
 #include <tessera/image/exemplars.hpp>
 
@@ -7,7 +7,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "quilt_test_support.hpp"
+#include "../image/quilt_test_support.hpp"
 
 using tessera::index_t;
 
