@@ -71,9 +71,11 @@ TEST_CASE("quilt: overlap errors equal a brute-force SSD, selection stays within
           elements.push_back({c * 30 * 30 + j * 30 + i, v, weight});
           brute.push_back({float(i), float(j), float(c), v, weight});
         }
-  std::vector<float> err;
+  std::vector<float> err, generic;
   tessera::serial_executor serial;
-  dt::overlap_errors(src, elements, p, err, serial);
+  dt::overlap_errors(src, elements, p, err, serial);  // the fastest kernel this CPU has (AVX2 or SSE2)
+  dt::overlap_errors(src, elements, p, generic, serial, dt::overlap_row_generic);
+  REQUIRE(err == generic);  // bit-identical whichever instruction set runs
   REQUIRE(err.size() == static_cast<std::size_t>(U * U));
   for (index_t v = 0; v < U; ++v)
     for (index_t u = 0; u < U; ++u) {

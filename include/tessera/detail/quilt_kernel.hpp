@@ -159,60 +159,96 @@ struct template_element {
   float weight = 1.0f;
 };
 
-/// err[v · U + u] = Σ over known template pixels and channels of (E(u + i, v + j) − value)²;
-/// forbidden candidates get +inf. Parallel over candidate rows; bit-identical for any executor.
+// One candidate row of overlap errors: acc[u] += Σ_k w_k (base[offset_k + u] − value_k)². Elements are
+// taken four at a time so each pass over acc serves four of them. Always inlined into the
+// per-instruction-set entry points below, so one source gives an SSE2 and an AVX2 version whose
+// results are bit-identical (no FMA contraction; the same operations per lane in the same order).
+#if defined(__GNUC__)
+#define TESSERA_DETAIL_ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#define TESSERA_DETAIL_ALWAYS_INLINE inline
+#endif
+TESSERA_DETAIL_ALWAYS_INLINE void overlap_row_body(float* __restrict acc, const float* base, const template_element* el,
+                                                   std::size_t n, index_t U, bool weighted) {
+  std::size_t k = 0;
+  if (!weighted) {
+    for (; k + 4 <= n; k += 4) {
+      const float* __restrict r0 = base + el[k].offset;
+      const float* __restrict r1 = base + el[k + 1].offset;
+      const float* __restrict r2 = base + el[k + 2].offset;
+      const float* __restrict r3 = base + el[k + 3].offset;
+      const float t0 = el[k].value, t1 = el[k + 1].value, t2 = el[k + 2].value, t3 = el[k + 3].value;
+      for (index_t u = 0; u < U; ++u) {
+        const float d0 = r0[u] - t0, d1 = r1[u] - t1, d2 = r2[u] - t2, d3 = r3[u] - t3;
+        acc[u] += (d0 * d0 + d1 * d1) + (d2 * d2 + d3 * d3);
+      }
+    }
+  } else {
+    for (; k + 4 <= n; k += 4) {
+      const float* __restrict r0 = base + el[k].offset;
+      const float* __restrict r1 = base + el[k + 1].offset;
+      const float* __restrict r2 = base + el[k + 2].offset;
+      const float* __restrict r3 = base + el[k + 3].offset;
+      const float t0 = el[k].value, t1 = el[k + 1].value, t2 = el[k + 2].value, t3 = el[k + 3].value;
+      const float w0 = el[k].weight, w1 = el[k + 1].weight, w2 = el[k + 2].weight, w3 = el[k + 3].weight;
+      for (index_t u = 0; u < U; ++u) {
+        const float d0 = r0[u] - t0, d1 = r1[u] - t1, d2 = r2[u] - t2, d3 = r3[u] - t3;
+        acc[u] += (w0 * (d0 * d0) + w1 * (d1 * d1)) + (w2 * (d2 * d2) + w3 * (d3 * d3));
+      }
+    }
+  }
+  for (; k < n; ++k) {
+    const float* __restrict r0 = base + el[k].offset;
+    const float t0 = el[k].value, w0 = el[k].weight;
+    for (index_t u = 0; u < U; ++u) {
+      const float d0 = r0[u] - t0;
+      acc[u] += w0 * (d0 * d0);
+    }
+  }
+}
+#undef TESSERA_DETAIL_ALWAYS_INLINE
+
+inline void overlap_row_generic(float* acc, const float* base, const template_element* el, std::size_t n, index_t U, bool weighted) {
+  overlap_row_body(acc, base, el, n, U, weighted);
+}
+
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(__AVX2__)
+#define TESSERA_DETAIL_HAS_AVX2_PATH 1
+__attribute__((target("avx2"))) inline void overlap_row_avx2(float* acc, const float* base, const template_element* el,
+                                                             std::size_t n, index_t U, bool weighted) {
+  overlap_row_body(acc, base, el, n, U, weighted);
+}
+#endif
+
+using overlap_row_fn = void (*)(float*, const float*, const template_element*, std::size_t, index_t, bool);
+
+/// The fastest row kernel this CPU runs (AVX2 when available and not already the baseline).
+inline overlap_row_fn best_overlap_row() noexcept {
+#ifdef TESSERA_DETAIL_HAS_AVX2_PATH
+  static const overlap_row_fn fn = __builtin_cpu_supports("avx2") ? overlap_row_avx2 : overlap_row_generic;
+  return fn;
+#else
+  return overlap_row_generic;
+#endif
+}
+#undef TESSERA_DETAIL_HAS_AVX2_PATH
+
+/// err[v · U + u] = Σ over known template pixels and channels of weight · (E(u + i, v + j) − value)²;
+/// forbidden candidates get +inf. Parallel over candidate rows; bit-identical for any executor and
+/// for either row kernel.
 template <Channel T, int C, class X>
 void overlap_errors(const quilt_source<T, C>& src, const std::vector<template_element>& elements, index_t p,
-                    std::vector<float>& err, X& exec) {
+                    std::vector<float>& err, X& exec, overlap_row_fn row = best_overlap_row()) {
   const index_t w = src.width(), U = w - p + 1, V = src.height() - p + 1;
   err.assign(static_cast<std::size_t>(U * V), 0.0f);
-  const bool restricted = !src.allowed.empty() && src.allowed_patch == p;
   if (!elements.empty()) {
-    const float* planes = src.planes.data();
-    const std::size_t n = elements.size();
     bool weighted = false;
     for (const auto& e : elements) weighted = weighted || e.weight != 1.0f;
     exec.parallel_for(0, V, [&](index_t v) {
-      float* __restrict acc = err.data() + v * U;
-      const float* base = planes + v * w;
-      std::size_t k = 0;
-      if (!weighted) {
-        for (; k + 4 <= n; k += 4) {
-          const float* __restrict r0 = base + elements[k].offset;
-          const float* __restrict r1 = base + elements[k + 1].offset;
-          const float* __restrict r2 = base + elements[k + 2].offset;
-          const float* __restrict r3 = base + elements[k + 3].offset;
-          const float t0 = elements[k].value, t1 = elements[k + 1].value, t2 = elements[k + 2].value, t3 = elements[k + 3].value;
-          for (index_t u = 0; u < U; ++u) {
-            const float d0 = r0[u] - t0, d1 = r1[u] - t1, d2 = r2[u] - t2, d3 = r3[u] - t3;
-            acc[u] += (d0 * d0 + d1 * d1) + (d2 * d2 + d3 * d3);
-          }
-        }
-      } else {
-        for (; k + 4 <= n; k += 4) {
-          const float* __restrict r0 = base + elements[k].offset;
-          const float* __restrict r1 = base + elements[k + 1].offset;
-          const float* __restrict r2 = base + elements[k + 2].offset;
-          const float* __restrict r3 = base + elements[k + 3].offset;
-          const float t0 = elements[k].value, t1 = elements[k + 1].value, t2 = elements[k + 2].value, t3 = elements[k + 3].value;
-          const float w0 = elements[k].weight, w1 = elements[k + 1].weight, w2 = elements[k + 2].weight, w3 = elements[k + 3].weight;
-          for (index_t u = 0; u < U; ++u) {
-            const float d0 = r0[u] - t0, d1 = r1[u] - t1, d2 = r2[u] - t2, d3 = r3[u] - t3;
-            acc[u] += (w0 * (d0 * d0) + w1 * (d1 * d1)) + (w2 * (d2 * d2) + w3 * (d3 * d3));
-          }
-        }
-      }
-      for (; k < n; ++k) {
-        const float* __restrict r0 = base + elements[k].offset;
-        const float t0 = elements[k].value, w0 = elements[k].weight;
-        for (index_t u = 0; u < U; ++u) {
-          const float d0 = r0[u] - t0;
-          acc[u] += w0 * (d0 * d0);
-        }
-      }
+      row(err.data() + v * U, src.planes.data() + v * w, elements.data(), elements.size(), U, weighted);
     });
   }
-  if (restricted)
+  if (!src.allowed.empty() && src.allowed_patch == p)
     for (std::size_t i = 0; i < err.size(); ++i)
       if (!src.allowed[i]) err[i] = std::numeric_limits<float>::infinity();
 }
