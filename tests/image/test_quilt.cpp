@@ -92,6 +92,16 @@ TEST_CASE("quilt: overlap errors equal a brute-force SSD, selection stays within
     REQUIRE(err[static_cast<std::size_t>(k)] <= best * 1.3f + 1e-6f);
   }
   REQUIRE(dt::pick_candidate(err, 0.0, rng, 1, 2, 3) == std::min_element(err.begin(), err.end()) - err.begin());
+  // at least the 5 best are drawn from, and every one of them is drawn for some key
+  std::vector<float> sorted = err;
+  std::sort(sorted.begin(), sorted.end());
+  std::set<index_t> drawn;
+  for (std::uint64_t key = 0; key < 200; ++key) {
+    const index_t k = dt::pick_candidate(err, 0.0, rng, key, 0, 0, 5);
+    REQUIRE(err[static_cast<std::size_t>(k)] <= sorted[4]);
+    drawn.insert(k);
+  }
+  REQUIRE(drawn.size() == 5u);
 }
 
 TEST_CASE("quilt: the boundary cut is the minimum-error path (brute force)", "[quilt]") {

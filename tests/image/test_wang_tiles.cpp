@@ -107,6 +107,8 @@ TEST_CASE("wang tiles: bad input", "[wang]") {
   REQUIRE(code({.tile_size = 32, .overlap = 4, .border = 4}) == tessera::status_code::invalid_argument);
   REQUIRE(code({.tile_size = 32, .patch_size = 40}) == tessera::status_code::invalid_argument);
   REQUIRE(code({.tile_size = 32, .tolerance = -1}) == tessera::status_code::invalid_argument);
+  REQUIRE(code({.tile_size = 32, .boundary_weight = 0}) == tessera::status_code::invalid_argument);
+  REQUIRE(code({.tile_size = 32, .min_candidates = 0}) == tessera::status_code::invalid_argument);
   tessera::image_view<std::uint8_t, 3> empty;
   REQUIRE(tessera::build_wang_tiles(empty, {}).error().code() == tessera::status_code::invalid_argument);
   tessera::cancellation_token stop;

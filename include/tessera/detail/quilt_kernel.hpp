@@ -103,6 +103,7 @@ struct quilt_params {
   counter_rng rng{1};
   std::uint64_t key = 0;  // distinguishes independent fills (e.g. one per Wang tile)
   float frontier_weight = 1.0f;  // overlap-error weight of fixed pixels touching an empty one
+  index_t min_candidates = 1;     // draw among at least this many best candidates
 };
 
 /// Positions of windows of size p covering [lo, hi) of an axis of length `size` with overlaps of at
@@ -254,12 +255,19 @@ void overlap_errors(const quilt_source<T, C>& src, const std::vector<template_el
 }
 
 /// Draws one candidate among those whose error is within (1 + tolerance) of the best (Efros &
-/// Freeman's selection rule), keyed by the site; ties and order by candidate index.
+/// Freeman's selection rule) or, when that leaves fewer, among the `at_least` best (finite ones);
+/// keyed by the site, candidates in index order.
 inline index_t pick_candidate(const std::vector<float>& err, double tolerance, const counter_rng& rng, std::uint64_t key,
-                              index_t site_x, index_t site_y) {
+                              index_t site_x, index_t site_y, index_t at_least = 1) {
   float best = std::numeric_limits<float>::infinity();
   for (float e : err) best = std::min(best, e);
-  const double limit = static_cast<double>(best) * (1.0 + tolerance);
+  double limit = static_cast<double>(best) * (1.0 + tolerance);
+  if (at_least > 1) {
+    std::vector<float> sorted(err);
+    const auto k = std::min<std::size_t>(static_cast<std::size_t>(at_least), sorted.size()) - 1;
+    std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(k), sorted.end());
+    if (std::isfinite(sorted[k])) limit = std::max(limit, static_cast<double>(sorted[k]));
+  }
   index_t count = 0;
   for (float e : err) count += static_cast<double>(e) <= limit;
   TESSERA_ASSERT(count > 0);
@@ -489,7 +497,7 @@ bool place_patch(const quilt_source<T, C>& src, quilt_canvas<T, C>& canvas, cons
   if (!any_empty) return false;
   overlap_errors(src, s.elements, p, s.err, exec);
   const index_t U = src.width() - p + 1;
-  const index_t chosen = pick_candidate(s.err, prm.tolerance, prm.rng, prm.key, site.x, site.y);
+  const index_t chosen = pick_candidate(s.err, prm.tolerance, prm.rng, prm.key, site.x, site.y, prm.min_candidates);
   const index_t u = chosen % U, v = chosen / U;
   for (index_t j = 0; j < p; ++j)
     for (index_t i = 0; i < p; ++i) {

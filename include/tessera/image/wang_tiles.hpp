@@ -96,6 +96,8 @@ struct wang_tile_options {
   index_t border = 0;      ///< outermost pixels copied from the edge samples and never cut; 0 = max(1, overlap / 4)
   double tolerance = 0.1;  ///< candidate selection tolerance (as in quilt())
   double boundary_weight = 64;  ///< overlap-error weight of fixed border pixels next to unsynthesized ones (as in quilt_options)
+  index_t min_candidates = 4;   ///< draw each patch among at least this many best candidates, so tiles sharing
+                                ///< edges still get different interiors (1 = pure tolerance rule)
   std::uint64_t seed = 1;
   tessera::progress progress = {};
 };
@@ -166,6 +168,8 @@ template <Image E, Executor X = serial_executor>
     return status::invalid_argument(detail::cat("tolerance must be a finite number >= 0, got ", options.tolerance));
   if (!(options.boundary_weight >= 1) || !(options.boundary_weight <= 1e6))
     return status::invalid_argument(detail::cat("boundary_weight must be in [1, 1e6], got ", options.boundary_weight));
+  if (options.min_candidates < 1)
+    return status::invalid_argument(detail::cat("min_candidates must be >= 1, got ", options.min_candidates));
   const auto [ts, ov, patch, border] = *sizes;
   auto ex = to_buffer<T, C>(exemplar, "exemplar");
   if (!ex) return ex.error();
@@ -185,6 +189,7 @@ template <Image E, Executor X = serial_executor>
   prm.patch = patch;
   prm.tolerance = options.tolerance;
   prm.frontier_weight = static_cast<float>(options.boundary_weight);
+  prm.min_candidates = options.min_candidates;
   prm.rng = rng.substream(1);
   const index_t n = set.size();
   std::vector<status> failures(static_cast<std::size_t>(n));
