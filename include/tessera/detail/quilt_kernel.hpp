@@ -169,33 +169,21 @@ struct template_element {
 #else
 #define TESSERA_DETAIL_ALWAYS_INLINE inline
 #endif
-TESSERA_DETAIL_ALWAYS_INLINE void overlap_row_body(float* __restrict acc, const float* base, const template_element* el,
-                                                   std::size_t n, index_t U, bool weighted) {
+template <bool Weighted>
+TESSERA_DETAIL_ALWAYS_INLINE void overlap_row_pass(float* __restrict acc, const float* base, const template_element* el,
+                                                   std::size_t n, index_t U) {
   std::size_t k = 0;
-  if (!weighted) {
-    for (; k + 4 <= n; k += 4) {
-      const float* __restrict r0 = base + el[k].offset;
-      const float* __restrict r1 = base + el[k + 1].offset;
-      const float* __restrict r2 = base + el[k + 2].offset;
-      const float* __restrict r3 = base + el[k + 3].offset;
-      const float t0 = el[k].value, t1 = el[k + 1].value, t2 = el[k + 2].value, t3 = el[k + 3].value;
-      for (index_t u = 0; u < U; ++u) {
-        const float d0 = r0[u] - t0, d1 = r1[u] - t1, d2 = r2[u] - t2, d3 = r3[u] - t3;
-        acc[u] += (d0 * d0 + d1 * d1) + (d2 * d2 + d3 * d3);
-      }
-    }
-  } else {
-    for (; k + 4 <= n; k += 4) {
-      const float* __restrict r0 = base + el[k].offset;
-      const float* __restrict r1 = base + el[k + 1].offset;
-      const float* __restrict r2 = base + el[k + 2].offset;
-      const float* __restrict r3 = base + el[k + 3].offset;
-      const float t0 = el[k].value, t1 = el[k + 1].value, t2 = el[k + 2].value, t3 = el[k + 3].value;
-      const float w0 = el[k].weight, w1 = el[k + 1].weight, w2 = el[k + 2].weight, w3 = el[k + 3].weight;
-      for (index_t u = 0; u < U; ++u) {
-        const float d0 = r0[u] - t0, d1 = r1[u] - t1, d2 = r2[u] - t2, d3 = r3[u] - t3;
-        acc[u] += (w0 * (d0 * d0) + w1 * (d1 * d1)) + (w2 * (d2 * d2) + w3 * (d3 * d3));
-      }
+  for (; k + 4 <= n; k += 4) {
+    const float* __restrict r0 = base + el[k].offset;
+    const float* __restrict r1 = base + el[k + 1].offset;
+    const float* __restrict r2 = base + el[k + 2].offset;
+    const float* __restrict r3 = base + el[k + 3].offset;
+    const float t0 = el[k].value, t1 = el[k + 1].value, t2 = el[k + 2].value, t3 = el[k + 3].value;
+    const float w0 = el[k].weight, w1 = el[k + 1].weight, w2 = el[k + 2].weight, w3 = el[k + 3].weight;
+    for (index_t u = 0; u < U; ++u) {
+      const float d0 = r0[u] - t0, d1 = r1[u] - t1, d2 = r2[u] - t2, d3 = r3[u] - t3;
+      if constexpr (Weighted) acc[u] += (w0 * (d0 * d0) + w1 * (d1 * d1)) + (w2 * (d2 * d2) + w3 * (d3 * d3));
+      else acc[u] += (d0 * d0 + d1 * d1) + (d2 * d2 + d3 * d3);
     }
   }
   for (; k < n; ++k) {
@@ -206,6 +194,11 @@ TESSERA_DETAIL_ALWAYS_INLINE void overlap_row_body(float* __restrict acc, const 
       acc[u] += w0 * (d0 * d0);
     }
   }
+}
+TESSERA_DETAIL_ALWAYS_INLINE void overlap_row_body(float* acc, const float* base, const template_element* el, std::size_t n,
+                                                   index_t U, bool weighted) {
+  if (weighted) overlap_row_pass<true>(acc, base, el, n, U);
+  else overlap_row_pass<false>(acc, base, el, n, U);
 }
 #undef TESSERA_DETAIL_ALWAYS_INLINE
 

@@ -46,6 +46,13 @@ std::vector<std::uint8_t> read_hole_mask(const M& mask) {
   return hole;
 }
 
+template <Image I, Image M, Image O>
+status validate_inpaint_inputs(const I& image, const M& mask, const O& out) {
+  if (auto s = validate_image(image, "image"); !s) return s;
+  if (auto s = validate_same_size(image, "image", mask, "mask"); !s) return s;
+  return validate_same_size(image, "image", out, "output");
+}
+
 template <Channel T, int C, WritableImage O, class X>
 status constrained_quilt_run(detail::quilt_source<T, C>& src, image_buffer<T, C> image, const std::vector<std::uint8_t>& hole,
                              O& out, const quilt_options& options, index_t patch, index_t overlap, X& exec) {
@@ -84,9 +91,7 @@ template <Image E, Image I, Image M, WritableImage O, Executor X = serial_execut
 [[nodiscard]] status constrained_quilt(const E& exemplar, const I& image, const M& mask, O& out, const quilt_options& options = {},
                                        X&& exec = {}) {
   if (auto s = validate_image(exemplar, "exemplar"); !s) return s;
-  if (auto s = validate_image(image, "image"); !s) return s;
-  if (auto s = validate_same_size(image, "image", mask, "mask"); !s) return s;
-  if (auto s = validate_same_size(image, "image", out, "output"); !s) return s;
+  if (auto s = detail::validate_inpaint_inputs(image, mask, out); !s) return s;
   index_t patch = 0, overlap = 0;
   if (auto s = detail::resolve_quilt_sizes(options, width_of(exemplar), height_of(exemplar), patch, overlap); !s) return s;
   using T = channel_t<I>;
@@ -104,9 +109,7 @@ template <Image E, Image I, Image M, WritableImage O, Executor X = serial_execut
 /// leaves no hole-free window of the patch size.
 template <Image I, Image M, WritableImage O, Executor X = serial_executor>
 [[nodiscard]] status constrained_quilt(const I& image, const M& mask, O& out, const quilt_options& options = {}, X&& exec = {}) {
-  if (auto s = validate_image(image, "image"); !s) return s;
-  if (auto s = validate_same_size(image, "image", mask, "mask"); !s) return s;
-  if (auto s = validate_same_size(image, "image", out, "output"); !s) return s;
+  if (auto s = detail::validate_inpaint_inputs(image, mask, out); !s) return s;
   index_t patch = 0, overlap = 0;
   if (auto s = detail::resolve_quilt_sizes(options, width_of(image), height_of(image), patch, overlap); !s) return s;
   using T = channel_t<I>;
