@@ -182,6 +182,8 @@ TEST_CASE("wang atlas: atlas coordinates point at the composed plane's texels", 
       const tessera::vec2 a = tessera::atlas_coordinates(*atlas, *scan, x + 0.5, y + 0.5);
       REQUIRE(atlas->image.read(index_t(a.x), index_t(a.y)) == plane.read(x, y));
     }
+  REQUIRE(tessera::atlas_coordinates(*atlas, *scan, 96.5, 3.0).x == -1);  // outside the 6 x 5 grid
+  REQUIRE(tessera::atlas_coordinates(*atlas, *scan, -0.5, 3.0).x == -1);
 }
 
 TEST_CASE("wang atlas: bad input", "[wang]") {
@@ -199,4 +201,6 @@ TEST_CASE("wang atlas: bad input", "[wang]") {
   bool missing = false;
   for (int i = 0; i < 50 && !missing; ++i) missing = tessera::atlas_coordinates(*atlas, *complete_plane, 16.0 * i + 1, 3.0).x < 0;
   REQUIRE(missing);
+  REQUIRE(tessera::atlas_coordinates(*atlas, *complete_plane, std::nan(""), 3.0).x == -1);
+  REQUIRE(tessera::atlas_coordinates(*atlas, *complete_plane, 1e300, 3.0).x == -1);
 }

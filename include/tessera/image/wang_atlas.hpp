@@ -168,16 +168,21 @@ template <Channel T, int C>
 
 /// Maps a point of the infinite tiled plane, in plane texels (cell (floor(px / T), floor(py / T))),
 /// to atlas texel coordinates: the cell's tile (tile_at_cell with `seed`, as compose_tiles picks it)
-/// at the same offset. With the edge-ordered layout a tile's slot depends on its edges only. Returns
-/// (−1, −1) when the colouring asks for a tile the set lacks. O(1) for plane colourings
-/// (hash_coloring) plus O(log n) lookup; thread-safe.
+/// at the same offset. With the edge-ordered layout a tile's slot depends on its edges only (Wei
+/// 2004 §4). Returns (−1, −1) when the colouring asks for a tile the set lacks, for a cell outside a
+/// grid colouring, and for a NaN point or one beyond ±2^62 cells. O(1) for plane colourings
+/// (hash_coloring), plus an O(log n) lookup for the padded layout; thread-safe.
 template <Channel T, int C, class Coloring>
   requires GridTileColoring<Coloring> || PlaneTileColoring<Coloring>
 [[nodiscard]] vec2 atlas_coordinates(const wang_atlas<T, C>& atlas, const Coloring& coloring, double px, double py,
                                      std::uint64_t seed = 1) noexcept {
   const double ts = static_cast<double>(atlas.tile_size);
   const double cf = std::floor(px / ts), rf = std::floor(py / ts);
+  if (!(std::fabs(cf) < 0x1p62) || !(std::fabs(rf) < 0x1p62)) return {-1, -1};  // NaN or beyond the index range
   const auto col = static_cast<index_t>(cf), row = static_cast<index_t>(rf);
+  if constexpr (GridTileColoring<Coloring>)
+    if (col < 0 || row < 0 || col >= static_cast<index_t>(coloring.cols()) || row >= static_cast<index_t>(coloring.rows()))
+      return {-1, -1};
   const wang_edges e = cell_edges(coloring, col, row);
   if (atlas.layout == atlas_layout::edge_ordered) {
     if (e.north < 0 || e.north >= atlas.edges.horizontal_colors() || e.south < 0 || e.south >= atlas.edges.horizontal_colors() ||
