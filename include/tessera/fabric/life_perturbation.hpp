@@ -100,36 +100,30 @@ inline float pixel_lightness(const T* p) noexcept {
   }
 }
 
-/// Writes the input pixel relit to lightness l_new (hue, saturation and alpha kept, see `relight`);
-/// a pixel whose lightness did not change is copied bit for bit. Integer channels are relit in
-/// channel units and rounded to nearest, without branches.
+/// Writes the input pixel, whose lightness is l_old, relit to lightness l_new (hue, saturation and
+/// alpha kept, see `relight`); a pixel whose lightness did not change is copied bit for bit. Integer
+/// channels are relit in channel units and rounded to nearest.
 template <class T, int C>
-inline void relight_pixel(const T* in, T* out, float l_new) noexcept {
+inline void relight_pixel(const T* in, T* out, float l_old, float l_new) noexcept {
+  if (l_new == l_old) {
+    if (in != out) std::memcpy(out, in, sizeof(T) * C);
+    return;
+  }
   if constexpr (C <= 2) {
-    const float l_old = channel_to_unit(in[0]);
-    out[0] = l_new == l_old ? in[0] : unit_to_channel<T>(l_new);
+    out[0] = unit_to_channel<T>(l_new);
   } else if constexpr (std::is_integral_v<T>) {
     constexpr float top = static_cast<float>(std::numeric_limits<T>::max());
-    const float l_old = pixel_lightness<T, C>(in);
-    if (l_new == l_old) {
-      if (in != out) std::memcpy(out, in, sizeof(T) * C);
-      return;
-    }
     const float span_old = 1.0f - std::abs(2.0f * l_old - 1.0f), span_new = 1.0f - std::abs(2.0f * l_new - 1.0f);
     const float k = span_old > 0.0f ? span_new / span_old : 0.0f;
     const float base = (l_new - l_old * k) * top + 0.5f;  // c' = L' + (c - L) k, in channel units, + rounding
     for (int c = 0; c < 3; ++c) {
-      const float v = std::min(std::max(base + static_cast<float>(in[c]) * k, 0.0f), top);
+      float v = base + static_cast<float>(in[c]) * k;
+      v = v > 0.0f ? v : 0.0f;
+      v = v < top ? v : top;
       out[c] = static_cast<T>(v);
     }
   } else {
-    const float r = in[0], g = in[1], b = in[2];
-    const float l_old = hls_lightness(r, g, b);
-    if (l_new == l_old) {
-      if (in != out) std::memcpy(out, in, sizeof(T) * C);
-      return;
-    }
-    const auto c = relight(r, g, b, l_old, l_new);
+    const auto c = relight(in[0], in[1], in[2], l_old, l_new);
     for (int k = 0; k < 3; ++k) out[k] = c[static_cast<std::size_t>(k)];
   }
   if constexpr (C == 2 || C == 4) out[C - 1] = in[C - 1];
@@ -172,7 +166,7 @@ status life_views(image_view<const T, C> src, image_view<T, C> dst, const life_p
     if (!o.progress.report(static_cast<double>(g) / o.generations, "life_perturbation")) return status::cancelled();
     const life_random random(rng, static_cast<std::uint64_t>(g));
     const bool last = g + 1 == o.generations;
-    auto emit = [&](index_t y, const float* l_new, const index_t* fired, index_t n_fired) {
+    auto emit = [&](index_t y, const float* l_old, const float* l_new, const index_t* fired, index_t n_fired) {
       if (!last) {
         std::memcpy(next.data() + y * w, l_new, sizeof(float) * static_cast<std::size_t>(w));
         return;
@@ -181,11 +175,14 @@ status life_views(image_view<const T, C> src, image_view<T, C> dst, const life_p
       const T* in = src.row(y);
       T* out = dst.row(y);
       if (o.generations > 1) {  // earlier generations may have changed any pixel
-        for (index_t x = 0; x < w; ++x) relight_pixel<T, C>(in + x * C, out + x * C, l_new[x]);
+        for (index_t x = 0; x < w; ++x) relight_pixel<T, C>(in + x * C, out + x * C, pixel_lightness<T, C>(in + x * C), l_new[x]);
         return;
       }
       if (in != out) std::memcpy(out, in, sizeof(T) * static_cast<std::size_t>(w * C));
-      for (index_t k = 0; k < n_fired; ++k) relight_pixel<T, C>(in + fired[k] * C, out + fired[k] * C, l_new[fired[k]]);
+      for (index_t k = 0; k < n_fired; ++k) {
+        const index_t x = fired[k];
+        relight_pixel<T, C>(in + x * C, out + x * C, l_old[x], l_new[x]);
+      }
     };
     exec.parallel_for(0, bands, [&](index_t b) {
       life_scratch scratch(w);

@@ -109,8 +109,9 @@ struct life_scratch {
 
 /// Runs one generation on rows [y0, y1) of a W x H toroidal lightness field whose row y is written,
 /// padded, by fill(y, dst) (from a float field, or straight from the image for the first
-/// generation), calling emit(y, next_row, fired, n_fired) for each row with its new lightness and
-/// the n_fired columns whose lightness may have changed (all others keep theirs exactly).
+/// generation), calling emit(y, old_row, next_row, fired, n_fired) for each row with its lightness
+/// before and after and the n_fired columns whose lightness may have changed (all others keep
+/// theirs exactly).
 template <class Fill, class Emit>
 void life_band(index_t w, index_t h, index_t y0, index_t y1, const life_rule& rule, const life_random& random,
                life_scratch& s, Fill&& fill, Emit&& emit) {
@@ -133,7 +134,8 @@ void life_band(index_t w, index_t h, index_t y0, index_t y1, const life_rule& ru
       const auto x = static_cast<std::size_t>(s.fired[static_cast<std::size_t>(k)]);
       s.next[x] = s.lo[x] + (s.hi[x] - s.lo[x]) * random(base + x);
     }
-    emit(y, static_cast<const float*>(s.next.data()), static_cast<const index_t*>(s.fired.data()), n);
+    emit(y, static_cast<const float*>(ring[1] + 1), static_cast<const float*>(s.next.data()),
+         static_cast<const index_t*>(s.fired.data()), n);
     std::rotate(ring, ring + 1, ring + 3);
   }
 }
