@@ -204,7 +204,8 @@ status life_views(image_view<const T, C> src, image_view<T, C> dst, const life_p
 /// options (generations, thresholds, live test, seed, progress); exec (parallel over rows).
 /// Errors: invalid_argument for an empty input, mismatched sizes, or an option out of range (the
 /// message names it and its value); cancelled when options.progress asks to stop (out is then
-/// unspecified). Complexity O(W H generations) time, two float fields of W H extra memory.
+/// unspecified). Complexity O(W H generations) time; extra memory O(W) for one generation into a
+/// separate output (lightness is read straight from the image), else one or two float fields of W H.
 /// Output is a pure function of (in, options): bit-identical for every executor and thread count.
 template <Image I, WritableImage O, Executor E = serial_executor>
 [[nodiscard]] status life_perturbation(const I& in, O& out, const life_perturbation_options& options = {}, E&& exec = {}) {
