@@ -12,6 +12,7 @@
 
 int main(int argc, char** argv) {
   const std::string path = argc > 1 ? argv[1] : "fabric_texture.png";
+  // [snippet:fabric_texture]
   // main tones of a heather-green tweed, as relative weights
   auto tones = tessera::parse_palette("#1f3324:5,#4f6b3f:3,#b8b08a:1.5,#7a2e22:0.5");
   if (!tones) return std::fprintf(stderr, "%s\n", tones.error().to_string().c_str()), 1;
@@ -22,6 +23,7 @@ int main(int argc, char** argv) {
                                         .tile_size = 512};  // weave 512 x 512, tile it twice
   if (auto s = tessera::make_fabric(*tones, {.layout = tessera::source_layout::blocks, .seed = 7}, texture, options, pool); !s)
     return std::fprintf(stderr, "%s\n", s.to_string().c_str()), 1;
+  // [/snippet]
   if (auto s = tessera::write_png(path, texture); !s) return std::fprintf(stderr, "%s\n", s.to_string().c_str()), 1;
   // the weave only rearranges pixels and the perturbation only changes lightness, so the main tones stay
   const auto shares = tessera::dominant_tones(texture, 4);
