@@ -2,7 +2,7 @@
 // tones, weave it with the cat map, roughen it with the game-of-life perturbation, and tile the
 // periodic result over any texture size without seams.
 //
-//   example_32_fabric_texture [OUT.png]      (default: fabric_texture.png)
+//   example_32_fabric_texture [OUTPUT_DIR]      (writes fabric_texture.png; default: the current directory)
 #include <cstdio>
 #include <string>
 
@@ -11,7 +11,7 @@
 #include <tessera/io/png.hpp>
 
 int main(int argc, char** argv) {
-  const std::string path = argc > 1 ? argv[1] : "fabric_texture.png";
+  const std::string path = std::string(argc > 1 ? argv[1] : ".") + "/fabric_texture.png";
   // [snippet:fabric_texture]
   // main tones of a heather-green tweed, as relative weights
   auto tones = tessera::parse_palette("#1f3324:5,#4f6b3f:3,#b8b08a:1.5,#7a2e22:0.5");
