@@ -35,7 +35,8 @@ std::vector<double> oracle(std::vector<double> l, index_t w, index_t h, const li
           }
         const bool by_threshold = o.live_test == life_test::above_threshold;
         const int live = by_threshold ? above : nb, dead = by_threshold ? 8 - above : nd;
-        const double r = static_cast<double>(rng.bits(g, y * w + x) >> 40) / 16777216.0;
+        const std::uint64_t key = rng.bits(g), i = static_cast<std::uint64_t>(y * w + x);
+        const double r = static_cast<double>(mix64(key + (i + 1) * 0x9e3779b97f4a7c15ULL) >> 40) / 16777216.0;
         double out = c;
         if (dead >= o.dead_count || (o.crowding_count > 0 && live >= o.crowding_count)) {
           if (nd > 0) out = sd / nd + (c - sd / nd) * r;

@@ -12,7 +12,9 @@
 //   lives (brightens):  L' = L + (L_bright - L) r
 //   dies  (darkens):    L' = L_dim + (L - L_dim) r          r uniform in [0, 1]
 //
-// with r from counter_rng keyed by (seed, generation, pixel). Generations are synchronous.
+// with r from counter_rng keyed by (seed, generation, pixel): the generation's key rng.bits(g)
+// drives SplitMix64 indexed by the pixel (detail/life_kernels.hpp, life_random). Generations are
+// synchronous.
 //
 // Reading of the thresholds. §1.2 states the general rules with three numbers: a cell lives when
 // exactly M neighbours are alive (M = 3), dies when K neighbours are dead (K = 6), and dies of

@@ -29,21 +29,20 @@ struct life_rule {
   float threshold = 0.5f;
 };
 
-/// r in [0, 1) for pixel `index` of a generation: the top 24 bits of counter_rng::bits(generation,
-/// index) of the perturbation's generator, over 2^24 (exact in float). The generation's part of the
-/// hash is computed once per generation.
+/// r in [0, 1) for pixel `index` of a generation: SplitMix64 keyed by the perturbation's
+/// counter_rng, r = top 24 bits of mix64(rng.bits(generation) + (index + 1) * golden) / 2^24 (exact
+/// in float). The generation's key is hashed once; each pixel then costs one mix, and the value
+/// depends only on (seed, generation, pixel), never on the order of evaluation.
 class life_random {
  public:
-  life_random(const counter_rng& rng, std::uint64_t generation) noexcept : prefix_(rng.bits(generation)) {}
+  life_random(const counter_rng& rng, std::uint64_t generation) noexcept : key_(rng.bits(generation)) {}
   [[nodiscard]] float operator()(std::uint64_t index) const noexcept {
-    // hash_keys(base, g, i) = mix64(hash_keys(base, g) ^ mix64(i + golden)) (core/random.hpp); the
-    // tests check this equals rng.bits(g, i)
-    const std::uint64_t bits = mix64(prefix_ ^ mix64(index + 0x9e3779b97f4a7c15ULL));
+    const std::uint64_t bits = mix64(key_ + (index + 1) * 0x9e3779b97f4a7c15ULL);
     return static_cast<float>(bits >> 40) * 0x1.0p-24f;
   }
 
  private:
-  std::uint64_t prefix_;
+  std::uint64_t key_;
 };
 
 /// Copies row `src` (w values) into `dst` (w + 2 values) with one wrapped value at each end.
