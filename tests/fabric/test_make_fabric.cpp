@@ -73,6 +73,7 @@ TEST_CASE("make_fabric rejects bad input and can be cancelled", "[make_fabric]")
   const auto src = fabric_test::random_image<std::uint8_t, 3>(16, 16, 2);
   image_buffer<std::uint8_t, 3> out(16, 16);
   CHECK(make_fabric(src, out, {.tile_size = -2}).message().find("-2") != std::string::npos);
+  CHECK(make_fabric(src, out, {.tile_size = index_t{1} << 21}).code() == status_code::size_overflow);
   CHECK(make_fabric(src, out, {.perturbation = {.dead_count = 0}}).code() == status_code::invalid_argument);
   CHECK(make_fabric(palette{}, {}, out).code() == status_code::invalid_argument);
   image_view<const std::uint8_t, 3> empty;

@@ -44,11 +44,11 @@ struct fabric_options {
 };
 
 namespace detail {
-inline status check_fabric_size(index_t w, index_t h, const fabric_options& o, index_t& n) {
+inline status check_fabric_size(index_t w, index_t h, int channels, const fabric_options& o, index_t& n) {
   if (o.tile_size < 0)
     return status::invalid_argument(cat("make_fabric: options.tile_size must be >= 0 (0 = output size), got ", o.tile_size));
   n = o.tile_size > 0 ? o.tile_size : std::max(w, h);
-  return validate_image_extent(n, n, 1, "make_fabric: tile");
+  return validate_image_extent(n, n, std::max(channels, 3), "make_fabric: tile");
 }
 
 /// Cat map, perturbation and tiling of an N x N square in the output's format.
@@ -88,7 +88,7 @@ template <Image S, WritableImage O, Executor E = serial_executor>
   if (auto s = validate_image(out, "make_fabric: output"); !s) return s;
   if (auto s = detail::check_life_options(options.perturbation); !s) return s;
   index_t n = 0;
-  if (auto s = detail::check_fabric_size(width_of(out), height_of(out), options, n); !s) return s;
+  if (auto s = detail::check_fabric_size(width_of(out), height_of(out), channels_v<O>, options, n); !s) return s;
   if (!options.progress.report(0.0, "source")) return status::cancelled();
   using T = channel_t<O>;
   constexpr int C = channels_v<O>;
@@ -110,7 +110,7 @@ template <WritableImage O, Executor E = serial_executor>
   if (auto s = validate_image(out, "make_fabric: output"); !s) return s;
   if (auto s = detail::check_life_options(options.perturbation); !s) return s;
   index_t n = 0;
-  if (auto s = detail::check_fabric_size(width_of(out), height_of(out), options, n); !s) return s;
+  if (auto s = detail::check_fabric_size(width_of(out), height_of(out), channels_v<O>, options, n); !s) return s;
   if (!options.progress.report(0.0, "source")) return status::cancelled();
   image_buffer<channel_t<O>, channels_v<O>> square(n, n);
   if (auto s = make_source_image(square, tones, source); !s) return s;
@@ -192,7 +192,7 @@ template <WritableImage O, Executor E = serial_executor>
   r.options.progress = options.progress;
   if (r.photo) {
     index_t n = 0;
-    if (auto s = detail::check_fabric_size(width_of(out), height_of(out), r.options, n); !s) return s;
+    if (auto s = detail::check_fabric_size(width_of(out), height_of(out), channels_v<O>, r.options, n); !s) return s;
     auto photo = make_exemplar<float, 3>(*r.photo, {.width = n, .height = n, .seed = options.seed});
     if (!photo) return photo.error();
     return make_fabric(*photo, out, r.options, exec);
