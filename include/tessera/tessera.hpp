@@ -21,3 +21,34 @@
 #include "core/tile_coloring.hpp"
 #include "core/tri_mesh.hpp"
 #include "core/vec.hpp"
+
+// images: exemplars, metrics, quilting, Wang tiles (issue 4)
+#include "image/compose_tiles.hpp"
+#include "image/constrained_quilt.hpp"
+#include "image/exemplars.hpp"
+#include "image/metrics.hpp"
+#include "image/quilt.hpp"
+#include "image/wang_atlas.hpp"
+#include "image/wang_seam_quality.hpp"
+#include "image/wang_tiles.hpp"
+
+// tile colourings and tile sets
+#include "tiling/complete_tile_set.hpp"
+#include "tiling/hash_coloring.hpp"
+#include "tiling/periodic_coloring.hpp"
+#include "tiling/scanline_coloring.hpp"
+#include "tiling/tile_lookup.hpp"
+#include "tiling/tile_manifest.hpp"
+#include "tiling/tile_set_edges.hpp"
+
+// fabric (paper 001)
+#include "fabric/cat_map.hpp"
+#include "fabric/cat_map_period.hpp"
+#include "fabric/hls.hpp"
+#include "fabric/life_perturbation.hpp"
+#include "fabric/make_fabric.hpp"
+#include "fabric/source_image.hpp"
+#include "fabric/tone_proportions.hpp"
+
+// rendering
+#include "render/triangle_rasterizer.hpp"

@@ -48,7 +48,10 @@ inline void insert_top_k(std::vector<neighbor>& best, std::size_t k, const neigh
 /// (m x D). Uses the D x D covariance when D <= m, else the m x m Gram matrix. Directions with no
 /// variance are dropped; the result has at least one column. Columns are re-orthonormalized (twice
 /// modified Gram-Schmidt) so projections are exact lower bounds up to rounding.
-inline Eigen::MatrixXd pca_basis(Eigen::MatrixXd samples, int dims) {
+/// (A template only so that the eigen solver is instantiated by the translation units that use it,
+/// not by every file that includes this header.)
+template <class Matrix = Eigen::MatrixXd>
+Matrix pca_basis(Matrix samples, int dims) {
   const Eigen::Index m = samples.rows(), D = samples.cols();
   TESSERA_ASSERT(m >= 1 && D >= 1 && dims >= 1);
   const Eigen::RowVectorXd mean = samples.colwise().mean();
@@ -96,7 +99,10 @@ class lower_bound_knn {
   lower_bound_knn() = default;
   /// `projected`: n rows of d coordinates. `scale`: a typical squared vector length, for the
   /// absolute rounding margin of the pruning radius.
-  lower_bound_knn(std::vector<double> projected, index_t n, int d, double scale)
+  /// (A template only so that the kd-tree is instantiated where it is built, not wherever this
+  /// header is included.)
+  template <class Points = std::vector<double>>
+  lower_bound_knn(Points projected, index_t n, int d, double scale)
       : data_(std::make_unique<dataset>(dataset{std::move(projected), n, d})), margin_(1e-12 * std::max(scale, 1e-300)) {
     TESSERA_ASSERT(n >= 1 && d >= 1 && static_cast<index_t>(data_->points.size()) == n * d);
     tree_ = std::make_unique<tree>(d, *data_, nanoflann::KDTreeSingleIndexAdaptorParams(16));
