@@ -52,6 +52,9 @@ inline bool canonical_less(const poly_vertex& a, const poly_vertex& b) noexcept 
 template <class Dist, class Lerp>
 void clip_polygon(polygon& p, Dist&& dist, Lerp&& lerp) {
   if (p.n == 0) return;
+  bool all_inside = true;
+  for (int i = 0; i < p.n && all_inside; ++i) all_inside = dist(p.v[static_cast<std::size_t>(i)]) >= 0;
+  if (all_inside) return;
   polygon out;
   for (int i = 0; i < p.n; ++i) {
     const poly_vertex& a = p.v[static_cast<std::size_t>(i)];
