@@ -6,11 +6,11 @@
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include <tessera/image/exemplars.hpp>
+#include <tessera/io/mesh_file.hpp>
 #include <tessera/io/png.hpp>
 #include <tessera/terrain/assign_scale_field.hpp>
 #include <tessera/terrain/build_exemplar_pyramid.hpp>
@@ -30,36 +30,6 @@ using tessera::index_t;
 using tessera::result;
 using tessera::status;
 using rgb_image = tessera::image_buffer<std::uint8_t, 3>;
-
-/// Minimal Wavefront OBJ reader: `v x y z` and `f` lines (polygons fan-triangulated; `i/t/n` and
-/// negative indices accepted); everything else is ignored.
-result<tessera::tri_mesh> read_obj(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) return status::io_error(path + ": cannot open file");
-  tessera::tri_mesh m;
-  std::string line;
-  for (index_t number = 1; std::getline(in, line); ++number) {
-    std::istringstream ss(line);
-    std::string tag;
-    ss >> tag;
-    if (tag == "v") {
-      tessera::vec3 p;
-      if (!(ss >> p.x >> p.y >> p.z)) return status::parse_error(path + ":" + std::to_string(number) + ": bad vertex");
-      m.add_vertex(p);
-    } else if (tag == "f") {
-      std::vector<index_t> idx;
-      for (std::string tok; ss >> tok;) {
-        char* end = nullptr;
-        const long long i = std::strtoll(tok.c_str(), &end, 10);
-        if (end == tok.c_str() || i == 0) return status::parse_error(path + ":" + std::to_string(number) + ": bad face index '" + tok + "'");
-        idx.push_back(i > 0 ? static_cast<index_t>(i - 1) : m.num_vertices() + static_cast<index_t>(i));
-      }
-      if (idx.size() < 3) return status::parse_error(path + ":" + std::to_string(number) + ": a face needs 3 vertices");
-      for (std::size_t k = 1; k + 1 < idx.size(); ++k) m.add_face(idx[0], idx[k], idx[k + 1]);
-    }
-  }
-  return m;
-}
 
 result<rgb_image> load_exemplar(const cli::arguments& args) {
   const std::string name = args.str("--exemplar");
@@ -147,7 +117,7 @@ int run_terrain(const cli::arguments& args) {
   auto exemplar = load_exemplar(args);
   if (!exemplar) return fail(exemplar.error());
   result<tessera::tri_mesh> source = args.has("--mesh")
-                                         ? read_obj(args.str("--mesh"))
+                                         ? tessera::read_mesh(args.str("--mesh"))
                                          : tessera::make_terrain({.cells_x = *grid, .cells_y = *grid, .height = *relief, .seed = args.seed()}, pool);
   if (!source) return fail(source.error());
   auto mesh = tessera::prepare_terrain_mesh(*source, args.has("--mesh") ? args.str("--mesh") : "terrain");
@@ -224,7 +194,7 @@ std::vector<cli::option_spec> terrain_options() {
   std::vector<cli::option_spec> o = {
       {"--exemplar", "E", "exemplar PNG, or a procedural kind: grass, sand, rock, bricks, cells, weave, dots (required)"},
       {"--exemplar-size", "N", "side of a procedural exemplar (default 256)"},
-      {"--mesh", "M.obj", "terrain mesh (OBJ, triangles or polygons); default: a procedural heightfield"},
+      {"--mesh", "M.obj", "terrain mesh (.obj, .off or .ply; polygons are fan-triangulated); default: a procedural heightfield"},
       {"--grid", "N", "procedural heightfield of N x N cells, 2 N^2 triangles (default 128; --seed picks the relief)"},
       {"--height", "H", "relief of the procedural heightfield on its 100 x 100 extent (default 14; 0 = a flat plane)"},
       {"--camera", "P", "view preset grazing, oblique or overview (default grazing); --eye/--target/--fov override it"},
