@@ -109,6 +109,9 @@ int run_terrain(const cli::arguments& args) {
   for (const status* s : {&min_scale.error(), &levels.error(), &feather.error(), &grid.error(), &relief.error()})
     if (!s->ok()) return fail(*s);
   const std::string mode = args.str("--mode", "stepped"), placement = args.str("--placement", "away");
+  const std::string continuation = args.str("--continuation", "oldest");
+  if (continuation != "oldest" && continuation != "first")
+    return fail(status::invalid_argument("--continuation expects oldest or first, got '" + continuation + "'"));
   if (mode != "stepped" && mode != "continuous") return fail(status::invalid_argument("--mode expects stepped or continuous, got '" + mode + "'"));
   if (placement != "away" && placement != "uniform")
     return fail(status::invalid_argument("--placement expects away or uniform, got '" + placement + "'"));
@@ -143,7 +146,8 @@ int run_terrain(const cli::arguments& args) {
   if (!error) return fail(error);
   const tessera::triangle_synthesis_options syn_opts{
       .seed = args.seed(),
-      .placement = placement == "uniform" ? tessera::placement_strategy::uniform : tessera::placement_strategy::away_from_neighbors};
+      .placement = placement == "uniform" ? tessera::placement_strategy::uniform : tessera::placement_strategy::away_from_neighbors,
+      .continuation = continuation == "first" ? tessera::continuation_rule::first_neighbor : tessera::continuation_rule::oldest_placement};
   const double syn_ms = cli::median_ms(args.repeat(), [&] {
     if (error.ok()) error = tessera::synthesize_triangles(*mesh, proj, field, exemplar->width(), exemplar->height(), syn_opts, syn);
   });
@@ -154,6 +158,12 @@ int run_terrain(const cli::arguments& args) {
   rgb_image frame(vp->first, vp->second);
   const auto shading = args.str("--shading", "texture");
   tessera::render_terrain_options render_opts{.feather = *feather};
+  tessera::render_tiled_options tiled_opts;
+  if (args.has("--sun")) {
+    auto sun = vec_option(args, "--sun");
+    if (!sun) return fail(sun.error());
+    render_opts.sun = tiled_opts.sun = {sun->x, sun->y, sun->z};
+  }
   if (shading == "scale") render_opts.shading = tessera::terrain_shading::scale_field;
   else if (shading == "regions") render_opts.shading = tessera::terrain_shading::regions;
   else if (shading != "texture") return fail(status::invalid_argument("--shading expects texture, scale or regions, got '" + shading + "'"));
@@ -170,7 +180,7 @@ int run_terrain(const cli::arguments& args) {
   if (args.has("--tiled-out")) {
     auto tex = tessera::prepare_tiled_texture(*exemplar, pool);
     if (!tex) return fail(tex.error());
-    if (auto s = tessera::render_tiled_frame(*mesh, proj, *tex, frame, {}, pool); !s) return fail(s);
+    if (auto s = tessera::render_tiled_frame(*mesh, proj, *tex, frame, tiled_opts, pool); !s) return fail(s);
     if (auto s = tessera::write_png(args.str("--tiled-out"), frame); !s) return fail(s);
   }
   if (args.has("--uv-out"))
@@ -207,8 +217,11 @@ std::vector<cli::option_spec> terrain_options() {
       {"--levels", "N", "exemplar pyramid levels (default 0: steps of at most 0.008 in scale)"},
       {"--mode", "M", "scale field: stepped (the paper) or continuous (default stepped)"},
       {"--placement", "P", "restart placement: away (from synthesized neighbours) or uniform (the paper) (default away)"},
+      {"--continuation", "R", "which synthesized neighbour's coordinates to continue: oldest (placement) or first (in side "
+                              "order, the paper read literally) (default oldest)"},
       {"--feather", "PX", "seam blending width in pixels (default 3; 0 = none)"},
       {"--shading", "S", "frame shading: texture, scale or regions (default texture)"},
+      {"--sun", "x,y,z", "direction towards a light: flat Lambert shading of the frames (default: unlit)"},
       {"--out", "F.png", "the synthesized frame (required)"},
       {"--scale-out", "F.png", "also write the colour-coded scale field (yellow: scale 1, purple: min-scale)"},
       {"--tiled-out", "F.png", "also write the same frame with plain tiled texture mapping"},

@@ -4,7 +4,7 @@ set(_o ${TESSERA_CLI_OUT})
 set(_small --exemplar grass --exemplar-size 64 --grid 24 --viewport 160x90)
 
 add_test(NAME "cli: terrain frame with stats"
-         COMMAND ${_t} terrain ${_small} --out ${_o}/terrain.png --scale-out ${_o}/terrain_scale.png
+         COMMAND ${_t} terrain ${_small} --sun 1,-1,2 --out ${_o}/terrain.png --scale-out ${_o}/terrain_scale.png
                  --tiled-out ${_o}/terrain_tiled.png --uv-out ${_o}/terrain_uv.bin --stats --threads 2)
 set_tests_properties("cli: terrain frame with stats" PROPERTIES PASS_REGULAR_EXPRESSION
   "^\\{\"triangles\":1152,\"visible\":[0-9]+,\"levels\":[0-9]+,\"max_level_jump\":[01],\"restarts\":[0-9]+,\"continuous_edges\":[0-9.e-]+,\"scale_field_ms\":[0-9.e-]+,\"synthesis_ms\":[0-9.e-]+,\"render_ms\":[0-9.e-]+\\}")

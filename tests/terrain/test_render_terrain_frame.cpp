@@ -196,3 +196,26 @@ TEST_CASE("render_terrain_frame: bad input and an empty view", "[terrain][render
   for (index_t y = 0; y < 90; ++y)
     for (index_t x = 0; x < 160; ++x) REQUIRE(out.read(x, y) == std::array<float, 3>{0, 0, 1});
 }
+
+TEST_CASE("render_terrain_frame: flat Lambert lighting from a sun direction", "[terrain][render]") {
+  const frame_scene s = make_frame_scene();
+  const auto vb = visibility(s);
+  tessera::image_buffer<float, 3> unlit(160, 90), lit(160, 90);
+  REQUIRE(tessera::render_terrain_frame(s.mesh, s.proj, s.field, s.syn, s.pyramid, unlit));
+  REQUIRE(tessera::render_terrain_frame(s.mesh, s.proj, s.field, s.syn, s.pyramid, lit, {.sun = {0, 0, 2}, .ambient = 0.25}));
+  for (index_t y = 0; y < 90; y += 3)
+    for (index_t x = 0; x < 160; x += 3) {
+      const std::int32_t f = vb.face[static_cast<std::size_t>(y * 160 + x)];
+      if (f < 0) {
+        REQUIRE(lit.read(x, y) == unlit.read(x, y));  // the background is not lit
+        continue;
+      }
+      const auto& fv = s.mesh.faces[static_cast<std::size_t>(f)];
+      const tessera::vec3 n = tessera::normalized(tessera::cross(s.mesh.position(fv[1]) - s.mesh.position(fv[0]),
+                                                                 s.mesh.position(fv[2]) - s.mesh.position(fv[0])));
+      const double light = 0.25 + 0.75 * std::abs(n.z);  // heightfield faces look up, towards the eye
+      for (std::size_t k = 0; k < 3; ++k) REQUIRE(lit.read(x, y)[k] == Approx(unlit.read(x, y)[k] * light).margin(1e-5));
+    }
+  REQUIRE(tessera::render_terrain_frame(s.mesh, s.proj, s.field, s.syn, s.pyramid, lit, {.ambient = 2}).message().find("ambient") !=
+          std::string::npos);
+}

@@ -52,6 +52,13 @@ TEST_CASE("render_tiled_frame: executors, errors", "[terrain][tiled]") {
   tessera::image_buffer<std::uint8_t, 3> wrong(16, 16);
   REQUIRE(tessera::render_tiled_frame(mesh, proj, tex, wrong).message().find("viewport") != std::string::npos);
   REQUIRE(tessera::render_tiled_frame(mesh, proj, tex, a, {.repeat = -1}).message().find("repeat") != std::string::npos);
+  REQUIRE(tessera::render_tiled_frame(mesh, proj, tex, a, {.sun = {0, 0, NAN}}).message().find("sun") != std::string::npos);
+  tessera::image_buffer<std::uint8_t, 3> lit(160, 90);
+  REQUIRE(tessera::render_tiled_frame(mesh, proj, tex, lit, {.sun = {1, 0, 0.2}, .ambient = 0.1}));
+  long darker = 0;
+  for (index_t y = 0; y < 90; ++y)
+    for (index_t x = 0; x < 160; ++x) darker += lit.read(x, y)[1] < a.read(x, y)[1] ? 1 : 0;
+  REQUIRE(darker > 160 * 20);
   REQUIRE_FALSE(tessera::render_tiled_frame(mesh, proj, tessera::tiled_texture<std::uint8_t, 3>{}, a));
   REQUIRE_FALSE(tessera::prepare_tiled_texture(tessera::image_buffer<std::uint8_t, 3>{}));
 }

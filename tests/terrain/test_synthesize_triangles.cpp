@@ -30,7 +30,8 @@ bool fits(const scene& s, std::int32_t f, tessera::vec2 o, double W, double H, d
 }
 
 // Replays the recorded order and checks every rule of §2.3 as documented.
-void check_rules(const scene& s, const tessera::triangle_synthesis& r, double W, double H, double m) {
+void check_rules(const scene& s, const tessera::triangle_synthesis& r, double W, double H, double m,
+                 tessera::continuation_rule rule = tessera::continuation_rule::oldest_placement) {
   const auto nf = static_cast<std::size_t>(s.mesh.num_faces());
   REQUIRE(r.order.size() == s.proj.visible.size());
   std::vector<index_t> pos(nf, -1);
@@ -50,10 +51,12 @@ void check_rules(const scene& s, const tessera::triangle_synthesis& r, double W,
         earlier.push_back(n);
         if (fits(s, f, r.offset[static_cast<std::size_t>(n)], W, H, m)) fitting.push_back(n);
       }
-    if (!fitting.empty()) {  // identity map from the oldest fitting placement
-      const auto oldest = *std::min_element(fitting.begin(), fitting.end(), [&](std::int32_t a, std::int32_t b) {
-        return r.region[static_cast<std::size_t>(a)] < r.region[static_cast<std::size_t>(b)];
-      });
+    if (!fitting.empty()) {  // identity map from the oldest fitting placement (or the first fitting neighbour)
+      const auto oldest = rule == tessera::continuation_rule::first_neighbor
+                              ? fitting.front()
+                              : *std::min_element(fitting.begin(), fitting.end(), [&](std::int32_t a, std::int32_t b) {
+                                  return r.region[static_cast<std::size_t>(a)] < r.region[static_cast<std::size_t>(b)];
+                                });
       REQUIRE(r.region[fi] == r.region[static_cast<std::size_t>(oldest)]);
       REQUIRE(r.offset[fi] == r.offset[static_cast<std::size_t>(oldest)]);
     } else {  // a new placement, inside the level image unless the face is too big for it
@@ -98,6 +101,9 @@ TEST_CASE("synthesize_triangles: every rule of §2.3 holds on the recorded order
       check_rules(s, r, 64, 64, 1.0);
       REQUIRE(r.restarts > 0);
       REQUIRE(r.components == 1);
+      const auto literal = tessera::synthesize_triangles(
+          s.mesh, s.proj, s.field, 64, 64, {.seed = 3, .placement = placement, .continuation = tessera::continuation_rule::first_neighbor}).value();
+      check_rules(s, literal, 64, 64, 1.0, tessera::continuation_rule::first_neighbor);
     }
   }
 }

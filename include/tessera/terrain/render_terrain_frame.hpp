@@ -37,7 +37,9 @@ enum class terrain_shading {
 struct render_terrain_options {
   terrain_shading shading = terrain_shading::texture;
   double feather = 3.0;  ///< blend width in pixels on each side of a seam (0: none), 0 to 64
-  std::array<float, 4> background = {0.62f, 0.74f, 0.88f, 1.0f};  ///< unit RGBA where no triangle is
+  std::array<float, 4> background = {0.62f, 0.74f, 0.88f, 1.0f};
+  std::array<double, 3> sun = {0, 0, 0};  ///< direction towards a light for flat Lambert shading; zero: unlit
+  double ambient = 0.35;                  ///< light on faces turned away from the sun, in [0, 1]  ///< unit RGBA where no triangle is
   index_t tile_size = 64;                                         ///< rasterizer tile
   tessera::progress progress = {};
 };
@@ -80,11 +82,14 @@ status render_terrain_frame(const terrain_mesh& mesh, const screen_projection& p
   if (pyramid.num_levels() == 0) return status::invalid_argument("the exemplar pyramid is empty");
   if (!(opts.feather >= 0 && opts.feather <= 64))
     return status::invalid_argument(detail::cat("feather must be 0 to 64 pixels, got ", opts.feather));
+  if (!(opts.ambient >= 0 && opts.ambient <= 1) || !is_finite(vec3{opts.sun[0], opts.sun[1], opts.sun[2]}))
+    return status::invalid_argument(detail::cat("ambient must be in [0, 1] and sun finite, got ambient ", opts.ambient));
   detail::visibility_buffer vb;
   if (auto s = detail::render_visibility(mesh, proj, vb, false, opts.tile_size, exec); !s) return s;
   if (!opts.progress.report(0.4, "render terrain frame")) return status::cancelled();
   const detail::seam_feather feather(mesh, proj, field, syn, vb, opts.shading == terrain_shading::texture ? opts.feather : 0.0, exec);
   if (!opts.progress.report(0.6, "render terrain frame")) return status::cancelled();
+  const std::vector<float> light = detail::face_light(mesh, proj, opts.sun, opts.ambient, exec);
   const index_t w = proj.width, h = proj.height;
   image_buffer<float, C> frame(w, h);
   const auto bg = convert_pixel<pixel<float, C>>(pixel<float, 4>{opts.background[0], opts.background[1], opts.background[2],
@@ -113,6 +118,7 @@ status render_terrain_frame(const terrain_mesh& mesh, const screen_projection& p
             for (std::size_t k = 0; k < static_cast<std::size_t>(C); ++k) c[k] += p.weight * (o[k] - c[k]);
           }
         }
+        if (!light.empty()) detail::apply_light(c, light[i]);
       }
       float* dst = frame.pixel_ptr(x, y);
       for (std::size_t k = 0; k < static_cast<std::size_t>(C); ++k) dst[k] = c[k];

@@ -112,6 +112,8 @@ struct render_tiled_options {
   double repeat = 0;
   bool mipmaps = true;  ///< trilinear mipmapping (false: level 0 only, which aliases in the distance)
   std::array<float, 4> background = {0.62f, 0.74f, 0.88f, 1.0f};
+  std::array<double, 3> sun = {0, 0, 0};  ///< direction towards a light for flat Lambert shading; zero: unlit
+  double ambient = 0.35;                  ///< light on faces turned away from the sun, in [0, 1]
   index_t tile_size = 64;
 };
 
@@ -148,10 +150,13 @@ status render_tiled_frame(const terrain_mesh& mesh, const screen_projection& pro
   if (tex.num_levels() == 0) return status::invalid_argument("the tiled texture is empty");
   if (!(opts.repeat >= 0) || !std::isfinite(opts.repeat))
     return status::invalid_argument(detail::cat("repeat must be >= 0 and finite, got ", opts.repeat));
+  if (!(opts.ambient >= 0 && opts.ambient <= 1) || !is_finite(vec3{opts.sun[0], opts.sun[1], opts.sun[2]}))
+    return status::invalid_argument(detail::cat("ambient must be in [0, 1] and sun finite, got ambient ", opts.ambient));
   double repeat = opts.repeat > 0 ? opts.repeat : auto_tiled_repeat(mesh, proj, tex.width());
   if (!(repeat > 0)) repeat = 1;
   detail::visibility_buffer vb;
   if (auto s = detail::render_visibility(mesh, proj, vb, true, opts.tile_size, exec); !s) return s;
+  const std::vector<float> light = detail::face_light(mesh, proj, opts.sun, opts.ambient, exec);
   const index_t w = proj.width, h = proj.height;
   const double su = static_cast<double>(tex.width()) / repeat, sv = static_cast<double>(tex.height()) / repeat;
   const auto bg = convert_pixel<pixel<float, C>>(pixel<float, 4>{opts.background[0], opts.background[1], opts.background[2],
@@ -177,6 +182,7 @@ status render_tiled_frame(const terrain_mesh& mesh, const screen_projection& pro
           lod = rho > 1 ? std::log2(rho) : 0.0;
         }
         c = tex.sample(u, v, lod);
+        if (!light.empty()) detail::apply_light(c, light[static_cast<std::size_t>(vb.face[i])]);
       }
       float* dst = frame.pixel_ptr(x, y);
       for (std::size_t k = 0; k < static_cast<std::size_t>(C); ++k) dst[k] = c[k];

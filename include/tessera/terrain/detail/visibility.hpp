@@ -4,6 +4,7 @@
 // interpolated world position.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <limits>
@@ -56,6 +57,33 @@ status render_visibility(const terrain_mesh& mesh, const screen_projection& proj
         }
       },
       rasterize_options{.tile_size = tile_size}, exec);
+}
+
+/// Per-face light factor ambient + (1 - ambient) max(0, n . sun) for flat Lambert shading, n the
+/// face normal turned towards the eye (so either winding works); empty when `sun` is zero.
+template <class E>
+std::vector<float> face_light(const terrain_mesh& mesh, const screen_projection& proj, const std::array<double, 3>& sun,
+                              double ambient, E& exec) {
+  std::vector<float> light;
+  const vec3 l = normalized(vec3{sun[0], sun[1], sun[2]});
+  if (norm(l) == 0) return light;
+  light.assign(static_cast<std::size_t>(mesh.num_faces()), 1.0f);
+  exec.parallel_for(0, proj.num_visible(), [&](index_t i) {
+    const std::int32_t f = proj.visible[static_cast<std::size_t>(i)];
+    const auto& fv = mesh.faces[static_cast<std::size_t>(f)];
+    const vec3 a = mesh.position(fv[0]);
+    vec3 n = normalized(cross(mesh.position(fv[1]) - a, mesh.position(fv[2]) - a));
+    if (dot(n, proj.eye - a) < 0) n = -n;
+    light[static_cast<std::size_t>(f)] = static_cast<float>(ambient + (1 - ambient) * std::max(0.0, dot(n, l)));
+  });
+  return light;
+}
+
+/// Scales the colour channels (not alpha) of a unit pixel by a light factor.
+template <std::size_t C>
+void apply_light(std::array<float, C>& c, float light) noexcept {
+  constexpr std::size_t colour = C == 2 ? 1 : C == 4 ? 3 : C;
+  for (std::size_t k = 0; k < colour; ++k) c[k] *= light;
 }
 
 }  // namespace detail
