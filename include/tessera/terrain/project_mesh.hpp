@@ -135,7 +135,7 @@ status project_mesh(const terrain_mesh& mesh, const terrain_camera& camera, scre
         x0 = std::min({s0.x, s1.x, s2.x}), x1 = std::max({s0.x, s1.x, s2.x});
         y0 = std::min({s0.y, s1.y, s2.y}), y1 = std::max({s0.y, s1.y, s2.y});
       } else {
-        detail::raster::polygon poly;
+        detail::raster::polygon poly{};  // rare path: zero-filled keeps the compiler sure of initialization
         std::array<std::array<double, 4>, 3> t;
         for (int k = 0; k < 3; ++k) t[static_cast<std::size_t>(k)] = out.clip[static_cast<std::size_t>(face[static_cast<std::size_t>(k)])];
         detail::raster::clip_polygon_to_screen(t, {0, 0, W, H}, zo, poly);
