@@ -150,31 +150,21 @@ void BM_Projection(benchmark::State& state) {
 BENCHMARK(BM_Projection)->Arg(10000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // 1920 x 1080 frames of the same scene: synthesized (with seam feathering) and plain tiled
-void BM_RenderSynthesized(benchmark::State& state) {
+template <bool Synthesized>
+void BM_Render(benchmark::State& state) {
   scene& s = get_scene(state.range(0));
   tessera::image_buffer<std::uint8_t, 3> frame(frame_w, frame_h);
   for (auto _ : state) {
-    (void)tessera::render_terrain_frame(s.mesh, s.proj, s.field, s.syn, pyramid(), frame, {}, pool());
+    if constexpr (Synthesized) (void)tessera::render_terrain_frame(s.mesh, s.proj, s.field, s.syn, pyramid(), frame, {}, pool());
+    else (void)tessera::render_tiled_frame(s.mesh, s.proj, tiled(), frame, {}, pool());
     benchmark::DoNotOptimize(frame.data());
   }
   set_counters(state, s);
   state.counters["pixels/s"] = benchmark::Counter(static_cast<double>(frame_w * frame_h) * static_cast<double>(state.iterations()),
                                                   benchmark::Counter::kIsRate);
 }
-BENCHMARK(BM_RenderSynthesized)->Arg(10000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
-
-void BM_RenderTiled(benchmark::State& state) {
-  scene& s = get_scene(state.range(0));
-  tessera::image_buffer<std::uint8_t, 3> frame(frame_w, frame_h);
-  for (auto _ : state) {
-    (void)tessera::render_tiled_frame(s.mesh, s.proj, tiled(), frame, {}, pool());
-    benchmark::DoNotOptimize(frame.data());
-  }
-  set_counters(state, s);
-  state.counters["pixels/s"] = benchmark::Counter(static_cast<double>(frame_w * frame_h) * static_cast<double>(state.iterations()),
-                                                  benchmark::Counter::kIsRate);
-}
-BENCHMARK(BM_RenderTiled)->Arg(10000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Render<true>)->Name("BM_RenderSynthesized")->Arg(10000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Render<false>)->Name("BM_RenderTiled")->Arg(10000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void BM_MemcpyFrame(benchmark::State& state) {
   std::vector<std::uint8_t> a(static_cast<std::size_t>(frame_w * frame_h * 3), 7), b(a.size());

@@ -89,26 +89,11 @@ class exemplar_pyramid {
   friend result<exemplar_pyramid<T2, C2>> detail::build_pyramid_from_buffer(const image_buffer<T2, C2>&,
                                                                             const exemplar_pyramid_options&, E&);
 
-  /// Bilinear sample of level k at exemplar coordinates (ex, ey).
+  /// Bilinear sample of level k at exemplar coordinates (ex, ey), clamped at the border.
   [[nodiscard]] std::array<float, C> bilinear(index_t k, double ex, double ey) const noexcept {
     const image_buffer<T, C>& img = levels_[static_cast<std::size_t>(k)];
-    const double x = ex * static_cast<double>(img.width()) / static_cast<double>(width_) - 0.5;
-    const double y = ey * static_cast<double>(img.height()) / static_cast<double>(height_) - 0.5;
-    const double fx0 = std::floor(x), fy0 = std::floor(y);
-    const auto fx = static_cast<float>(x - fx0), fy = static_cast<float>(y - fy0);
-    const index_t w = img.width(), h = img.height();
-    const auto clampi = [](double v, index_t hi) {
-      return v <= 0 ? index_t{0} : v >= static_cast<double>(hi) ? hi : static_cast<index_t>(v);
-    };
-    const index_t x0 = clampi(fx0, w - 1), x1 = clampi(fx0 + 1, w - 1), y0 = clampi(fy0, h - 1), y1 = clampi(fy0 + 1, h - 1);
-    const T *p00 = img.pixel_ptr(x0, y0), *p10 = img.pixel_ptr(x1, y0), *p01 = img.pixel_ptr(x0, y1), *p11 = img.pixel_ptr(x1, y1);
-    std::array<float, C> out;
-    for (int c = 0; c < C; ++c) {
-      const float top = channel_to_unit(p00[c]) + fx * (channel_to_unit(p10[c]) - channel_to_unit(p00[c]));
-      const float bot = channel_to_unit(p01[c]) + fx * (channel_to_unit(p11[c]) - channel_to_unit(p01[c]));
-      out[static_cast<std::size_t>(c)] = top + fy * (bot - top);
-    }
-    return out;
+    return detail::bilinear_sample(img, ex * static_cast<double>(img.width()) / static_cast<double>(width_) - 0.5,
+                                   ey * static_cast<double>(img.height()) / static_cast<double>(height_) - 0.5, detail::clamp_index{});
   }
 
   std::vector<image_buffer<T, C>> levels_;

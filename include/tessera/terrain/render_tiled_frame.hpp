@@ -63,24 +63,8 @@ class tiled_texture {
 
   [[nodiscard]] std::array<float, C> bilinear(index_t k, double u, double v) const noexcept {
     const image_buffer<T, C>& img = levels_[static_cast<std::size_t>(k)];
-    const index_t w = img.width(), h = img.height();
-    const double x = u * static_cast<double>(w) / static_cast<double>(width()) - 0.5;
-    const double y = v * static_cast<double>(h) / static_cast<double>(height()) - 0.5;
-    const double fx0 = std::floor(x), fy0 = std::floor(y);
-    const auto wrap = [](double i, index_t n) {
-      const double m = std::fmod(i, static_cast<double>(n));
-      return static_cast<index_t>(m < 0 ? m + static_cast<double>(n) : m) % n;
-    };
-    const index_t x0 = wrap(fx0, w), x1 = (x0 + 1) % w, y0 = wrap(fy0, h), y1 = (y0 + 1) % h;
-    const auto fx = static_cast<float>(x - fx0), fy = static_cast<float>(y - fy0);
-    const T *p00 = img.pixel_ptr(x0, y0), *p10 = img.pixel_ptr(x1, y0), *p01 = img.pixel_ptr(x0, y1), *p11 = img.pixel_ptr(x1, y1);
-    std::array<float, C> out;
-    for (int c = 0; c < C; ++c) {
-      const float top = channel_to_unit(p00[c]) + fx * (channel_to_unit(p10[c]) - channel_to_unit(p00[c]));
-      const float bot = channel_to_unit(p01[c]) + fx * (channel_to_unit(p11[c]) - channel_to_unit(p01[c]));
-      out[static_cast<std::size_t>(c)] = top + fy * (bot - top);
-    }
-    return out;
+    return detail::bilinear_sample(img, u * static_cast<double>(img.width()) / static_cast<double>(width()) - 0.5,
+                                   v * static_cast<double>(img.height()) / static_cast<double>(height()) - 0.5, detail::wrap_index{});
   }
 };
 

@@ -89,15 +89,8 @@ inline poly_vertex lerp_clip(const poly_vertex& a, const poly_vertex& b, double 
 /// Interpolation in screen space: position, depth and 1/w are linear there; corner weights are
 /// linear in 3D, so they interpolate perspective-correctly through 1/w.
 inline poly_vertex lerp_screen(const poly_vertex& a, const poly_vertex& b, double t) noexcept {
-  poly_vertex r;
-  r.x = a.x + t * (b.x - a.x);
-  r.y = a.y + t * (b.y - a.y);
-  r.z = a.z + t * (b.z - a.z);
-  r.w = a.w + t * (b.w - a.w);
-  for (int k = 0; k < 3; ++k) {
-    const auto i = static_cast<std::size_t>(k);
-    r.corner[i] = (a.corner[i] * a.w + t * (b.corner[i] * b.w - a.corner[i] * a.w)) / r.w;
-  }
+  poly_vertex r = lerp_clip(a, b, t);
+  for (std::size_t k = 0; k < 3; ++k) r.corner[k] = (a.corner[k] * a.w + t * (b.corner[k] * b.w - a.corner[k] * a.w)) / r.w;
   return r;
 }
 

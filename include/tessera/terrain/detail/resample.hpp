@@ -4,10 +4,12 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
 #include "../../core/config.hpp"
+#include "../../core/image.hpp"
 
 TESSERA_NAMESPACE_BEGIN
 
@@ -89,6 +91,40 @@ std::vector<float> resample_image(const float* src, index_t sw, index_t sh, int 
   });
   return out;
 }
+
+/// Bilinear sample of an image of C channels of T (as unit floats) at continuous pixel coordinates
+/// (x, y) with pixel centres on integers; `index(i, n)` maps an integer coordinate into [0, n)
+/// (clamping or wrapping).
+template <class Img, class Index>
+std::array<float, Img::channels> bilinear_sample(const Img& img, double x, double y, Index index) noexcept {
+  constexpr int C = Img::channels;
+  const double fx0 = std::floor(x), fy0 = std::floor(y);
+  const auto fx = static_cast<float>(x - fx0), fy = static_cast<float>(y - fy0);
+  const index_t w = img.width(), h = img.height();
+  const index_t x0 = index(fx0, w), x1 = index(fx0 + 1, w), y0 = index(fy0, h), y1 = index(fy0 + 1, h);
+  const auto *p00 = img.pixel_ptr(x0, y0), *p10 = img.pixel_ptr(x1, y0), *p01 = img.pixel_ptr(x0, y1), *p11 = img.pixel_ptr(x1, y1);
+  std::array<float, C> out;
+  for (int c = 0; c < C; ++c) {
+    const float top = channel_to_unit(p00[c]) + fx * (channel_to_unit(p10[c]) - channel_to_unit(p00[c]));
+    const float bot = channel_to_unit(p01[c]) + fx * (channel_to_unit(p11[c]) - channel_to_unit(p01[c]));
+    out[static_cast<std::size_t>(c)] = top + fy * (bot - top);
+  }
+  return out;
+}
+
+/// Index maps for bilinear_sample (function objects, so the calls inline): clamp to the border, or
+/// wrap around.
+struct clamp_index {
+  index_t operator()(double i, index_t n) const noexcept {
+    return i <= 0 ? index_t{0} : i >= static_cast<double>(n - 1) ? n - 1 : static_cast<index_t>(i);
+  }
+};
+struct wrap_index {
+  index_t operator()(double i, index_t n) const noexcept {
+    const double m = std::fmod(i, static_cast<double>(n));
+    return static_cast<index_t>(m < 0 ? m + static_cast<double>(n) : m) % n;
+  }
+};
 
 }  // namespace detail
 
