@@ -9,7 +9,6 @@
 #include <string>
 #include <vector>
 
-#include <tessera/image/exemplars.hpp>
 #include <tessera/io/mesh_file.hpp>
 #include <tessera/io/png.hpp>
 #include <tessera/terrain/assign_scale_field.hpp>
@@ -23,6 +22,7 @@
 #include <tessera/terrain/terrain_camera.hpp>
 
 #include "cli.hpp"
+#include "image_source.hpp"
 
 namespace {
 
@@ -30,17 +30,6 @@ using tessera::index_t;
 using tessera::result;
 using tessera::status;
 using rgb_image = tessera::image_buffer<std::uint8_t, 3>;
-
-result<rgb_image> load_exemplar(const cli::arguments& args) {
-  const std::string name = args.str("--exemplar");
-  if (std::ifstream(name).good()) return tessera::read_png<std::uint8_t, 3>(name);
-  auto kind = tessera::parse_exemplar_kind(name);
-  if (!kind) return status::invalid_argument("--exemplar '" + name + "' is neither a readable file nor a procedural kind " +
-                                             "(grass, sand, rock, bricks, cells, weave, dots)");
-  auto size = args.integer("--exemplar-size", 256);
-  if (!size) return size.error();
-  return tessera::make_exemplar<std::uint8_t, 3>(*kind, {.width = *size, .height = *size, .seed = args.seed()});
-}
 
 result<tessera::vec3> vec_option(const cli::arguments& args, const char* name) {
   auto v = args.numbers(name, 3);
@@ -117,7 +106,7 @@ int run_terrain(const cli::arguments& args) {
     return fail(status::invalid_argument("--placement expects away or uniform, got '" + placement + "'"));
 
   tessera::thread_pool_executor pool(args.threads());
-  auto exemplar = load_exemplar(args);
+  auto exemplar = cli::load_image_source<std::uint8_t, 3>(args, "--exemplar", 256);
   if (!exemplar) return fail(exemplar.error());
   result<tessera::tri_mesh> source = args.has("--mesh")
                                          ? tessera::read_mesh(args.str("--mesh"))
@@ -203,7 +192,7 @@ int run_terrain(const cli::arguments& args) {
 std::vector<cli::option_spec> terrain_options() {
   std::vector<cli::option_spec> o = {
       {"--exemplar", "E", "exemplar PNG, or a procedural kind: grass, sand, rock, bricks, cells, weave, dots (required)"},
-      {"--exemplar-size", "N", "side of a procedural exemplar (default 256)"},
+      cli::exemplar_size_option(256),
       {"--mesh", "M.obj", "terrain mesh (.obj, .off or .ply; polygons are fan-triangulated); default: a procedural heightfield"},
       {"--grid", "N", "procedural heightfield of N x N cells, 2 N^2 triangles (default 128; --seed picks the relief)"},
       {"--height", "H", "relief of the procedural heightfield on its 100 x 100 extent (default 14; 0 = a flat plane)"},
