@@ -1,4 +1,5 @@
 #include <tessera/terrain/render_terrain_frame.hpp>
+#include <tessera/terrain/render_tiled_frame.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -218,4 +219,34 @@ TEST_CASE("render_terrain_frame: flat Lambert lighting from a sun direction", "[
     }
   REQUIRE(tessera::render_terrain_frame(s.mesh, s.proj, s.field, s.syn, s.pyramid, lit, {.ambient = 2}).message().find("ambient") !=
           std::string::npos);
+}
+
+TEST_CASE("render_terrain_frame: empty and fully culled meshes run the whole pipeline to a background frame", "[terrain][render]") {
+  // documented behaviour: nothing visible is not an error; every stage succeeds with empty output
+  const auto ex = tessera::make_exemplar<std::uint8_t, 3>(tessera::exemplar_kind::sand, {.width = 32, .height = 32}).value();
+  const auto pyramid = tessera::build_exemplar_pyramid(ex, {.min_scale = 0.5, .levels = 4}).value();
+  const auto tex = tessera::prepare_tiled_texture(ex).value();
+  const auto terrain = terrain_test::prepared_terrain(6);
+  // a camera on the terrain looking straight up, away from it: every face is behind or outside
+  const auto away = tessera::make_camera({.eye = {50, 50, 200}, .target = {50, 50, 400}, .up = {0, 1, 0}}, 80, 60).value();
+  const auto any = tessera::make_camera({.eye = {0, 0, 5}, .target = {0, 10, 0}}, 80, 60).value();
+  const std::pair<tessera::terrain_mesh, tessera::terrain_camera> cases[] = {
+      {tessera::prepare_terrain_mesh(tessera::tri_mesh{}).value(), any}, {terrain, away}};
+  for (const auto& [mesh, cam] : cases) {
+    const auto proj = tessera::project_mesh(mesh, cam).value();
+    REQUIRE(proj.num_visible() == 0);
+    const auto field = tessera::assign_scale_field(mesh, proj).value();
+    REQUIRE(field.levels == 0);
+    const auto syn = tessera::synthesize_triangles(mesh, proj, field, 32, 32).value();
+    REQUIRE(syn.visible == 0);
+    REQUIRE(syn.warning.ok());
+    tessera::image_buffer<float, 3> out(80, 60), tiled(80, 60);
+    REQUIRE(tessera::render_terrain_frame(mesh, proj, field, syn, pyramid, out, {.background = {1, 0, 0, 1}}));
+    REQUIRE(tessera::render_tiled_frame(mesh, proj, tex, tiled, {.background = {1, 0, 0, 1}}));
+    for (index_t y = 0; y < 60; ++y)
+      for (index_t x = 0; x < 80; ++x) {
+        REQUIRE(out.read(x, y) == std::array<float, 3>{1, 0, 0});
+        REQUIRE(tiled.read(x, y) == std::array<float, 3>{1, 0, 0});
+      }
+  }
 }
