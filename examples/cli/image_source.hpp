@@ -15,6 +15,13 @@
 
 namespace cli {
 
+/// The error for an image option naming neither a file nor a procedural kind.
+inline tessera::status unknown_image_source(std::string_view option, const std::string& name) {
+  return tessera::status::invalid_argument(std::string(option) + " '" + name +
+                                           "' is neither a readable file nor a procedural kind (grass, sand, rock, "
+                                           "bricks, cells, weave, dots)");
+}
+
 /// The pixel format of the image `option` names: the PNG's own (8 or 16 bits, 1 to 4 channels) or
 /// 8-bit RGB for a procedural kind.
 inline tessera::result<tessera::pixel_format> image_source_format(const arguments& args, std::string_view option) {
@@ -25,21 +32,20 @@ inline tessera::result<tessera::pixel_format> image_source_format(const argument
     return tessera::pixel_format{info->bit_depth == 16 ? tessera::channel_type::uint16 : tessera::channel_type::uint8,
                                  info->channels};
   }
-  if (!tessera::parse_exemplar_kind(name))
-    return tessera::status::invalid_argument(std::string(option) + " '" + name +
-                                             "' is neither a readable file nor a procedural kind (grass, sand, rock, "
-                                             "bricks, cells, weave, dots)");
+  if (!tessera::parse_exemplar_kind(name)) return unknown_image_source(option, name);
   return tessera::pixel_format{tessera::channel_type::uint8, 3};
 }
 
-/// Reads (or renders) the image `option` names as C channels of T.
+/// Reads (or renders) the image `option` names as C channels of T; a procedural kind is rendered
+/// at --exemplar-size, `default_size` when that option is absent.
 template <tessera::Channel T, int C>
-tessera::result<tessera::image_buffer<T, C>> load_image_source(const arguments& args, std::string_view option) {
+tessera::result<tessera::image_buffer<T, C>> load_image_source(const arguments& args, std::string_view option,
+                                                               long long default_size = 128) {
   const std::string name = args.str(option);
   if (std::ifstream(name).good()) return tessera::read_png<T, C>(name);
   auto kind = tessera::parse_exemplar_kind(name);
-  if (!kind) return kind.error();
-  auto size = args.integer("--exemplar-size", 128);
+  if (!kind) return unknown_image_source(option, name);
+  auto size = args.integer("--exemplar-size", default_size);
   if (!size) return size.error();
   return tessera::make_exemplar<T, C>(*kind, {.width = static_cast<tessera::index_t>(*size),
                                                .height = static_cast<tessera::index_t>(*size),
@@ -55,8 +61,9 @@ tessera::status with_image_source(const arguments& args, std::string_view option
 }
 
 /// The --exemplar-size option that goes with image sources.
-inline option_spec exemplar_size_option() {
-  return {"--exemplar-size", "N", "side of a procedural exemplar named instead of a file (default 128)"};
+inline option_spec exemplar_size_option(long long default_size = 128) {
+  return {"--exemplar-size", "N",
+          "side of a procedural exemplar named instead of a file (default " + std::to_string(default_size) + ")"};
 }
 
 }  // namespace cli

@@ -28,8 +28,8 @@ namespace {
 bool oracle_covers(const raster_triangle& t, index_t px, index_t py) {
   std::int64_t x[3], y[3];
   for (int k = 0; k < 3; ++k) {
-    x[k] = std::llround(t[static_cast<std::size_t>(k)].x * 256);
-    y[k] = std::llround(t[static_cast<std::size_t>(k)].y * 256);
+    x[k] = static_cast<std::int64_t>(std::floor(t[static_cast<std::size_t>(k)].x * 256 + 0.5));
+    y[k] = static_cast<std::int64_t>(std::floor(t[static_cast<std::size_t>(k)].y * 256 + 0.5));
   }
   const std::int64_t area = (x[1] - x[0]) * (y[2] - y[0]) - (y[1] - y[0]) * (x[2] - x[0]);
   if (area == 0) return false;

@@ -27,15 +27,17 @@ inline constexpr std::int64_t subpixel_one = std::int64_t{1} << subpixel_bits;
 inline constexpr double guard_band = 1048576.0;  // 2^20
 
 /// A polygon vertex during clipping: screen (or clip) position, depth, 1/w, and the weights of the
-/// original triangle's three corners (linear in clip space, i.e. in 3D).
+/// original triangle's three corners (linear in clip space, i.e. in 3D). Deliberately without
+/// default member initializers: polygons are built for every triangle, and every field is written
+/// before it is read.
 struct poly_vertex {
-  double x = 0, y = 0, z = 0, w = 1;  ///< clip space (x, y, z, w), or screen (x, y, depth, 1/w)
-  std::array<double, 3> corner{};     ///< weights of the original corners, sum 1
+  double x, y, z, w;              ///< clip space (x, y, z, w), or screen (x, y, depth, 1/w)
+  std::array<double, 3> corner;   ///< weights of the original corners, sum 1
 };
 
-/// Up to 3 + 7 clip planes worth of vertices.
+/// Up to 3 + 7 clip planes worth of vertices; only the first n are meaningful (no zero-fill).
 struct polygon {
-  std::array<poly_vertex, 12> v{};
+  std::array<poly_vertex, 12> v;
   int n = 0;
 };
 
@@ -52,6 +54,9 @@ inline bool canonical_less(const poly_vertex& a, const poly_vertex& b) noexcept 
 template <class Dist, class Lerp>
 void clip_polygon(polygon& p, Dist&& dist, Lerp&& lerp) {
   if (p.n == 0) return;
+  bool all_inside = true;
+  for (int i = 0; i < p.n && all_inside; ++i) all_inside = dist(p.v[static_cast<std::size_t>(i)]) >= 0;
+  if (all_inside) return;
   polygon out;
   for (int i = 0; i < p.n; ++i) {
     const poly_vertex& a = p.v[static_cast<std::size_t>(i)];
@@ -84,15 +89,8 @@ inline poly_vertex lerp_clip(const poly_vertex& a, const poly_vertex& b, double 
 /// Interpolation in screen space: position, depth and 1/w are linear there; corner weights are
 /// linear in 3D, so they interpolate perspective-correctly through 1/w.
 inline poly_vertex lerp_screen(const poly_vertex& a, const poly_vertex& b, double t) noexcept {
-  poly_vertex r;
-  r.x = a.x + t * (b.x - a.x);
-  r.y = a.y + t * (b.y - a.y);
-  r.z = a.z + t * (b.z - a.z);
-  r.w = a.w + t * (b.w - a.w);
-  for (int k = 0; k < 3; ++k) {
-    const auto i = static_cast<std::size_t>(k);
-    r.corner[i] = (a.corner[i] * a.w + t * (b.corner[i] * b.w - a.corner[i] * a.w)) / r.w;
-  }
+  poly_vertex r = lerp_clip(a, b, t);
+  for (std::size_t k = 0; k < 3; ++k) r.corner[k] = (a.corner[k] * a.w + t * (b.corner[k] * b.w - a.corner[k] * a.w)) / r.w;
   return r;
 }
 
@@ -134,8 +132,9 @@ inline bool setup_triangle(const poly_vertex& a, const poly_vertex& b, const pol
   const poly_vertex* v[3] = {&a, &b, &c};
   for (int k = 0; k < 3; ++k) {
     const auto i = static_cast<std::size_t>(k);
-    s.x[i] = std::llround(v[k]->x * static_cast<double>(subpixel_one));
-    s.y[i] = std::llround(v[k]->y * static_cast<double>(subpixel_one));
+    // round half up; any fixed rule works, what matters is the same input snapping the same way
+    s.x[i] = static_cast<std::int64_t>(std::floor(v[k]->x * static_cast<double>(subpixel_one) + 0.5));
+    s.y[i] = static_cast<std::int64_t>(std::floor(v[k]->y * static_cast<double>(subpixel_one) + 0.5));
     s.z[i] = v[k]->z;
     s.inv_w[i] = v[k]->w;
     s.corner[i] = v[k]->corner;

@@ -1,0 +1,182 @@
+// Terrain synthesis (paper 003): scale field + triangle synthesis for 10^4, 10^5 and 10^6 visible
+// triangles, projection, and 1920 x 1080 frames: synthesized vs plain tiled texture mapping of the
+// same frame (the naive method, the same-run baseline), plus a memcpy of the frame.
+//
+// Counters: triangles/s (items), and for the synthesis benchmarks `vs_tiled_render`, the ratio of
+// the measured time to rendering the same frame with plain tiled mapping (timed in the same run).
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <map>
+#include <memory>
+#include <vector>
+
+#include <tessera/image/exemplars.hpp>
+#include <tessera/terrain/assign_scale_field.hpp>
+#include <tessera/terrain/build_exemplar_pyramid.hpp>
+#include <tessera/terrain/make_terrain.hpp>
+#include <tessera/terrain/prepare_terrain_mesh.hpp>
+#include <tessera/terrain/project_mesh.hpp>
+#include <tessera/terrain/render_terrain_frame.hpp>
+#include <tessera/terrain/render_tiled_frame.hpp>
+#include <tessera/terrain/synthesize_triangles.hpp>
+
+namespace {
+
+using tessera::index_t;
+constexpr index_t frame_w = 1920, frame_h = 1080, exemplar_side = 256;
+
+struct scene {
+  tessera::terrain_mesh mesh;
+  tessera::screen_projection proj;
+  tessera::scale_field field;
+  tessera::triangle_synthesis syn;
+  double tiled_ms = 0;  ///< median time of the plain tiled frame, for the ratio counters
+};
+
+tessera::thread_pool_executor& pool() {
+  static tessera::thread_pool_executor p(2);
+  return p;
+}
+
+const tessera::image_buffer<std::uint8_t, 3>& exemplar() {
+  static const auto e =
+      tessera::make_exemplar<std::uint8_t, 3>(tessera::exemplar_kind::grass, {.width = exemplar_side, .height = exemplar_side}).value();
+  return e;
+}
+const tessera::exemplar_pyramid<std::uint8_t, 3>& pyramid() {
+  static const auto p = tessera::build_exemplar_pyramid(exemplar(), {.min_scale = 0.5}, pool()).value();
+  return p;
+}
+const tessera::tiled_texture<std::uint8_t, 3>& tiled() {
+  static const auto t = tessera::prepare_tiled_texture(exemplar(), pool()).value();
+  return t;
+}
+
+/// A heightfield of about `triangles` faces, all visible in the overview camera.
+scene& get_scene(index_t triangles) {
+  static std::map<index_t, std::unique_ptr<scene>> cache;
+  auto& s = cache[triangles];
+  if (s) return *s;
+  s = std::make_unique<scene>();
+  const auto cells = static_cast<index_t>(std::llround(std::sqrt(static_cast<double>(triangles) / 2)));
+  const auto m = tessera::make_terrain({.cells_x = cells, .cells_y = cells}, pool()).value();
+  s->mesh = tessera::prepare_terrain_mesh(m).value();
+  const auto cam = tessera::make_camera_preset(tessera::camera_preset::overview, tessera::bounding_box(m), frame_w, frame_h).value();
+  (void)tessera::project_mesh(s->mesh, cam, s->proj, {}, pool());
+  (void)tessera::assign_scale_field(s->mesh, s->proj, {.min_scale = 0.5, .max_levels = pyramid().num_levels()}, s->field, pool());
+  (void)tessera::synthesize_triangles(s->mesh, s->proj, s->field, exemplar_side, exemplar_side, {}, s->syn);
+  tessera::image_buffer<std::uint8_t, 3> frame(frame_w, frame_h);
+  std::vector<double> t;
+  for (int r = 0; r < 3; ++r) {
+    const auto a = std::chrono::steady_clock::now();
+    (void)tessera::render_tiled_frame(s->mesh, s->proj, tiled(), frame, {}, pool());
+    t.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - a).count());
+  }
+  std::sort(t.begin(), t.end());
+  s->tiled_ms = t[1];
+  return *s;
+}
+
+void set_counters(benchmark::State& state, const scene& s) {
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * s.proj.num_visible());
+  state.counters["visible"] = static_cast<double>(s.proj.num_visible());
+}
+
+// scale field + synthesis, the per-frame work of §2.2-2.3 (the goal: 10^6 under 100 ms)
+template <bool Threads>
+void BM_ScaleFieldAndSynthesis(benchmark::State& state) {
+  scene& s = get_scene(state.range(0));
+  tessera::serial_executor serial;
+  double total_ms = 0;
+  for (auto _ : state) {
+    const auto a = std::chrono::steady_clock::now();
+    if constexpr (Threads) {
+      (void)tessera::assign_scale_field(s.mesh, s.proj, {.max_levels = pyramid().num_levels()}, s.field, pool());
+      (void)tessera::synthesize_triangles(s.mesh, s.proj, s.field, exemplar_side, exemplar_side, {}, s.syn, pool());
+    } else {
+      (void)tessera::assign_scale_field(s.mesh, s.proj, {.max_levels = pyramid().num_levels()}, s.field, serial);
+      (void)tessera::synthesize_triangles(s.mesh, s.proj, s.field, exemplar_side, exemplar_side, {}, s.syn, serial);
+    }
+    benchmark::DoNotOptimize(s.syn.offset.data());
+    total_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - a).count();
+  }
+  set_counters(state, s);
+  state.counters["vs_tiled_render"] = total_ms / static_cast<double>(state.iterations()) / s.tiled_ms;
+  state.counters["continuous_edges"] = s.syn.continuous_fraction;
+}
+BENCHMARK(BM_ScaleFieldAndSynthesis<false>)->Name("ScaleFieldAndSynthesis/serial")->Arg(10000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_ScaleFieldAndSynthesis<true>)->Name("ScaleFieldAndSynthesis/2threads")->Arg(10000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_ScaleField(benchmark::State& state) {
+  scene& s = get_scene(state.range(0));
+  tessera::serial_executor serial;
+  for (auto _ : state) {
+    (void)tessera::assign_scale_field(s.mesh, s.proj, {.max_levels = pyramid().num_levels()}, s.field, serial);
+    benchmark::DoNotOptimize(s.field.level.data());
+  }
+  set_counters(state, s);
+}
+BENCHMARK(BM_ScaleField)->Arg(10000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_Synthesis(benchmark::State& state) {
+  scene& s = get_scene(state.range(0));
+  double total_ms = 0;
+  for (auto _ : state) {
+    const auto a = std::chrono::steady_clock::now();
+    (void)tessera::synthesize_triangles(s.mesh, s.proj, s.field, exemplar_side, exemplar_side, {}, s.syn);
+    benchmark::DoNotOptimize(s.syn.offset.data());
+    total_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - a).count();
+  }
+  set_counters(state, s);
+  state.counters["vs_tiled_render"] = total_ms / static_cast<double>(state.iterations()) / s.tiled_ms;
+}
+BENCHMARK(BM_Synthesis)->Arg(10000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_Projection(benchmark::State& state) {
+  scene& s = get_scene(state.range(0));
+  const auto cam = tessera::make_camera_preset(tessera::camera_preset::overview, tessera::bounding_box(s.mesh), frame_w, frame_h).value();
+  tessera::screen_projection p;
+  for (auto _ : state) {
+    (void)tessera::project_mesh(s.mesh, cam, p, {}, pool());
+    benchmark::DoNotOptimize(p.visible.data());
+  }
+  set_counters(state, s);
+}
+BENCHMARK(BM_Projection)->Arg(10000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// 1920 x 1080 frames of the same scene: synthesized (with seam feathering) and plain tiled
+template <bool Synthesized>
+void BM_Render(benchmark::State& state) {
+  scene& s = get_scene(state.range(0));
+  tessera::image_buffer<std::uint8_t, 3> frame(frame_w, frame_h);
+  for (auto _ : state) {
+    if constexpr (Synthesized) (void)tessera::render_terrain_frame(s.mesh, s.proj, s.field, s.syn, pyramid(), frame, {}, pool());
+    else (void)tessera::render_tiled_frame(s.mesh, s.proj, tiled(), frame, {}, pool());
+    benchmark::DoNotOptimize(frame.data());
+  }
+  set_counters(state, s);
+  state.counters["pixels/s"] = benchmark::Counter(static_cast<double>(frame_w * frame_h) * static_cast<double>(state.iterations()),
+                                                  benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_Render<true>)->Name("BM_RenderSynthesized")->Arg(10000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Render<false>)->Name("BM_RenderTiled")->Arg(10000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_MemcpyFrame(benchmark::State& state) {
+  std::vector<std::uint8_t> a(static_cast<std::size_t>(frame_w * frame_h * 3), 7), b(a.size());
+  for (auto _ : state) {
+    std::memcpy(b.data(), a.data(), a.size());
+    benchmark::DoNotOptimize(b.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations()) * static_cast<std::int64_t>(a.size()));
+}
+BENCHMARK(BM_MemcpyFrame)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+}  // namespace
+
+BENCHMARK_MAIN();

@@ -1,0 +1,91 @@
+// tessera/terrain/detail/visibility.hpp: the first pass of the terrain frame renderers: the
+// visible faces rasterized (render/triangle_rasterizer.hpp, clip-space input so faces crossing the
+// near plane are clipped) into a per-pixel face id, depth-tested on view depth, optionally with the
+// interpolated world position.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "../../core/config.hpp"
+#include "../../core/status.hpp"
+#include "../../render/triangle_rasterizer.hpp"
+#include "../prepare_terrain_mesh.hpp"
+#include "../project_mesh.hpp"
+
+TESSERA_NAMESPACE_BEGIN
+
+namespace detail {
+
+struct visibility_buffer {
+  index_t width = 0, height = 0;
+  std::vector<std::int32_t> face;           ///< -1 where no face covers the pixel
+  std::vector<float> depth;                 ///< view depth (clip w) of the visible fragment
+  std::vector<std::array<float, 3>> world;  ///< world position (only when requested)
+};
+
+template <class E>
+status render_visibility(const terrain_mesh& mesh, const screen_projection& proj, visibility_buffer& vb, bool want_world,
+                         index_t tile_size, E& exec) {
+  vb.width = proj.width;
+  vb.height = proj.height;
+  const auto n = static_cast<std::size_t>(proj.width * proj.height);
+  vb.face.assign(n, -1);
+  vb.depth.assign(n, std::numeric_limits<float>::infinity());
+  if (want_world) vb.world.assign(n, {0, 0, 0});
+  const raster_viewport vp{0, 0, static_cast<double>(proj.width), static_cast<double>(proj.height), proj.depth};
+  return rasterize_clip_triangles(
+      proj.num_visible(), vp, pixel_rect{0, 0, proj.width, proj.height},
+      [&](index_t i, clip_triangle& t) {
+        t = proj.clip_face(mesh, proj.visible[static_cast<std::size_t>(i)]);
+        return true;
+      },
+      [&](index_t i, const fragment& f) {
+        const auto p = static_cast<std::size_t>(f.y * vb.width + f.x);
+        const auto w = static_cast<float>(f.w);
+        if (!(w < vb.depth[p])) return;
+        vb.depth[p] = w;
+        const std::int32_t face = proj.visible[static_cast<std::size_t>(i)];
+        vb.face[p] = face;
+        if (want_world) {
+          const auto& fv = mesh.faces[static_cast<std::size_t>(face)];
+          const vec3 q = mesh.position(fv[0]) * f.bary[0] + mesh.position(fv[1]) * f.bary[1] + mesh.position(fv[2]) * f.bary[2];
+          vb.world[p] = {static_cast<float>(q.x), static_cast<float>(q.y), static_cast<float>(q.z)};
+        }
+      },
+      rasterize_options{.tile_size = tile_size}, exec);
+}
+
+/// Per-face light factor ambient + (1 - ambient) max(0, n . sun) for flat Lambert shading, n the
+/// face normal turned towards the eye (so either winding works); empty when `sun` is zero.
+template <class E>
+std::vector<float> face_light(const terrain_mesh& mesh, const screen_projection& proj, const std::array<double, 3>& sun,
+                              double ambient, E& exec) {
+  std::vector<float> light;
+  const vec3 l = normalized(vec3{sun[0], sun[1], sun[2]});
+  if (norm(l) == 0) return light;
+  light.assign(static_cast<std::size_t>(mesh.num_faces()), 1.0f);
+  exec.parallel_for(0, proj.num_visible(), [&](index_t i) {
+    const std::int32_t f = proj.visible[static_cast<std::size_t>(i)];
+    const auto& fv = mesh.faces[static_cast<std::size_t>(f)];
+    const vec3 a = mesh.position(fv[0]);
+    vec3 n = normalized(cross(mesh.position(fv[1]) - a, mesh.position(fv[2]) - a));
+    if (dot(n, proj.eye - a) < 0) n = -n;
+    light[static_cast<std::size_t>(f)] = static_cast<float>(ambient + (1 - ambient) * std::max(0.0, dot(n, l)));
+  });
+  return light;
+}
+
+/// Scales the colour channels (not alpha) of a unit pixel by a light factor.
+template <std::size_t C>
+void apply_light(std::array<float, C>& c, float light) noexcept {
+  constexpr std::size_t colour = C == 2 ? 1 : C == 4 ? 3 : C;
+  for (std::size_t k = 0; k < colour; ++k) c[k] *= light;
+}
+
+}  // namespace detail
+
+TESSERA_NAMESPACE_END

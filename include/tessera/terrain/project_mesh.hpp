@@ -1,0 +1,184 @@
+// tessera/terrain/project_mesh.hpp: screen projection of a prepared terrain mesh (§2.1 of paper
+// 003): every vertex through projection * view to clip space and through the viewport to pixels;
+// triangles entirely outside the view frustum (all three corners beyond one frustum plane, behind
+// the near plane or past the far plane) are culled, the paper's "triangles outside the screen are
+// removed".
+//
+// Partially visible triangles are KEPT WHOLE, not clipped: their corners keep their true screen
+// positions (which may lie outside the viewport), so texture coordinates stay continuous across
+// the viewport border. Only their screen bounds are clipped to the viewport (that is what the
+// synthesis must fit into an exemplar). A triangle crossing the near plane has no screen position
+// for its corners behind the eye: it is marked `near_clipped`, its bounds come from the triangle
+// clipped against the near plane, and those corners' screen positions are NaN.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+#include <glm/matrix.hpp>
+#include <glm/vec4.hpp>
+
+#include "../core/config.hpp"
+#include "../core/executor.hpp"
+#include "../core/status.hpp"
+#include "../core/vec.hpp"
+#include "../render/triangle_rasterizer.hpp"
+#include "prepare_terrain_mesh.hpp"
+#include "terrain_camera.hpp"
+
+TESSERA_NAMESPACE_BEGIN
+
+/// What projection decided for a face.
+enum class face_visibility : std::uint8_t {
+  culled = 0,        ///< entirely outside the view frustum (or back-facing when asked)
+  inside = 1,        ///< visible or partly visible, all corners in front of the near plane
+  near_clipped = 2,  ///< partly visible, some corner behind the near plane
+};
+
+/// The mesh as the camera sees it. Per-vertex and per-face arrays are indexed like the mesh.
+struct screen_projection {
+  index_t width = 0, height = 0;  ///< viewport in pixels
+  clip_depth depth = glm_clip_depth;
+  vec3 eye;                                         ///< eye position in world space
+  std::vector<std::array<double, 4>> clip;          ///< per vertex: projection * view * position
+  std::vector<vec2> screen;                         ///< per vertex: pixel position (y down); NaN behind the near plane
+  std::vector<std::uint8_t> state;                  ///< per face: a face_visibility
+  std::vector<std::array<float, 4>> bounds;         ///< per face: visible screen box x0, y0, x1, y1 (clipped to the viewport)
+  std::vector<std::int32_t> visible;                ///< faces not culled, ascending
+  index_t near_clipped = 0;                         ///< how many visible faces cross the near plane
+
+  [[nodiscard]] bool is_visible(index_t f) const noexcept { return state[static_cast<std::size_t>(f)] != 0; }
+  [[nodiscard]] index_t num_visible() const noexcept { return static_cast<index_t>(visible.size()); }
+  /// The clip-space corners of face f of `mesh` (for rasterize_clip_triangles).
+  [[nodiscard]] clip_triangle clip_face(const terrain_mesh& mesh, index_t f) const noexcept {
+    clip_triangle t;
+    for (int k = 0; k < 3; ++k) {
+      const auto& c = clip[static_cast<std::size_t>(mesh.face_vertex(f, k))];
+      t[static_cast<std::size_t>(k)] = {c[0], c[1], c[2], c[3]};
+    }
+    return t;
+  }
+};
+
+struct project_options {
+  /// Also cull faces whose front side (counter-clockwise corners) faces away from the eye. Off by
+  /// default: meshes from elsewhere may be wound either way, and hidden faces are harmless.
+  bool cull_back_faces = false;
+};
+
+namespace detail {
+inline std::uint8_t clip_outcode(const std::array<double, 4>& c, bool zero_to_one) noexcept {
+  const double x = c[0], y = c[1], z = c[2], w = c[3];
+  return static_cast<std::uint8_t>((x < -w ? 1 : 0) | (x > w ? 2 : 0) | (y < -w ? 4 : 0) | (y > w ? 8 : 0) |
+                                   ((zero_to_one ? z < 0 : z < -w) ? 16 : 0) | (z > w ? 32 : 0));
+}
+}  // namespace detail
+
+/// Projects `mesh` for `camera` into `out` (its arrays are reused, so a caller that keeps `out`
+/// across frames does not reallocate). Errors: an invalid camera (see validate_camera). An empty
+/// or fully culled mesh is not an error: `out.visible` is then empty. O(V + F), parallel over
+/// vertices and faces through `exec`; the result does not depend on the executor.
+template <Executor E = serial_executor>
+status project_mesh(const terrain_mesh& mesh, const terrain_camera& camera, screen_projection& out,
+                    const project_options& opts = {}, E&& exec = {}) {
+  if (auto s = validate_camera(camera); !s) return s;
+  const index_t nv = mesh.num_vertices(), nf = mesh.num_faces();
+  const bool zo = camera.depth == clip_depth::zero_to_one;
+  const glm::dmat4 m = camera.projection * camera.view;
+  const glm::dvec4 eye = glm::inverse(camera.view) * glm::dvec4(0, 0, 0, 1);
+  out.width = camera.width;
+  out.height = camera.height;
+  out.depth = camera.depth;
+  out.eye = {eye.x / eye.w, eye.y / eye.w, eye.z / eye.w};
+  out.clip.resize(static_cast<std::size_t>(nv));
+  out.screen.resize(static_cast<std::size_t>(nv));
+  out.state.resize(static_cast<std::size_t>(nf));
+  out.bounds.resize(static_cast<std::size_t>(nf));
+  const double W = static_cast<double>(camera.width), H = static_cast<double>(camera.height);
+  constexpr index_t block = 16384;
+  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+  exec.parallel_for(0, (nv + block - 1) / block, [&](index_t b) {
+    for (index_t v = b * block; v < std::min(nv, (b + 1) * block); ++v) {
+      const vec3& p = mesh.positions[static_cast<std::size_t>(v)];
+      const glm::dvec4 c = m * glm::dvec4(p.x, p.y, p.z, 1.0);
+      out.clip[static_cast<std::size_t>(v)] = {c.x, c.y, c.z, c.w};
+      const bool front = (zo ? c.z >= 0 : c.z >= -c.w) && c.w > 0;
+      out.screen[static_cast<std::size_t>(v)] =
+          front ? vec2{(c.x / c.w + 1) * 0.5 * W, (1 - c.y / c.w) * 0.5 * H} : vec2{nan, nan};
+    }
+  });
+  const index_t chunks = (nf + block - 1) / block;
+  std::vector<index_t> count(static_cast<std::size_t>(chunks + 1), 0);
+  exec.parallel_for(0, chunks, [&](index_t b) {
+    index_t n = 0;
+    for (index_t f = b * block; f < std::min(nf, (b + 1) * block); ++f) {
+      const auto& face = mesh.faces[static_cast<std::size_t>(f)];
+      std::uint8_t oc[3];
+      for (int k = 0; k < 3; ++k) oc[k] = detail::clip_outcode(out.clip[static_cast<std::size_t>(face[static_cast<std::size_t>(k)])], zo);
+      auto& st = out.state[static_cast<std::size_t>(f)];
+      st = static_cast<std::uint8_t>(face_visibility::culled);
+      if ((oc[0] & oc[1] & oc[2]) != 0) continue;
+      if (opts.cull_back_faces) {
+        const vec3 a = mesh.position(face[0]), n3 = cross(mesh.position(face[1]) - a, mesh.position(face[2]) - a);
+        if (dot(n3, a - out.eye) >= 0) continue;
+      }
+      double x0, y0, x1, y1;
+      const bool near = ((oc[0] | oc[1] | oc[2]) & 16) != 0;
+      if (!near) {
+        const vec2 s0 = out.screen[static_cast<std::size_t>(face[0])], s1 = out.screen[static_cast<std::size_t>(face[1])],
+                   s2 = out.screen[static_cast<std::size_t>(face[2])];
+        x0 = std::min({s0.x, s1.x, s2.x}), x1 = std::max({s0.x, s1.x, s2.x});
+        y0 = std::min({s0.y, s1.y, s2.y}), y1 = std::max({s0.y, s1.y, s2.y});
+      } else {
+        detail::raster::polygon poly{};  // rare path: zero-filled keeps the compiler sure of initialization
+        std::array<std::array<double, 4>, 3> t;
+        for (int k = 0; k < 3; ++k) t[static_cast<std::size_t>(k)] = out.clip[static_cast<std::size_t>(face[static_cast<std::size_t>(k)])];
+        detail::raster::clip_polygon_to_screen(t, {0, 0, W, H}, zo, poly);
+        if (poly.n < 3) continue;
+        x0 = x1 = poly.v[0].x, y0 = y1 = poly.v[0].y;
+        for (int i = 1; i < poly.n; ++i) {
+          const auto& q = poly.v[static_cast<std::size_t>(i)];
+          x0 = std::min(x0, q.x), x1 = std::max(x1, q.x), y0 = std::min(y0, q.y), y1 = std::max(y1, q.y);
+        }
+      }
+      x0 = std::max(x0, 0.0), y0 = std::max(y0, 0.0), x1 = std::min(x1, W), y1 = std::min(y1, H);
+      if (!(x0 <= x1 && y0 <= y1)) continue;  // also rejects NaN
+      out.bounds[static_cast<std::size_t>(f)] = {static_cast<float>(x0), static_cast<float>(y0), static_cast<float>(x1),
+                                                 static_cast<float>(y1)};
+      st = static_cast<std::uint8_t>(near ? face_visibility::near_clipped : face_visibility::inside);
+      ++n;
+    }
+    count[static_cast<std::size_t>(b + 1)] = n;
+  });
+  for (index_t b = 0; b < chunks; ++b) count[static_cast<std::size_t>(b + 1)] += count[static_cast<std::size_t>(b)];
+  out.visible.resize(static_cast<std::size_t>(count[static_cast<std::size_t>(chunks)]));
+  std::vector<index_t> near_count(static_cast<std::size_t>(chunks), 0);
+  exec.parallel_for(0, chunks, [&](index_t b) {
+    index_t at = count[static_cast<std::size_t>(b)];
+    for (index_t f = b * block; f < std::min(nf, (b + 1) * block); ++f) {
+      const auto st = out.state[static_cast<std::size_t>(f)];
+      if (st == 0) continue;
+      out.visible[static_cast<std::size_t>(at++)] = static_cast<std::int32_t>(f);
+      if (st == static_cast<std::uint8_t>(face_visibility::near_clipped)) ++near_count[static_cast<std::size_t>(b)];
+    }
+  });
+  out.near_clipped = 0;
+  for (index_t n : near_count) out.near_clipped += n;
+  return {};
+}
+
+/// As above, returning a new screen_projection.
+template <Executor E = serial_executor>
+result<screen_projection> project_mesh(const terrain_mesh& mesh, const terrain_camera& camera, const project_options& opts = {},
+                                       E&& exec = {}) {
+  screen_projection out;
+  if (auto s = project_mesh(mesh, camera, out, opts, exec); !s) return s;
+  return out;
+}
+
+TESSERA_NAMESPACE_END

@@ -1,0 +1,314 @@
+// tessera/terrain/synthesize_triangles.hpp: triangle-based texture synthesis on the screen (paper
+// 003, §2.3). Every visible triangle gets texture coordinates in the exemplar shrunk to its scale
+// (its "level image", width * scale x height * scale pixels), as a translation of its screen
+// position: uv = screen position + offset. Being a pure translation, the mapping is congruent (no
+// stretching: one screen pixel is one level pixel), and scale changes the texture's size with
+// distance instead.
+//
+//   order    a stack over face adjacency: a seeded random start is pushed; each popped triangle is
+//            synthesized and pushes its unsynthesized visible neighbours (§2.3 step 1); when the
+//            stack empties, the next unsynthesized visible triangle (in visible order after the
+//            start) starts a new connected region
+//   first    a triangle with no synthesized neighbour gets a random congruent placement: a random
+//            offset that puts it inside its level image (step 2.1)
+//   next     otherwise it takes a synthesized neighbour's offset: the identity map between levels
+//            (adjacent triangles are at most one level apart) plus its own screen position (step
+//            2.2). Of several neighbours, the OLDEST placement that keeps the triangle inside its
+//            level image wins, so placements fill their level image as compact patches instead of
+//            following the stack's snake (95-99 % continuous edges on the default scenes, against
+//            85-90 % for continuation_rule::first_neighbor, the paper read literally)
+//   restart  if no neighbour's offset fits, a new random placement ("out of bounds: choose a
+//            congruent triangle at random"); by default biased so the triangle sits at the side of
+//            the level image facing its synthesized neighbours, leaving the rest of the image for the
+//            unsynthesized side (placement_strategy::away_from_neighbors; the paper's uniform choice
+//            is placement_strategy::uniform)
+//   seams    sides where a synthesized neighbour has other coordinates are marked for colour
+//            blending (step 3; render_terrain_frame feathers across them)
+//
+// Coordinates are measured from the CENTRE of the level image (uv in [-width * scale / 2,
+// width * scale / 2] x [-height * scale / 2, height * scale / 2]; exemplar pixel = (width / 2, height
+// / 2) + uv / scale). The identity map carries uv unchanged between levels, so content drifts by
+// |uv| * |1/s_a - 1/s_b| where two levels meet; centring halves the largest |uv| and so that drift.
+//
+// The paper's guidance (§3 (1)): the exemplar should be 8 to 12 times the area of the largest
+// screen triangle. The result carries a warning (not an error) below 8 times, and when a triangle
+// does not fit its level image at all (it is then centred on the image and its texture clamps at
+// the border; counted in `oversized`).
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "../core/config.hpp"
+#include "../core/executor.hpp"
+#include "../core/progress.hpp"
+#include "../core/random.hpp"
+#include "../core/status.hpp"
+#include "../core/vec.hpp"
+#include "assign_scale_field.hpp"
+#include "prepare_terrain_mesh.hpp"
+#include "project_mesh.hpp"
+
+TESSERA_NAMESPACE_BEGIN
+
+enum class placement_strategy {
+  uniform,              ///< the paper: offset uniform over all placements inside the level image
+  away_from_neighbors,  ///< random, biased to leave room on the side away from synthesized neighbours
+};
+
+enum class continuation_rule {
+  oldest_placement,  ///< of the synthesized neighbours whose coordinates fit, the oldest placement
+  first_neighbor,    ///< the paper read literally: the first synthesized neighbour (in side order) that fits
+};
+
+struct triangle_synthesis_options {
+  std::uint64_t seed = 1;
+  placement_strategy placement = placement_strategy::away_from_neighbors;
+  continuation_rule continuation = continuation_rule::oldest_placement;
+  double margin = 1.0;  ///< pixels kept free at the level image border (the bilinear footprint), >= 0
+  tessera::progress progress = {};
+};
+
+/// Per-face results (indexed like the mesh; culled faces have region -1) and statistics.
+struct triangle_synthesis {
+  std::vector<vec2> offset;          ///< uv = screen position + offset (level-image pixels from its centre)
+  std::vector<std::int32_t> region;  ///< placement id; equal ids share one offset
+  std::vector<std::uint8_t> seam;    ///< bit k: side k borders a visible face with other coordinates
+  std::vector<std::int32_t> order;   ///< visible faces in synthesis (stack) order
+  index_t visible = 0;
+  index_t regions = 0;     ///< placements made (components + restarts)
+  index_t components = 0;  ///< connected regions of visible faces (each starts with a placement)
+  index_t restarts = 0;    ///< placements because no neighbour's coordinates fitted (out of bounds)
+  index_t oversized = 0;   ///< faces larger than their level image (texture clamps at its border)
+  index_t shared_edges = 0;      ///< edges between two visible faces
+  index_t continuous_edges = 0;  ///< of those, edges whose two faces have equal coordinates
+  double continuous_fraction = 1;  ///< continuous_edges / shared_edges (1 when there are none)
+  double min_area_ratio = std::numeric_limits<double>::infinity();  ///< min over faces of level-image area / screen area
+  index_t min_area_face = -1;
+  status warning;  ///< ok, or out_of_range describing an exemplar too small for the triangles (§3 (1))
+};
+
+namespace detail {
+/// Visible screen area of face f: the triangle's area, at most its bounds' area (partly visible).
+inline double visible_screen_area(const terrain_mesh& mesh, const screen_projection& proj, std::int32_t f) {
+  const auto& b = proj.bounds[static_cast<std::size_t>(f)];
+  const double box = static_cast<double>(b[2] - b[0]) * static_cast<double>(b[3] - b[1]);
+  if (proj.state[static_cast<std::size_t>(f)] != static_cast<std::uint8_t>(face_visibility::inside)) return box;
+  const auto& face = mesh.faces[static_cast<std::size_t>(f)];
+  const vec2 a = proj.screen[static_cast<std::size_t>(face[0])], p = proj.screen[static_cast<std::size_t>(face[1])],
+             q = proj.screen[static_cast<std::size_t>(face[2])];
+  return std::min(box, 0.5 * std::abs(cross(p - a, q - a)));
+}
+}  // namespace detail
+
+/// Synthesizes texture coordinates for every visible face (paper 003, §2.3; see the file comment)
+/// into `out`, reusing its storage. `exemplar_width` x `exemplar_height` is the exemplar's size
+/// (level 0 of the pyramid). Errors: non-positive exemplar size, negative margin, a projection or
+/// field that does not belong to `mesh`, cancelled. Nothing visible is not an error (all counts 0).
+/// O(F) time, O(1) work per face; the stack order is inherently serial, the per-face statistics
+/// afterwards run through `exec`. The output is a pure function of the inputs and opts.seed (random
+/// choices are keyed by face index), the same for any executor.
+template <Executor E = serial_executor>
+status synthesize_triangles(const terrain_mesh& mesh, const screen_projection& proj, const scale_field& field,
+                            index_t exemplar_width, index_t exemplar_height, const triangle_synthesis_options& opts,
+                            triangle_synthesis& out, E&& exec = {}) {
+  if (exemplar_width <= 0 || exemplar_height <= 0)
+    return status::invalid_argument(detail::cat("exemplar size must be positive, got ", exemplar_width, " x ", exemplar_height));
+  if (!(opts.margin >= 0) || !std::isfinite(opts.margin))
+    return status::invalid_argument(detail::cat("margin must be >= 0, got ", opts.margin));
+  const index_t nf = mesh.num_faces();
+  if (static_cast<index_t>(proj.state.size()) != nf || static_cast<index_t>(field.level.size()) != nf)
+    return status::invalid_argument(detail::cat("projection (", proj.state.size(), " faces) and scale field (", field.level.size(),
+                                                " faces) must belong to the mesh (", nf, " faces)"));
+  {
+    triangle_synthesis fresh;  // statistics reset, storage reused
+    fresh.offset = std::move(out.offset);
+    fresh.region = std::move(out.region);
+    fresh.seam = std::move(out.seam);
+    fresh.order = std::move(out.order);
+    out = std::move(fresh);
+  }
+  out.offset.assign(static_cast<std::size_t>(nf), vec2{});
+  out.region.assign(static_cast<std::size_t>(nf), -1);
+  out.seam.assign(static_cast<std::size_t>(nf), 0);
+  out.order.clear();
+  const index_t nvis = proj.num_visible();
+  out.visible = nvis;
+  if (nvis == 0) return {};
+  out.order.reserve(static_cast<std::size_t>(nvis));
+  const counter_rng rng(opts.seed, stream_id("terrain.synthesize_triangles"));
+  const double W = static_cast<double>(exemplar_width), H = static_cast<double>(exemplar_height), m = opts.margin;
+  auto box = [&](std::int32_t f) -> const std::array<float, 4>& { return proj.bounds[static_cast<std::size_t>(f)]; };
+  auto fits = [&](std::int32_t f, vec2 o) {
+    const auto& b = box(f);
+    const double hw = 0.5 * W * field.scale[static_cast<std::size_t>(f)] - m, hh = 0.5 * H * field.scale[static_cast<std::size_t>(f)] - m;
+    return b[0] + o.x >= -hw && b[2] + o.x <= hw && b[1] + o.y >= -hh && b[3] + o.y <= hh;
+  };
+  // one axis of a new placement: [lo, hi] are the feasible offsets, `toward` in [0, 1] the preferred
+  // position inside them (0: lo), jittered randomly
+  auto place_axis = [&](double lo, double hi, double u, double toward, bool& oversized) {
+    if (hi < lo) {
+      oversized = true;
+      return 0.5 * (lo + hi);
+    }
+    const double t = opts.placement == placement_strategy::uniform ? u : std::clamp(toward + (u - 0.5) * 1.0, 0.0, 1.0);
+    return lo + t * (hi - lo);
+  };
+  std::vector<std::int32_t> stack;
+  stack.reserve(static_cast<std::size_t>(std::min<index_t>(3 * nvis + 1, 1 << 20)));
+  const auto start = static_cast<index_t>(rng.below(static_cast<std::uint64_t>(nvis), 0));
+  index_t done = 0;
+  for (index_t idx = 0; idx < nvis; ++idx) {
+    const std::int32_t seed_face = proj.visible[static_cast<std::size_t>((start + idx) % nvis)];
+    if (out.region[static_cast<std::size_t>(seed_face)] >= 0) continue;
+    ++out.components;
+    stack.push_back(seed_face);
+    while (!stack.empty()) {
+      const std::int32_t f = stack.back();
+      stack.pop_back();
+      if (out.region[static_cast<std::size_t>(f)] >= 0) continue;
+      const auto& nb = mesh.neighbors[static_cast<std::size_t>(f)];
+      // candidates: offsets of synthesized neighbours; the oldest placement that fits wins
+      int best = -1, synthesized = 0;
+      vec2 away{};
+      for (int k = 0; k < 3; ++k) {
+        const std::int32_t n = nb[static_cast<std::size_t>(k)];
+        if (n < 0 || out.region[static_cast<std::size_t>(n)] < 0) continue;
+        ++synthesized;
+        const auto& bn = box(n);
+        away += vec2{static_cast<double>(bn[0] + bn[2]), static_cast<double>(bn[1] + bn[3])} * 0.5;
+        const bool older = best < 0 || (opts.continuation == continuation_rule::oldest_placement &&
+                                        out.region[static_cast<std::size_t>(n)] <
+                                            out.region[static_cast<std::size_t>(nb[static_cast<std::size_t>(best)])]);
+        if (older && fits(f, out.offset[static_cast<std::size_t>(n)])) best = k;
+      }
+      if (best >= 0) {
+        const std::int32_t n = nb[static_cast<std::size_t>(best)];
+        out.offset[static_cast<std::size_t>(f)] = out.offset[static_cast<std::size_t>(n)];
+        out.region[static_cast<std::size_t>(f)] = out.region[static_cast<std::size_t>(n)];
+      } else {
+        // a new congruent placement inside the level image
+        const auto& b = box(f);
+        const double s = field.scale[static_cast<std::size_t>(f)];
+        vec2 toward{0.5, 0.5};
+        if (synthesized > 0) {
+          const vec2 d = vec2{static_cast<double>(b[0] + b[2]), static_cast<double>(b[1] + b[3])} * 0.5 - away / synthesized;
+          const double len = norm(d);
+          if (len > 0) toward = vec2{0.5 - 0.5 * d.x / len, 0.5 - 0.5 * d.y / len};
+        }
+        bool big = false;
+        const double hw = 0.5 * W * s - m, hh = 0.5 * H * s - m;
+        const vec2 o{place_axis(-hw - b[0], hw - b[2], rng.uniform(f, 1), toward.x, big),
+                     place_axis(-hh - b[1], hh - b[3], rng.uniform(f, 2), toward.y, big)};
+        out.offset[static_cast<std::size_t>(f)] = o;
+        out.region[static_cast<std::size_t>(f)] = static_cast<std::int32_t>(out.regions++);
+        out.oversized += big ? 1 : 0;
+        out.restarts += synthesized > 0 ? 1 : 0;
+      }
+      out.order.push_back(f);
+      for (int k = 0; k < 3; ++k) {
+        const std::int32_t n = nb[static_cast<std::size_t>(k)];
+        if (n >= 0 && proj.state[static_cast<std::size_t>(n)] != 0 && out.region[static_cast<std::size_t>(n)] < 0) stack.push_back(n);
+      }
+      if ((++done & 0xffff) == 0 && !opts.progress.report(static_cast<double>(done) / static_cast<double>(nvis), "synthesize triangles"))
+        return status::cancelled();
+    }
+  }
+  // seams, continuity and the exemplar-size check: independent per face, in chunks whose partial
+  // results combine in chunk order (so ties resolve to the smallest face, for any executor)
+  struct partial {
+    index_t shared = 0, same = 0;
+    double ratio = std::numeric_limits<double>::infinity();
+    std::int32_t face = -1;
+  };
+  constexpr index_t block = 16384;
+  const index_t chunks = (nvis + block - 1) / block;
+  std::vector<partial> part(static_cast<std::size_t>(chunks));
+  exec.parallel_for(0, chunks, [&](index_t c) {
+    partial& p = part[static_cast<std::size_t>(c)];
+    for (index_t i = c * block; i < std::min(nvis, (c + 1) * block); ++i) {
+      const std::int32_t f = proj.visible[static_cast<std::size_t>(i)];
+      const auto& nb = mesh.neighbors[static_cast<std::size_t>(f)];
+      std::uint8_t bits = 0;
+      for (int k = 0; k < 3; ++k) {
+        const std::int32_t n = nb[static_cast<std::size_t>(k)];
+        if (n < 0 || proj.state[static_cast<std::size_t>(n)] == 0) continue;
+        const bool same = out.offset[static_cast<std::size_t>(n)] == out.offset[static_cast<std::size_t>(f)];
+        bits = static_cast<std::uint8_t>(bits | (same ? 0 : 1 << k));
+        if (n > f) p.shared += 1, p.same += same ? 1 : 0;
+      }
+      out.seam[static_cast<std::size_t>(f)] = bits;
+      const double s = field.scale[static_cast<std::size_t>(f)];
+      const double ratio = W * H * s * s / std::max(detail::visible_screen_area(mesh, proj, f), 1e-300);
+      if (ratio < p.ratio) p.ratio = ratio, p.face = f;
+    }
+  });
+  for (const partial& p : part) {
+    out.shared_edges += p.shared;
+    out.continuous_edges += p.same;
+    if (p.ratio < out.min_area_ratio) out.min_area_ratio = p.ratio, out.min_area_face = p.face;
+  }
+  out.continuous_fraction =
+      out.shared_edges > 0 ? static_cast<double>(out.continuous_edges) / static_cast<double>(out.shared_edges) : 1.0;
+  if (out.min_area_ratio < 8 || out.oversized > 0)
+    out.warning = status::out_of_range(detail::cat(
+        "the exemplar (", exemplar_width, " x ", exemplar_height, ") is only ", out.min_area_ratio,
+        " times the screen area of face ", out.min_area_face, " at its scale; paper 003 advises 8 to 12 times (",
+        out.oversized, " faces do not fit their level image at all and clamp at its border): use a larger exemplar, a larger "
+        "min_scale or a finer mesh"));
+  return opts.progress.report(1.0, "synthesize triangles") ? status{} : status::cancelled();
+}
+
+/// As above, returning a new triangle_synthesis.
+template <Executor E = serial_executor>
+result<triangle_synthesis> synthesize_triangles(const terrain_mesh& mesh, const screen_projection& proj, const scale_field& field,
+                                                index_t exemplar_width, index_t exemplar_height,
+                                                const triangle_synthesis_options& opts = {}, E&& exec = {}) {
+  triangle_synthesis out;
+  if (auto s = synthesize_triangles(mesh, proj, field, exemplar_width, exemplar_height, opts, out, exec); !s) return s;
+  return out;
+}
+
+/// What a shader needs, per face: corner texture coordinates (level-image pixels from the level
+/// image's centre: the exemplar, shrunk by the face's scale, is sampled at normalized coordinates
+/// 0.5 + uv / (width * scale, height * scale)), the level and the scale. Interpolate uv linearly in
+/// SCREEN space (GLSL `noperspective`), or compute uv = gl_FragCoord.xy (flipped to y down) + offset
+/// per pixel. Culled faces have level -1; corners behind the eye of near-clipped faces have NaN
+/// coordinates (use the offset form there).
+struct terrain_uv_buffer {
+  std::vector<std::array<float, 6>> corner_uv;  ///< u0 v0 u1 v1 u2 v2
+  std::vector<std::array<float, 2>> offset;
+  std::vector<std::int32_t> level;
+  std::vector<float> scale;
+};
+
+/// Collects the engine-facing outputs of a synthesis. O(F).
+inline terrain_uv_buffer export_corner_uvs(const terrain_mesh& mesh, const screen_projection& proj, const scale_field& field,
+                                           const triangle_synthesis& syn) {
+  terrain_uv_buffer b;
+  const auto nf = static_cast<std::size_t>(mesh.num_faces());
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  b.corner_uv.assign(nf, {nan, nan, nan, nan, nan, nan});
+  b.offset.assign(nf, {nan, nan});
+  b.level.assign(nf, -1);
+  b.scale.assign(nf, 0.0f);
+  for (const std::int32_t f : proj.visible) {
+    const auto i = static_cast<std::size_t>(f);
+    const vec2 o = syn.offset[i];
+    for (std::size_t k = 0; k < 3; ++k) {
+      const vec2 p = proj.screen[static_cast<std::size_t>(mesh.faces[i][k])] + o;
+      b.corner_uv[i][2 * k] = static_cast<float>(p.x);
+      b.corner_uv[i][2 * k + 1] = static_cast<float>(p.y);
+    }
+    b.offset[i] = {static_cast<float>(o.x), static_cast<float>(o.y)};
+    b.level[i] = field.level[i];
+    b.scale[i] = field.scale[i];
+  }
+  return b;
+}
+
+TESSERA_NAMESPACE_END

@@ -1,0 +1,163 @@
+// tessera/terrain/terrain_camera.hpp: the camera of terrain synthesis (§2.1 of paper 003: "set the
+// view point, view direction and projection plane, which fixes the projection matrix"): GLM view
+// and projection matrices plus a viewport in pixels. make_camera() builds one from a look-at
+// description and rejects degenerate cameras; make_camera_preset() gives the views the docs, tests
+// and benchmarks use, including the paper's low grazing view over a wide plane.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <string_view>
+
+#include <glm/ext/matrix_clip_space.hpp>
+#include <glm/ext/matrix_transform.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/matrix.hpp>
+
+#include "../core/config.hpp"
+#include "../core/status.hpp"
+#include "../core/vec.hpp"
+#include "../render/triangle_rasterizer.hpp"
+
+TESSERA_NAMESPACE_BEGIN
+
+/// The clip-space depth convention GLM's projection functions produce in this translation unit.
+#ifdef GLM_FORCE_DEPTH_ZERO_TO_ONE
+inline constexpr clip_depth glm_clip_depth = clip_depth::zero_to_one;
+#else
+inline constexpr clip_depth glm_clip_depth = clip_depth::negative_one_to_one;
+#endif
+
+/// Largest viewport side accepted by the terrain pipeline.
+inline constexpr index_t max_viewport_side = 16384;
+
+/// A camera: world -> view -> clip matrices (GLM, column-major, right-handed as glm::lookAt and
+/// glm::perspective build them) and a viewport of width x height pixels (row 0 at the top).
+struct terrain_camera {
+  glm::dmat4 view{1.0};
+  glm::dmat4 projection{1.0};
+  index_t width = 0;
+  index_t height = 0;
+  clip_depth depth = glm_clip_depth;  ///< how `projection` maps depth (GLM_FORCE_DEPTH_ZERO_TO_ONE or not)
+};
+
+/// Checks a camera: viewport 1 to 16384 pixels per side, finite matrices, invertible view and
+/// projection. Errors name the field and the value.
+inline status validate_camera(const terrain_camera& c) {
+  if (c.width < 1 || c.height < 1 || c.width > max_viewport_side || c.height > max_viewport_side)
+    return status::invalid_argument(
+        detail::cat("camera viewport must be 1 to ", max_viewport_side, " pixels per side, got ", c.width, " x ", c.height));
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j)
+      if (!std::isfinite(c.view[i][j]) || !std::isfinite(c.projection[i][j]))
+        return status::invalid_argument(detail::cat("camera matrices must be finite (column ", i, ", row ", j, ")"));
+  const double dv = glm::determinant(c.view), dp = glm::determinant(c.projection);
+  if (!(std::abs(dv) > 1e-300)) return status::invalid_argument(detail::cat("camera view matrix is singular (determinant ", dv, ")"));
+  if (!(std::abs(dp) > 1e-300))
+    return status::invalid_argument(detail::cat("camera projection matrix is singular (determinant ", dp, ")"));
+  return {};
+}
+
+/// A perspective camera described by where it is and where it looks (z is up in tessera's terrain
+/// scenes, but any up vector not parallel to the view direction works).
+struct look_at_camera {
+  vec3 eye{0, 0, 1};
+  vec3 target{0, 1, 0};
+  vec3 up{0, 0, 1};
+  double fov_y_degrees = 60;  ///< vertical field of view, in (0, 180)
+  double near = 0.01;         ///< distance to the near plane, > 0
+  double far = 1000;          ///< distance to the far plane, > near
+};
+
+/// Builds a terrain_camera with glm::lookAt and glm::perspective (aspect = width / height).
+/// Errors (invalid_argument, naming the value): non-finite vectors, eye equal to target, up
+/// parallel to the view direction, fov_y_degrees outside (0, 180), near <= 0, far <= near, viewport
+/// outside 1..16384 pixels. O(1); thread-safe.
+inline result<terrain_camera> make_camera(const look_at_camera& c, index_t width, index_t height) {
+  if (!is_finite(c.eye) || !is_finite(c.target) || !is_finite(c.up))
+    return status::invalid_argument("camera eye, target and up must be finite");
+  const vec3 dir = c.target - c.eye;
+  const double scale = std::max({norm(c.eye), norm(c.target), 1e-300});
+  if (norm(dir) <= 1e-12 * scale)
+    return status::invalid_argument(detail::cat("camera eye (", c.eye.x, ", ", c.eye.y, ", ", c.eye.z,
+                                                ") equals its target: the view direction is undefined"));
+  if (norm(cross(normalized(dir), normalized(c.up))) <= 1e-9)
+    return status::invalid_argument(detail::cat("camera up (", c.up.x, ", ", c.up.y, ", ", c.up.z,
+                                                ") is zero or parallel to the view direction"));
+  if (!(c.fov_y_degrees > 0 && c.fov_y_degrees < 180))
+    return status::invalid_argument(detail::cat("camera fov_y_degrees must be in (0, 180), got ", c.fov_y_degrees));
+  if (!(c.near > 0) || !std::isfinite(c.near))
+    return status::invalid_argument(detail::cat("camera near must be positive and finite, got ", c.near));
+  if (!(c.far > c.near) || !std::isfinite(c.far))
+    return status::invalid_argument(detail::cat("camera far must be finite and greater than near = ", c.near, ", got ", c.far));
+  terrain_camera cam;
+  cam.width = width;
+  cam.height = height;
+  if (auto s = validate_camera(cam); !s) return s;
+  cam.view = glm::lookAt(glm::dvec3(c.eye.x, c.eye.y, c.eye.z), glm::dvec3(c.target.x, c.target.y, c.target.z),
+                         glm::dvec3(c.up.x, c.up.y, c.up.z));
+  cam.projection = glm::perspective(glm::radians(c.fov_y_degrees), static_cast<double>(width) / static_cast<double>(height),
+                                    c.near, c.far);
+  if (auto s = validate_camera(cam); !s) return s;
+  return cam;
+}
+
+/// Views of a z-up scene used by docs, tests and benchmarks.
+enum class camera_preset {
+  grazing,   ///< low over the ground near one edge, looking across to the far edge (the paper's figures)
+  oblique,   ///< from above a corner at about 35 degrees, the whole scene in view
+  overview,  ///< from high above, slightly tilted, every triangle of a heightfield in view
+};
+
+/// Parses "grazing", "oblique" or "overview".
+inline result<camera_preset> parse_camera_preset(std::string_view s) {
+  if (s == "grazing") return camera_preset::grazing;
+  if (s == "oblique") return camera_preset::oblique;
+  if (s == "overview") return camera_preset::overview;
+  return status::invalid_argument(detail::cat("unknown camera preset '", s, "' (expected grazing, oblique or overview)"));
+}
+
+/// The look-at description of a preset for a scene with these bounds (near and far planes fitted
+/// to the scene). Errors: empty or non-finite bounds.
+inline result<look_at_camera> camera_preset_look_at(camera_preset p, const aabb& bounds) {
+  if (bounds.empty() || !is_finite(bounds.min) || !is_finite(bounds.max))
+    return status::invalid_argument("camera preset: the scene bounds are empty or not finite");
+  const vec3 c = bounds.center(), e = bounds.extent();
+  const double size = std::max({e.x, e.y, 1e-9});
+  const double diag = std::max(norm(e), 1e-9);
+  look_at_camera l;
+  switch (p) {
+    case camera_preset::grazing:
+      l.eye = {c.x, bounds.min.y + 0.04 * e.y, bounds.max.z + 0.025 * size};
+      l.target = {c.x, bounds.max.y, c.z};
+      l.fov_y_degrees = 55;
+      break;
+    case camera_preset::oblique:
+      l.eye = {bounds.min.x - 0.35 * e.x, bounds.min.y - 0.35 * e.y, bounds.max.z + 0.75 * size};
+      l.target = {c.x, c.y, c.z};
+      l.fov_y_degrees = 50;
+      break;
+    case camera_preset::overview: {
+      l.fov_y_degrees = 45;
+      const double r = 0.5 * diag;
+      const double d = 1.05 * r / std::sin(0.5 * l.fov_y_degrees * 3.14159265358979323846 / 180.0);
+      l.eye = {c.x, c.y - 0.45 * d, c.z + 0.9 * d};
+      l.target = c;
+      break;
+    }
+  }
+  const double reach = norm(l.eye - c) + diag;
+  l.near = std::max(1e-4 * diag, 1e-9);
+  l.far = 2 * reach;
+  return l;
+}
+
+/// A preset camera for a scene with these bounds and a width x height viewport. Errors: as
+/// camera_preset_look_at and make_camera.
+inline result<terrain_camera> make_camera_preset(camera_preset p, const aabb& bounds, index_t width, index_t height) {
+  auto l = camera_preset_look_at(p, bounds);
+  if (!l) return l.error();
+  return make_camera(*l, width, height);
+}
+
+TESSERA_NAMESPACE_END

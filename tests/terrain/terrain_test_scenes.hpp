@@ -1,0 +1,38 @@
+// Shared small scenes for the terrain tests.
+#pragma once
+
+#include <tessera/core/random.hpp>
+#include <tessera/core/tri_mesh.hpp>
+#include <tessera/terrain/make_terrain.hpp>
+#include <tessera/terrain/prepare_terrain_mesh.hpp>
+#include <tessera/terrain/project_mesh.hpp>
+#include <tessera/terrain/terrain_camera.hpp>
+
+namespace terrain_test {
+
+inline tessera::terrain_mesh prepared_terrain(tessera::index_t cells, std::uint64_t seed = 1, double height = 14) {
+  auto m = tessera::make_terrain({.cells_x = cells, .cells_y = cells, .height = height, .seed = seed});
+  return tessera::prepare_terrain_mesh(m.value()).value();
+}
+
+inline tessera::terrain_camera preset_camera(const tessera::terrain_mesh& m, tessera::camera_preset p, tessera::index_t w = 160,
+                                             tessera::index_t h = 90) {
+  return tessera::make_camera_preset(p, tessera::bounding_box(m), w, h).value();
+}
+
+/// A random camera somewhere above the terrain looking at a random point of it.
+inline tessera::terrain_camera random_camera(const tessera::terrain_mesh& m, std::uint64_t seed, tessera::index_t w = 120,
+                                             tessera::index_t h = 80) {
+  const tessera::counter_rng rng(seed);
+  const tessera::aabb b = tessera::bounding_box(m);
+  const tessera::vec3 e = b.extent();
+  tessera::look_at_camera l;
+  l.eye = {b.min.x + e.x * rng.uniform(0), b.min.y + e.y * rng.uniform(1), b.max.z + (0.02 + 0.5 * rng.uniform(2)) * e.x};
+  l.target = {b.min.x + e.x * rng.uniform(3), b.min.y + e.y * rng.uniform(4), b.min.z};
+  l.fov_y_degrees = 30 + 60 * rng.uniform(5);
+  l.near = 0.01;
+  l.far = 10 * e.x;
+  return tessera::make_camera(l, w, h).value();
+}
+
+}  // namespace terrain_test
