@@ -1,0 +1,334 @@
+// tessera/image/metrics.hpp: quality measures for synthesized textures, used by tests as invariants,
+// by the `tessera` command's --stats and by benchmarks:
+//
+//   neighborhood_energy   how far output neighbourhoods are from the exemplar's (0: all occur in it)
+//   seam_gradient_ratio   how visible given seams are, relative to the exemplar's own gradients
+//   histogram_distance    how different two images' per-channel value histograms are
+//   repetition_score      how strongly an image repeats itself (largest autocorrelation at a distance)
+//
+// All channel values are taken in the unit range (uint8 0..255 and uint16 0..65535 map to 0..1, float
+// as is), so figures are comparable across pixel types. When two images have different channel
+// counts, the second is converted to the first's with convert_pixel.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "../core/config.hpp"
+#include "../core/executor.hpp"
+#include "../core/image.hpp"
+#include "../core/image_buffer.hpp"
+#include "../core/image_checks.hpp"
+#include "../core/status.hpp"
+#include "detail/fft.hpp"
+#include "detail/nearest.hpp"
+
+TESSERA_NAMESPACE_BEGIN
+
+struct neighborhood_energy_options {
+  index_t window = 5;       ///< neighbourhood side in pixels (>= 1, at most the smaller image side)
+  index_t sample_step = 2;  ///< output windows are taken every sample_step pixels in x and y (>= 1)
+  bool brute_force = false; ///< compare with every exemplar window instead of the kd-tree (same result)
+};
+
+namespace detail {
+/// Copies the w x w window at (x, y) of a float buffer into `out` (row by row).
+template <int C>
+void gather_window(const image_buffer<float, C>& img, index_t x, index_t y, index_t w, float* out) {
+  for (index_t r = 0; r < w; ++r) out = std::copy_n(img.pixel_ptr(x, y + r), w * C, out);
+}
+inline double squared_distance(const float* a, const float* b, index_t n) {
+  double s = 0;
+  for (index_t i = 0; i < n; ++i) {
+    const double d = static_cast<double>(a[i]) - static_cast<double>(b[i]);
+    s += d * d;
+  }
+  return s;
+}
+}  // namespace detail
+
+/// Neighbourhood energy of `output` against `exemplar`: the mean, over output windows of
+/// `window` x `window` pixels taken every `sample_step` pixels, of the smallest RMS distance (channel
+/// values in unit range) to any exemplar window. 0 means every output neighbourhood occurs verbatim
+/// in the exemplar; white noise against a smooth exemplar scores around 0.3 and more. This is the
+/// texture energy that patch-based synthesis implicitly minimizes (paper 002 §1, the MRF model of its
+/// ref. [1]); tests use it as "far closer to the exemplar than noise".
+///
+/// The nearest exemplar window is exact: a nanoflann kd-tree over PCA projections prunes with exact
+/// distances (see image/detail/nearest.hpp), or brute force when `brute_force` is set or the inputs
+/// are tiny. Errors: invalid_argument for an empty image, window < 1 or larger than either image,
+/// sample_step < 1. Complexity: about O(Nq log Ne * window^2) for Nq output windows and Ne exemplar
+/// windows on textured inputs, O(Nq Ne window^2) worst case. Runs on `exec`; the result does not
+/// depend on it. Thread safety: pure function of its inputs.
+template <Image O, Image E, Executor X = serial_executor>
+result<double> neighborhood_energy(const O& output, const E& exemplar, const neighborhood_energy_options& opts = {},
+                                   X&& exec = {}) {
+  constexpr int C = channels_v<O>;
+  if (auto s = validate_image(output, "output"); !s) return s;
+  if (auto s = validate_image(exemplar, "exemplar"); !s) return s;
+  const index_t w = opts.window;
+  if (w < 1) return status::invalid_argument(detail::cat("neighborhood_energy: window must be >= 1, got ", w));
+  if (opts.sample_step < 1)
+    return status::invalid_argument(detail::cat("neighborhood_energy: sample_step must be >= 1, got ", opts.sample_step));
+  if (w > width_of(exemplar) || w > height_of(exemplar) || w > width_of(output) || w > height_of(output))
+    return status::invalid_argument(detail::cat("neighborhood_energy: window ", w, " does not fit the output (",
+                                                width_of(output), " x ", height_of(output), ") and the exemplar (",
+                                                width_of(exemplar), " x ", height_of(exemplar), ")"));
+  auto out = to_buffer<float, C>(output, "output");
+  auto ex = to_buffer<float, C>(exemplar, "exemplar");
+  if (!out) return out.error();
+  if (!ex) return ex.error();
+  const index_t D = w * w * C;
+  const index_t enx = ex->width() - w + 1, eny = ex->height() - w + 1, ne = enx * eny;
+  std::vector<float> windows(static_cast<std::size_t>(ne * D));
+  for (index_t y = 0; y < eny; ++y)
+    for (index_t x = 0; x < enx; ++x) detail::gather_window(*ex, x, y, w, windows.data() + (y * enx + x) * D);
+  const index_t qnx = (out->width() - w) / opts.sample_step + 1, qny = (out->height() - w) / opts.sample_step + 1;
+
+  // kd-tree over PCA projections of the exemplar windows (unless brute force is cheaper or asked for)
+  const bool brute = opts.brute_force || static_cast<double>(ne) * static_cast<double>(qnx * qny) * static_cast<double>(D) < 4e6;
+  Eigen::MatrixXd basis;
+  detail::lower_bound_knn index;
+  if (!brute) {
+    const index_t m = std::min<index_t>(ne, 512);
+    Eigen::MatrixXd samples(m, D);
+    for (index_t s = 0; s < m; ++s) {
+      const float* v = windows.data() + (s * ne / m) * D;
+      for (index_t j = 0; j < D; ++j) samples(s, j) = v[j];
+    }
+    basis = detail::pca_basis(std::move(samples), 12);
+    const int d = static_cast<int>(basis.cols());
+    std::vector<double> proj(static_cast<std::size_t>(ne * d));
+    Eigen::VectorXd v(D);
+    double scale = 0;
+    for (index_t i = 0; i < ne; ++i) {
+      for (index_t j = 0; j < D; ++j) v(j) = windows[static_cast<std::size_t>(i * D + j)];
+      Eigen::Map<Eigen::RowVectorXd>(proj.data() + i * d, d) = v.transpose() * basis;
+      scale = std::max(scale, v.squaredNorm());
+    }
+    index = detail::lower_bound_knn(std::move(proj), ne, d, scale);
+  }
+
+  std::vector<double> row_sums(static_cast<std::size_t>(qny), 0.0);
+  exec.parallel_for(0, qny, [&](index_t qy) {
+    std::vector<float> q(static_cast<std::size_t>(D));
+    std::vector<detail::neighbor> best;
+    Eigen::VectorXd qv(D);
+    double sum = 0;
+    for (index_t qx = 0; qx < qnx; ++qx) {
+      detail::gather_window(*out, qx * opts.sample_step, qy * opts.sample_step, w, q.data());
+      double nearest = 0;
+      if (brute) {
+        nearest = std::numeric_limits<double>::infinity();
+        for (index_t i = 0; i < ne; ++i)
+          nearest = std::min(nearest, detail::squared_distance(q.data(), windows.data() + i * D, D));
+      } else {
+        for (index_t j = 0; j < D; ++j) qv(j) = q[static_cast<std::size_t>(j)];
+        const Eigen::RowVectorXd qp = qv.transpose() * basis;
+        index.search(qp.data(), 1, [&](std::uint32_t i) { return detail::squared_distance(q.data(), windows.data() + i * D, D); },
+                     best);
+        nearest = best.front().dist;
+      }
+      sum += std::sqrt(nearest / static_cast<double>(D));
+    }
+    row_sums[static_cast<std::size_t>(qy)] = sum;
+  });
+  double total = 0;
+  for (double s : row_sums) total += s;
+  return total / static_cast<double>(qnx * qny);
+}
+
+/// A straight seam in an image: `vertical` is the boundary between columns position-1 and position
+/// over rows [begin, end); horizontal is the boundary between rows position-1 and position over
+/// columns [begin, end).
+struct seam_segment {
+  bool vertical = true;
+  index_t position = 0;
+  index_t begin = 0;
+  index_t end = 0;
+};
+
+/// Seam gradient ratio: the mean absolute difference across the given seams (over the pixel pairs
+/// the seams separate and all channels, unit range) divided by the mean absolute difference between
+/// neighbouring pixels of `reference` (the exemplar) in the same directions, weighted by how many seam
+/// pixels run in each direction. About 1 means the seams are as smooth as the exemplar's own texture;
+/// hard, mismatched seams give 2 and more. Measures the visibility of the block boundaries that paper
+/// 002 blends by feathering (§2) and that a minimum-error cut hides.
+///
+/// Errors: invalid_argument for an empty image or reference, no seams, a seam outside the image
+/// (position must be in [1, width-1] for a vertical seam, [1, height-1] for a horizontal one; 0 <=
+/// begin < end <= height or width), or a reference without gradients in the needed direction.
+/// Complexity O(seam pixels + reference pixels). Thread safety: pure function of its inputs.
+template <Image I, Image R>
+result<double> seam_gradient_ratio(const I& image, std::span<const seam_segment> seams, const R& reference) {
+  constexpr int C = channels_v<I>;
+  if (auto s = validate_image(image, "image"); !s) return s;
+  if (auto s = validate_image(reference, "reference"); !s) return s;
+  if (seams.empty()) return status::invalid_argument("seam_gradient_ratio: seams is empty");
+  const index_t w = width_of(image), h = height_of(image);
+  for (std::size_t i = 0; i < seams.size(); ++i) {
+    const seam_segment& s = seams[i];
+    const index_t across = s.vertical ? w : h, along = s.vertical ? h : w;
+    if (s.position < 1 || s.position > across - 1 || s.begin < 0 || s.begin >= s.end || s.end > along)
+      return status::out_of_range(detail::cat("seam_gradient_ratio: seams[", i, "] (", s.vertical ? "vertical" : "horizontal",
+                                              ", position ", s.position, ", rows/columns [", s.begin, ", ", s.end,
+                                              ")) lies outside the ", w, " x ", h, " image"));
+  }
+  auto img = to_buffer<float, C>(image, "image");
+  auto ref = to_buffer<float, C>(reference, "reference");
+  if (!img) return img.error();
+  if (!ref) return ref.error();
+  auto absdiff = [](const float* a, const float* b) {
+    double s = 0;
+    for (int c = 0; c < C; ++c) s += std::abs(static_cast<double>(a[c]) - static_cast<double>(b[c]));
+    return s / C;
+  };
+  double seam_sum = 0;
+  index_t n_vertical = 0, n_horizontal = 0;
+  for (const seam_segment& s : seams)
+    for (index_t t = s.begin; t < s.end; ++t) {
+      if (s.vertical) {
+        seam_sum += absdiff(img->pixel_ptr(s.position - 1, t), img->pixel_ptr(s.position, t));
+        ++n_vertical;
+      } else {
+        seam_sum += absdiff(img->pixel_ptr(t, s.position - 1), img->pixel_ptr(t, s.position));
+        ++n_horizontal;
+      }
+    }
+  // reference gradients: across vertical boundaries (x neighbours) and horizontal ones (y neighbours)
+  double ref_x = 0, ref_y = 0;
+  const index_t rw = ref->width(), rh = ref->height();
+  for (index_t y = 0; y < rh; ++y)
+    for (index_t x = 0; x < rw; ++x) {
+      if (x > 0) ref_x += absdiff(ref->pixel_ptr(x - 1, y), ref->pixel_ptr(x, y));
+      if (y > 0) ref_y += absdiff(ref->pixel_ptr(x, y - 1), ref->pixel_ptr(x, y));
+    }
+  if ((n_vertical > 0 && rw < 2) || (n_horizontal > 0 && rh < 2))
+    return status::invalid_argument(detail::cat("seam_gradient_ratio: reference ", rw, " x ", rh,
+                                                " is too small to measure gradients across the seams"));
+  const double mean_x = rw > 1 ? ref_x / static_cast<double>((rw - 1) * rh) : 0;
+  const double mean_y = rh > 1 ? ref_y / static_cast<double>(rw * (rh - 1)) : 0;
+  const double expected = (static_cast<double>(n_vertical) * mean_x + static_cast<double>(n_horizontal) * mean_y) /
+                          static_cast<double>(n_vertical + n_horizontal);
+  if (!(expected > 0))
+    return status::invalid_argument("seam_gradient_ratio: reference has no gradients in the seams' directions (flat image)");
+  return seam_sum / static_cast<double>(n_vertical + n_horizontal) / expected;
+}
+
+/// Histogram distance: per channel, the L1 distance between the normalized histograms of `a` and
+/// `b` (`bins` equal bins over the unit range; values outside it are clamped, NaN counts as 0),
+/// averaged over channels. In [0, 2]: 0 for identical value distributions, 2 for disjoint ones.
+/// The images may differ in size. Paper 002 §2.1.1 compares grey histograms the same way (with an
+/// L2 distance) to measure how much of the exemplar a patch contains.
+/// Errors: invalid_argument for an empty image or bins outside [1, 65536]. Complexity O(pixels + bins).
+template <Image A, Image B>
+result<double> histogram_distance(const A& a, const B& b, int bins = 32) {
+  constexpr int C = channels_v<A>;
+  if (auto s = validate_image(a, "a"); !s) return s;
+  if (auto s = validate_image(b, "b"); !s) return s;
+  if (bins < 1 || bins > 65536)
+    return status::invalid_argument(detail::cat("histogram_distance: bins must be in [1, 65536], got ", bins));
+  auto fa = to_buffer<float, C>(a, "a");
+  auto fb = to_buffer<float, C>(b, "b");
+  if (!fa) return fa.error();
+  if (!fb) return fb.error();
+  auto histogram = [&](const image_buffer<float, C>& img, int c) {
+    std::vector<double> hist(static_cast<std::size_t>(bins), 0.0);
+    const index_t n = img.width() * img.height();
+    for (index_t i = 0; i < n; ++i) {
+      const float v = img.data()[i * C + c];
+      const double u = v > 0 ? std::min(static_cast<double>(v), 1.0) : 0.0;  // NaN -> 0
+      hist[static_cast<std::size_t>(std::min<index_t>(bins - 1, static_cast<index_t>(u * bins)))] += 1.0 / static_cast<double>(n);
+    }
+    return hist;
+  };
+  double total = 0;
+  for (int c = 0; c < C; ++c) {
+    const auto ha = histogram(*fa, c), hb = histogram(*fb, c);
+    for (int i = 0; i < bins; ++i) total += std::abs(ha[static_cast<std::size_t>(i)] - hb[static_cast<std::size_t>(i)]);
+  }
+  return total / C;
+}
+
+/// Repetition score: the largest normalized autocorrelation of `image` (the Pearson correlation
+/// between the image and itself shifted by (dx, dy), over the overlapping pixels, all channels
+/// pooled with per-channel means) over the offsets with max(|dx|, |dy|) >= min_offset, |dx| <= width/2
+/// and |dy| <= height/2 (so at least a quarter of the image overlaps). Near 1 means visible
+/// repetition (a tiled or copied-through exemplar); synthesized stochastic textures stay well below.
+/// Offsets where either side is flat are skipped; 0 when all are.
+///
+/// Errors: invalid_argument for an empty image or min_offset outside [1, max(width, height) / 2].
+/// Complexity O(C N log N) for N pixels (FFT correlation sums plus integral images).
+/// Thread safety: pure function of its inputs.
+template <Image I>
+result<double> repetition_score(const I& image, index_t min_offset) {
+  constexpr int C = channels_v<I>;
+  if (auto s = validate_image(image, "image"); !s) return s;
+  const index_t w = width_of(image), h = height_of(image), mx = w / 2, my = h / 2;
+  if (min_offset < 1 || min_offset > std::max(mx, my))
+    return status::invalid_argument(detail::cat("repetition_score: min_offset must be in [1, ", std::max<index_t>(1, std::max(mx, my)),
+                                                "] for a ", w, " x ", h, " image, got ", min_offset));
+  auto img = to_buffer<float, C>(image, "image");
+  if (!img) return img.error();
+  const index_t pw = detail::next_pow2(w + mx), ph = detail::next_pow2(h + my);
+  const index_t nox = 2 * mx + 1, noy = my + 1;  // offsets dx in [-mx, mx], dy in [0, my] (symmetry)
+  std::vector<double> cov(static_cast<std::size_t>(nox * noy), 0.0), var_a(cov.size(), 0.0), var_b(cov.size(), 0.0);
+  std::vector<double> f(static_cast<std::size_t>(w * h));
+  std::vector<double> s1(static_cast<std::size_t>((w + 1) * (h + 1))), s2(s1.size());
+  for (int c = 0; c < C; ++c) {
+    double mean = 0;
+    for (index_t i = 0; i < w * h; ++i) mean += img->data()[i * C + c];
+    mean /= static_cast<double>(w * h);
+    for (index_t i = 0; i < w * h; ++i) f[static_cast<std::size_t>(i)] = img->data()[i * C + c] - mean;
+    // integral images of f and f^2: S(x, y) = sum over [0, x) x [0, y)
+    for (index_t y = 0; y <= h; ++y)
+      for (index_t x = 0; x <= w; ++x) {
+        const auto at = static_cast<std::size_t>(y * (w + 1) + x);
+        if (x == 0 || y == 0) {
+          s1[at] = s2[at] = 0;
+          continue;
+        }
+        const double v = f[static_cast<std::size_t>((y - 1) * w + x - 1)];
+        const auto l = at - 1, u = at - static_cast<std::size_t>(w + 1), ul = u - 1;
+        s1[at] = v + s1[l] + s1[u] - s1[ul];
+        s2[at] = v * v + s2[l] + s2[u] - s2[ul];
+      }
+    auto box = [&](const std::vector<double>& s, index_t x0, index_t y0, index_t x1, index_t y1) {
+      auto at = [&](index_t x, index_t y) { return s[static_cast<std::size_t>(y * (w + 1) + x)]; };
+      return at(x1, y1) - at(x0, y1) - at(x1, y0) + at(x0, y0);
+    };
+    const std::vector<double> r = detail::autocorrelation(f.data(), w, h, pw, ph);
+    for (index_t dy = 0; dy <= my; ++dy)
+      for (index_t dx = -mx; dx <= mx; ++dx) {
+        // pairs (x, y) and (x + dx, y + dy) with both inside
+        const index_t ax0 = std::max<index_t>(0, -dx), ax1 = std::min(w, w - dx), ay0 = 0, ay1 = h - dy;
+        const double n = static_cast<double>((ax1 - ax0) * (ay1 - ay0));
+        const double sa = box(s1, ax0, ay0, ax1, ay1), sb = box(s1, ax0 + dx, ay0 + dy, ax1 + dx, ay1 + dy);
+        const double saa = box(s2, ax0, ay0, ax1, ay1), sbb = box(s2, ax0 + dx, ay0 + dy, ax1 + dx, ay1 + dy);
+        const double sab = r[static_cast<std::size_t>(((dy + ph) % ph) * pw + (dx + pw) % pw)];
+        const auto o = static_cast<std::size_t>(dy * nox + dx + mx);
+        cov[o] += sab - sa * sb / n;
+        var_a[o] += saa - sa * sa / n;
+        var_b[o] += sbb - sb * sb / n;
+      }
+  }
+  double best = 0;
+  for (index_t dy = 0; dy <= my; ++dy)
+    for (index_t dx = -mx; dx <= mx; ++dx) {
+      if (std::max(std::abs(dx), dy) < min_offset) continue;
+      const index_t ax = w - std::abs(dx), ay = h - dy;
+      const auto o = static_cast<std::size_t>(dy * nox + dx + mx);
+      const double tiny = 1e-9 * static_cast<double>(ax * ay);
+      if (!(var_a[o] > tiny) || !(var_b[o] > tiny)) continue;
+      best = std::max(best, cov[o] / std::sqrt(var_a[o] * var_b[o]));
+    }
+  return std::min(best, 1.0);
+}
+
+TESSERA_NAMESPACE_END

@@ -1,0 +1,244 @@
+#include <tessera/image/metrics.hpp>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include <catch2/catch.hpp>
+#include <tessera/core/random.hpp>
+#include <tessera/image/exemplars.hpp>
+
+using tessera::index_t;
+
+namespace {
+
+// A member-style user image: 16-bit RGB kept in a vector of arrays.
+struct user_image {
+  index_t w = 0, h = 0;
+  std::vector<std::array<std::uint16_t, 3>> px;
+  index_t width() const { return w; }
+  index_t height() const { return h; }
+  std::array<std::uint16_t, 3> read(index_t x, index_t y) const { return px[static_cast<std::size_t>(y * w + x)]; }
+};
+
+template <class T = std::uint8_t, int C = 3>
+tessera::image_buffer<T, C> exemplar(tessera::exemplar_kind kind, index_t size, std::uint64_t seed = 1) {
+  return tessera::make_exemplar<T, C>(kind, {.width = size, .height = size, .seed = seed}).value();
+}
+
+tessera::image_buffer<std::uint8_t, 3> noise(index_t w, index_t h, std::uint64_t seed) {
+  tessera::image_buffer<std::uint8_t, 3> img(w, h);
+  const tessera::counter_rng rng(seed);
+  for (index_t i = 0; i < w * h * 3; ++i) img.data()[i] = static_cast<std::uint8_t>(rng.below(256, i));
+  return img;
+}
+
+template <class T, int C>
+tessera::image_buffer<T, C> crop(const tessera::image_buffer<T, C>& src, index_t x0, index_t y0, index_t w, index_t h) {
+  tessera::image_buffer<T, C> out(w, h);
+  for (index_t y = 0; y < h; ++y)
+    for (index_t x = 0; x < w; ++x) out.write(x, y, src.read(x0 + x, y0 + y));
+  return out;
+}
+
+// Pearson correlation of the image with itself shifted by (dx, dy), all channels pooled.
+template <class T, int C>
+double brute_autocorrelation(const tessera::image_buffer<T, C>& img, index_t dx, index_t dy) {
+  const index_t w = img.width(), h = img.height();
+  double cov = 0, va = 0, vb = 0;
+  for (int c = 0; c < C; ++c) {
+    double sa = 0, sb = 0, n = 0;
+    for (index_t y = 0; y < h; ++y)
+      for (index_t x = 0; x < w; ++x)
+        if (x + dx >= 0 && x + dx < w && y + dy >= 0 && y + dy < h) {
+          sa += tessera::channel_to_unit(img.read(x, y)[c]);
+          sb += tessera::channel_to_unit(img.read(x + dx, y + dy)[c]);
+          n += 1;
+        }
+    const double ma = sa / n, mb = sb / n;
+    for (index_t y = 0; y < h; ++y)
+      for (index_t x = 0; x < w; ++x)
+        if (x + dx >= 0 && x + dx < w && y + dy >= 0 && y + dy < h) {
+          const double a = tessera::channel_to_unit(img.read(x, y)[c]) - ma;
+          const double b = tessera::channel_to_unit(img.read(x + dx, y + dy)[c]) - mb;
+          cov += a * b;
+          va += a * a;
+          vb += b * b;
+        }
+  }
+  return cov / std::sqrt(va * vb);
+}
+
+}  // namespace
+
+TEST_CASE("neighborhood_energy: zero for the exemplar and its crops, large for noise", "[metrics]") {
+  const auto ex = exemplar(tessera::exemplar_kind::rock, 48);
+  CHECK(tessera::neighborhood_energy(ex, ex).value() == Approx(0).margin(1e-12));
+  const auto part = crop(ex, 7, 11, 30, 25);
+  CHECK(tessera::neighborhood_energy(part, ex).value() == Approx(0).margin(1e-12));
+  const double e_noise = tessera::neighborhood_energy(noise(40, 40, 3), ex).value();
+  const double e_other = tessera::neighborhood_energy(exemplar(tessera::exemplar_kind::dots, 40), ex).value();
+  CHECK(e_noise > 0.2);
+  CHECK(e_other > 0.05);
+}
+
+TEST_CASE("neighborhood_energy: kd-tree search equals brute force, any executor", "[metrics]") {
+  const auto ex = exemplar(tessera::exemplar_kind::grass, 40);
+  const auto other = exemplar(tessera::exemplar_kind::grass, 36, 7);  // same kind, other seed: near but not equal
+  for (index_t window : {3, 5}) {
+    const tessera::neighborhood_energy_options fast{.window = window, .sample_step = 3};
+    auto brute = fast;
+    brute.brute_force = true;
+    const double a = tessera::neighborhood_energy(other, ex, fast).value();
+    const double b = tessera::neighborhood_energy(other, ex, brute).value();
+    CHECK(a == Approx(b).epsilon(1e-12));
+    CHECK(a > 0.0);
+    tessera::thread_pool_executor pool(2);
+    CHECK(tessera::neighborhood_energy(other, ex, fast, pool).value() == a);
+  }
+}
+
+TEST_CASE("neighborhood_energy: pixel types and channel conversion", "[metrics]") {
+  const auto ex8 = exemplar(tessera::exemplar_kind::sand, 32);
+  const auto exf = tessera::to_buffer<float, 3>(ex8).value();
+  const auto out8 = exemplar(tessera::exemplar_kind::sand, 24, 9);
+  user_image out16{24, 24, {}};
+  for (index_t y = 0; y < 24; ++y)
+    for (index_t x = 0; x < 24; ++x) out16.px.push_back(tessera::convert_pixel<std::array<std::uint16_t, 3>>(out8.read(x, y)));
+  const double e8 = tessera::neighborhood_energy(out8, ex8).value();
+  CHECK(tessera::neighborhood_energy(out16, exf).value() == Approx(e8).epsilon(1e-5));
+  CHECK(tessera::neighborhood_energy(out8.cview(), exf).value() == Approx(e8).epsilon(1e-5));
+  // a grey output against a colour exemplar: the exemplar is converted to grey
+  tessera::image_buffer<std::uint8_t, 1> grey(24, 24);
+  REQUIRE(tessera::copy_image(out8, grey).ok());
+  CHECK(tessera::neighborhood_energy(grey, ex8).value() >= 0);
+}
+
+TEST_CASE("neighborhood_energy: bad input", "[metrics]") {
+  const auto ex = exemplar(tessera::exemplar_kind::sand, 16);
+  tessera::image_view<const std::uint8_t, 3> empty;
+  CHECK(tessera::neighborhood_energy(empty, ex).error().code() == tessera::status_code::invalid_argument);
+  CHECK(tessera::neighborhood_energy(ex, empty).error().code() == tessera::status_code::invalid_argument);
+  auto r = tessera::neighborhood_energy(ex, ex, {.window = 0});
+  CHECK(r.error().message().find("window") != std::string::npos);
+  CHECK(!tessera::neighborhood_energy(ex, ex, {.window = 17}));
+  CHECK(!tessera::neighborhood_energy(crop(ex, 0, 0, 4, 16), ex, {.window = 5}));
+  CHECK(tessera::neighborhood_energy(ex, ex, {.window = 5, .sample_step = 0}).error().message().find("sample_step") !=
+        std::string::npos);
+}
+
+TEST_CASE("seam_gradient_ratio: hand-computed values", "[metrics]") {
+  // 4 x 2 grey image: columns 0 1 | 2 3 with a jump between columns 1 and 2
+  tessera::image_buffer<float, 1> img(4, 2);
+  const float v[2][4] = {{0.0f, 0.1f, 0.9f, 1.0f}, {0.0f, 0.1f, 0.9f, 1.0f}};
+  for (index_t y = 0; y < 2; ++y)
+    for (index_t x = 0; x < 4; ++x) img.write(x, y, {v[y][x]});
+  // reference: horizontal steps of 0.1, no vertical change
+  tessera::image_buffer<float, 1> ref(3, 3);
+  for (index_t y = 0; y < 3; ++y)
+    for (index_t x = 0; x < 3; ++x) ref.write(x, y, {0.1f * static_cast<float>(x)});
+  const std::vector<tessera::seam_segment> seams = {{.vertical = true, .position = 2, .begin = 0, .end = 2}};
+  CHECK(tessera::seam_gradient_ratio(img, seams, ref).value() == Approx(8.0).epsilon(1e-5));
+  const std::vector<tessera::seam_segment> smooth = {{.vertical = true, .position = 1, .begin = 0, .end = 2}};
+  CHECK(tessera::seam_gradient_ratio(img, smooth, ref).value() == Approx(1.0).epsilon(1e-5));
+  // a horizontal seam needs vertical gradients, which this reference lacks
+  const std::vector<tessera::seam_segment> horizontal = {{.vertical = false, .position = 1, .begin = 0, .end = 4}};
+  CHECK(tessera::seam_gradient_ratio(img, horizontal, ref).error().code() == tessera::status_code::invalid_argument);
+}
+
+TEST_CASE("seam_gradient_ratio: texture seams against the exemplar", "[metrics]") {
+  const auto grass = exemplar(tessera::exemplar_kind::grass, 64);
+  // a seam inside the exemplar itself is as smooth as the texture
+  const std::vector<tessera::seam_segment> inside = {{.vertical = true, .position = 32, .begin = 0, .end = 64},
+                                                     {.vertical = false, .position = 20, .begin = 0, .end = 64}};
+  const double own = tessera::seam_gradient_ratio(grass, inside, grass).value();
+  CHECK(own > 0.5);
+  CHECK(own < 1.6);
+  // two unrelated textures side by side: a hard seam
+  auto mixed = grass;
+  const auto dots = exemplar(tessera::exemplar_kind::dots, 64);
+  for (index_t y = 0; y < 64; ++y)
+    for (index_t x = 32; x < 64; ++x) mixed.write(x, y, dots.read(x, y));
+  const std::vector<tessera::seam_segment> cut = {{.vertical = true, .position = 32, .begin = 0, .end = 64}};
+  CHECK(tessera::seam_gradient_ratio(mixed, cut, grass).value() > 2.0 * own);
+}
+
+TEST_CASE("seam_gradient_ratio: bad input", "[metrics]") {
+  const auto img = exemplar(tessera::exemplar_kind::sand, 16);
+  const std::vector<tessera::seam_segment> none;
+  CHECK(!tessera::seam_gradient_ratio(img, none, img));
+  for (auto s : {tessera::seam_segment{true, 0, 0, 4}, tessera::seam_segment{true, 16, 0, 4},
+                 tessera::seam_segment{false, 5, 3, 3}, tessera::seam_segment{false, 5, 0, 17},
+                 tessera::seam_segment{true, 5, -1, 2}}) {
+    const std::vector<tessera::seam_segment> one = {s};
+    auto r = tessera::seam_gradient_ratio(img, one, img);
+    REQUIRE(!r);
+    CHECK(r.error().code() == tessera::status_code::out_of_range);
+    CHECK(r.error().message().find("seams[0]") != std::string::npos);
+  }
+  const std::vector<tessera::seam_segment> ok = {{true, 4, 0, 4}};
+  tessera::image_buffer<std::uint8_t, 3> flat(8, 8, {7, 7, 7});
+  CHECK(!tessera::seam_gradient_ratio(img, ok, flat));
+  tessera::image_view<const std::uint8_t, 3> empty;
+  CHECK(!tessera::seam_gradient_ratio(empty, ok, img));
+  CHECK(!tessera::seam_gradient_ratio(img, ok, empty));
+}
+
+TEST_CASE("histogram_distance: identities and bounds", "[metrics]") {
+  const auto a = exemplar(tessera::exemplar_kind::bricks, 32);
+  CHECK(tessera::histogram_distance(a, a).value() == 0.0);
+  // the same image in another pixel type and twice as large (2x2 replicated) has the same histogram
+  tessera::image_buffer<float, 3> big(64, 64);
+  for (index_t y = 0; y < 64; ++y)
+    for (index_t x = 0; x < 64; ++x) big.write(x, y, tessera::convert_pixel<tessera::pixel<float, 3>>(a.read(x / 2, y / 2)));
+  CHECK(tessera::histogram_distance(a, big, 16).value() == Approx(0).margin(1e-12));
+  tessera::image_buffer<std::uint8_t, 1> black(4, 4, {0}), white(5, 3, {255});
+  CHECK(tessera::histogram_distance(black, white).value() == Approx(2.0));
+  // half black half white against all black: |0.5 - 1| + |0.5 - 0| = 1
+  tessera::image_buffer<std::uint8_t, 1> half(2, 1);
+  half.write(1, 0, {255});
+  CHECK(tessera::histogram_distance(half, black, 4).value() == Approx(1.0));
+  const double d1 = tessera::histogram_distance(a, exemplar(tessera::exemplar_kind::grass, 32)).value();
+  const double d2 = tessera::histogram_distance(exemplar(tessera::exemplar_kind::grass, 32), a).value();
+  CHECK(d1 == Approx(d2));
+  CHECK(d1 > 0.5);
+  CHECK(d1 <= 2.0);
+  // out-of-range floats are clamped, NaN counts as 0
+  tessera::image_buffer<float, 1> odd(3, 1);
+  odd.write(0, 0, {-1.0f});
+  odd.write(1, 0, {std::nanf("")});
+  odd.write(2, 0, {0.0f});
+  CHECK(tessera::histogram_distance(odd, black).value() == Approx(0).margin(1e-12));
+  CHECK(!tessera::histogram_distance(a, a, 0));
+  CHECK(tessera::histogram_distance(a, a, 70000).error().message().find("bins") != std::string::npos);
+  tessera::image_view<const std::uint8_t, 3> empty;
+  CHECK(!tessera::histogram_distance(empty, a));
+}
+
+TEST_CASE("repetition_score: tiled images repeat, noise does not; matches brute force", "[metrics]") {
+  const auto tile = exemplar(tessera::exemplar_kind::rock, 24);
+  tessera::image_buffer<std::uint8_t, 3> tiled(48, 48);
+  for (index_t y = 0; y < 48; ++y)
+    for (index_t x = 0; x < 48; ++x) tiled.write(x, y, tile.read(x % 24, y % 24));
+  CHECK(tessera::repetition_score(tiled, 8).value() == Approx(1.0).margin(1e-9));
+  CHECK(tessera::repetition_score(noise(48, 48, 5), 4).value() < 0.25);
+  // brute-force oracle: the score is the max over the allowed offsets
+  const auto img = exemplar(tessera::exemplar_kind::weave, 20);
+  double best = 0;
+  for (index_t dy = 0; dy <= 10; ++dy)
+    for (index_t dx = -10; dx <= 10; ++dx)
+      if (std::max(std::abs(dx), dy) >= 3) best = std::max(best, brute_autocorrelation(img, dx, dy));
+  CHECK(tessera::repetition_score(img, 3).value() == Approx(best).epsilon(1e-9));
+}
+
+TEST_CASE("repetition_score: flat images and bad input", "[metrics]") {
+  tessera::image_buffer<std::uint16_t, 2> flat(16, 8, {100, 65535});
+  CHECK(tessera::repetition_score(flat, 2).value() == 0.0);
+  CHECK(!tessera::repetition_score(flat, 0));
+  auto r = tessera::repetition_score(flat, 9);
+  REQUIRE(!r);
+  CHECK(r.error().message().find("min_offset") != std::string::npos);
+  tessera::image_view<const float, 1> empty;
+  CHECK(!tessera::repetition_score(empty, 1));
+}
