@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "../core/config.hpp"
+#include "../core/executor.hpp"
 #include "../core/mesh.hpp"
 #include "../core/progress.hpp"
 #include "../core/status.hpp"
@@ -67,10 +68,12 @@ inline quilt_params to_params(const mesh_quilt_options& o, bool constrained, std
 /// of it); long elements (threads) are clipped at the rectangle and capped. Every output element is
 /// closed, manifold and intersects no other.
 /// Errors: width or height not positive or not finite, a grid of more than 2^26 cells, bad options;
-/// cancelled when `options.progress` says so. Deterministic for a given seed. Time: about
-/// (area / patch area) patches, each O(candidates * samples * log F) plus the merges.
-inline result<mesh_quilt_result> mesh_quilt(const quilt_exemplar& exemplar, double width, double height,
-                                            const mesh_quilt_options& options = {}) {
+/// cancelled when `options.progress` says so. Deterministic for a given seed, whatever `exec` (the
+/// translation candidates of each patch are scored through it). Time: about (area / patch area)
+/// patches, each O(candidates * samples * log F) plus the merges.
+template <Executor E = serial_executor>
+result<mesh_quilt_result> mesh_quilt(const quilt_exemplar& exemplar, double width, double height, const mesh_quilt_options& options = {},
+                                     E&& exec = {}) {
   if (!(width > 0) || !(height > 0) || !std::isfinite(width) || !std::isfinite(height))
     return status::invalid_argument(detail::cat("mesh_quilt: size must be positive, got ", width, " x ", height));
   if (exemplar.num_elements() == 0) return status::invalid_argument("mesh_quilt: the exemplar is empty (not prepared)");
@@ -79,7 +82,8 @@ inline result<mesh_quilt_result> mesh_quilt(const quilt_exemplar& exemplar, doub
   if (cells > double(1 << 26))
     return status::size_overflow(detail::cat("mesh_quilt: ", width, " x ", height, " is ", cells, " grid cells of ", exemplar.cell_size(),
                                              "; at most 2^26"));
-  detail::quilt_engine engine(exemplar, {0, 0, width, height}, detail::to_params(options, false, 0));
+  detail::quilt_engine engine(exemplar, {0, 0, width, height}, detail::to_params(options, false, 0),
+                              [&exec](index_t n, const std::function<void(index_t)>& fn) { exec.parallel_for(0, n, fn); });
   if (auto s = engine.run(options.progress); !s) return s;
   mesh_quilt_result r;
   r.stats = engine.stats();
@@ -90,11 +94,12 @@ inline result<mesh_quilt_result> mesh_quilt(const quilt_exemplar& exemplar, doub
 
 /// mesh_quilt for any Mesh exemplar (prepared with default quilt_exemplar_options). Also rejects
 /// open or non-manifold exemplars (see prepare_quilt_exemplar).
-template <Mesh M>
-result<mesh_quilt_result> mesh_quilt(const M& exemplar, double width, double height, const mesh_quilt_options& options = {}) {
+template <Mesh M, Executor E = serial_executor>
+result<mesh_quilt_result> mesh_quilt(const M& exemplar, double width, double height, const mesh_quilt_options& options = {},
+                                     E&& exec = {}) {
   auto ex = prepare_quilt_exemplar(exemplar);
   if (!ex) return ex.error();
-  return mesh_quilt(*ex, width, height, options);
+  return mesh_quilt(*ex, width, height, options, exec);
 }
 
 TESSERA_NAMESPACE_END

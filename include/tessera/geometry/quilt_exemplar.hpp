@@ -22,7 +22,7 @@ TESSERA_NAMESPACE_BEGIN
 
 struct quilt_exemplar_options {
   /// Side of the XY grid cells of §3.3.1 (occupancy, translations on grid multiples). 0 = automatic:
-  /// half the median XY diameter of the elements.
+  /// half the median element size (smaller XY extent: a ring's diameter, a thread's width).
   double cell_size = 0;
   /// An element is "long" when its XY extent exceeds this fraction of the exemplar's smaller side.
   double long_element_fraction = 0.45;
@@ -49,7 +49,7 @@ class quilt_exemplar {
   [[nodiscard]] bool is_long(index_t e) const noexcept { return long_[static_cast<std::size_t>(e)] != 0; }
   [[nodiscard]] const aabb& bounds() const noexcept { return bounds_; }
   [[nodiscard]] double cell_size() const noexcept { return cell_; }
-  /// Median XY diameter of the elements.
+  /// Median of the elements' smaller XY extent (a ring's or pebble's diameter, a thread's width).
   [[nodiscard]] double element_diameter() const noexcept { return diameter_; }
   [[nodiscard]] index_t num_elements() const noexcept { return static_cast<index_t>(elements_.size()); }
 
@@ -89,7 +89,7 @@ result<quilt_exemplar> prepare_quilt_exemplar(const M& exemplar, const quilt_exe
   std::vector<double> diam;
   for (const auto& e : q.elements_) {
     const vec3 x = e.box.extent();
-    diam.push_back(std::max(x.x, x.y));
+    diam.push_back(std::min(x.x, x.y));  // across a thread, not along it
   }
   std::nth_element(diam.begin(), diam.begin() + static_cast<std::ptrdiff_t>(diam.size() / 2), diam.end());
   q.diameter_ = diam[diam.size() / 2];
