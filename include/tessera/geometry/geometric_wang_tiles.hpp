@@ -78,7 +78,6 @@ inline tile_frame_result build_frame(const std::vector<edge_strip>& hs, const st
   std::vector<texture_element>& out = r.frame.elements;
   std::vector<int> owner;  // which part each frame element came from
   for (int i = 0; i < 4; ++i) {
-    r.frame.occupied.push_back(parts[i].window);
     for (const auto& el : parts[i].elems)
       if (el.border) out.push_back(el), owner.push_back(i);
   }
@@ -130,6 +129,9 @@ inline tile_frame_result build_frame(const std::vector<edge_strip>& hs, const st
       }
       ++r.dropped;
     }
+  // the cells the frame's elements cover start occupied (§3.3.1); the rest of the strips is filled
+  // by the interior synthesis like any other unoccupied cell
+  for (const auto& el : out) r.frame.occupied.push_back({el.box.min.x, el.box.min.y, el.box.max.x, el.box.max.y});
   return r;
 }
 
