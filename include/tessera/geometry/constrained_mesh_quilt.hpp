@@ -55,11 +55,7 @@ result<mesh_quilt_result> constrained_mesh_quilt(const quilt_exemplar& exemplar,
                               [&exec](index_t n, const std::function<void(index_t)>& fn) { exec.parallel_for(0, n, fn); });
   engine.add_frame(std::move(frame.elements), frame.occupied);
   if (auto s = engine.run(options.progress); !s) return s;
-  mesh_quilt_result r;
-  r.stats = engine.stats();
-  r.elements = engine.take_elements();
-  r.mesh = combine_elements(r.elements);
-  return r;
+  return detail::finish_quilt(engine);
 }
 
 TESSERA_NAMESPACE_END

@@ -57,6 +57,13 @@ inline status check_quilt_options(const mesh_quilt_options& o) {
   if (o.smooth_rings < 0) return status::invalid_argument(detail::cat("mesh_quilt: smooth_rings must be >= 0, got ", o.smooth_rings));
   return {};
 }
+inline mesh_quilt_result finish_quilt(quilt_engine& engine) {
+  mesh_quilt_result r;
+  r.stats = engine.stats();
+  r.elements = engine.take_elements();
+  r.mesh = combine_elements(r.elements);
+  return r;
+}
 inline quilt_params to_params(const mesh_quilt_options& o, bool constrained, std::uint64_t stream) {
   return {o.patch_cells, o.lambda, o.max_samples, o.tolerance, o.icp, o.icp_iterations, o.correspondence_distance,
           o.deform_weight, o.merge, o.smooth_rings, o.seed, stream, constrained};
@@ -85,11 +92,7 @@ result<mesh_quilt_result> mesh_quilt(const quilt_exemplar& exemplar, double widt
   detail::quilt_engine engine(exemplar, {0, 0, width, height}, detail::to_params(options, false, 0),
                               [&exec](index_t n, const std::function<void(index_t)>& fn) { exec.parallel_for(0, n, fn); });
   if (auto s = engine.run(options.progress); !s) return s;
-  mesh_quilt_result r;
-  r.stats = engine.stats();
-  r.elements = engine.take_elements();
-  r.mesh = combine_elements(r.elements);
-  return r;
+  return detail::finish_quilt(engine);
 }
 
 /// mesh_quilt for any Mesh exemplar (prepared with default quilt_exemplar_options). Also rejects

@@ -104,6 +104,33 @@ inline std::vector<std::pair<index_t, index_t>> boundary_edge_set(const tri_mesh
   return e;
 }
 
+/// The boundary loops of a kept part that the cut created (`loops` of the part, `map` from the
+/// original mesh to the part). Loops made only of the original's boundary edges are left out; a loop
+/// mixing both makes the cut unusable (returns false). `out` may alias `loops`.
+inline bool cut_loops(const tri_mesh& original, const std::vector<index_t>& map, const std::vector<std::vector<index_t>>& loops,
+                      std::vector<std::vector<index_t>>& out) {
+  const std::vector<std::pair<index_t, index_t>> orig = boundary_edge_set(original);
+  std::vector<index_t> back;
+  for (std::size_t v = 0; v < map.size(); ++v)
+    if (map[v] >= 0) {
+      if (back.size() <= static_cast<std::size_t>(map[v])) back.resize(static_cast<std::size_t>(map[v]) + 1);
+      back[static_cast<std::size_t>(map[v])] = static_cast<index_t>(v);
+    }
+  std::vector<std::vector<index_t>> kept;
+  for (const auto& l : loops) {
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < l.size(); ++i) {
+      const index_t a = back[static_cast<std::size_t>(l[i])], b = back[static_cast<std::size_t>(l[(i + 1) % l.size()])];
+      n += std::binary_search(orig.begin(), orig.end(), std::pair{std::min(a, b), std::max(a, b)}) ? 1 : 0;
+    }
+    if (n == l.size()) continue;
+    if (n != 0) return false;
+    kept.push_back(l);
+  }
+  out = std::move(kept);
+  return true;
+}
+
 /// True when any two faces of `m` that share no vertex intersect.
 inline bool self_intersects(const tri_mesh& m) {
   const triangle_bvh bvh(m);
@@ -368,45 +395,11 @@ inline std::optional<texture_element> merge_pair(const texture_element& ct, cons
     ++stats.fail_loops;
     return std::nullopt;
   }
-  // loops of C_T that were already boundary (tile-border cuts) stay open
-  std::vector<std::pair<index_t, index_t>> orig_boundary = boundary_edge_set(t2);
-  std::vector<index_t> back_t(kt.positions.size());
-  for (std::size_t v = 0; v < map_t.size(); ++v)
-    if (map_t[v] >= 0) back_t[static_cast<std::size_t>(map_t[v])] = static_cast<index_t>(v);
+  // loops that were already boundary before the cut (tile-border cuts) stay open
   std::vector<std::vector<index_t>> new_t;
-  for (const auto& l : loops_t) {
-    std::size_t orig = 0;
-    for (std::size_t i = 0; i < l.size(); ++i) {
-      const index_t a = back_t[static_cast<std::size_t>(l[i])], b = back_t[static_cast<std::size_t>(l[(i + 1) % l.size()])];
-      orig += std::binary_search(orig_boundary.begin(), orig_boundary.end(), std::pair{std::min(a, b), std::max(a, b)}) ? 1 : 0;
-    }
-    if (orig == l.size()) continue;
-    if (orig != 0) {
-      ++stats.fail_loops;
-      return std::nullopt;
-    }
-    new_t.push_back(l);
-  }
-  {
-    std::vector<std::pair<index_t, index_t>> orig_in = boundary_edge_set(in2);
-    std::vector<index_t> back_in(ki.positions.size());
-    for (std::size_t v = 0; v < map_in.size(); ++v)
-      if (map_in[v] >= 0) back_in[static_cast<std::size_t>(map_in[v])] = static_cast<index_t>(v);
-    std::vector<std::vector<index_t>> kept;
-    for (const auto& l : loops_in) {
-      std::size_t orig = 0;
-      for (std::size_t i = 0; i < l.size(); ++i) {
-        const index_t a = back_in[static_cast<std::size_t>(l[i])], b = back_in[static_cast<std::size_t>(l[(i + 1) % l.size()])];
-        orig += std::binary_search(orig_in.begin(), orig_in.end(), std::pair{std::min(a, b), std::max(a, b)}) ? 1 : 0;
-      }
-      if (orig == l.size()) continue;
-      if (orig != 0) {
-        ++stats.fail_loops;
-        return std::nullopt;
-      }
-      kept.push_back(l);
-    }
-    loops_in = std::move(kept);
+  if (!cut_loops(t2, map_t, loops_t, new_t) || !cut_loops(in2, map_in, loops_in, loops_in)) {
+    ++stats.fail_loops;
+    return std::nullopt;
   }
   if (new_t.empty() || new_t.size() != loops_in.size()) {
     ++stats.fail_loops;
