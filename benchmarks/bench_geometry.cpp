@@ -1,10 +1,13 @@
 // Benchmarks of the geometry family (paper 000): building blocks (BVH, max-flow, Laplacian, ICP),
 // mesh quilting per output area, geometric Wang tile sets per tile and per set, tiling 64 x 64 tiles.
-// Same-run baselines: brute-force closest point, a memcpy of the tiled plane's bytes, Edmonds-Karp.
+// Same-run baselines: brute-force closest point, a memcpy of the tiled plane's bytes (warm and into
+// fresh memory), Edmonds-Karp.
 #include <benchmark/benchmark.h>
 
 #include <cstring>
 #include <deque>
+#include <map>
+#include <memory>
 #include <vector>
 
 #include <tessera/geometry/bvh.hpp>
@@ -168,14 +171,31 @@ static void BM_mesh_quilt_per_area(benchmark::State& state) {
 BENCHMARK(BM_mesh_quilt_per_area)->Arg(12)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 namespace {
-const geometric_tile_set& ring_tiles() {
-  static const geometric_tile_set s = [] {
+// Tile sets of the ring exemplar: arg 0 = tile 6.4 (about 5.7k triangles a tile), arg 1 = tile 3.2
+// (about 1.4k triangles a tile, the size of the paper's tiles: Table 1 of paper 000 has 0.5k-2.6k).
+const geometric_tile_set& ring_tiles(std::int64_t which) {
+  static std::map<std::int64_t, geometric_tile_set> sets;
+  auto it = sets.find(which);
+  if (it == sets.end()) {
     geometric_wang_options o;
-    o.tile_size = 6.4;
+    o.tile_size = which == 0 ? 6.4 : 3.2;
     thread_pool_executor pool(2);
-    return *build_geometric_wang_tiles(prepared_rings(), o, pool);
-  }();
-  return s;
+    it = sets.emplace(which, *build_geometric_wang_tiles(prepared_rings(), o, pool)).first;
+  }
+  return it->second;
+}
+const stored_tile_coloring& coloring_64() {
+  static const stored_tile_coloring c = store_coloring(*hash_coloring::create(2, 2, 3)->window(0, 0, 64, 64));
+  return c;
+}
+std::size_t plane_bytes(const geometric_plane_layout& l) {
+  return std::size_t(l.num_vertices()) * sizeof(vec3) + std::size_t(l.num_faces()) * sizeof(std::array<index_t, 3>);
+}
+void plane_counters(benchmark::State& state, const geometric_plane_layout& l) {
+  state.counters["triangles/s"] = benchmark::Counter(double(l.num_faces()) * double(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["triangles"] = double(l.num_faces());
+  state.counters["tri_per_tile"] = double(l.num_faces()) / (64.0 * 64.0);
+  state.counters["bytes/s"] = benchmark::Counter(double(plane_bytes(l)) * double(state.iterations()), benchmark::Counter::kIsRate);
 }
 }  // namespace
 
@@ -189,42 +209,63 @@ static void BM_geometric_wang_tile_set_16(benchmark::State& state) {
 }
 BENCHMARK(BM_geometric_wang_tile_set_16)->Unit(benchmark::kMillisecond)->Iterations(1);
 
-// the goal: 64 x 64 tiles welded into one mesh in under 1 s
+// the goal: 64 x 64 tiles welded into one mesh in under 1 s (returned as a tri_mesh: allocation and
+// the vectors' zero fill included)
 static void BM_tile_plane_64x64(benchmark::State& state) {
-  const auto& set = ring_tiles();
-  const auto coloring = store_coloring(*hash_coloring::create(2, 2, 3)->window(0, 0, 64, 64));
+  const auto& set = ring_tiles(state.range(0));
   thread_pool_executor pool(2);
-  index_t faces = 0;
   for (auto _ : state) {
-    auto plane = tile_geometric_plane(set, coloring, 64, 64, pool);
-    faces = plane->num_faces();
-    benchmark::DoNotOptimize(plane);
+    auto plane = tile_geometric_plane(set, coloring_64(), 64, 64, pool);
+    benchmark::DoNotOptimize(plane->positions.data());
   }
-  state.counters["triangles/s"] = benchmark::Counter(double(faces) * double(state.iterations()), benchmark::Counter::kIsRate);
-  state.counters["triangles"] = double(faces);
+  plane_counters(state, *plan_geometric_plane(set, coloring_64(), 64, 64));
 }
-BENCHMARK(BM_tile_plane_64x64)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_tile_plane_64x64)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// baseline: copying the tiles' vertices and faces into one buffer without translating or welding
-static void BM_baseline_memcpy_64x64_tiles(benchmark::State& state) {
-  const auto& set = ring_tiles();
-  std::size_t bytes = 0;
-  for (index_t i = 0; i < 64 * 64; ++i) {
-    const auto& t = set.tiles[std::size_t(i) % set.tiles.size()];
-    bytes += t.positions.size() * sizeof(vec3) + t.faces.size() * sizeof(std::array<index_t, 3>);
-  }
-  std::vector<char> out(bytes);
+// the same, planned and written into fresh uninitialised caller storage (engine vertex buffers)
+static void BM_tile_plane_64x64_into_storage(benchmark::State& state) {
+  const auto& set = ring_tiles(state.range(0));
+  thread_pool_executor pool(2);
   for (auto _ : state) {
-    char* p = out.data();
-    for (index_t i = 0; i < 64 * 64; ++i) {
-      const auto& t = set.tiles[std::size_t(i) % set.tiles.size()];
-      std::memcpy(p, t.positions.data(), t.positions.size() * sizeof(vec3)), p += t.positions.size() * sizeof(vec3);
-      std::memcpy(p, t.faces.data(), t.faces.size() * sizeof(std::array<index_t, 3>)), p += t.faces.size() * sizeof(std::array<index_t, 3>);
-    }
-    benchmark::DoNotOptimize(out.data());
+    const auto l = plan_geometric_plane(set, coloring_64(), 64, 64);
+    std::allocator<vec3> av;
+    std::allocator<std::array<index_t, 3>> af;
+    const std::size_t nv = std::size_t(l->num_vertices()), nf = std::size_t(l->num_faces());
+    vec3* p = av.allocate(nv);
+    std::array<index_t, 3>* f = af.allocate(nf);
+    benchmark::DoNotOptimize(l->write({p, nv}, {f, nf}, pool));
+    benchmark::DoNotOptimize(p);
+    av.deallocate(p, nv), af.deallocate(f, nf);
   }
-  state.counters["bytes/s"] = benchmark::Counter(double(bytes) * double(state.iterations()), benchmark::Counter::kIsRate);
+  plane_counters(state, *plan_geometric_plane(set, coloring_64(), 64, 64));
 }
-BENCHMARK(BM_baseline_memcpy_64x64_tiles)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_tile_plane_64x64_into_storage)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// baselines: one memcpy of the welded plane's bytes (vertices + faces), into a buffer already in
+// memory, and into a freshly allocated one (page faults included, as for a new mesh)
+static void BM_baseline_memcpy_plane_bytes(benchmark::State& state) {
+  const auto l = plan_geometric_plane(ring_tiles(state.range(0)), coloring_64(), 64, 64);
+  const std::size_t bytes = plane_bytes(*l);
+  std::vector<char> src(bytes, 1), dst(bytes, 0);
+  for (auto _ : state) {
+    std::memcpy(dst.data(), src.data(), bytes);
+    benchmark::DoNotOptimize(dst.data());
+  }
+  plane_counters(state, *l);
+}
+BENCHMARK(BM_baseline_memcpy_plane_bytes)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+static void BM_baseline_alloc_memcpy_plane_bytes(benchmark::State& state) {
+  const auto l = plan_geometric_plane(ring_tiles(state.range(0)), coloring_64(), 64, 64);
+  const std::size_t bytes = plane_bytes(*l);
+  std::vector<char> src(bytes, 1);
+  for (auto _ : state) {
+    std::unique_ptr<char[]> dst(new char[bytes]);
+    std::memcpy(dst.get(), src.data(), bytes);
+    benchmark::DoNotOptimize(dst.get());
+  }
+  plane_counters(state, *l);
+}
+BENCHMARK(BM_baseline_alloc_memcpy_plane_bytes)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 BENCHMARK_MAIN();

@@ -6,6 +6,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <map>
 #include <set>
 
 using namespace tessera;
@@ -86,6 +87,44 @@ TEST_CASE("geometric Wang tiles: complete set, identical borders, continuous til
   // the same with a thread pool
   thread_pool_executor pool(3);
   REQUIRE(*tile_geometric_plane(set, c, cols, rows, pool) == *plane);
+  // oracle: lay the tiles out unwelded and weld by exact position; same vertices, same faces
+  {
+    std::map<std::array<double, 3>, index_t> weld;
+    for (std::size_t v = 0; v < plane->positions.size(); ++v) {
+      const vec3 p = plane->positions[v];
+      REQUIRE(weld.emplace(std::array<double, 3>{p.x, p.y, p.z}, index_t(v)).second);  // no duplicate left unwelded
+    }
+    std::size_t fi = 0;
+    for (index_t f = 0; f < cols * rows; ++f) {
+      const auto& col = c.colors[std::size_t(f)];
+      const tri_mesh& tile = set.tiles[std::size_t(complete_tile_index({col[0], col[1], col[2], col[3]}, 2, 2))];
+      const vec3 off{double(f % cols) * w, double(rows - 1 - f / cols) * w, 0};
+      for (const auto& tf : tile.faces) {
+        REQUIRE(fi < plane->faces.size());
+        for (std::size_t k = 0; k < 3; ++k) {
+          const vec3 p = tile.positions[std::size_t(tf[k])] + off;
+          const auto it = weld.find({p.x, p.y, p.z});
+          REQUIRE(it != weld.end());
+          REQUIRE(plane->faces[fi][k] == it->second);
+        }
+        ++fi;
+      }
+    }
+    REQUIRE(fi == plane->faces.size());
+  }
+  // the two-step form writes the same mesh into caller storage; wrong sizes are refused
+  {
+    const auto layout = plan_geometric_plane(set, c, cols, rows);
+    REQUIRE(layout.ok());
+    REQUIRE(layout->num_vertices() == plane->num_vertices());
+    std::vector<vec3> pos(std::size_t(layout->num_vertices()), vec3{-7, -7, -7});
+    std::vector<std::array<index_t, 3>> faces(std::size_t(layout->num_faces()), {-1, -1, -1});
+    REQUIRE(layout->write(pos, faces, pool).ok());
+    REQUIRE(pos == plane->positions);
+    REQUIRE(faces == plane->faces);
+    pos.pop_back();
+    REQUIRE(layout->write(pos, faces).message().find("vertices") != std::string::npos);
+  }
   // bad colourings
   stored_tile_coloring bad{2, 2, {{0, 0, 0, 0}, {1, 1, 1, 1}}};  // touching sides disagree
   REQUIRE_FALSE(tile_geometric_plane(set, bad, 2, 1).ok());
@@ -117,6 +156,11 @@ TEST_CASE("geometric Wang tiles reject bad input", "[geometric_wang]") {
   tri_mesh nonmanifold = *make_ring_exemplar({.size = 4});
   nonmanifold.add_face(nonmanifold.faces[0][0], nonmanifold.faces[0][1], nonmanifold.add_vertex({9, 9, 9}));
   REQUIRE(build_geometric_wang_tiles(nonmanifold, o).error().message().find("non-manifold") != std::string::npos);
+  tri_mesh open = *make_ring_exemplar({.size = 4});
+  open.faces.pop_back();  // open exemplars are rejected, not repaired
+  REQUIRE(build_geometric_wang_tiles(open, o).error().message().find("open edges") != std::string::npos);
+  o.horizontal_colors = 2, o.vertical_colors = 0;
+  REQUIRE(build_geometric_wang_tiles(ex, o).error().message().find("vertical") != std::string::npos);
 }
 
 TEST_CASE("geometric Wang tiles from an exemplar smaller than the tile quilt a larger source", "[geometric_wang]") {

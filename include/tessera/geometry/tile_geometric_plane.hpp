@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <map>
+#include <span>
 #include <vector>
 
 #include "../core/config.hpp"
@@ -107,15 +109,105 @@ inline result<index_t> tile_set_border_mismatch(const geometric_tile_set& set, d
   return mismatches;
 }
 
-/// Lays out `set` on a cols x rows grid by `coloring` (face = row * cols + col, row 0 at the top:
-/// cell (col, row) covers x in [col w, (col + 1) w], y in [(rows - 1 - row) w, (rows - row) w]) and
-/// welds touching borders into one mesh. Each cell uses the tile whose four edge colours match.
-/// Errors: a colouring that is not a valid cols x rows colouring, colour counts that differ from the
-/// set's, a cell whose edges no tile has, tiles whose matching borders have different vertex counts
-/// (an inconsistent set), more than 2^31 output vertices. Cells are filled in parallel through
-/// `exec`; the mesh is identical for every executor. O(output size).
-template <TileColoring C, Executor E = serial_executor>
-result<tri_mesh> tile_geometric_plane(const geometric_tile_set& set, const C& coloring, index_t cols, index_t rows, E&& exec = {}) {
+/// The welded layout of a tiled plane, prepared once by plan_geometric_plane: which tile fills each
+/// cell, where each cell's vertices and faces land in the output, and per tile the precomputed
+/// weld maps of its borders. Vertices on a tile's south and east sides belong to the cell below or
+/// to the right (found through the k-th vertex of that tile's north or west side, the canonical
+/// order of tile_border_vertices), so no vertex is hashed or searched. Writing is one pass over the
+/// output, tile by tile in parallel. The layout refers to the tile set it was planned from, which
+/// must outlive it and stay unchanged.
+class geometric_plane_layout {
+ public:
+  [[nodiscard]] index_t cols() const noexcept { return cols_; }
+  [[nodiscard]] index_t rows() const noexcept { return rows_; }
+  [[nodiscard]] index_t num_vertices() const noexcept { return vbase_.empty() ? 0 : vbase_.back(); }
+  [[nodiscard]] index_t num_faces() const noexcept { return fbase_.empty() ? 0 : fbase_.back(); }
+  /// Tile index used at cell `cell` (row * cols + col).
+  [[nodiscard]] index_t tile_at(index_t cell) const noexcept { return type_[static_cast<std::size_t>(cell)]; }
+
+  /// Writes the welded plane into caller storage of exactly num_vertices() positions and
+  /// num_faces() faces (any contents: every element is overwritten, nothing is read, so the storage
+  /// need not be initialised). Cell (col, row) covers x in [col w, (col + 1) w], y in
+  /// [(rows - 1 - row) w, (rows - row) w]; faces keep the tiles' orientation. Cells are written in
+  /// parallel through `exec`, each to its own ranges: the output is identical for every executor.
+  /// Errors: spans of the wrong size. O(output size); thread-safe (const).
+  template <Executor E = serial_executor>
+  status write(std::span<vec3> positions, std::span<std::array<index_t, 3>> faces, E&& exec = {}) const {
+    if (static_cast<index_t>(positions.size()) != num_vertices() || static_cast<index_t>(faces.size()) != num_faces())
+      return status::invalid_argument(detail::cat("geometric_plane_layout::write: storage for ", positions.size(), " vertices and ", faces.size(),
+                                                  " faces, the plane has ", num_vertices(), " and ", num_faces()));
+    exec.parallel_for(0, cols_ * rows_, [&](index_t cell) { write_cell(cell, positions.data(), faces.data()); });
+    return {};
+  }
+
+ private:
+  template <TileColoring C>
+  friend result<geometric_plane_layout> plan_geometric_plane(const geometric_tile_set&, const C&, index_t, index_t);
+
+  struct tile_plan {
+    std::vector<index_t> owned;   // tile vertices every cell writes, in output order (all but south/east sides)
+    std::vector<index_t> south, east;  // tile vertices on the south / east side, canonical order
+    std::vector<index_t> north_rank, west_rank;  // owned rank of the k-th north / west vertex
+    std::vector<std::array<std::int32_t, 3>> faces;  // local ids: < owned.size() owned rank, then south k, then east k
+  };
+
+  void write_cell(index_t cell, vec3* out_pos, std::array<index_t, 3>* out_faces) const {
+    const index_t r = cell / cols_, c = cell % cols_;
+    const std::size_t t = static_cast<std::size_t>(type_[static_cast<std::size_t>(cell)]);
+    const tile_plan& P = plan_[t];
+    const std::vector<vec3>& src = set_->tiles[t].positions;
+    const vec3 off{static_cast<double>(c) * w_, static_cast<double>(rows_ - 1 - r) * w_, 0};
+    const index_t base = vbase_[static_cast<std::size_t>(cell)];
+    const std::size_t no = P.owned.size(), ns = P.south.size(), ne = P.east.size();
+    vec3* dst = out_pos + base;
+    for (std::size_t i = 0; i < no; ++i) dst[i] = src[static_cast<std::size_t>(P.owned[i])] + off;
+    // global ids of the south and east vertices: new ones on the plane border, else the neighbour's
+    thread_local std::vector<index_t> border;
+    border.resize(ns + ne);
+    index_t extra = base + static_cast<index_t>(no);
+    if (r == rows_ - 1) {
+      for (std::size_t k = 0; k < ns; ++k) dst[no + k] = src[static_cast<std::size_t>(P.south[k])] + off, border[k] = extra + static_cast<index_t>(k);
+      extra += static_cast<index_t>(ns);
+    } else {
+      const std::size_t below = static_cast<std::size_t>(cell + cols_);
+      const tile_plan& B = plan_[static_cast<std::size_t>(type_[below])];
+      for (std::size_t k = 0; k < ns; ++k) border[k] = vbase_[below] + B.north_rank[k];
+    }
+    if (c == cols_ - 1) {
+      vec3* de = out_pos + extra;
+      for (std::size_t k = 0; k < ne; ++k) de[k] = src[static_cast<std::size_t>(P.east[k])] + off, border[ns + k] = extra + static_cast<index_t>(k);
+    } else {
+      const std::size_t right = static_cast<std::size_t>(cell + 1);
+      const tile_plan& B = plan_[static_cast<std::size_t>(type_[right])];
+      for (std::size_t k = 0; k < ne; ++k) border[ns + k] = vbase_[right] + B.west_rank[k];
+    }
+    const std::int32_t owned = static_cast<std::int32_t>(no);
+    const index_t* bd = border.data();
+    std::array<index_t, 3>* df = out_faces + fbase_[static_cast<std::size_t>(cell)];
+    for (std::size_t f = 0; f < P.faces.size(); ++f) {
+      const auto& l = P.faces[f];
+      df[f] = {l[0] < owned ? base + l[0] : bd[l[0] - owned], l[1] < owned ? base + l[1] : bd[l[1] - owned], l[2] < owned ? base + l[2] : bd[l[2] - owned]};
+    }
+  }
+
+  const geometric_tile_set* set_ = nullptr;
+  index_t cols_ = 0, rows_ = 0;
+  double w_ = 0;
+  std::vector<index_t> type_;          // tile per cell
+  std::vector<tile_plan> plan_;        // per tile (empty when unused)
+  std::vector<index_t> vbase_, fbase_;  // output offsets per cell (+ total)
+};
+
+/// Plans the welded layout of `set` on a cols x rows grid by `coloring` (face = row * cols + col, row
+/// 0 at the top). Each cell uses the tile whose four edge colours match; touching borders are welded
+/// by the canonical vertex order of their sides, which is identical for every tile carrying a colour
+/// (paper 000 §3.2). Errors: a colouring that is not a valid cols x rows colouring, colour counts
+/// that differ from the set's, a cell whose edges no tile has, a tile with a vertex outside the tile
+/// or on a corner, neighbours whose shared borders have different vertex counts (an inconsistent
+/// set), more than 2^31 output vertices. O(cells + size of the tiles used); not thread-safe only in
+/// the sense that `set` must not change while the layout is used.
+template <TileColoring C>
+result<geometric_plane_layout> plan_geometric_plane(const geometric_tile_set& set, const C& coloring, index_t cols, index_t rows) {
   if (auto s = check_grid_coloring(coloring, cols, rows); !s) return s;
   if (coloring.num_colors(side_north) != set.horizontal_colors || coloring.num_colors(side_east) != set.vertical_colors)
     return status::invalid_argument(detail::cat("tile_geometric_plane: the colouring has ", coloring.num_colors(side_north), " x ",
@@ -127,8 +219,10 @@ result<tri_mesh> tile_geometric_plane(const geometric_tile_set& set, const C& co
     const auto& e = set.edges[t];
     by_edges.emplace(std::array<int, 4>{e.north, e.east, e.south, e.west}, static_cast<index_t>(t));
   }
+  geometric_plane_layout L;
+  L.set_ = &set, L.cols_ = cols, L.rows_ = rows, L.w_ = set.tile_size;
   const std::size_t ncells = static_cast<std::size_t>(cols * rows);
-  std::vector<index_t> type(ncells);
+  L.type_.resize(ncells);
   std::vector<unsigned char> used(set.tiles.size(), 0);
   for (index_t f = 0; f < cols * rows; ++f) {
     const std::array<int, 4> key{coloring.edge_color(f, 0), coloring.edge_color(f, 1), coloring.edge_color(f, 2), coloring.edge_color(f, 3)};
@@ -136,99 +230,82 @@ result<tri_mesh> tile_geometric_plane(const geometric_tile_set& set, const C& co
     if (it == by_edges.end())
       return status::invalid_argument(detail::cat("tile_geometric_plane: cell ", f, " needs edges [", key[0], ", ", key[1], ", ", key[2], ", ",
                                                   key[3], "] which no tile has"));
-    type[static_cast<std::size_t>(f)] = it->second;
+    L.type_[static_cast<std::size_t>(f)] = it->second;
     used[static_cast<std::size_t>(it->second)] = 1;
   }
-  // per tile type: border layout and the order of the vertices every cell owns (all but south/east)
-  struct layout {
-    tile_border_layout border;
-    std::vector<index_t> rank;  // owned rank, or -1 for south/east vertices
-    index_t owned = 0;
-  };
-  std::vector<layout> lay(set.tiles.size());
+  // per tile: owned vertices, south/east sides, weld maps of the north/west sides, local faces
+  L.plan_.resize(set.tiles.size());
   for (std::size_t t = 0; t < set.tiles.size(); ++t) {
     if (!used[t]) continue;
-    auto b = tile_border_vertices(set.tiles[t], set.tile_size);
+    const tri_mesh& tile = set.tiles[t];
+    if (tile.positions.size() > std::size_t{1} << 30)
+      return status::size_overflow(detail::cat("tile_geometric_plane: tile ", t, " has ", tile.positions.size(), " vertices"));
+    auto b = tile_border_vertices(tile, set.tile_size);
     if (!b) return b.error();
-    lay[t].border = std::move(*b);
-    lay[t].rank.assign(set.tiles[t].positions.size(), -1);
-    for (std::size_t v = 0; v < set.tiles[t].positions.size(); ++v) {
-      const int s = lay[t].border.side_of[v];
-      if (s != side_south && s != side_east) lay[t].rank[v] = lay[t].owned++;
+    auto& P = L.plan_[t];
+    std::vector<std::int32_t> local(tile.positions.size(), -1);
+    for (std::size_t v = 0; v < tile.positions.size(); ++v) {
+      const int s = b->side_of[v];
+      if (s != side_south && s != side_east) local[v] = static_cast<std::int32_t>(P.owned.size()), P.owned.push_back(static_cast<index_t>(v));
     }
+    P.south = std::move(b->side[side_south]);
+    P.east = std::move(b->side[side_east]);
+    for (std::size_t k = 0; k < P.south.size(); ++k) local[static_cast<std::size_t>(P.south[k])] = static_cast<std::int32_t>(P.owned.size() + k);
+    for (std::size_t k = 0; k < P.east.size(); ++k)
+      local[static_cast<std::size_t>(P.east[k])] = static_cast<std::int32_t>(P.owned.size() + P.south.size() + k);
+    for (index_t v : b->side[side_north]) P.north_rank.push_back(local[static_cast<std::size_t>(v)]);
+    for (index_t v : b->side[side_west]) P.west_rank.push_back(local[static_cast<std::size_t>(v)]);
+    P.faces.resize(tile.faces.size());
+    for (std::size_t f = 0; f < tile.faces.size(); ++f)
+      for (std::size_t k = 0; k < 3; ++k) {
+        const index_t v = tile.faces[f][k];
+        if (v < 0 || v >= tile.num_vertices())
+          return status::invalid_argument(detail::cat("tile_geometric_plane: tile ", t, " face ", f, " has vertex ", v, " out of range"));
+        P.faces[f][k] = local[static_cast<std::size_t>(v)];
+      }
   }
   // neighbours must agree on their shared border's vertex count
+  const auto plan_at = [&](index_t cell) -> const auto& { return L.plan_[static_cast<std::size_t>(L.type_[static_cast<std::size_t>(cell)])]; };
   for (index_t r = 0; r < rows; ++r)
     for (index_t c = 0; c < cols; ++c) {
-      const auto& a = lay[static_cast<std::size_t>(type[static_cast<std::size_t>(r * cols + c)])].border;
-      if (r + 1 < rows && a.side[side_south].size() != lay[static_cast<std::size_t>(type[static_cast<std::size_t>((r + 1) * cols + c)])].border.side[side_north].size())
+      const auto& a = plan_at(r * cols + c);
+      if (r + 1 < rows && a.south.size() != plan_at((r + 1) * cols + c).north_rank.size())
         return status::invalid_argument(detail::cat("tile_geometric_plane: tiles at cells ", r * cols + c, " and ", (r + 1) * cols + c,
                                                     " have different border vertex counts (inconsistent tile set)"));
-      if (c + 1 < cols && a.side[side_east].size() != lay[static_cast<std::size_t>(type[static_cast<std::size_t>(r * cols + c + 1)])].border.side[side_west].size())
+      if (c + 1 < cols && a.east.size() != plan_at(r * cols + c + 1).west_rank.size())
         return status::invalid_argument(detail::cat("tile_geometric_plane: tiles at cells ", r * cols + c, " and ", r * cols + c + 1,
                                                     " have different border vertex counts (inconsistent tile set)"));
     }
   // vertex and face offsets per cell
-  std::vector<index_t> vbase(ncells + 1, 0), fbase(ncells + 1, 0);
+  L.vbase_.assign(ncells + 1, 0), L.fbase_.assign(ncells + 1, 0);
   for (index_t r = 0; r < rows; ++r)
     for (index_t c = 0; c < cols; ++c) {
       const std::size_t cell = static_cast<std::size_t>(r * cols + c);
-      const auto& L = lay[static_cast<std::size_t>(type[cell])];
-      index_t n = L.owned;
-      if (r == rows - 1) n += static_cast<index_t>(L.border.side[side_south].size());
-      if (c == cols - 1) n += static_cast<index_t>(L.border.side[side_east].size());
-      vbase[cell + 1] = vbase[cell] + n;
-      fbase[cell + 1] = fbase[cell] + set.tiles[static_cast<std::size_t>(type[cell])].num_faces();
+      const auto& P = plan_at(static_cast<index_t>(cell));
+      index_t n = static_cast<index_t>(P.owned.size());
+      if (r == rows - 1) n += static_cast<index_t>(P.south.size());
+      if (c == cols - 1) n += static_cast<index_t>(P.east.size());
+      L.vbase_[cell + 1] = L.vbase_[cell] + n;
+      L.fbase_[cell + 1] = L.fbase_[cell] + static_cast<index_t>(P.faces.size());
     }
-  if (vbase.back() > (index_t{1} << 31))
-    return status::size_overflow(detail::cat("tile_geometric_plane: ", vbase.back(), " vertices exceed 2^31"));
+  if (L.vbase_.back() > (index_t{1} << 31))
+    return status::size_overflow(detail::cat("tile_geometric_plane: ", L.vbase_.back(), " vertices exceed 2^31"));
+  return L;
+}
+
+/// Lays out `set` on a cols x rows grid by `coloring` and welds touching borders into one mesh
+/// (plan_geometric_plane, then geometric_plane_layout::write into a tri_mesh sized once). Callers
+/// that own their vertex storage, or tile the same grid repeatedly, use the two steps directly.
+/// Errors: those of plan_geometric_plane. Cells are filled in parallel through `exec`; the mesh is
+/// identical for every executor. O(output size).
+template <TileColoring C, Executor E = serial_executor>
+result<tri_mesh> tile_geometric_plane(const geometric_tile_set& set, const C& coloring, index_t cols, index_t rows, E&& exec = {}) {
+  auto plan = plan_geometric_plane(set, coloring, cols, rows);
+  if (!plan) return plan.error();
   tri_mesh out;
-  out.positions.resize(static_cast<std::size_t>(vbase.back()));
-  out.faces.resize(static_cast<std::size_t>(fbase.back()));
-  const double w = set.tile_size;
-  exec.parallel_for(0, static_cast<index_t>(ncells), [&](index_t cell) {
-    const index_t r = cell / cols, c = cell % cols;
-    const std::size_t t = static_cast<std::size_t>(type[static_cast<std::size_t>(cell)]);
-    const tri_mesh& tile = set.tiles[t];
-    const layout& L = lay[t];
-    const vec3 off{static_cast<double>(c) * w, static_cast<double>(rows - 1 - r) * w, 0};
-    const index_t base = vbase[static_cast<std::size_t>(cell)];
-    const index_t extra_s = L.owned, extra_e = L.owned + (r == rows - 1 ? static_cast<index_t>(L.border.side[side_south].size()) : 0);
-    std::vector<index_t> gid(tile.positions.size());
-    std::vector<index_t> kth(tile.positions.size(), -1);
-    for (int s : {side_south, side_east})
-      for (std::size_t k = 0; k < L.border.side[static_cast<std::size_t>(s)].size(); ++k)
-        kth[static_cast<std::size_t>(L.border.side[static_cast<std::size_t>(s)][k])] = static_cast<index_t>(k);
-    for (std::size_t v = 0; v < tile.positions.size(); ++v) {
-      const int s = L.border.side_of[v];
-      if (L.rank[v] >= 0) {
-        gid[v] = base + L.rank[v];
-        out.positions[static_cast<std::size_t>(gid[v])] = tile.positions[v] + off;
-      } else if (s == side_south) {
-        if (r == rows - 1) {
-          gid[v] = base + extra_s + kth[v];
-          out.positions[static_cast<std::size_t>(gid[v])] = tile.positions[v] + off;
-        } else {
-          const std::size_t below = static_cast<std::size_t>((r + 1) * cols + c);
-          const layout& B = lay[static_cast<std::size_t>(type[below])];
-          gid[v] = vbase[below] + B.rank[static_cast<std::size_t>(B.border.side[side_north][static_cast<std::size_t>(kth[v])])];
-        }
-      } else {  // east
-        if (c == cols - 1) {
-          gid[v] = base + extra_e + kth[v];
-          out.positions[static_cast<std::size_t>(gid[v])] = tile.positions[v] + off;
-        } else {
-          const std::size_t right = static_cast<std::size_t>(r * cols + c + 1);
-          const layout& B = lay[static_cast<std::size_t>(type[right])];
-          gid[v] = vbase[right] + B.rank[static_cast<std::size_t>(B.border.side[side_west][static_cast<std::size_t>(kth[v])])];
-        }
-      }
-    }
-    const index_t fb = fbase[static_cast<std::size_t>(cell)];
-    for (std::size_t f = 0; f < tile.faces.size(); ++f)
-      out.faces[static_cast<std::size_t>(fb) + f] = {gid[static_cast<std::size_t>(tile.faces[f][0])], gid[static_cast<std::size_t>(tile.faces[f][1])],
-                                                     gid[static_cast<std::size_t>(tile.faces[f][2])]};
-  });
+  out.positions.resize(static_cast<std::size_t>(plan->num_vertices()));
+  out.faces.resize(static_cast<std::size_t>(plan->num_faces()));
+  if (auto s = plan->write(out.positions, out.faces, exec); !s) return s;
   return out;
 }
 
