@@ -1,0 +1,165 @@
+// tessera geo-wang build / geo-wang tile: planar geometric-texture Wang tiles (paper 000 §3):
+// build a complete tile set from an exemplar mesh, and tile a plane from a tile set directory.
+#include <string>
+
+#include <tessera/geometry/check_geometric_texture.hpp>
+#include <tessera/geometry/geometric_tile_files.hpp>
+#include <tessera/geometry/geometric_wang_tiles.hpp>
+#include <tessera/geometry/tile_geometric_plane.hpp>
+#include <tessera/io/mesh_file.hpp>
+#include <tessera/tiling/hash_coloring.hpp>
+#include <tessera/tiling/scanline_coloring.hpp>
+
+#include "cli.hpp"
+
+namespace {
+
+int build(const cli::arguments& args) {
+  using namespace tessera;
+  auto in = args.required("--exemplar");
+  auto dir = args.required("--out");
+  if (!in) return cli::fail(args, in.error());
+  if (!dir) return cli::fail(args, dir.error());
+  if (!args.has("--colors")) return cli::fail(args, status::invalid_argument("missing required option --colors"));
+  if (!args.has("--tile")) return cli::fail(args, status::invalid_argument("missing required option --tile"));
+  auto colors = args.numbers("--colors", 2);
+  auto tile = args.number("--tile", 0);
+  auto edge = args.number("--edge-height", 0);
+  if (!colors) return cli::fail(args, colors.error());
+  if (!tile) return cli::fail(args, tile.error());
+  if (!edge) return cli::fail(args, edge.error());
+  auto ex_mesh = read_mesh(*in);
+  if (!ex_mesh) return cli::fail(args, ex_mesh.error());
+  auto ex = prepare_quilt_exemplar(*ex_mesh);
+  if (!ex) return cli::fail(args, ex.error());
+  geometric_wang_options o;
+  o.horizontal_colors = static_cast<int>((*colors)[0]);
+  o.vertical_colors = static_cast<int>((*colors)[1]);
+  if (o.horizontal_colors != (*colors)[0] || o.vertical_colors != (*colors)[1])
+    return cli::fail(args, status::invalid_argument("--colors expects two integers NH,NV"));
+  o.tile_size = *tile;
+  o.edge_height = *edge;
+  o.quilt.seed = args.seed();
+  thread_pool_executor pool(args.threads());
+  result<geometric_tile_set> set = status::internal_error("not run");
+  const double ms = cli::median_ms(args.repeat(), [&] { set = build_geometric_wang_tiles(*ex, o, pool); });
+  if (!set) return cli::fail(args, set.error());
+  if (auto s = save_geometric_tile_set(*dir, *set); !s) return cli::fail(args, s);
+  if (args.stats()) {
+    geometric_texture_report sum;
+    for (const auto& t : set->tiles) {
+      const auto rep = check_geometric_texture(t, {0, 0, set->tile_size, set->tile_size});
+      sum.open_edges_inside += rep->open_edges_inside;
+      sum.nonmanifold_edges += rep->nonmanifold_edges;
+      sum.intersecting_pairs += rep->intersecting_pairs;
+      sum.elements += rep->elements;
+    }
+    const auto mismatch = tile_set_border_mismatch(*set);
+    cli::json_line()
+        .add("build_ms", ms)
+        .add("tiles", static_cast<index_t>(set->tiles.size()))
+        .add("ms_per_tile", ms / double(set->tiles.size()))
+        .add("edge_height", set->edge_height)
+        .add("crossing_elements", set->crossing_elements)
+        .add("quilted_source", set->quilted_source)
+        .add("elements", sum.elements)
+        .add("merges_succeeded", set->stats.merges_succeeded)
+        .add("merges_attempted", set->stats.merges_attempted)
+        .add("merge_fail_correspondence", set->stats.merge_fail_correspondence)
+        .add("merge_fail_deform", set->stats.merge_fail_deform)
+        .add("merge_fail_cut", set->stats.merge_fail_cut)
+        .add("merge_fail_loops", set->stats.merge_fail_loops)
+        .add("merge_fail_check", set->stats.merge_fail_check)
+        .add("open_edges_inside", sum.open_edges_inside)
+        .add("nonmanifold_edges", sum.nonmanifold_edges)
+        .add("intersecting_pairs", sum.intersecting_pairs)
+        .add("border_mismatch", mismatch ? *mismatch : index_t{-1})
+        .print();
+  } else {
+    std::printf("wrote %zu tiles to %s\n", set->tiles.size(), dir->c_str());
+  }
+  return 0;
+}
+
+int tile(const cli::arguments& args) {
+  using namespace tessera;
+  auto dir = args.required("--tiles");
+  auto out = args.required("--out");
+  if (!dir) return cli::fail(args, dir.error());
+  if (!out) return cli::fail(args, out.error());
+  if (!args.has("--grid")) return cli::fail(args, status::invalid_argument("missing required option --grid"));
+  auto grid = args.size("--grid");
+  if (!grid) return cli::fail(args, grid.error());
+  const auto [cols, rows] = *grid;
+  auto set = load_geometric_tile_set(*dir);
+  if (!set) return cli::fail(args, set.error());
+  const std::string kind = args.str("--coloring", "hash");
+  auto edges = tile_set_edges::create(set->horizontal_colors, set->vertical_colors, set->edges);
+  if (!edges) return cli::fail(args, edges.error());
+  stored_tile_coloring coloring;
+  if (kind == "hash") {
+    auto h = hash_coloring::for_set(*edges, args.seed());
+    if (!h) return cli::fail(args, h.error());
+    auto w = h->window(0, 0, cols, rows);
+    if (!w) return cli::fail(args, w.error());
+    coloring = store_coloring(*w);
+  } else if (kind == "scanline") {
+    auto s = scanline_coloring::create(*edges, cols, rows, args.seed());
+    if (!s) return cli::fail(args, s.error());
+    coloring = store_coloring(*s);
+  } else {
+    return cli::fail(args, status::invalid_argument("--coloring expects hash or scanline, got '" + kind + "'"));
+  }
+  thread_pool_executor pool(args.threads());
+  result<tri_mesh> plane = status::internal_error("not run");
+  const double ms = cli::median_ms(args.repeat(), [&] { plane = tile_geometric_plane(*set, coloring, cols, rows, pool); });
+  if (!plane) return cli::fail(args, plane.error());
+  if (auto s = write_mesh(*out, *plane); !s) return cli::fail(args, s);
+  if (args.stats()) {
+    const double w = set->tile_size;
+    const auto rep = check_geometric_texture(*plane, {0, 0, double(cols) * w, double(rows) * w});
+    const auto mismatch = tile_set_border_mismatch(*set);
+    cli::json_line()
+        .add("tiling_ms", ms)
+        .add("tiles", cols * rows)
+        .add("vertices", plane->num_vertices())
+        .add("faces", plane->num_faces())
+        .add("elements", rep->elements)
+        .add("open_edges_inside", rep->open_edges_inside)
+        .add("nonmanifold_edges", rep->nonmanifold_edges)
+        .add("intersecting_pairs", rep->intersecting_pairs)
+        .add("border_mismatch", mismatch ? *mismatch : index_t{-1})
+        .print();
+  } else {
+    std::printf("wrote %s (%lld x %lld tiles, %lld vertices)\n", out->c_str(), static_cast<long long>(cols), static_cast<long long>(rows),
+                static_cast<long long>(plane->num_vertices()));
+  }
+  return 0;
+}
+
+const cli::registrar reg_build{[] {
+  cli::command c{"geo-wang build", "build a complete set of planar geometric-texture Wang tiles from an exemplar mesh",
+                 "tessera geo-wang build --exemplar E.obj --colors NH,NV --tile W --out DIR [options]",
+                 {{"--exemplar", "FILE", "exemplar mesh of closed elements"},
+                  {"--colors", "NH,NV", "colours of horizontal (north/south) and vertical (east/west) edges"},
+                  {"--tile", "W", "tile size in exemplar units"},
+                  {"--edge-height", "H", "edge strip height h_E (default 1.5 x element size)"},
+                  {"--out", "DIR", "output directory: tile_<index>.obj and tiles.json"}},
+                 build};
+  for (auto& o : cli::common_options()) c.options.push_back(o);
+  return c;
+}()};
+
+const cli::registrar reg_tile{[] {
+  cli::command c{"geo-wang tile", "tile a plane from a geometric Wang tile set into one welded mesh",
+                 "tessera geo-wang tile --tiles DIR --grid COLSxROWS --out O.obj [--seed S] [--coloring hash|scanline]",
+                 {{"--tiles", "DIR", "tile set directory (tiles.json + OBJ tiles)"},
+                  {"--grid", "COLSxROWS", "number of tiles"},
+                  {"--coloring", "KIND", "hash (default) or scanline edge colouring"},
+                  {"--out", "FILE", "output mesh"}},
+                 tile};
+  for (auto& o : cli::common_options()) c.options.push_back(o);
+  return c;
+}()};
+
+}  // namespace

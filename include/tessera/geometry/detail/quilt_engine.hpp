@@ -1,0 +1,446 @@
+// tessera/geometry/detail/quilt_engine.hpp: the patch loop of (constrained) mesh quilting, paper 000
+// §3.3.1-3.3.6: XY grid with occupancy; seed = the unoccupied cell with most occupied neighbours;
+// translation of the exemplar on grid multiples minimising eq. 1-4 over the M_T vertices of the
+// patch P_T, refined by translation ICP (eq. 5); element correspondence in the overlap; deformation
+// and merging of corresponding pairs (element_merge.hpp); elements entirely inside the new region
+// added whole. Every stored element is checked, so the output never holds intersecting, open or
+// non-manifold elements, and fixed vertices are never touched.
+#pragma once
+
+#include <algorithm>
+#include <atomic>
+#include <functional>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <optional>
+#include <vector>
+
+#include "../../core/config.hpp"
+#include "../../core/progress.hpp"
+#include "../../core/random.hpp"
+#include "../../core/status.hpp"
+#include "../../core/tri_mesh.hpp"
+#include "../bvh.hpp"
+#include "../icp.hpp"
+#include "../mesh_elements.hpp"
+#include "../quilt_exemplar.hpp"
+#include "element_merge.hpp"
+#include "mesh_clip.hpp"
+#include "triangle_geometry.hpp"
+
+TESSERA_NAMESPACE_BEGIN
+
+/// Counters of one quilting run (also summed over the tiles of a tile set).
+struct mesh_quilt_stats {
+  index_t patches = 0;           ///< seed cells processed
+  index_t elements_added = 0;    ///< exemplar elements added whole (§3.3.6)
+  index_t elements_merged = 0;   ///< exemplar elements merged with corresponding output elements
+  index_t elements_dropped = 0;  ///< candidates rejected (intersection, border, failed merge)
+  index_t merges_attempted = 0;  ///< pairwise merges tried (one exemplar element may merge several)
+  index_t merges_succeeded = 0;
+  index_t icp_iterations = 0;    ///< total ICP updates (eq. 5)
+  /// Why merges failed: too few correspondences, deformation solve, graph cut (nothing to cut or
+  /// an infinite cut), cut paths that could not be paired, and the final check (self-intersection,
+  /// leaving the tile, open or non-manifold edges).
+  index_t merge_fail_correspondence = 0, merge_fail_deform = 0, merge_fail_cut = 0, merge_fail_loops = 0, merge_fail_check = 0;
+  mesh_quilt_stats& operator+=(const mesh_quilt_stats& o) {
+    merge_fail_correspondence += o.merge_fail_correspondence, merge_fail_deform += o.merge_fail_deform;
+    merge_fail_cut += o.merge_fail_cut, merge_fail_loops += o.merge_fail_loops, merge_fail_check += o.merge_fail_check;
+    patches += o.patches, elements_added += o.elements_added, elements_merged += o.elements_merged;
+    elements_dropped += o.elements_dropped, merges_attempted += o.merges_attempted, merges_succeeded += o.merges_succeeded;
+    icp_iterations += o.icp_iterations;
+    return *this;
+  }
+};
+
+namespace detail {
+
+struct quilt_params {
+  int patch_cells = 0;
+  double lambda = 1.0;
+  int max_samples = 160;
+  double tolerance = 0.05;
+  bool icp = true;
+  int icp_iterations = 30;
+  double correspondence_distance = 0;
+  double deform_weight = 1.0;
+  bool merge = true;
+  int smooth_rings = 2;
+  std::uint64_t seed = 0;
+  std::uint64_t stream = 0;  // distinguishes tiles of one set
+  bool constrained = false;
+};
+
+class quilt_engine {
+ public:
+  /// Runs fn(i) for i in [0, n), possibly in parallel (an Executor's parallel_for).
+  using parallel_for_fn = std::function<void(index_t, const std::function<void(index_t)>&)>;
+
+  quilt_engine(const quilt_exemplar& ex, xy_rect domain, const quilt_params& p, parallel_for_fn pfor = {})
+      : ex_(ex), domain_(domain), p_(p), pfor_(std::move(pfor)) {
+    if (!pfor_)
+      pfor_ = [](index_t n, const std::function<void(index_t)>& fn) {
+        for (index_t i = 0; i < n; ++i) fn(i);
+      };
+    cell_ = ex.cell_size();
+    cols_ = std::max<index_t>(1, static_cast<index_t>(std::ceil(domain.width() / cell_ - 1e-9)));
+    rows_ = std::max<index_t>(1, static_cast<index_t>(std::ceil(domain.height() / cell_ - 1e-9)));
+    occ_.assign(static_cast<std::size_t>(cols_ * rows_), 0);
+    const vec3 ext = ex.bounds().extent();
+    margin_ = 0.25 * ex.element_diameter();
+    const double room = std::min(ext.x, ext.y) - 2 * margin_;
+    k_ = p.patch_cells > 0 ? p.patch_cells : std::max(2, static_cast<int>(std::floor(0.5 * room / cell_)));
+    corr_ = p.correspondence_distance > 0 ? p.correspondence_distance : 0.5 * cell_;
+  }
+
+  /// Adds frame elements (kept as given) and marks the cells whose centre lies in `occupied`.
+  void add_frame(std::vector<texture_element> frame, const std::vector<xy_rect>& occupied) {
+    for (auto& e : frame) {
+      e.update_box();
+      if (e.fixed.size() != e.mesh.positions.size()) e.fixed.resize(e.mesh.positions.size(), 0);
+      push(std::move(e));
+    }
+    for (index_t j = 0; j < rows_; ++j)
+      for (index_t i = 0; i < cols_; ++i) {
+        const vec3 c{domain_.x0 + (i + 0.5) * cell_, domain_.y0 + (j + 0.5) * cell_, 0};
+        for (const xy_rect& r : occupied)
+          if (r.contains(c)) occ_[static_cast<std::size_t>(j * cols_ + i)] = 1;
+      }
+  }
+
+  status run(const progress& prog) {
+    const auto total = static_cast<double>(occ_.size());
+    for (;;) {
+      const index_t seed = pick_seed();
+      if (seed < 0) break;
+      if (!prog.report(static_cast<double>(std::count(occ_.begin(), occ_.end(), 1)) / total, "mesh quilting"))
+        return status::cancelled();
+      const index_t si = seed % cols_, sj = seed / cols_;
+      const index_t k = std::min<index_t>(k_, std::max(cols_, rows_));
+      const index_t i0 = std::clamp<index_t>(si - k / 2, 0, std::max<index_t>(0, cols_ - k));
+      const index_t j0 = std::clamp<index_t>(sj - k / 2, 0, std::max<index_t>(0, rows_ - k));
+      const index_t i1 = std::min(cols_, i0 + k), j1 = std::min(rows_, j0 + k);
+      const xy_rect window{domain_.x0 + i0 * cell_, domain_.y0 + j0 * cell_, std::min(domain_.x1, domain_.x0 + i1 * cell_),
+                           std::min(domain_.y1, domain_.y0 + j1 * cell_)};
+      const vec3 t = find_translation(window, stats_.patches);
+      place_patch(t, window);
+      for (index_t j = j0; j < j1; ++j)
+        for (index_t i = i0; i < i1; ++i) occ_[static_cast<std::size_t>(j * cols_ + i)] = 1;
+      occ_[static_cast<std::size_t>(seed)] = 1;
+      ++stats_.patches;
+    }
+    prog.report(1.0, "mesh quilting");
+    return {};
+  }
+
+  [[nodiscard]] std::vector<texture_element> take_elements() {
+    std::vector<texture_element> out;
+    for (std::size_t i = 0; i < elems_.size(); ++i)
+      if (alive_[i]) out.push_back(std::move(elems_[i]));
+    return out;
+  }
+  [[nodiscard]] const mesh_quilt_stats& stats() const noexcept { return stats_; }
+
+ private:
+  void push(texture_element e) {
+    elems_.push_back(std::move(e));
+    alive_.push_back(1);
+    bvh_.emplace_back();
+    normals_.emplace_back();
+  }
+  const triangle_bvh& bvh_of(std::size_t i) {
+    if (!bvh_[i]) bvh_[i].emplace(elems_[i].mesh);
+    return *bvh_[i];
+  }
+
+  [[nodiscard]] index_t cell_of(vec3 p) const {
+    const auto i = static_cast<index_t>(std::floor((p.x - domain_.x0) / cell_));
+    const auto j = static_cast<index_t>(std::floor((p.y - domain_.y0) / cell_));
+    if (i < 0 || j < 0 || i >= cols_ || j >= rows_) return -1;
+    return j * cols_ + i;
+  }
+  [[nodiscard]] bool occupied(vec3 p) const {
+    const index_t c = cell_of(p);
+    return c >= 0 && occ_[static_cast<std::size_t>(c)];
+  }
+
+  // §3.3.2: the unoccupied cell with the most occupied neighbours (ties: smallest index)
+  [[nodiscard]] index_t pick_seed() const {
+    index_t best = -1;
+    int best_n = -1;
+    for (index_t j = 0; j < rows_; ++j)
+      for (index_t i = 0; i < cols_; ++i) {
+        if (occ_[static_cast<std::size_t>(j * cols_ + i)]) continue;
+        int n = 0;
+        for (int dj = -1; dj <= 1; ++dj)
+          for (int di = -1; di <= 1; ++di) {
+            const index_t a = i + di, b = j + dj;
+            if ((di || dj) && a >= 0 && b >= 0 && a < cols_ && b < rows_ && occ_[static_cast<std::size_t>(b * cols_ + a)]) ++n;
+          }
+        if (n > best_n) best_n = n, best = j * cols_ + i;
+      }
+    return best;
+  }
+
+  struct sample {
+    vec3 p, n;
+  };
+  std::vector<sample> samples_in(const xy_rect& w) {
+    std::vector<sample> s;
+    for (std::size_t i = 0; i < elems_.size(); ++i) {
+      if (!alive_[i] || !w.overlaps(elems_[i].box)) continue;
+      if (normals_[i].empty()) normals_[i] = vertex_normals(elems_[i].mesh);
+      const auto& m = elems_[i].mesh;
+      for (std::size_t v = 0; v < m.positions.size(); ++v)
+        if (w.contains(m.positions[v])) s.push_back({m.positions[v], normals_[i][v]});
+    }
+    if (static_cast<int>(s.size()) > p_.max_samples) {
+      std::vector<sample> sub;
+      const double step = double(s.size()) / p_.max_samples;
+      for (int i = 0; i < p_.max_samples; ++i) sub.push_back(s[static_cast<std::size_t>(i * step)]);
+      s = std::move(sub);
+    }
+    return s;
+  }
+
+  // §3.3.3: grid-restricted best translation (eq. 1-4), then ICP (eq. 5)
+  vec3 find_translation(const xy_rect& w, index_t patch) {
+    const aabb& eb = ex_.bounds();
+    const vec3 ext = eb.extent();
+    auto range = [&](double lo_edge, double hi_edge, double origin, double ex_size) {
+      const double lo = std::ceil((hi_edge - origin - ex_size + margin_) / cell_ - 1e-9);
+      const double hi = std::floor((lo_edge - origin - margin_) / cell_ + 1e-9);
+      if (lo <= hi) return std::pair{static_cast<index_t>(lo), static_cast<index_t>(hi)};
+      const auto mid = static_cast<index_t>(std::llround(0.5 * (lo + hi)));
+      return std::pair{mid, mid};
+    };
+    const auto [ix0, ix1] = range(w.x0, w.x1, domain_.x0, ext.x);
+    const auto [iy0, iy1] = range(w.y0, w.y1, domain_.y0, ext.y);
+    std::vector<vec3> cands;
+    for (index_t j = iy0; j <= iy1; ++j)
+      for (index_t i = ix0; i <= ix1; ++i)
+        cands.push_back({domain_.x0 + i * cell_ - eb.min.x, domain_.y0 + j * cell_ - eb.min.y, 0});
+    const counter_rng rng(p_.seed, p_.stream);
+    const std::vector<sample> s = samples_in(w);
+    if (s.empty()) return cands[static_cast<std::size_t>(rng.below(cands.size(), 1, patch))];
+    const auto& normals = ex_.face_normals();
+    const double saturated = (1 + cell_) * (1 + p_.lambda);
+    auto cost = [&](vec3 t, double limit, std::size_t stride) {
+      double sum = 0;
+      for (std::size_t qi = 0; qi < s.size(); qi += stride) {
+        const sample& q = s[qi];
+        const vec3 x = q.p - t;
+        // eq. 2 searches the faces within one grid cell; when there is none the point costs as if the
+        // surface were a cell away with an orthogonal normal
+        const auto [f, c] = ex_.bvh().min_cost_face(
+            [&](index_t face, const std::array<vec3, 3>& tri) {
+              const double d = norm(closest_point_on_triangle(x, tri[0], tri[1], tri[2]).point - x);
+              return (1 + d) * (1 + p_.lambda * (1 - dot(q.n, normals[static_cast<std::size_t>(face)])));  // eq. 1
+            },
+            [&](const aabb& b) {
+              const double d2 = squared_distance_to_box(x, b);
+              return d2 > cell_ * cell_ ? std::numeric_limits<double>::infinity() : 1 + std::sqrt(d2);
+            },
+            saturated);
+        sum += f >= 0 ? c : saturated;  // eq. 2 and 4
+        if (sum > limit) return sum;
+      }
+      return sum;
+    };
+    // Two stages: every fourth sample ranks all candidates, then the best few are scored with all
+    // samples (eq. 4). Candidates run in parallel; the shared running minimum only cuts off sums
+    // that are already above the final threshold, so the result does not depend on the schedule.
+    auto search = [&](const std::vector<std::size_t>& which, std::size_t stride, std::vector<double>& costs) {
+      std::atomic<double> best{std::numeric_limits<double>::infinity()};
+      pfor_(static_cast<index_t>(which.size()), [&](index_t i) {
+        const std::size_t c = which[static_cast<std::size_t>(i)];
+        const double v = cost(cands[c], best.load(std::memory_order_relaxed) * (1 + p_.tolerance), stride);
+        costs[c] = v;
+        double cur = best.load(std::memory_order_relaxed);
+        while (v < cur && !best.compare_exchange_weak(cur, v, std::memory_order_relaxed)) {
+        }
+      });
+      return best.load();
+    };
+    std::vector<std::size_t> all(cands.size());
+    for (std::size_t c = 0; c < cands.size(); ++c) all[c] = c;
+    std::vector<double> costs(cands.size(), std::numeric_limits<double>::infinity());
+    constexpr std::size_t coarse_stride = 4, finalists = 8;
+    if (s.size() >= 4 * coarse_stride && cands.size() > finalists) {
+      // rank by the coarse cost without cut-offs (exact partial sums)
+      pfor_(static_cast<index_t>(cands.size()), [&](index_t c) {
+        costs[static_cast<std::size_t>(c)] = cost(cands[static_cast<std::size_t>(c)], std::numeric_limits<double>::infinity(), coarse_stride);
+      });
+      std::stable_sort(all.begin(), all.end(), [&](std::size_t a, std::size_t b) { return costs[a] < costs[b]; });
+      all.resize(finalists);
+      std::sort(all.begin(), all.end());
+      std::fill(costs.begin(), costs.end(), std::numeric_limits<double>::infinity());
+    }
+    const double best = search(all, 1, costs);
+    std::vector<std::size_t> good;
+    for (std::size_t c : all)
+      if (costs[c] <= best * (1 + p_.tolerance)) good.push_back(c);
+    vec3 t = cands[good[static_cast<std::size_t>(rng.below(good.size(), 2, patch))]];
+    if (p_.icp) {
+      std::vector<vec3> pts;
+      for (const sample& q : s) pts.push_back(q.p);
+      const auto r = icp_translation(pts, ex_.bvh(), t,
+                                     {.max_iterations = p_.icp_iterations, .tolerance = 1e-3 * cell_, .max_distance = 2 * corr_,
+                                      .free_axes = {true, true, false}});
+      if (r && r->pairs > 0 && norm(r->translation - t) < cell_) {
+        t = r->translation;
+        stats_.icp_iterations += r->iterations;
+      }
+    }
+    return t;
+  }
+
+  // The part of an exemplar element inside `clip` (capped where cut); one element per component.
+  std::vector<texture_element> clipped(const tri_mesh& m, const xy_rect& clip) {
+    tri_mesh cur = m;
+    const double snap = 1e-9 * cell_;
+    const struct {
+      int axis;
+      double value;
+      bool keep_above;
+    } planes[4] = {{0, clip.x0, true}, {0, clip.x1, false}, {1, clip.y0, true}, {1, clip.y1, false}};
+    for (const auto& pl : planes) {
+      const aabb b = bounding_box(cur);
+      if (pl.keep_above ? b.min[pl.axis] >= pl.value : b.max[pl.axis] <= pl.value) continue;
+      auto sp = split_mesh_by_plane(cur, pl.axis, pl.value, snap);
+      cur = pl.keep_above ? std::move(sp.above) : std::move(sp.below);
+      compact_vertices(cur);
+      if (cur.faces.empty()) return {};
+      if (!cap_plane_loops(cur, pl.axis, pl.value)) return {};
+    }
+    auto parts = extract_elements(cur, {.require_closed = true, .require_manifold = true});
+    if (!parts) return {};
+    return std::move(*parts);
+  }
+
+  bool intersects_alive(const texture_element& e, const std::vector<std::size_t>& skip) {
+    const triangle_bvh b(e.mesh);
+    for (std::size_t i = 0; i < elems_.size(); ++i) {
+      if (!alive_[i] || std::find(skip.begin(), skip.end(), i) != skip.end()) continue;
+      if (!boxes_overlap(elems_[i].box, e.box)) continue;
+      bool hit = false;
+      for_each_intersecting_pair(b, bvh_of(i), [&](index_t, index_t) { hit = true; });
+      if (hit) return true;
+    }
+    return false;
+  }
+
+  void place_patch(vec3 t, const xy_rect& w) {
+    auto in_new = [&](vec3 p) { return w.contains(p) && !occupied(p); };
+    merge_params mp;
+    mp.domain = domain_;
+    mp.constrained = p_.constrained;
+    mp.corr_dist = corr_;
+    mp.mu = p_.deform_weight;
+    mp.smooth_rings = p_.smooth_rings;
+    mp.margin = 1e-7 * cell_;
+    mp.is_old = [&](vec3 p) { return occupied(p); };
+    mp.in_patch = [&](vec3 p) { return w.contains(p); };
+    // §3.3.4: correspondences output element -> exemplar element (votes of its vertices in P_T)
+    std::map<index_t, std::vector<std::pair<index_t, std::size_t>>> partners;  // exemplar element -> (-votes, output element)
+    for (std::size_t i = 0; i < elems_.size() && p_.merge; ++i) {
+      if (!alive_[i] || !w.overlaps(elems_[i].box)) continue;
+      std::map<index_t, index_t> votes;
+      index_t n = 0;
+      for (const vec3& v : elems_[i].mesh.positions) {
+        if (!w.contains(v)) continue;
+        ++n;
+        const auto h = ex_.bvh().closest_point(v - t, corr_ * corr_);
+        if (h.face >= 0) ++votes[ex_.element_of_face(h.face)];
+      }
+      index_t best_e = -1, best_v = 0;
+      for (const auto& [e, c] : votes)
+        if (c > best_v) best_v = c, best_e = e;
+      if (best_e >= 0 && best_v >= std::max<index_t>(3, n / 5)) partners[best_e].push_back({-best_v, i});
+    }
+    const xy_rect inset{domain_.x0 + 1e-6 * cell_, domain_.y0 + 1e-6 * cell_, domain_.x1 - 1e-6 * cell_, domain_.y1 - 1e-6 * cell_};
+    for (index_t e = 0; e < ex_.num_elements(); ++e) {
+      aabb box = ex_.elements()[static_cast<std::size_t>(e)].box;
+      box.min += t;
+      box.max += t;
+      if (!w.overlaps(box)) continue;
+      tri_mesh moved = ex_.elements()[static_cast<std::size_t>(e)].mesh;
+      for (vec3& q : moved.positions) q += t;
+      std::vector<texture_element> pieces;
+      if (ex_.is_long(e)) {
+        const xy_rect clip{std::max(w.x0, inset.x0), std::max(w.y0, inset.y0), std::min(w.x1, inset.x1), std::min(w.y1, inset.y1)};
+        pieces = clipped(moved, clip);
+      } else {
+        texture_element el;
+        el.mesh = std::move(moved);
+        el.fixed.assign(el.mesh.positions.size(), 0);
+        el.update_box();
+        pieces.push_back(std::move(el));
+      }
+      auto it = partners.find(e);
+      for (auto& cin : pieces) {
+        std::vector<std::pair<index_t, std::size_t>> mine;
+        if (it != partners.end())
+          for (const auto& pr : it->second)
+            if (alive_[pr.second] && boxes_overlap(elems_[pr.second].box, cin.box)) mine.push_back(pr);
+        std::sort(mine.begin(), mine.end());
+        bool reaches_new = false;
+        for (const vec3& q : cin.mesh.positions) reaches_new = reaches_new || in_new(q);
+        if (!mine.empty()) {
+          if (!reaches_new) continue;
+          texture_element cur = std::move(cin);
+          std::vector<std::size_t> consumed;
+          for (const auto& pr : mine) {
+            merge_counters mc;
+            auto merged = merge_pair(elems_[pr.second], cur, mp, mc);
+            stats_.merges_attempted += mc.attempted;
+            stats_.merges_succeeded += mc.merged;
+            stats_.merge_fail_correspondence += mc.fail_correspondence, stats_.merge_fail_deform += mc.fail_deform;
+            stats_.merge_fail_cut += mc.fail_cut, stats_.merge_fail_loops += mc.fail_loops, stats_.merge_fail_check += mc.fail_check;
+            if (!merged) break;
+            cur = std::move(*merged);
+            consumed.push_back(pr.second);
+          }
+          if (consumed.empty() || intersects_alive(cur, consumed)) {
+            ++stats_.elements_dropped;
+            continue;
+          }
+          for (std::size_t c : consumed) alive_[c] = 0;
+          push(std::move(cur));
+          ++stats_.elements_merged;
+          continue;
+        }
+        // no correspondence: added whole when it belongs to the new region (§3.3.6)
+        const vec3 c = cin.box.center();
+        if (!in_new({c.x, c.y, 0})) continue;
+        bool ok = true;
+        if (p_.constrained)
+          for (const vec3& q : cin.mesh.positions) ok = ok && strictly_inside(domain_, q, 1e-7 * cell_);
+        if (!ok || intersects_alive(cin, {})) {
+          ++stats_.elements_dropped;
+          continue;
+        }
+        push(std::move(cin));
+        ++stats_.elements_added;
+      }
+    }
+  }
+
+  const quilt_exemplar& ex_;
+  xy_rect domain_;
+  quilt_params p_;
+  parallel_for_fn pfor_;
+  double cell_ = 1, margin_ = 0, corr_ = 0;
+  index_t cols_ = 1, rows_ = 1;
+  int k_ = 2;
+  std::vector<unsigned char> occ_;
+  std::vector<texture_element> elems_;
+  std::vector<unsigned char> alive_;
+  std::vector<std::optional<triangle_bvh>> bvh_;
+  std::vector<std::vector<vec3>> normals_;
+  mesh_quilt_stats stats_;
+};
+
+}  // namespace detail
+TESSERA_NAMESPACE_END

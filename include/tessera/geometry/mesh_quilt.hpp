@@ -1,0 +1,108 @@
+// tessera/geometry/mesh_quilt.hpp: mesh quilting (Zhou et al., "Mesh Quilting for Geometric Texture
+// Synthesis", SIGGRAPH 2006), with the refinements of paper 000 §3.3: grows a geometric texture of
+// any XY size from a small exemplar, patch by patch, placing the exemplar at the translation that
+// best matches what is already there (eq. 1-4, refined by ICP eq. 5) and merging corresponding
+// elements (deformation eq. 6-7, graph cut eq. 8, seam join). Note: mesh quilting is the subject of
+// US patent US7800627B2; judge for yourself whether it concerns your use.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "../core/config.hpp"
+#include "../core/executor.hpp"
+#include "../core/mesh.hpp"
+#include "../core/progress.hpp"
+#include "../core/status.hpp"
+#include "../core/tri_mesh.hpp"
+#include "detail/quilt_engine.hpp"
+#include "mesh_elements.hpp"
+#include "quilt_exemplar.hpp"
+
+TESSERA_NAMESPACE_BEGIN
+
+struct mesh_quilt_options {
+  int patch_cells = 0;                 ///< side of the patch P_T in grid cells; 0 = half the exemplar
+  double lambda = 1.0;                 ///< weight of the normal term of eq. 1
+  int max_samples = 160;               ///< M_T vertices of P_T used for the matching cost (evenly thinned)
+  double tolerance = 0.05;             ///< pick randomly among translations within (1 + tolerance) of the best cost
+  bool icp = true;                     ///< refine the grid translation by ICP (eq. 5, §3.3.3)
+  int icp_iterations = 30;
+  double correspondence_distance = 0;  ///< §3.3.4 search radius; 0 = half a grid cell
+  double deform_weight = 1.0;          ///< mu of eq. 6-7
+  bool merge = true;                   ///< merge corresponding elements (§3.3.6); false drops overlapping ones
+  int smooth_rings = 2;                ///< vertex rings relaxed around each merge seam
+  std::uint64_t seed = 0;
+  tessera::progress progress = {};
+};
+
+struct mesh_quilt_result {
+  std::vector<texture_element> elements;  ///< the synthesized elements (with bookkeeping)
+  tri_mesh mesh;                          ///< the same, as one mesh
+  mesh_quilt_stats stats;
+};
+
+namespace detail {
+inline status check_quilt_options(const mesh_quilt_options& o) {
+  if (o.patch_cells < 0) return status::invalid_argument(detail::cat("mesh_quilt: patch_cells must be >= 0, got ", o.patch_cells));
+  if (!(o.lambda >= 0) || !std::isfinite(o.lambda)) return status::invalid_argument(detail::cat("mesh_quilt: lambda must be >= 0, got ", o.lambda));
+  if (o.max_samples < 1) return status::invalid_argument(detail::cat("mesh_quilt: max_samples must be >= 1, got ", o.max_samples));
+  if (!(o.tolerance >= 0)) return status::invalid_argument(detail::cat("mesh_quilt: tolerance must be >= 0, got ", o.tolerance));
+  if (o.icp_iterations < 1) return status::invalid_argument(detail::cat("mesh_quilt: icp_iterations must be >= 1, got ", o.icp_iterations));
+  if (!(o.correspondence_distance >= 0) || !std::isfinite(o.correspondence_distance))
+    return status::invalid_argument(detail::cat("mesh_quilt: correspondence_distance must be >= 0, got ", o.correspondence_distance));
+  if (!(o.deform_weight > 0) || !std::isfinite(o.deform_weight))
+    return status::invalid_argument(detail::cat("mesh_quilt: deform_weight must be > 0, got ", o.deform_weight));
+  if (o.smooth_rings < 0) return status::invalid_argument(detail::cat("mesh_quilt: smooth_rings must be >= 0, got ", o.smooth_rings));
+  return {};
+}
+inline mesh_quilt_result finish_quilt(quilt_engine& engine) {
+  mesh_quilt_result r;
+  r.stats = engine.stats();
+  r.elements = engine.take_elements();
+  r.mesh = combine_elements(r.elements);
+  return r;
+}
+inline quilt_params to_params(const mesh_quilt_options& o, bool constrained, std::uint64_t stream) {
+  return {o.patch_cells, o.lambda, o.max_samples, o.tolerance, o.icp, o.icp_iterations, o.correspondence_distance,
+          o.deform_weight, o.merge, o.smooth_rings, o.seed, stream, constrained};
+}
+}  // namespace detail
+
+/// Unconstrained mesh quilting: synthesizes a geometric texture over [0, width] x [0, height] from a
+/// prepared exemplar. Elements whose centre lies in the rectangle are kept whole (they may stick out
+/// of it); long elements (threads) are clipped at the rectangle and capped. Every output element is
+/// closed, manifold and intersects no other.
+/// Errors: width or height not positive or not finite, a grid of more than 2^26 cells, bad options;
+/// cancelled when `options.progress` says so. Deterministic for a given seed, whatever `exec` (the
+/// translation candidates of each patch are scored through it). Time: about (area / patch area)
+/// patches, each O(candidates * samples * log F) plus the merges.
+template <Executor E = serial_executor>
+result<mesh_quilt_result> mesh_quilt(const quilt_exemplar& exemplar, double width, double height, const mesh_quilt_options& options = {},
+                                     E&& exec = {}) {
+  if (!(width > 0) || !(height > 0) || !std::isfinite(width) || !std::isfinite(height))
+    return status::invalid_argument(detail::cat("mesh_quilt: size must be positive, got ", width, " x ", height));
+  if (exemplar.num_elements() == 0) return status::invalid_argument("mesh_quilt: the exemplar is empty (not prepared)");
+  if (auto s = detail::check_quilt_options(options); !s) return s;
+  const double cells = (width / exemplar.cell_size()) * (height / exemplar.cell_size());
+  if (cells > double(1 << 26))
+    return status::size_overflow(detail::cat("mesh_quilt: ", width, " x ", height, " is ", cells, " grid cells of ", exemplar.cell_size(),
+                                             "; at most 2^26"));
+  detail::quilt_engine engine(exemplar, {0, 0, width, height}, detail::to_params(options, false, 0),
+                              [&exec](index_t n, const std::function<void(index_t)>& fn) { exec.parallel_for(0, n, fn); });
+  if (auto s = engine.run(options.progress); !s) return s;
+  return detail::finish_quilt(engine);
+}
+
+/// mesh_quilt for any Mesh exemplar (prepared with default quilt_exemplar_options). Also rejects
+/// open or non-manifold exemplars (see prepare_quilt_exemplar).
+template <Mesh M, Executor E = serial_executor>
+result<mesh_quilt_result> mesh_quilt(const M& exemplar, double width, double height, const mesh_quilt_options& options = {},
+                                     E&& exec = {}) {
+  auto ex = prepare_quilt_exemplar(exemplar);
+  if (!ex) return ex.error();
+  return mesh_quilt(*ex, width, height, options, exec);
+}
+
+TESSERA_NAMESPACE_END

@@ -1,0 +1,60 @@
+#include <tessera/geometry/geometric_tile_files.hpp>
+
+#include <tessera/geometry/mesh_exemplars.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+
+using namespace tessera;
+
+namespace {
+geometric_tile_set tiny_set() {
+  // a hand-made 1 x 1-colour set: one tile holding one ring (no border crossing)
+  geometric_tile_set s;
+  s.tile_size = 2.5;
+  s.edge_height = 0.8;
+  s.horizontal_colors = s.vertical_colors = 1;
+  s.edges = {{0, 0, 0, 0}};
+  tri_mesh t;
+  detail::add_torus(t, {1.25, 1.25, 0.2}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, 0.5, 0.1 + 1e-17, 10, 5);
+  s.tiles = {t};
+  return s;
+}
+}  // namespace
+
+TEST_CASE("geometric tile sets save and load exactly", "[tile_files]") {
+  const std::string dir = std::string(TESSERA_TEST_OUTPUT_DIR) + "/geometric_tiles_roundtrip";
+  std::filesystem::remove_all(dir);
+  const auto set = tiny_set();
+  REQUIRE(save_geometric_tile_set(dir, set).ok());
+  REQUIRE(std::filesystem::exists(dir + "/tiles.json"));
+  REQUIRE(std::filesystem::exists(dir + "/tile_0.obj"));
+  const auto back = load_geometric_tile_set(dir);
+  REQUIRE(back.ok());
+  REQUIRE(back->tile_size == set.tile_size);
+  REQUIRE(back->edge_height == set.edge_height);
+  REQUIRE(back->edges == set.edges);
+  REQUIRE(back->tiles == set.tiles);  // bit-exact positions
+}
+
+TEST_CASE("loading a tile directory with a missing file fails with a clear status", "[tile_files]") {
+  const std::string dir = std::string(TESSERA_TEST_OUTPUT_DIR) + "/geometric_tiles_missing";
+  std::filesystem::remove_all(dir);
+  REQUIRE(load_geometric_tile_set(dir).error().code() == status_code::io_error);  // no tiles.json
+  REQUIRE(save_geometric_tile_set(dir, tiny_set()).ok());
+  std::filesystem::remove(dir + "/tile_0.obj");
+  const auto r = load_geometric_tile_set(dir);
+  REQUIRE(r.error().code() == status_code::io_error);
+  REQUIRE(r.error().message().find("tile_0.obj") != std::string::npos);
+  REQUIRE_FALSE(save_geometric_tile_set(dir, geometric_tile_set{}).ok());
+}
+
+TEST_CASE("loading rejects a tile with geometry outside the tile", "[tile_files]") {
+  const std::string dir = std::string(TESSERA_TEST_OUTPUT_DIR) + "/geometric_tiles_outside";
+  std::filesystem::remove_all(dir);
+  auto set = tiny_set();
+  for (vec3& p : set.tiles[0].positions) p.x += 2;
+  REQUIRE(save_geometric_tile_set(dir, set).ok());
+  REQUIRE(load_geometric_tile_set(dir).error().message().find("outside the tile") != std::string::npos);
+}
