@@ -12,8 +12,11 @@ if(TESSERA_WERROR)
   target_compile_options(tessera_dev_flags INTERFACE -Werror)
 endif()
 if(TESSERA_SANITIZE)
+  # GCC's -Wmaybe-uninitialized reports false positives in libstdc++ (std::function, <regex>) once
+  # the sanitizers instrument the code; the Release build keeps the warning.
   target_compile_options(tessera_dev_flags INTERFACE -fsanitize=address,undefined -fno-omit-frame-pointer
-                                                     -fno-sanitize-recover=all)
+                                                     -fno-sanitize-recover=all
+                                                     $<$<CXX_COMPILER_ID:GNU>:-Wno-maybe-uninitialized>)
   target_link_options(tessera_dev_flags INTERFACE -fsanitize=address,undefined)
 endif()
 

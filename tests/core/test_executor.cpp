@@ -3,6 +3,9 @@
 #include <atomic>
 #include <numeric>
 #include <stdexcept>
+#include <thread>
+#include <algorithm>
+#include <cstdint>
 #include <vector>
 
 #include <catch2/catch.hpp>
@@ -48,3 +51,89 @@ TEST_CASE("thread pool: an exception from the callback reaches the caller", "[ex
 
 static_assert(tessera::Executor<tessera::serial_executor>);
 static_assert(tessera::Executor<tessera::thread_pool_executor>);
+
+namespace {
+struct not_an_executor {
+  void run(index_t, index_t) {}
+};
+// An engine job system plugged in through the one member the concept asks for.
+struct reversed_executor {
+  template <class F>
+  void parallel_for(index_t begin, index_t end, F&& fn) {
+    for (index_t i = end; i-- > begin;) fn(i);
+  }
+};
+}  // namespace
+static_assert(!tessera::Executor<not_an_executor>);
+static_assert(tessera::Executor<reversed_executor>);
+static_assert(!tessera::Executor<const tessera::thread_pool_executor>);
+
+TEST_CASE("thread pool: same output for every thread count and executor", "[executor]") {
+  // a keyed per-index computation written into its own slot: the pattern every algorithm uses
+  auto work = [](index_t i) {
+    std::uint64_t h = static_cast<std::uint64_t>(i) * 0x9e3779b97f4a7c15ULL;
+    for (int r = 0; r < 50; ++r) h = (h ^ (h >> 29)) * 0xbf58476d1ce4e5b9ULL;
+    return h;
+  };
+  const index_t n = 20000;
+  std::vector<std::uint64_t> expected(static_cast<std::size_t>(n));
+  tessera::serial_executor{}.parallel_for(0, n, [&](index_t i) { expected[static_cast<std::size_t>(i)] = work(i); });
+  for (int threads : {1, 2, 3, 4, 7, 16}) {
+    tessera::thread_pool_executor pool(threads);
+    std::vector<std::uint64_t> out(static_cast<std::size_t>(n));
+    for (int rep = 0; rep < 3; ++rep) {  // the pool is reused across loops
+      std::fill(out.begin(), out.end(), 0);
+      pool.parallel_for(0, n, [&](index_t i) { out[static_cast<std::size_t>(i)] = work(i); });
+      REQUIRE(out == expected);
+    }
+  }
+  std::vector<std::uint64_t> out(static_cast<std::size_t>(n));
+  reversed_executor{}.parallel_for(0, n, [&](index_t i) { out[static_cast<std::size_t>(i)] = work(i); });
+  REQUIRE(out == expected);
+}
+
+TEST_CASE("thread pool: empty and reversed ranges, default thread count", "[executor]") {
+  tessera::thread_pool_executor pool;  // hardware concurrency
+  REQUIRE(pool.concurrency() >= 1);
+  tessera::thread_pool_executor negative(-3);
+  REQUIRE(negative.concurrency() >= 1);
+  int calls = 0;
+  pool.parallel_for(5, 5, [&](index_t) { ++calls; });
+  pool.parallel_for(5, 2, [&](index_t) { ++calls; });
+  pool.parallel_for(-10, -10, [&](index_t) { ++calls; });
+  REQUIRE(calls == 0);
+  std::atomic<index_t> sum{0};
+  pool.parallel_for(-5, 5, [&](index_t i) { sum += i; });  // negative indices are fine
+  REQUIRE(sum.load() == -5);
+  const auto const_fn = [&](index_t i) { sum += i; };  // a const callable
+  pool.parallel_for(0, 3, const_fn);
+  REQUIRE(sum.load() == -2);
+  REQUIRE(tessera::serial_executor{}.concurrency() == 1);
+}
+
+TEST_CASE("thread pool: loops submitted from several threads are serialized", "[executor]") {
+  tessera::thread_pool_executor pool(3);
+  std::vector<std::thread> callers;
+  std::vector<index_t> sums(4, 0);
+  for (int t = 0; t < 4; ++t)
+    callers.emplace_back([&, t] {
+      for (int rep = 0; rep < 20; ++rep) {
+        std::atomic<index_t> s{0};
+        pool.parallel_for(0, 500, [&](index_t i) { s += i; });
+        if (rep == 19) sums[static_cast<std::size_t>(t)] = s.load();
+      }
+    });
+  for (auto& c : callers) c.join();
+  for (index_t s : sums) REQUIRE(s == 124750);
+}
+
+TEST_CASE("thread pool: a loop nested inside another pool's loop runs serially", "[executor]") {
+  tessera::thread_pool_executor outer(2), inner(2);
+  std::vector<int> out(64, 0);
+  outer.parallel_for(0, 64, [&](index_t i) {
+    int local = 0;
+    inner.parallel_for(0, 10, [&](index_t j) { local += static_cast<int>(j); });  // no data race: serial
+    out[static_cast<std::size_t>(i)] = local;
+  });
+  for (int v : out) REQUIRE(v == 45);
+}

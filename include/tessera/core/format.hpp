@@ -57,20 +57,27 @@ struct format_tag {
   static constexpr int channels = C;
 };
 
+/// Bytes per pixel of a runtime format.
+constexpr int pixel_size(pixel_format fmt) noexcept { return channel_size(fmt.type) * fmt.channels; }
+
+/// The runtime format of a compile-time pixel type.
+template <Pixel P>
+inline constexpr pixel_format pixel_format_of =
+    pixel_format{channel_type_of<typename pixel_traits<P>::channel_type>, pixel_traits<P>::channels};
+
 namespace detail {
-template <class R>
-status as_status(R&& r) {
-  if constexpr (std::is_same_v<std::remove_cvref_t<R>, status>) return std::forward<R>(r);
-  else return {};
-}
 template <class T, class F>
 status dispatch_count(int channels, F&& f) {
   auto call = [&]<int C>() -> status {
-    if constexpr (std::is_void_v<decltype(f(format_tag<T, C>{}))>) {
+    using R = decltype(f(format_tag<T, C>{}));
+    static_assert(std::is_void_v<R> || std::is_same_v<std::remove_cvref_t<R>, status>,
+                  "dispatch_format: the callback must return void or tessera::status (a result<T> or other value "
+                  "would be silently dropped; capture outputs by reference instead)");
+    if constexpr (std::is_void_v<R>) {
       f(format_tag<T, C>{});
       return {};
     } else {
-      return as_status(f(format_tag<T, C>{}));
+      return f(format_tag<T, C>{});
     }
   };
   switch (channels) {
@@ -84,8 +91,10 @@ status dispatch_count(int channels, F&& f) {
 }
 }  // namespace detail
 
-/// Calls `f(format_tag<T, C>{})` with the compile-time pair matching `fmt`. `f` returns void or
-/// status; the result (or an invalid_argument status for an unsupported channel count) is returned.
+/// Calls `f(format_tag<T, C>{})` with the compile-time pair matching `fmt`. `f` must return void or
+/// status (checked at compile time); its status is returned, or an invalid_argument status for a
+/// channel count outside 1..4 or an unknown channel type (f is then not called). All 12
+/// instantiations of f are compiled.
 template <class F>
 status dispatch_format(pixel_format fmt, F&& f) {
   switch (fmt.type) {
@@ -93,7 +102,7 @@ status dispatch_format(pixel_format fmt, F&& f) {
     case channel_type::uint16: return detail::dispatch_count<std::uint16_t>(fmt.channels, f);
     case channel_type::float32: return detail::dispatch_count<float>(fmt.channels, f);
   }
-  return status::invalid_argument("pixel format: unknown channel type");
+  return status::invalid_argument(detail::cat("pixel format: unknown channel type ", static_cast<int>(fmt.type)));
 }
 
 /// Calls `f(format_tag<T, C>{})` for a fixed channel type T and a runtime channel count.

@@ -56,10 +56,16 @@ constexpr T unit_to_channel(float u) noexcept {
 }
 
 /// Converts between channel types through the unit range (uint8 200 -> uint16 51400 -> float 0.784).
+/// Between the integer types the conversion is exact integer arithmetic: uint8 v -> uint16 v * 257,
+/// uint16 v -> uint8 round(v / 257), so uint8 -> uint16 -> uint8 is the identity.
 template <Channel To, Channel From>
 constexpr To convert_channel(From v) noexcept {
   if constexpr (std::same_as<To, From>) {
     return v;
+  } else if constexpr (std::same_as<From, std::uint8_t> && std::same_as<To, std::uint16_t>) {
+    return static_cast<std::uint16_t>(v * 257u);
+  } else if constexpr (std::same_as<From, std::uint16_t> && std::same_as<To, std::uint8_t>) {
+    return static_cast<std::uint8_t>((static_cast<std::uint32_t>(v) * 255u + 32767u) / 65535u);
   } else {
     return unit_to_channel<To>(channel_to_unit(v));
   }

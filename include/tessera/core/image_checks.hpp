@@ -2,6 +2,7 @@
 // Each check returns a status whose message names the parameter (`what`) and the offending values.
 #pragma once
 
+#include <cstdint>
 #include <limits>
 #include <string_view>
 
@@ -13,7 +14,9 @@ TESSERA_NAMESPACE_BEGIN
 
 /// Largest number of channel values one image may hold (keeps every index product in range and
 /// byte counts representable on 64-bit hosts).
-inline constexpr index_t max_image_elements = index_t{1} << 40;
+/// 2^40 on 64-bit hosts; on 32-bit hosts small enough that bytes of 4-byte channels fit in size_t.
+inline constexpr index_t max_image_elements =
+    sizeof(index_t) >= 8 ? static_cast<index_t>(std::int64_t{1} << 40) : std::numeric_limits<index_t>::max() / 8;
 
 /// Checks that width x height x channels is a valid, non-empty image extent whose element count and
 /// byte count do not overflow. `what` names the image in the message ("exemplar", "output", ...).
@@ -25,7 +28,7 @@ inline status validate_image_extent(index_t width, index_t height, int channels,
     return status::invalid_argument(detail::cat(what, ": channel count must be 1 to 4, got ", channels));
   if (width > max_image_elements / height || width * height > max_image_elements / channels)
     return status::size_overflow(detail::cat(what, ": ", width, " x ", height, " x ", channels,
-                                             " channel values exceed the supported maximum of 2^40"));
+                                             " channel values exceed the supported maximum of ", max_image_elements));
   return {};
 }
 

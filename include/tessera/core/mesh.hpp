@@ -7,6 +7,7 @@
 #pragma once
 
 #include <concepts>
+#include <cstddef>
 #include <type_traits>
 #include <utility>
 
@@ -25,16 +26,29 @@ concept member_xy_point = requires(const P& p) {
   { p.x } -> std::convertible_to<double>;
   { p.y } -> std::convertible_to<double>;
 };
+/// Number of coordinates of a subscriptable point type when known at compile time (std::array,
+/// Eigen fixed-size vectors, glm vectors); -1 when unknown.
+template <class P>
+constexpr int static_point_size() noexcept {
+  if constexpr (requires { std::tuple_size<P>::value; }) return static_cast<int>(std::tuple_size<P>::value);
+  else if constexpr (requires { { P::SizeAtCompileTime } -> std::convertible_to<int>; })
+    return P::SizeAtCompileTime > 0 ? static_cast<int>(P::SizeAtCompileTime) : -1;
+  else if constexpr (requires { { P::length() } -> std::convertible_to<int>; }) return static_cast<int>(P::length());
+  else return -1;
+}
 }  // namespace detail
 
-/// Reads coordinate i of a point type as double. Specialize for vector types that have neither
-/// `p[i]` nor `x, y, z` members.
+/// Reads coordinate i (0..2) of a point type as double. Coordinates a type does not have read as 0
+/// (z of a 2D point), when its size is known at compile time. Specialize for vector types that have
+/// neither `p[i]` nor `x, y, z` members.
 template <class P>
 struct point_traits {
   static double get(const P& p, int i)
     requires detail::subscript_point<P> || detail::member_xy_point<P>
   {
     if constexpr (detail::subscript_point<P>) {
+      constexpr int size = detail::static_point_size<P>();
+      if (size >= 0 && i >= size) return 0.0;
       return static_cast<double>(p[i]);
     } else {
       if (i == 0) return static_cast<double>(p.x);
@@ -78,6 +92,8 @@ concept member_uv_mesh = member_mesh<M> && requires(const M& m, index_t f, int k
 }  // namespace detail
 
 /// Reaches a mesh type. The primary template forwards to members; specialize it for foreign types.
+/// A specialization may add `static status validate(const M&, std::string_view what)` for checks only
+/// it can make (a polygon mesh's non-triangle faces); validate_mesh() calls it before its own checks.
 template <class M>
 struct mesh_traits {
   static index_t num_vertices(const M& m) requires detail::member_mesh<M> { return static_cast<index_t>(m.num_vertices()); }
@@ -117,5 +133,14 @@ template <Mesh M>
 index_t face_vertex(const M& m, index_t f, int k) { return mesh_traits<M>::face_vertex(m, f, k); }
 template <Mesh M>
 vec3 vertex_position(const M& m, index_t v) { return to_vec3(mesh_traits<M>::position(m, v)); }
+/// True when the mesh carries per-corner uvs (always false for a Mesh that is not a UVMesh).
+template <Mesh M>
+bool has_uvs(const M& m) {
+  if constexpr (UVMesh<M>) return mesh_traits<M>::has_uvs(m);
+  else return false;
+}
+/// Texture coordinate of corner k of face f. Precondition: has_uvs(m).
+template <UVMesh M>
+vec2 corner_uv(const M& m, index_t f, int k) { return to_vec2(mesh_traits<M>::corner_uv(m, f, k)); }
 
 TESSERA_NAMESPACE_END

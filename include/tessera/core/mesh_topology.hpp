@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <numeric>
+#include <utility>
 #include <vector>
 
 #include "config.hpp"
@@ -23,79 +24,112 @@ struct mesh_edge {
   [[nodiscard]] bool is_manifold() const noexcept { return faces.size() <= 2; }
 };
 
-/// All undirected edges, sorted by (v0, v1). O(F log F).
+namespace detail {
+struct half_edge_key {
+  index_t a, b;  // vertex pair, a < b
+  index_t f;
+  int k;
+};
+/// All 3F face sides keyed by their sorted vertex pair, sorted by (a, b, f, k): one flat array, so
+/// the edge queries below cost one sort and no per-edge allocation.
 template <Mesh M>
-std::vector<mesh_edge> mesh_edges(const M& m) {
-  struct half {
-    index_t a, b, f;
-    int k;
-  };
-  std::vector<half> hs;
-  hs.reserve(static_cast<std::size_t>(3 * num_faces(m)));
-  for (index_t f = 0; f < num_faces(m); ++f)
+std::vector<half_edge_key> sorted_half_edges(const M& m) {
+  const index_t nf = num_faces(m);
+  std::vector<half_edge_key> hs;
+  hs.reserve(static_cast<std::size_t>(3 * nf));
+  for (index_t f = 0; f < nf; ++f) {
+    const index_t v[3] = {face_vertex(m, f, 0), face_vertex(m, f, 1), face_vertex(m, f, 2)};
     for (int k = 0; k < 3; ++k) {
-      const index_t a = face_vertex(m, f, k), b = face_vertex(m, f, (k + 1) % 3);
+      const index_t a = v[k], b = v[(k + 1) % 3];
       hs.push_back({std::min(a, b), std::max(a, b), f, k});
     }
-  std::sort(hs.begin(), hs.end(), [](const half& x, const half& y) {
+  }
+  std::sort(hs.begin(), hs.end(), [](const half_edge_key& x, const half_edge_key& y) {
     return x.a != y.a ? x.a < y.a : x.b != y.b ? x.b < y.b : x.f != y.f ? x.f < y.f : x.k < y.k;
   });
-  std::vector<mesh_edge> edges;
+  return hs;
+}
+/// Calls fn(first, count) for each run of half-edges sharing a vertex pair (one undirected edge).
+template <class F>
+void for_each_edge_group(const std::vector<half_edge_key>& hs, F&& fn) {
   for (std::size_t i = 0; i < hs.size();) {
-    mesh_edge e{hs[i].a, hs[i].b, {}};
-    for (; i < hs.size() && hs[i].a == e.v0 && hs[i].b == e.v1; ++i) e.faces.push_back({hs[i].f, hs[i].k});
-    edges.push_back(std::move(e));
+    std::size_t j = i + 1;
+    while (j < hs.size() && hs[j].a == hs[i].a && hs[j].b == hs[i].b) ++j;
+    fn(i, j - i);
+    i = j;
   }
+}
+}  // namespace detail
+
+/// All undirected edges, sorted by (v0, v1); each edge's faces sorted by (face, corner).
+/// O(F log F) time; allocates one small vector per edge (use face_adjacency or boundary_edges when
+/// only those are needed: they avoid the per-edge allocations).
+template <Mesh M>
+std::vector<mesh_edge> mesh_edges(const M& m) {
+  const auto hs = detail::sorted_half_edges(m);
+  std::vector<mesh_edge> edges;
+  edges.reserve(hs.size() / 2 + 1);
+  detail::for_each_edge_group(hs, [&](std::size_t first, std::size_t count) {
+    mesh_edge e{hs[first].a, hs[first].b, {}};
+    e.faces.reserve(count);
+    for (std::size_t i = first; i < first + count; ++i) e.faces.push_back({hs[i].f, static_cast<index_t>(hs[i].k)});
+    edges.push_back(std::move(e));
+  });
   return edges;
 }
 
 /// Face adjacency: `neighbor[f][k]` is the face across side k of face f (corner k to k + 1), or -1
-/// on a boundary or non-manifold edge.
+/// on a boundary or non-manifold edge. Also counts boundary edges (one face) and non-manifold edges
+/// (three or more faces).
 struct face_adjacency_result {
   std::vector<std::array<index_t, 3>> neighbor;
   index_t boundary_edges = 0;
   index_t nonmanifold_edges = 0;
 };
 
+/// Computes face adjacency of a valid mesh. O(F log F) time, O(F) memory.
 template <Mesh M>
 face_adjacency_result face_adjacency(const M& m) {
   face_adjacency_result r;
   r.neighbor.assign(static_cast<std::size_t>(num_faces(m)), {-1, -1, -1});
-  for (const mesh_edge& e : mesh_edges(m)) {
-    if (e.faces.size() == 2) {
-      const auto a = e.faces[0], b = e.faces[1];
-      r.neighbor[static_cast<std::size_t>(a[0])][static_cast<std::size_t>(a[1])] = b[0];
-      r.neighbor[static_cast<std::size_t>(b[0])][static_cast<std::size_t>(b[1])] = a[0];
-    } else if (e.faces.size() == 1) {
+  const auto hs = detail::sorted_half_edges(m);
+  detail::for_each_edge_group(hs, [&](std::size_t first, std::size_t count) {
+    if (count == 2) {
+      const auto& a = hs[first];
+      const auto& b = hs[first + 1];
+      r.neighbor[static_cast<std::size_t>(a.f)][static_cast<std::size_t>(a.k)] = b.f;
+      r.neighbor[static_cast<std::size_t>(b.f)][static_cast<std::size_t>(b.k)] = a.f;
+    } else if (count == 1) {
       ++r.boundary_edges;
     } else {
       ++r.nonmanifold_edges;
     }
-  }
+  });
   return r;
 }
 
-/// Boundary edges (used by exactly one face), oriented as in their face, in (face, side) order.
+/// Boundary edges (used by exactly one face) as vertex pairs oriented as in their face, listed in
+/// (face, side) order. O(F log F).
 template <Mesh M>
 std::vector<std::array<index_t, 2>> boundary_edges(const M& m) {
+  const auto hs = detail::sorted_half_edges(m);
   std::vector<std::array<index_t, 2>> found;  // (face, side)
-  for (const mesh_edge& e : mesh_edges(m))
-    if (e.is_boundary()) found.push_back(e.faces[0]);
+  detail::for_each_edge_group(hs, [&](std::size_t first, std::size_t count) {
+    if (count == 1) found.push_back({hs[first].f, static_cast<index_t>(hs[first].k)});
+  });
   std::sort(found.begin(), found.end());
-  std::vector<std::array<index_t, 2>> out;
-  out.reserve(found.size());
-  for (const auto& fs : found) {
+  for (auto& fs : found) {
     const int k = static_cast<int>(fs[1]);
-    out.push_back({face_vertex(m, fs[0], k), face_vertex(m, fs[0], (k + 1) % 3)});
+    fs = {face_vertex(m, fs[0], k), face_vertex(m, fs[0], (k + 1) % 3)};
   }
-  return out;
+  return found;
 }
 
-/// Number of edges shared by more than two faces.
+/// Number of edges shared by more than two faces. O(F log F).
 template <Mesh M>
 index_t count_nonmanifold_edges(const M& m) {
   index_t n = 0;
-  for (const mesh_edge& e : mesh_edges(m)) n += e.is_manifold() ? 0 : 1;
+  detail::for_each_edge_group(detail::sorted_half_edges(m), [&](std::size_t, std::size_t count) { n += count > 2 ? 1 : 0; });
   return n;
 }
 
@@ -107,6 +141,7 @@ struct mesh_components {
   std::vector<index_t> face_component;
 };
 
+/// Connected components of a valid mesh by union-find. O(F alpha(V)) time, O(V + F) memory.
 template <Mesh M>
 mesh_components connected_components(const M& m) {
   const index_t nv = num_vertices(m), nf = num_faces(m);
@@ -120,10 +155,14 @@ mesh_components connected_components(const M& m) {
     }
     return v;
   };
+  std::vector<index_t> size(static_cast<std::size_t>(nv), 1);
   for (index_t f = 0; f < nf; ++f) {
     for (int k = 1; k < 3; ++k) {
-      const index_t a = find(face_vertex(m, f, 0)), b = find(face_vertex(m, f, k));
-      if (a != b) parent[static_cast<std::size_t>(std::max(a, b))] = std::min(a, b);
+      index_t a = find(face_vertex(m, f, 0)), b = find(face_vertex(m, f, k));
+      if (a == b) continue;
+      if (size[static_cast<std::size_t>(a)] < size[static_cast<std::size_t>(b)]) std::swap(a, b);
+      parent[static_cast<std::size_t>(b)] = a;  // union by size
+      size[static_cast<std::size_t>(a)] += size[static_cast<std::size_t>(b)];
     }
   }
   mesh_components c;

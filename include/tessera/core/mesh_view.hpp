@@ -56,8 +56,9 @@ class mesh_view {
 };
 
 /// Validates raw buffers and returns a view: non-negative counts, non-null pointers for non-zero
-/// counts, `position_stride` >= 3, counts that fit 32-bit indices. Index ranges, NaN positions and
-/// degenerate faces are checked by validate_mesh() (core/tri_mesh.hpp) since that reads every element.
+/// counts (`corner_uvs` may be null: no uvs), `position_stride` >= 3, a vertex count that `Index` can
+/// address and buffer lengths whose element counts fit index_t. Index ranges, NaN positions and
+/// degenerate faces are checked by validate_mesh() (core/tri_mesh.hpp), since that reads every element.
 template <class Scalar, class Index>
 result<mesh_view<Scalar, Index>> make_mesh_view(const Scalar* positions, index_t vertex_count, const Index* indices,
                                                 index_t face_count, const float* corner_uvs = nullptr,
@@ -67,10 +68,15 @@ result<mesh_view<Scalar, Index>> make_mesh_view(const Scalar* positions, index_t
         detail::cat("mesh_view: counts must be non-negative, got ", vertex_count, " vertices and ", face_count, " faces"));
   if (position_stride < 3)
     return status::invalid_argument(detail::cat("mesh_view: position_stride must be at least 3, got ", position_stride));
-  constexpr index_t limit = std::numeric_limits<std::int32_t>::max() / 6;
-  if (vertex_count > limit || face_count > limit || vertex_count > std::numeric_limits<index_t>::max() / position_stride)
-    return status::size_overflow(detail::cat("mesh_view: ", vertex_count, " vertices / ", face_count,
-                                             " faces exceed what 32-bit indices can address"));
+  constexpr auto index_limit = static_cast<index_t>(std::numeric_limits<Index>::max());
+  if (vertex_count > index_limit)
+    return status::size_overflow(
+        detail::cat("mesh_view: ", vertex_count, " vertices exceed what 32-bit indices can address (", index_limit, ")"));
+  if (vertex_count > std::numeric_limits<index_t>::max() / position_stride)
+    return status::size_overflow(
+        detail::cat("mesh_view: ", vertex_count, " vertices x position_stride ", position_stride, " overflows"));
+  if (face_count > std::numeric_limits<index_t>::max() / 6)
+    return status::size_overflow(detail::cat("mesh_view: ", face_count, " faces overflow the index type"));
   if (vertex_count > 0 && positions == nullptr)
     return status::invalid_argument(detail::cat("mesh_view: positions is null for ", vertex_count, " vertices"));
   if (face_count > 0 && indices == nullptr)

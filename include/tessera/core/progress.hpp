@@ -39,9 +39,11 @@ struct progress {
   const cancellation_token* token = nullptr;
 
   /// Reports progress; returns false when the work should stop (callback said so or token raised).
+  /// The fraction is clamped to [0, 1] (NaN reports 0); the token is checked before the callback.
   bool report(double fraction, std::string_view stage = {}) const {
     if (token != nullptr && token->cancelled()) return false;
-    if (callback && !callback(fraction < 0 ? 0.0 : fraction > 1 ? 1.0 : fraction, stage)) return false;
+    const double f = fraction > 0 ? (fraction < 1 ? fraction : 1.0) : 0.0;  // NaN -> 0
+    if (callback && !callback(f, stage)) return false;
     return true;
   }
   /// True when the token has been raised (cheap; no callback).

@@ -35,10 +35,12 @@ constexpr std::uint64_t stream_id(std::string_view name) noexcept {
   return mix64(h);
 }
 
-/// Hashes a seed and any number of integer keys (signed keys are taken modulo 2^64).
+/// Hashes a seed and any number of integer or enum keys (signed keys are taken modulo 2^64, so -1
+/// and 2^64 - 1 are the same key). The order of keys matters: (a, b) and (b, a) differ.
 template <class... Keys>
 constexpr std::uint64_t hash_keys(std::uint64_t seed, Keys... keys) noexcept {
-  static_assert((std::is_integral_v<Keys> && ...) || sizeof...(Keys) == 0, "random keys must be integers");
+  static_assert(((std::is_integral_v<Keys> || std::is_enum_v<Keys>) && ...),
+                "random keys must be integers or enums (convert coordinates to integer cells first)");
   std::uint64_t h = mix64(seed ^ 0x6a09e667f3bcc909ULL);
   ((h = mix64(h ^ mix64(static_cast<std::uint64_t>(keys) + 0x9e3779b97f4a7c15ULL))), ...);
   return h;
@@ -49,7 +51,8 @@ constexpr double bits_to_unit(std::uint64_t bits) noexcept {
   return static_cast<double>(bits >> 11) * 0x1.0p-53;
 }
 
-/// Maps 64 random bits to [0, n) by a multiply-high (Lemire); n must be > 0.
+/// Maps 64 random bits to [0, n) by a multiply-high (Lemire; bias below n / 2^64, no rejection loop
+/// so the result stays a pure function of the bits). n must be > 0; n == 0 yields 0.
 constexpr std::uint64_t bits_below(std::uint64_t bits, std::uint64_t n) noexcept {
   // high 64 bits of the 128-bit product bits * n, portably from 32-bit halves
   const std::uint64_t a_lo = bits & 0xffffffffULL, a_hi = bits >> 32;

@@ -86,9 +86,12 @@ class [[nodiscard]] status {
 template <class T>
 class [[nodiscard]] result {
  public:
+  using value_type = T;
   result(T value) : value_(std::move(value)) {}  // NOLINT(google-explicit-constructor)
+  /// Holds a failure. An ok status carries no value, so it is turned into an internal_error rather
+  /// than producing a result that is neither a value nor an error.
   result(status error) : error_(std::move(error)) {  // NOLINT(google-explicit-constructor)
-    TESSERA_ASSERT(!error_.ok());
+    if (error_.ok()) error_ = status::internal_error("result<T> was constructed from an ok status without a value");
   }
 
   [[nodiscard]] bool ok() const noexcept { return value_.has_value(); }
@@ -96,6 +99,7 @@ class [[nodiscard]] result {
   /// The failure; an ok status when a value is held.
   [[nodiscard]] const status& error() const noexcept { return error_; }
 
+  /// The value. Precondition: ok() (checked by TESSERA_ASSERT; test first, or use value_or).
   [[nodiscard]] T& value() & { TESSERA_ASSERT(ok()); return *value_; }
   [[nodiscard]] const T& value() const& { TESSERA_ASSERT(ok()); return *value_; }
   [[nodiscard]] T&& value() && { TESSERA_ASSERT(ok()); return std::move(*value_); }
@@ -104,9 +108,14 @@ class [[nodiscard]] result {
   T&& operator*() && { return std::move(*this).value(); }
   T* operator->() { return &value(); }
   const T* operator->() const { return &value(); }
+  /// The value, or `fallback` when there is none.
   template <class U>
   [[nodiscard]] T value_or(U&& fallback) const& {
     return ok() ? *value_ : static_cast<T>(std::forward<U>(fallback));
+  }
+  template <class U>
+  [[nodiscard]] T value_or(U&& fallback) && {
+    return ok() ? std::move(*value_) : static_cast<T>(std::forward<U>(fallback));
   }
 
  private:
@@ -116,7 +125,7 @@ class [[nodiscard]] result {
 
 namespace detail {
 inline void append_to(std::string& out, std::string_view s) { out += s; }
-inline void append_to(std::string& out, const char* s) { out += s; }
+inline void append_to(std::string& out, const char* s) { out += s != nullptr ? s : "(null)"; }
 inline void append_to(std::string& out, const std::string& s) { out += s; }
 inline void append_to(std::string& out, char c) { out += c; }
 inline void append_to(std::string& out, bool b) { out += b ? "true" : "false"; }

@@ -11,6 +11,7 @@
 
 #include <array>
 #include <concepts>
+#include <limits>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -52,10 +53,11 @@ struct stored_tile_coloring {
   }
 };
 
-/// Copies any colouring into a stored one.
+/// Copies any colouring into a stored one (a negative face count is treated as zero).
 template <TileColoring C>
 stored_tile_coloring store_coloring(const C& c) {
   stored_tile_coloring s{static_cast<int>(c.num_colors(side_north)), static_cast<int>(c.num_colors(side_east)), {}};
+  if (c.num_faces() <= 0) return s;
   s.colors.resize(static_cast<std::size_t>(c.num_faces()));
   for (index_t f = 0; f < c.num_faces(); ++f)
     for (int side = 0; side < 4; ++side)
@@ -64,8 +66,11 @@ stored_tile_coloring store_coloring(const C& c) {
 }
 
 /// Checks that colour counts are positive and every side's colour lies in [0, num_colors(side)).
+/// O(faces).
 template <TileColoring C>
 status check_color_ranges(const C& c) {
+  if (c.num_faces() < 0)
+    return status::invalid_argument(detail::cat("tile colouring: negative face count ", c.num_faces()));
   for (int side = 0; side < 2; ++side)
     if (c.num_colors(side) < 1)
       return status::invalid_argument(detail::cat("tile colouring: ", side == 0 ? "horizontal" : "vertical",
@@ -82,13 +87,19 @@ status check_color_ranges(const C& c) {
 
 /// Checks colour ranges and that every pair of touching sides carries the same colour.
 /// `neighbor(face, side)` returns the (face, side) across that edge, or std::nullopt on a border.
+/// A neighbour outside [0, num_faces()) x [0, 4) is reported as out_of_range. O(faces).
 template <TileColoring C, class Neighbor>
 status check_coloring(const C& c, Neighbor&& neighbor) {
   if (auto s = check_color_ranges(c); !s) return s;
-  for (index_t f = 0; f < c.num_faces(); ++f)
+  const index_t nf = c.num_faces();
+  for (index_t f = 0; f < nf; ++f)
     for (int side = 0; side < 4; ++side) {
       const std::optional<std::pair<index_t, int>> other = neighbor(f, side);
       if (!other) continue;
+      if (other->first < 0 || other->first >= nf || other->second < 0 || other->second > 3)
+        return status::out_of_range(detail::cat("tile colouring: the neighbour of face ", f, " side ", side,
+                                                " is face ", other->first, " side ", other->second, ", outside [0, ",
+                                                nf, ") x [0, 4)"));
       const int a = c.edge_color(f, side), b = c.edge_color(other->first, other->second);
       if (a != b)
         return status::invalid_argument(detail::cat("tile colouring: face ", f, " side ", side, " has colour ", a,
@@ -99,6 +110,7 @@ status check_coloring(const C& c, Neighbor&& neighbor) {
 }
 
 /// Neighbours on a cols x rows grid (see the convention above); `toroidal` wraps both directions.
+/// Precondition: cols > 0, rows > 0, 0 <= face < cols * rows, 0 <= side < 4.
 struct grid_neighbors {
   index_t cols = 0, rows = 0;
   bool toroidal = false;
@@ -122,6 +134,8 @@ template <TileColoring C>
 status check_grid_coloring(const C& c, index_t cols, index_t rows, bool toroidal = false) {
   if (cols <= 0 || rows <= 0)
     return status::invalid_argument(detail::cat("tile colouring: grid must be positive, got ", cols, " x ", rows));
+  if (cols > std::numeric_limits<index_t>::max() / rows)
+    return status::size_overflow(detail::cat("tile colouring: a ", cols, " x ", rows, " grid overflows the index type"));
   if (c.num_faces() != cols * rows)
     return status::invalid_argument(detail::cat("tile colouring: has ", c.num_faces(), " faces, a ", cols, " x ", rows,
                                                 " grid needs ", cols * rows));

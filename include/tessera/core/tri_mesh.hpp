@@ -1,12 +1,15 @@
 // tessera/core/tri_mesh.hpp: tessera's owning triangle mesh (double positions, optional per-corner
 // uvs), validation of any Mesh, conversion of any Mesh into a tri_mesh, and per-face / per-vertex
 // geometry (normals, areas, bounding box). Connectivity (adjacency, boundary, components) is in
-// core/mesh_topology.hpp.
+// core/mesh_topology.hpp. The geometry helpers expect a valid mesh (validate_mesh) and do not
+// re-check it; all are O(V + F), allocation only for their result, and thread-safe on const input.
 #pragma once
 
 #include <array>
 #include <cmath>
+#include <concepts>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include "config.hpp"
@@ -17,7 +20,8 @@
 TESSERA_NAMESPACE_BEGIN
 
 /// Owning triangle mesh. Plain data: `positions`, `faces` (three vertex indices, counter-clockwise
-/// seen from the front) and `uvs` (empty, or one uv triple per face). Models Mesh and UVMesh.
+/// seen from the front) and `uvs` (empty, or exactly one uv triple per face; validate_mesh checks
+/// this). Models Mesh and UVMesh.
 struct tri_mesh {
   std::vector<vec3> positions;
   std::vector<std::array<index_t, 3>> faces;
@@ -38,8 +42,15 @@ struct tri_mesh {
     positions.push_back(p);
     return num_vertices() - 1;
   }
+  /// Appends a face without uvs (use on meshes without uvs).
   index_t add_face(index_t a, index_t b, index_t c) {
     faces.push_back({a, b, c});
+    return num_faces() - 1;
+  }
+  /// Appends a face with its corner uvs (use on meshes whose every face has uvs).
+  index_t add_face(index_t a, index_t b, index_t c, const std::array<vec2, 3>& corner_uvs) {
+    faces.push_back({a, b, c});
+    uvs.push_back(corner_uvs);
     return num_faces() - 1;
   }
   /// Appends another mesh (its vertices translated by `offset`), renumbering its indices. Uvs are kept
@@ -58,13 +69,24 @@ struct tri_mesh {
 };
 
 /// Checks any Mesh: non-negative counts, face indices in range, no face repeating a vertex
-/// (degenerate), finite positions and uvs. `what` names the mesh in the message. Zero-area faces with
-/// three distinct vertices are accepted. O(V + F).
+/// (degenerate), finite positions and uvs (and, for tri_mesh, one uv triple per face when it has
+/// uvs). `what` names the mesh in the message. Zero-area faces with three distinct vertices are
+/// accepted. When mesh_traits<M> has `static status validate(const M&, std::string_view what)`
+/// (checks only the adapter can make, e.g. OpenMesh's non-triangle faces and deleted elements), that
+/// runs first. Returns invalid_argument, or out_of_range for a bad index. O(V + F).
 template <Mesh M>
 status validate_mesh(const M& m, std::string_view what = "mesh") {
+  if constexpr (requires { { mesh_traits<M>::validate(m, what) } -> std::same_as<status>; }) {
+    if (auto s = mesh_traits<M>::validate(m, what); !s) return s;
+  }
   const index_t nv = num_vertices(m), nf = num_faces(m);
   if (nv < 0 || nf < 0)
     return status::invalid_argument(detail::cat(what, ": negative vertex or face count (", nv, ", ", nf, ")"));
+  if constexpr (std::is_same_v<M, tri_mesh>) {
+    if (!m.uvs.empty() && m.uvs.size() != m.faces.size())
+      return status::invalid_argument(detail::cat(what, ": has ", m.uvs.size(), " uv triples for ", m.faces.size(),
+                                                  " faces; uvs must be empty or hold one triple per face"));
+  }
   for (index_t v = 0; v < nv; ++v) {
     const vec3 p = vertex_position(m, v);
     if (!is_finite(p))

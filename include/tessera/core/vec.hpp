@@ -23,6 +23,7 @@ struct vec2 {
   friend constexpr vec2 operator/(vec2 a, double s) noexcept { return {a.x / s, a.y / s}; }
   constexpr vec2& operator+=(vec2 b) noexcept { x += b.x; y += b.y; return *this; }
   constexpr vec2& operator-=(vec2 b) noexcept { x -= b.x; y -= b.y; return *this; }
+  constexpr vec2& operator*=(double s) noexcept { x *= s; y *= s; return *this; }
   friend constexpr bool operator==(vec2, vec2) = default;
 };
 
@@ -51,11 +52,18 @@ constexpr vec3 cross(vec3 a, vec3 b) noexcept {
 }
 inline double norm(vec2 a) noexcept { return std::sqrt(dot(a, a)); }
 inline double norm(vec3 a) noexcept { return std::sqrt(dot(a, a)); }
+constexpr double squared_norm(vec2 a) noexcept { return dot(a, a); }
 constexpr double squared_norm(vec3 a) noexcept { return dot(a, a); }
-/// a / |a|, or the zero vector when |a| is 0.
+inline double distance(vec2 a, vec2 b) noexcept { return norm(a - b); }
+inline double distance(vec3 a, vec3 b) noexcept { return norm(a - b); }
+/// a / |a|, or the zero vector when |a| is 0 (or not finite).
+inline vec2 normalized(vec2 a) noexcept {
+  const double n = norm(a);
+  return n > 0 && std::isfinite(n) ? a / n : vec2{};
+}
 inline vec3 normalized(vec3 a) noexcept {
   const double n = norm(a);
-  return n > 0 ? a / n : vec3{};
+  return n > 0 && std::isfinite(n) ? a / n : vec3{};
 }
 inline bool is_finite(vec3 a) noexcept { return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z); }
 inline bool is_finite(vec2 a) noexcept { return std::isfinite(a.x) && std::isfinite(a.y); }
@@ -63,7 +71,7 @@ constexpr vec3 min(vec3 a, vec3 b) noexcept { return {std::min(a.x, b.x), std::m
 constexpr vec3 max(vec3 a, vec3 b) noexcept { return {std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)}; }
 
 /// Axis-aligned bounding box. Default-constructed it is empty (min > max), and extending it by a
-/// point makes it that point.
+/// point makes it that point. Extending by a point with NaN coordinates leaves those axes unchanged.
 struct aabb {
   vec3 min{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
            std::numeric_limits<double>::infinity()};
@@ -80,7 +88,8 @@ struct aabb {
     max = tessera::max(max, b.max);
   }
   [[nodiscard]] constexpr vec3 extent() const noexcept { return empty() ? vec3{} : max - min; }
-  [[nodiscard]] constexpr vec3 center() const noexcept { return (min + max) * 0.5; }
+  /// Centre of the box; the origin for an empty box.
+  [[nodiscard]] constexpr vec3 center() const noexcept { return empty() ? vec3{} : (min + max) * 0.5; }
   [[nodiscard]] constexpr bool contains(vec3 p) const noexcept {
     return p.x >= min.x && p.x <= max.x && p.y >= min.y && p.y <= max.y && p.z >= min.z && p.z <= max.z;
   }

@@ -1,23 +1,36 @@
-// tessera/io/png.hpp: PNG files through stb (link tessera::io; Debian libstb-dev).
-//   read_png_info(path)          size, channel count and bit depth without decoding
-//   read_png<T, C>(path)         decode into an image_buffer<T, C> (channels and depth converted)
-//   write_png(path, image)       encode any Image (uint8 -> 8-bit PNG; uint16 and float -> 16-bit)
-// Errors name the file and what went wrong; nothing throws.
+// tessera/io/png.hpp: PNG files (link tessera::io; Debian libstb-dev).
+//   read_png_info(path)            size, channels and bit depth without decoding pixels
+//   read_png<T, C>(path)           decode into an image_buffer<T, C> (channels and depth converted)
+//   write_png(path, image)         encode any Image (uint8 -> 8-bit PNG; uint16 and float -> 16-bit)
+//   decode_png<T, C>(bytes, name)  / encode_png(image): the same on memory, for engines with their
+//                                  own file systems or packed archives
+// Every file is checked chunk by chunk (lengths, CRCs, IHDR fields, declared size against the
+// compressed data) before stb inflates and unfilters it, so a truncated or corrupt file is a
+// parse_error naming the file and the byte offset, never a crash or an absurd allocation. Grey,
+// grey + alpha, RGB, RGBA and palette images at every bit depth are read; channel and depth
+// conversion follow convert_pixel / convert_channel (16 -> 8 bits rounds to nearest). Thread-safe.
+// (If the host itself calls stb's stbi_set_flip_vertically_on_load(1), decoded images come out
+// flipped; tessera never calls it.)
 #pragma once
 
 #include <stb_image.h>
-#include <stb_image_write.h>
 
+#include <climits>
 #include <cstdint>
-#include <cstdio>
-#include <cstring>
+#include <cstdlib>
+#include <memory>
 #include <string>
+#include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include "../core/config.hpp"
 #include "../core/image.hpp"
 #include "../core/image_buffer.hpp"
+#include "../core/image_checks.hpp"
 #include "../core/status.hpp"
+#include "detail/file.hpp"
+#include "detail/png_chunks.hpp"
 
 // stb builds its zlib compressor into libstb but declares it only in its implementation section.
 extern "C" unsigned char* stbi_zlib_compress(unsigned char* data, int data_len, int* out_len, int quality);
@@ -28,118 +41,151 @@ TESSERA_NAMESPACE_BEGIN
 struct png_info {
   index_t width = 0;
   index_t height = 0;
-  int channels = 0;   ///< 1 grey, 2 grey + alpha, 3 RGB, 4 RGBA
-  int bit_depth = 8;  ///< 8 or 16
+  int channels = 0;        ///< after decoding: 1 grey, 2 grey + alpha, 3 RGB, 4 RGBA (palettes expand)
+  int bit_depth = 8;       ///< precision after decoding: 8 or 16
+  int file_bit_depth = 8;  ///< as stored: 1, 2, 4, 8 or 16
+  bool palette = false;    ///< stored as palette indices
+  bool interlaced = false;
 };
 
-/// Reads the header of an image file (PNG, and anything else stb decodes).
-inline result<png_info> read_png_info(const std::string& path) {
-  int w = 0, h = 0, c = 0;
-  if (!stbi_info(path.c_str(), &w, &h, &c)) {
-    if (FILE* f = std::fopen(path.c_str(), "rb")) {
-      std::fclose(f);
-      return status::parse_error(detail::cat(path, ": not a readable image (", stbi_failure_reason(), ")"));
-    }
-    return status::io_error(detail::cat(path, ": cannot open file"));
-  }
-  return png_info{w, h, c, stbi_is_16_bit(path.c_str()) ? 16 : 8};
+/// Reads the header of an in-memory PNG after checking its whole chunk structure. `name` names the
+/// data in messages. parse_error for anything that is not a well-formed PNG. O(size).
+inline result<png_info> decode_png_info(const unsigned char* data, std::size_t size, std::string_view name = "png") {
+  auto l = detail::check_png(data, size, name);
+  if (!l) return l.error();
+  return png_info{static_cast<index_t>(l->width), static_cast<index_t>(l->height), l->channels(),
+                  l->bit_depth == 16 ? 16 : 8,    l->bit_depth,                     l->color_type == 3,
+                  l->interlaced};
 }
 
-/// Decodes an image file into C channels of T (grey/colour/alpha converted like convert_pixel;
-/// 16-bit files keep their precision when T is uint16_t or float).
-template <Channel T, int C>
-result<image_buffer<T, C>> read_png(const std::string& path) {
-  auto info = read_png_info(path);
-  if (!info) return info.error();
-  if (auto s = validate_image_extent(info->width, info->height, C, path); !s) return s;
-  int w = 0, h = 0, file_channels = 0;
-  const bool wide = info->bit_depth == 16 && !std::is_same_v<T, std::uint8_t>;
-  void* raw = wide ? static_cast<void*>(stbi_load_16(path.c_str(), &w, &h, &file_channels, C))
-                   : static_cast<void*>(stbi_load(path.c_str(), &w, &h, &file_channels, C));
-  if (raw == nullptr) return status::parse_error(detail::cat(path, ": cannot decode (", stbi_failure_reason(), ")"));
-  image_buffer<T, C> out(w, h);
-  const std::size_t n = static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * C;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (wide) out.data()[i] = convert_channel<T>(static_cast<const std::uint16_t*>(raw)[i]);
-    else out.data()[i] = convert_channel<T>(static_cast<const std::uint8_t*>(raw)[i]);
-  }
-  stbi_image_free(raw);
-  return out;
+/// Reads the header of a PNG file (the whole file is read and its structure checked).
+/// io_error when the file cannot be read; parse_error naming the file and byte otherwise.
+inline result<png_info> read_png_info(const std::string& path) {
+  auto bytes = detail::read_file(path);
+  if (!bytes) return bytes.error();
+  return decode_png_info(reinterpret_cast<const unsigned char*>(bytes->data()), bytes->size(), path);
 }
 
 namespace detail {
-inline std::uint32_t png_crc(const unsigned char* data, std::size_t n, std::uint32_t crc = 0xffffffffu) {
-  for (std::size_t i = 0; i < n; ++i) {
-    crc ^= data[i];
-    for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xedb88320u & (0u - (crc & 1u)));
+struct stbi_deleter {
+  void operator()(void* p) const noexcept { stbi_image_free(p); }
+};
+template <Channel T, int C, class S, int FC>
+void convert_decoded(const S* src, image_buffer<T, C>& out) {
+  const index_t n = out.width() * out.height();
+  T* dst = out.data();
+  for (index_t i = 0; i < n; ++i) {
+    pixel<S, FC> p;
+    for (int c = 0; c < FC; ++c) p[static_cast<std::size_t>(c)] = src[i * FC + c];
+    const auto q = convert_pixel<pixel<T, C>>(p);
+    for (int c = 0; c < C; ++c) dst[i * C + c] = q[static_cast<std::size_t>(c)];
   }
-  return crc;
-}
-inline void put_be32(std::vector<unsigned char>& out, std::uint32_t v) {
-  for (int s = 24; s >= 0; s -= 8) out.push_back(static_cast<unsigned char>(v >> s));
-}
-inline void put_chunk(std::vector<unsigned char>& out, const char* type, const unsigned char* data, std::size_t n) {
-  put_be32(out, static_cast<std::uint32_t>(n));
-  const std::size_t start = out.size();
-  out.insert(out.end(), type, type + 4);
-  out.insert(out.end(), data, data + n);
-  put_be32(out, png_crc(out.data() + start, n + 4) ^ 0xffffffffu);
-}
-/// A 16-bit PNG (stb_image_write only writes 8-bit): unfiltered rows, zlib from libstb.
-inline status write_png16(const std::string& path, index_t w, index_t h, int channels, const std::uint16_t* samples) {
-  const std::size_t row = static_cast<std::size_t>(w) * static_cast<std::size_t>(channels) * 2 + 1;
-  std::vector<unsigned char> raw(row * static_cast<std::size_t>(h));
-  for (index_t y = 0; y < h; ++y) {
-    unsigned char* r = raw.data() + static_cast<std::size_t>(y) * row;
-    r[0] = 0;  // filter: none
-    for (index_t i = 0; i < w * channels; ++i) {
-      const std::uint16_t v = samples[y * w * channels + i];
-      r[1 + 2 * i] = static_cast<unsigned char>(v >> 8);
-      r[2 + 2 * i] = static_cast<unsigned char>(v & 0xff);
-    }
-  }
-  if (raw.size() > 0x7fffffff) return status::size_overflow(detail::cat(path, ": image too large for one PNG stream"));
-  int zlen = 0;
-  unsigned char* z = stbi_zlib_compress(raw.data(), static_cast<int>(raw.size()), &zlen, 8);
-  if (z == nullptr) return status::internal_error(detail::cat(path, ": compression failed"));
-  static constexpr unsigned char color_type[5] = {0, 0, 4, 2, 6};
-  std::vector<unsigned char> file = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-  std::vector<unsigned char> ihdr;
-  put_be32(ihdr, static_cast<std::uint32_t>(w));
-  put_be32(ihdr, static_cast<std::uint32_t>(h));
-  ihdr.insert(ihdr.end(), {16, color_type[channels], 0, 0, 0});
-  put_chunk(file, "IHDR", ihdr.data(), ihdr.size());
-  put_chunk(file, "IDAT", z, static_cast<std::size_t>(zlen));
-  std::free(z);
-  put_chunk(file, "IEND", nullptr, 0);
-  FILE* f = std::fopen(path.c_str(), "wb");
-  if (f == nullptr) return status::io_error(detail::cat(path, ": cannot open for writing"));
-  const bool ok = std::fwrite(file.data(), 1, file.size(), f) == file.size();
-  if (std::fclose(f) != 0 || !ok) return status::io_error(detail::cat(path, ": write failed"));
-  return {};
 }
 }  // namespace detail
 
-/// Writes any Image as PNG: uint8 channels as an 8-bit PNG, uint16 and float as 16-bit (floats
-/// clamped to [0, 1]). The channel count of the image is kept (1 to 4).
+/// Decodes an in-memory PNG into C channels of T: the file's channels convert like convert_pixel
+/// (grey expands, colour reduces to Rec. 601 luma, alpha added opaque or dropped) and its samples
+/// like convert_channel (16-bit files keep their precision in uint16_t and float). Errors:
+/// parse_error (structure, CRC, truncation, corrupt compressed data; message names `name` and the
+/// byte), size_overflow / unsupported for images too large to decode. O(pixels).
+template <Channel T, int C>
+result<image_buffer<T, C>> decode_png(const unsigned char* data, std::size_t size, std::string_view name = "png") {
+  auto info = decode_png_info(data, size, name);
+  if (!info) return info.error();
+  if (auto s = validate_image_extent(info->width, info->height, C, name); !s) return s;
+  const int fc = info->channels;
+  const bool wide = info->bit_depth == 16;
+  if (size > INT_MAX || static_cast<double>(info->width) * static_cast<double>(info->height) * fc * (wide ? 2 : 1) > INT_MAX)
+    return status::unsupported(detail::cat(name, ": ", info->width, " x ", info->height,
+                                           " is too large for the PNG decoder (2 GB limit)"));
+  int w = 0, h = 0, got = 0;
+  const int len = static_cast<int>(size);
+  std::unique_ptr<void, detail::stbi_deleter> raw(
+      wide ? static_cast<void*>(stbi_load_16_from_memory(data, len, &w, &h, &got, 0))
+           : static_cast<void*>(stbi_load_from_memory(data, len, &w, &h, &got, 0)));
+  if (!raw) return status::parse_error(detail::cat(name, ": corrupt image data (", stbi_failure_reason(), ")"));
+  if (w != info->width || h != info->height || got != fc)
+    return status::internal_error(detail::cat(name, ": the decoder disagrees with the header"));
+  auto out = image_buffer<T, C>::create(w, h);
+  if (!out) return out.error();
+  auto run = [&]<class S, int FC>() { detail::convert_decoded<T, C, S, FC>(static_cast<const S*>(raw.get()), *out); };
+  auto by_channels = [&]<class S>() {
+    switch (fc) {
+      case 1: run.template operator()<S, 1>(); break;
+      case 2: run.template operator()<S, 2>(); break;
+      case 3: run.template operator()<S, 3>(); break;
+      default: run.template operator()<S, 4>(); break;
+    }
+  };
+  if (wide) by_channels.template operator()<std::uint16_t>();
+  else by_channels.template operator()<std::uint8_t>();
+  return out;
+}
+
+/// Reads a PNG file into C channels of T (see decode_png). io_error when the file cannot be read.
+template <Channel T, int C>
+result<image_buffer<T, C>> read_png(const std::string& path) {
+  auto bytes = detail::read_file(path);
+  if (!bytes) return bytes.error();
+  return decode_png<T, C>(reinterpret_cast<const unsigned char*>(bytes->data()), bytes->size(), path);
+}
+
+/// Encodes any Image as PNG bytes: uint8 channels as an 8-bit PNG, uint16 and float as 16-bit
+/// (floats clamped to [0, 1], NaN to 0), keeping the channel count (1 grey, 2 grey + alpha, 3 RGB,
+/// 4 RGBA). Rows use the adaptive filter heuristic, zlib level 8. Errors: invalid_argument for an
+/// empty image, size_overflow for one too large for PNG. O(pixels).
+template <Image I>
+result<std::vector<unsigned char>> encode_png(const I& img, std::string_view name = "png") {
+  if (auto s = validate_image(img, name); !s) return s;
+  constexpr int C = channels_v<I>;
+  constexpr bool eight = std::is_same_v<channel_t<I>, std::uint8_t>;
+  constexpr std::size_t bytes_per_sample = eight ? 1 : 2;
+  const index_t w = width_of(img), h = height_of(img);
+  const std::size_t row_bytes = static_cast<std::size_t>(w) * C * bytes_per_sample;
+  if (w > 0x7fffffff || h > 0x7fffffff || static_cast<double>(row_bytes + 1) * static_cast<double>(h) > INT_MAX)
+    return status::size_overflow(detail::cat(name, ": ", w, " x ", h, " is too large for one PNG stream (2 GB)"));
+  std::vector<unsigned char> raw(row_bytes * static_cast<std::size_t>(h));
+  for (index_t y = 0; y < h; ++y) {
+    unsigned char* r = raw.data() + static_cast<std::size_t>(y) * row_bytes;
+    for (index_t x = 0; x < w; ++x) {
+      if constexpr (eight) {
+        const auto p = convert_pixel<pixel<std::uint8_t, C>>(image_traits<I>::read(img, x, y));
+        for (int c = 0; c < C; ++c) r[x * C + c] = p[static_cast<std::size_t>(c)];
+      } else {
+        const auto p = convert_pixel<pixel<std::uint16_t, C>>(image_traits<I>::read(img, x, y));
+        for (int c = 0; c < C; ++c) {
+          r[2 * (x * C + c)] = static_cast<unsigned char>(p[static_cast<std::size_t>(c)] >> 8);
+          r[2 * (x * C + c) + 1] = static_cast<unsigned char>(p[static_cast<std::size_t>(c)] & 0xff);
+        }
+      }
+    }
+  }
+  const auto filtered = detail::png_filter_rows(raw.data(), row_bytes, static_cast<std::size_t>(h), C * bytes_per_sample);
+  int zlen = 0;
+  std::unique_ptr<unsigned char, decltype(&std::free)> z(
+      stbi_zlib_compress(const_cast<unsigned char*>(filtered.data()), static_cast<int>(filtered.size()), &zlen, 8),
+      &std::free);
+  if (!z) return status::internal_error(detail::cat(name, ": PNG compression failed (out of memory?)"));
+  static constexpr unsigned char color_type[5] = {0, 0, 4, 2, 6};
+  std::vector<unsigned char> file(detail::png_signature, detail::png_signature + 8);
+  std::vector<unsigned char> ihdr;
+  detail::put_be32(ihdr, static_cast<std::uint32_t>(w));
+  detail::put_be32(ihdr, static_cast<std::uint32_t>(h));
+  ihdr.insert(ihdr.end(), {static_cast<unsigned char>(eight ? 8 : 16), color_type[C], 0, 0, 0});
+  file.reserve(static_cast<std::size_t>(zlen) + 64);
+  detail::put_png_chunk(file, "IHDR", ihdr.data(), ihdr.size());
+  detail::put_png_chunk(file, "IDAT", z.get(), static_cast<std::size_t>(zlen));
+  detail::put_png_chunk(file, "IEND", nullptr, 0);
+  return file;
+}
+
+/// Writes any Image as a PNG file (see encode_png). io_error naming the file when it cannot be
+/// written.
 template <Image I>
 status write_png(const std::string& path, const I& img) {
-  if (auto s = validate_image(img, path); !s) return s;
-  constexpr int C = channels_v<I>;
-  const index_t w = width_of(img), h = height_of(img);
-  if (w > 0x7fffffff / (C * 2) || h > 0x7fffffff)
-    return status::size_overflow(detail::cat(path, ": ", w, " x ", h, " is too large for a PNG"));
-  if constexpr (std::is_same_v<channel_t<I>, std::uint8_t>) {
-    auto buf = to_buffer<std::uint8_t, C>(img, path);
-    if (!buf) return buf.error();
-    if (!stbi_write_png(path.c_str(), static_cast<int>(w), static_cast<int>(h), C, buf->data(), static_cast<int>(w * C)))
-      return status::io_error(detail::cat(path, ": cannot write PNG"));
-    return {};
-  } else {
-    auto buf = to_buffer<std::uint16_t, C>(img, path);
-    if (!buf) return buf.error();
-    return detail::write_png16(path, w, h, C, buf->data());
-  }
+  auto bytes = encode_png(img, path);
+  if (!bytes) return bytes.error();
+  return detail::write_file(path, std::string_view(reinterpret_cast<const char*>(bytes->data()), bytes->size()));
 }
 
 TESSERA_NAMESPACE_END

@@ -1,0 +1,221 @@
+// tessera/tiling/tile_manifest.hpp: the `tiles.json` manifest of a Wang tile directory, shared by
+// image tiles (`tessera wang build`) and geometric tiles.
+//
+//   {
+//     "tile_size": 64, "horizontal_colors": 2, "vertical_colors": 2,
+//     "tiles": [
+//       {"index": 0, "file": "tile_0.png", "edges": [0, 0, 0, 0]},     // [north, east, south, west]
+//       ...
+//     ]
+//   }
+//
+// Any other numeric member, at the top level or inside a tile, is kept as an extra field (the
+// geometry side adds e.g. "height"). Reading is tolerant (comments, trailing commas, members in any
+// order); every error names the file and what is wrong.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <initializer_list>
+#include <sstream>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "../core/config.hpp"
+#include "../core/status.hpp"
+#include "../detail/json.hpp"
+#include "complete_tile_set.hpp"
+#include "tile_set_edges.hpp"
+
+TESSERA_NAMESPACE_BEGIN
+
+/// A named number beyond the required fields ("height": 0.25).
+struct manifest_field {
+  std::string name;
+  double value = 0;
+  friend bool operator==(const manifest_field&, const manifest_field&) = default;
+};
+
+/// One tile of a manifest.
+struct tile_manifest_entry {
+  index_t index = 0;         ///< tile number; the entries hold each of 0..n-1 once
+  std::string file;          ///< file name relative to the directory ("tile_3.png")
+  wang_edges edges;          ///< [north, east, south, west]
+  std::vector<manifest_field> extra;
+  friend bool operator==(const tile_manifest_entry&, const tile_manifest_entry&) = default;
+};
+
+/// The contents of `tiles.json`.
+struct tile_manifest {
+  index_t tile_size = 0;
+  int horizontal_colors = 0;
+  int vertical_colors = 0;
+  std::vector<tile_manifest_entry> tiles;  ///< sorted by index after reading
+  std::vector<manifest_field> extra;
+
+  /// The value of a top-level extra field, or `fallback`.
+  [[nodiscard]] double extra_value(std::string_view name, double fallback = 0) const {
+    for (const auto& f : extra)
+      if (f.name == name) return f.value;
+    return fallback;
+  }
+  friend bool operator==(const tile_manifest&, const tile_manifest&) = default;
+};
+
+/// Checks a manifest's consistency: positive tile size, valid colour counts, at least one tile,
+/// indices forming 0..n-1, edge colours in range, non-empty relative file names without "..".
+/// `name` (the file) starts every message. O(n log n).
+inline status validate_tile_manifest(const tile_manifest& m, std::string_view name = "tiles.json") {
+  auto bad = [&](auto... what) { return status::invalid_argument(detail::cat(name, ": ", what...)); };
+  if (m.tile_size <= 0) return bad("tile_size must be positive, got ", m.tile_size);
+  if (auto s = validate_color_counts(m.horizontal_colors, m.vertical_colors); !s) return bad(s.message());
+  if (m.tiles.empty()) return bad("\"tiles\" is empty");
+  std::vector<char> seen(m.tiles.size(), 0);
+  for (const auto& t : m.tiles) {
+    if (t.index < 0 || t.index >= static_cast<index_t>(m.tiles.size()))
+      return bad("tile index ", t.index, " is outside [0, ", m.tiles.size(), ") (indices must be 0..n-1)");
+    if (seen[static_cast<std::size_t>(t.index)]++) return bad("tile index ", t.index, " appears twice");
+    if (auto s = validate_wang_edges(t.edges, m.horizontal_colors, m.vertical_colors); !s)
+      return bad("tile ", t.index, ": ", s.message());
+    if (t.file.empty()) return bad("tile ", t.index, " has an empty \"file\"");
+    const std::filesystem::path p(t.file);
+    if (p.is_absolute() || t.file.find("..") != std::string::npos)
+      return bad("tile ", t.index, ": file \"", t.file, "\" must be a plain name inside the tile directory");
+  }
+  return {};
+}
+
+/// Parses manifest text. `name` (usually the file path) starts every message. Errors: malformed
+/// JSON (with line and column), missing or mistyped required members, non-integer counts, and
+/// everything validate_tile_manifest checks. Tiles come back sorted by index. O(text size).
+inline result<tile_manifest> parse_tile_manifest(std::string_view text, std::string_view name = "tiles.json") {
+  auto json = detail::parse_json(text, name);
+  if (!json) return json.error();
+  auto bad = [&](auto... what) { return status::parse_error(detail::cat(name, ": ", what...)); };
+  if (!json->is_object()) return bad("the manifest must be a JSON object");
+  auto integer = [&](const detail::json_value& obj, std::string_view key, index_t& out, std::string_view where) -> status {
+    const detail::json_value* v = obj.find(key);
+    if (v == nullptr) return bad(where, "missing \"", key, "\"");
+    if (!v->is_number() || v->number != std::floor(v->number) || std::fabs(v->number) > 9.0e15)
+      return bad(where, "\"", key, "\" must be an integer");
+    out = static_cast<index_t>(v->number);
+    return {};
+  };
+  auto extras = [](const detail::json_value& obj, std::initializer_list<std::string_view> known) {
+    std::vector<manifest_field> out;
+    for (const auto& [k, v] : obj.object) {
+      bool is_known = false;
+      for (std::string_view kn : known) is_known = is_known || k == kn;
+      if (!is_known && v.is_number()) out.push_back({k, v.number});
+    }
+    return out;
+  };
+  tile_manifest m;
+  index_t nh = 0, nv = 0;
+  if (auto s = integer(*json, "tile_size", m.tile_size, ""); !s) return s;
+  if (auto s = integer(*json, "horizontal_colors", nh, ""); !s) return s;
+  if (auto s = integer(*json, "vertical_colors", nv, ""); !s) return s;
+  if (nh < 1 || nh > max_wang_colors || nv < 1 || nv > max_wang_colors)
+    return bad("colour counts must be in [1, ", max_wang_colors, "], got ", nh, " x ", nv);
+  m.horizontal_colors = static_cast<int>(nh);
+  m.vertical_colors = static_cast<int>(nv);
+  m.extra = extras(*json, {"tile_size", "horizontal_colors", "vertical_colors"});
+  const detail::json_value* tiles = json->find("tiles");
+  if (tiles == nullptr || !tiles->is_array()) return bad("missing \"tiles\" array");
+  for (std::size_t i = 0; i < tiles->array.size(); ++i) {
+    const detail::json_value& t = tiles->array[i];
+    const std::string where = detail::cat("tiles[", i, "]: ");
+    if (!t.is_object()) return bad(where, "must be an object");
+    tile_manifest_entry e;
+    if (auto s = integer(t, "index", e.index, where); !s) return s;
+    const detail::json_value* file = t.find("file");
+    if (file == nullptr || !file->is_string()) return bad(where, "missing \"file\" string");
+    e.file = file->string;
+    const detail::json_value* edges = t.find("edges");
+    if (edges == nullptr || !edges->is_array() || edges->array.size() != 4)
+      return bad(where, "\"edges\" must be an array of four colours [north, east, south, west]");
+    int c[4] = {0, 0, 0, 0};
+    for (int k = 0; k < 4; ++k) {
+      const detail::json_value& v = edges->array[static_cast<std::size_t>(k)];
+      if (!v.is_number() || v.number != std::floor(v.number) || std::fabs(v.number) > 1e9)
+        return bad(where, "edge colours must be integers");
+      c[k] = static_cast<int>(v.number);
+    }
+    e.edges = {c[0], c[1], c[2], c[3]};
+    e.extra = extras(t, {"index", "edges"});
+    m.tiles.push_back(std::move(e));
+  }
+  if (auto s = validate_tile_manifest(m, name); !s) return s;
+  std::sort(m.tiles.begin(), m.tiles.end(), [](const auto& a, const auto& b) { return a.index < b.index; });
+  return m;
+}
+
+/// The manifest as JSON text, one tile per line (what write_tile_manifest stores).
+inline std::string format_tile_manifest(const tile_manifest& m) {
+  std::string out = "{\n";
+  out += detail::cat("  \"tile_size\": ", m.tile_size, ",\n  \"horizontal_colors\": ", m.horizontal_colors,
+                     ",\n  \"vertical_colors\": ", m.vertical_colors, ",\n");
+  for (const auto& f : m.extra) out += detail::cat("  ", detail::json_quote(f.name), ": ", detail::json_number(f.value), ",\n");
+  out += "  \"tiles\": [\n";
+  for (std::size_t i = 0; i < m.tiles.size(); ++i) {
+    const auto& t = m.tiles[i];
+    out += detail::cat("    {\"index\": ", t.index, ", \"file\": ", detail::json_quote(t.file), ", \"edges\": [", t.edges.north,
+                       ", ", t.edges.east, ", ", t.edges.south, ", ", t.edges.west, "]");
+    for (const auto& f : t.extra) out += detail::cat(", ", detail::json_quote(f.name), ": ", detail::json_number(f.value));
+    out += i + 1 < m.tiles.size() ? "},\n" : "}\n";
+  }
+  out += "  ]\n}\n";
+  return out;
+}
+
+/// The path of the manifest inside a tile directory: DIR/tiles.json.
+inline std::string tile_manifest_path(const std::string& dir) { return (std::filesystem::path(dir) / "tiles.json").string(); }
+
+/// Reads and validates DIR/tiles.json and checks that every listed tile file exists. Errors:
+/// io_error naming DIR/tiles.json or the first missing tile file; parse_error / invalid_argument
+/// from parse_tile_manifest. Thread-safe (reads only).
+inline result<tile_manifest> read_tile_manifest(const std::string& dir) {
+  const std::string path = tile_manifest_path(dir);
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return status::io_error(detail::cat(path, ": cannot open the tile manifest"));
+  std::ostringstream text;
+  text << in.rdbuf();
+  auto m = parse_tile_manifest(text.str(), path);
+  if (!m) return m.error();
+  for (const auto& t : m->tiles) {
+    const auto file = std::filesystem::path(dir) / t.file;
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(file, ec))
+      return status::io_error(detail::cat(file.string(), ": tile ", t.index, " listed in ", path, " is missing"));
+  }
+  return m;
+}
+
+/// Validates `m` and writes it to DIR/tiles.json (creating DIR if needed). Errors: invalid manifest,
+/// io_error naming the path.
+inline status write_tile_manifest(const std::string& dir, const tile_manifest& m) {
+  const std::string path = tile_manifest_path(dir);
+  if (auto s = validate_tile_manifest(m, path); !s) return s;
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out) return status::io_error(detail::cat(path, ": cannot write the tile manifest"));
+  out << format_tile_manifest(m);
+  out.flush();
+  if (!out) return status::io_error(detail::cat(path, ": write failed"));
+  return {};
+}
+
+/// The tile set described by a manifest (tile i has the edges of the entry with index i).
+inline result<tile_set_edges> manifest_tile_set(const tile_manifest& m) {
+  if (auto s = validate_tile_manifest(m); !s) return s;
+  std::vector<wang_edges> edges(m.tiles.size());
+  for (const auto& t : m.tiles) edges[static_cast<std::size_t>(t.index)] = t.edges;
+  return tile_set_edges::create(m.horizontal_colors, m.vertical_colors, std::move(edges));
+}
+
+TESSERA_NAMESPACE_END

@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Measures how long a translation unit containing only `#include <tessera/tessera.hpp>` takes to
+# compile at -O2 (goal: under 3 s on the 2-core reference machine), median of 3 runs, without ccache.
+#   scripts/compile-time.sh            the umbrella header
+#   scripts/compile-time.sh --headers  also every public header alone, slowest first
+set -euo pipefail
+source "$(dirname "$0")/common.sh"
+
+cxx=${CXX:-c++}
+flags=(-std=c++20 -O2 -I"$TESSERA_ROOT/include" -isystem /usr/include/eigen3 -isystem /usr/include/stb)
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+
+# median_seconds HEADER: median wall time of 3 compiles of a TU including HEADER.
+median_seconds() {
+  printf '#include <%s>\n' "$1" >"$tmp/tu.cpp"
+  local times=() i start end
+  for i in 1 2 3; do
+    start=$(date +%s%N)
+    "$cxx" "${flags[@]}" -c "$tmp/tu.cpp" -o "$tmp/tu.o"
+    end=$(date +%s%N)
+    times+=("$(((end - start) / 1000000))")
+  done
+  printf '%s\n' "${times[@]}" | sort -n | sed -n 2p | awk '{printf "%.2f", $1 / 1000}'
+}
+
+echo "umbrella tessera/tessera.hpp: $(median_seconds tessera/tessera.hpp) s at -O2 ($("$cxx" --version | head -1); goal < 3 s)"
+if [[ ${1:-} == --headers ]]; then
+  cd "$TESSERA_ROOT/include"
+  for h in $(find tessera -name '*.hpp' ! -path '*/adapters/openmesh.hpp' | sort); do
+    echo "$(median_seconds "$h") s  $h"
+  done | sort -rn
+fi

@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Quick start 2: install what is missing, build everything, run every test.
+#   scripts/test.sh               Release build in build/, all tests (unit, CLI, examples, structural)
+#   scripts/test.sh --sanitize    AddressSanitizer + UndefinedBehaviorSanitizer build in build-asan/
+#                                 (-O1; tests and the tessera command only), same tests except the
+#                                 structural build-shape checks and the examples
+# Arguments after the options go to ctest (e.g. scripts/test.sh -R adapters).
+set -euo pipefail
+source "$(dirname "$0")/common.sh"
+
+sanitize=0
+if [[ ${1:-} == --sanitize ]]; then
+  sanitize=1
+  shift
+fi
+
+setup
+if ((sanitize)); then
+  build=${TESSERA_ASAN_BUILD_DIR:-$TESSERA_ROOT/build-asan}
+  step "configure $build (ASan + UBSan, -O1)"
+  configure "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" \
+    -DTESSERA_SANITIZE=ON -DTESSERA_BUILD_TESTS=ON -DTESSERA_BUILD_CLI=ON -DTESSERA_BUILD_EXAMPLES=OFF \
+    -DTESSERA_BUILD_BENCHMARKS=OFF
+  export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1:strict_string_checks=1}
+  export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
+else
+  build=${TESSERA_BUILD_DIR:-$TESSERA_ROOT/build}
+  step "configure $build (Release)"
+  configure "$build" -DCMAKE_BUILD_TYPE=Release -DTESSERA_BUILD_TESTS=ON -DTESSERA_BUILD_CLI=ON \
+    -DTESSERA_BUILD_EXAMPLES=ON
+fi
+
+step "build ($JOBS jobs)"
+cmake --build "$build" -j "$JOBS"
+
+step "test"
+ctest --test-dir "$build" --output-on-failure -j "$JOBS" "$@"

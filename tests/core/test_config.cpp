@@ -1,0 +1,23 @@
+#include <tessera/core/config.hpp>
+
+#include <cstdint>
+#include <type_traits>
+
+#include <catch2/catch.hpp>
+
+TESSERA_NAMESPACE_BEGIN
+inline int config_test_marker() { return 42; }
+TESSERA_NAMESPACE_END
+
+TEST_CASE("config: index type, namespace macros and exception detection", "[config]") {
+  static_assert(std::is_signed_v<tessera::index_t>);
+  static_assert(sizeof(tessera::index_t) == sizeof(void*));
+  // TESSERA_NAMESPACE_BEGIN opens tessera::v0 inline, so both spellings reach the same function
+  REQUIRE(tessera::config_test_marker() == 42);
+  REQUIRE(tessera::v0::config_test_marker() == 42);
+  REQUIRE(TESSERA_HAS_EXCEPTIONS == 1);  // the tests build with exceptions
+  // the tests define TESSERA_ENABLE_ASSERTS: a true assertion is a no-op expression
+  int evaluated = 0;
+  TESSERA_ASSERT(++evaluated == 1);
+  REQUIRE(evaluated == 1);
+}

@@ -1,0 +1,43 @@
+# Builds and runs a consumer project (tests/consumer/<MODE>) against this tessera build.
+#   cmake -DMODE=find_package|add_subdirectory -DSOURCE_DIR=<tessera> -DBINARY_DIR=<tessera build>
+#         -DWORK_DIR=<scratch> -DGENERATOR=<gen> -DCXX=<compiler> [-DLAUNCHER=<ccache>] -P run_consumer.cmake
+# find_package: installs the tessera build tree into WORK_DIR/prefix and points CMAKE_PREFIX_PATH
+# there. add_subdirectory: the consumer adds SOURCE_DIR itself.
+cmake_minimum_required(VERSION 3.21)
+foreach(var MODE SOURCE_DIR BINARY_DIR WORK_DIR GENERATOR CXX)
+  if(NOT DEFINED ${var})
+    message(FATAL_ERROR "run_consumer.cmake: -D${var}=... is required")
+  endif()
+endforeach()
+
+file(REMOVE_RECURSE "${WORK_DIR}")
+file(MAKE_DIRECTORY "${WORK_DIR}/out")
+
+function(run)
+  string(REPLACE ";" " " _shown "${ARGN}")
+  message(STATUS "consumer: ${_shown}")
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE _rc)
+  if(NOT _rc EQUAL 0)
+    message(FATAL_ERROR "consumer (${MODE}): command failed (${_rc}): ${_shown}")
+  endif()
+endfunction()
+
+set(_args -G "${GENERATOR}" -DCMAKE_CXX_COMPILER=${CXX} -DCMAKE_BUILD_TYPE=Release -Wno-dev)
+if(LAUNCHER)
+  list(APPEND _args -DCMAKE_CXX_COMPILER_LAUNCHER=${LAUNCHER})
+endif()
+if(MODE STREQUAL "find_package")
+  run(${CMAKE_COMMAND} --install "${BINARY_DIR}" --prefix "${WORK_DIR}/prefix")
+  list(APPEND _args -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF)
+elseif(MODE STREQUAL "add_subdirectory")
+  list(APPEND _args -DTESSERA_SOURCE_DIR=${SOURCE_DIR})
+else()
+  message(FATAL_ERROR "run_consumer.cmake: unknown MODE '${MODE}'")
+endif()
+
+run(${CMAKE_COMMAND} -S "${SOURCE_DIR}/tests/consumer/${MODE}" -B "${WORK_DIR}/build" ${_args})
+run(${CMAKE_COMMAND} --build "${WORK_DIR}/build")
+run("${WORK_DIR}/build/consumer" "${WORK_DIR}/out")
+if(EXISTS "${WORK_DIR}/build/consumer_openmesh")
+  run("${WORK_DIR}/build/consumer_openmesh")
+endif()
