@@ -107,7 +107,10 @@ inline std::vector<double> correlation_field(const double* f, index_t width, ind
   TESSERA_ASSERT(max_dx >= 0 && max_dy >= 0 && max_dx < width && max_dy < height);
   const index_t w = width, h = height, pw = next_pow2(w + max_dx), ph = next_pow2(h + max_dy);
   const index_t nox = 2 * max_dx + 1, noy = max_dy + 1;
-  std::vector<double> cov(static_cast<std::size_t>(nox * noy), 0.0), var_a(cov.size(), 0.0), var_b(cov.size(), 0.0);
+  const auto n_off = static_cast<std::size_t>(nox * noy);
+  std::vector<double> cov(3 * n_off, 0.0);  // covariance, then the two variances, per offset
+  double* const var_a = cov.data() + n_off;
+  double* const var_b = cov.data() + 2 * n_off;
   std::vector<double> g(static_cast<std::size_t>(w * h));
   std::vector<double> s1(static_cast<std::size_t>((w + 1) * (h + 1)), 0.0), s2(s1.size(), 0.0);
   for (int c = 0; c < channels; ++c) {
@@ -149,6 +152,7 @@ inline std::vector<double> correlation_field(const double* f, index_t width, ind
       cov[o] = (var_a[o] > tiny && var_b[o] > tiny) ? std::min(1.0, cov[o] / std::sqrt(var_a[o] * var_b[o]))
                                                     : std::numeric_limits<double>::quiet_NaN();
     }
+  cov.resize(n_off);
   return cov;
 }
 
