@@ -64,6 +64,12 @@ struct patch_origin {
   friend bool operator==(const patch_origin&, const patch_origin&) = default;
 };
 
+/// A member of a compatible set and its overlap error.
+struct indexed_candidate {
+  std::uint32_t patch = 0;
+  float error = 0;
+};
+
 /// A shift between two phases and how alike patches of the two phases look (autocorrelation).
 struct phase_offset {
   index_t dx = 0;
@@ -103,10 +109,23 @@ class patch_model {
     const auto s = static_cast<std::size_t>(side);
     return {compat_[s].data() + patch * k_, static_cast<std::size_t>(k_)};
   }
-  /// overlap_error(patch, compatible(patch, side)[r], side) for every r, ascending.
-  [[nodiscard]] std::span<const float> compatible_errors(index_t patch, patch_side side) const noexcept {
+  /// The compatible set with its errors ordered by patch index (for set intersections).
+  [[nodiscard]] std::span<const indexed_candidate> compatible_by_index(index_t patch, patch_side side) const noexcept {
     const auto s = static_cast<std::size_t>(side);
-    return {compat_error_[s].data() + patch * k_, static_cast<std::size_t>(k_)};
+    return {by_index_[s].data() + patch * k_, static_cast<std::size_t>(k_)};
+  }
+  /// overlap_error(patch, compatible(patch, side)[r], side) for every r (ascending), as floats.
+  [[nodiscard]] std::vector<float> compatible_errors(index_t patch, patch_side side) const {
+    std::vector<float> out;
+    const auto by_id = compatible_by_index(patch, side);
+    for (std::uint32_t q : compatible(patch, side))
+      for (const indexed_candidate& c : by_id)
+        if (c.patch == q) out.push_back(c.error);
+    return out;
+  }
+  /// The largest error in the set (its k-th), a lower bound of the error of any patch outside it.
+  [[nodiscard]] float kth_error(index_t patch, patch_side side) const noexcept {
+    return worst_[static_cast<std::size_t>(patch * 4 + static_cast<index_t>(side))];
   }
   /// The exemplar's normalized autocorrelation at a shift of one patch pitch (mean of the shifts
   /// (patch_width, 0) and (0, patch_height)): near 1 when the texture repeats with the patch grid.
@@ -158,7 +177,9 @@ class patch_model {
   [[nodiscard]] std::size_t memory_bytes() const noexcept {
     std::size_t b = exemplar_.size_bytes() + phase_start_.size() * sizeof(index_t) + phase_members_.size() * sizeof(std::uint32_t) +
                     phase_order_.size() * sizeof(phase_offset);
-    for (int s = 0; s < 4; ++s) b += compat_[s].size() * sizeof(std::uint32_t) + compat_error_[s].size() * sizeof(float) + seams_[s].size();
+    for (int s = 0; s < 4; ++s)
+      b += compat_[s].size() * sizeof(std::uint32_t) + worst_.size() * sizeof(float) / 4 +
+           by_index_[s].size() * sizeof(indexed_candidate) + seams_[s].size();
     return b + sizeof(*this);
   }
 
@@ -182,7 +203,8 @@ class patch_model {
   std::vector<index_t> phase_start_;
   std::vector<std::uint32_t> phase_members_;
   std::vector<std::uint32_t> compat_[4];
-  std::vector<float> compat_error_[4];
+  std::vector<float> worst_;  ///< per patch and side: the k-th error
+  std::vector<indexed_candidate> by_index_[4];
   double alignment_ = 0;
   std::vector<phase_offset> phase_order_;
   std::vector<std::uint8_t> seams_[4];
@@ -351,7 +373,16 @@ struct patch_model_builder {
                                      "patch model: compatible sets");
       }
       if (stop) return status::cancelled();
-      m.compat_error_[si].assign(dist.begin(), dist.end());
+      m.worst_.resize(static_cast<std::size_t>(n * 4));
+      for (index_t a = 0; a < n; ++a) m.worst_[static_cast<std::size_t>(a * 4 + si)] = static_cast<float>(dist[static_cast<std::size_t>(a * k + k - 1)]);
+      // the same sets ordered by patch index, for the merges of synthesis (set intersection)
+      auto& by_id = m.by_index_[si];
+      by_id.resize(static_cast<std::size_t>(n * k));
+      for (index_t a = 0; a < n; ++a) {
+        auto* e = by_id.data() + a * k;
+        for (index_t r = 0; r < k; ++r) e[r] = {out[static_cast<std::size_t>(a * k + r)], static_cast<float>(dist[static_cast<std::size_t>(a * k + r)])};
+        std::sort(e, e + k, [](const indexed_candidate& x, const indexed_candidate& y) { return x.patch < y.patch; });
+      }
     }
 
     if (opts.seams) {

@@ -86,45 +86,48 @@ std::vector<std::uint32_t> phase_group(const patch_model<T, C>& m, std::uint64_t
 template <Channel T, int C>
 std::pair<std::uint32_t, bool> fill_cell(const patch_model<T, C>& m, std::uint32_t west, std::uint32_t east, std::uint32_t north,
                                          std::uint32_t south, const counter_rng& rng, index_t i, index_t j) {
+  // a 4-way merge of the sets ordered by patch index, branch-free: copies end with a sentinel
   const std::uint32_t owners[4] = {west, east, north, south};
   constexpr patch_side facing[4] = {patch_side::east, patch_side::west, patch_side::south, patch_side::north};
   const index_t k = m.candidates();
-  struct entry {
-    std::uint32_t patch;
-    int set;
-    float error;
-  };
-  entry entries[4 * 64];
+  constexpr std::uint32_t none = ~std::uint32_t{0};
+  std::uint32_t ids[4][65];
+  float errs[4][65];
   float worst[4];
-  index_t n = 0;
+  double worst_sum = 0;
   for (int s = 0; s < 4; ++s) {
-    const auto ids = m.compatible(owners[s], facing[s]);
-    const auto errs = m.compatible_errors(owners[s], facing[s]);
-    worst[s] = errs[static_cast<std::size_t>(k - 1)];
-    for (index_t r = 0; r < k; ++r) entries[n++] = {ids[static_cast<std::size_t>(r)], s, errs[static_cast<std::size_t>(r)]};
+    const auto set = m.compatible_by_index(owners[s], facing[s]);
+    for (index_t r = 0; r < k; ++r) {
+      ids[s][r] = set[static_cast<std::size_t>(r)].patch;
+      errs[s][r] = set[static_cast<std::size_t>(r)].error;
+    }
+    ids[s][k] = none;
+    errs[s][k] = 0;
+    worst[s] = m.kth_error(owners[s], facing[s]);
+    worst_sum += worst[s];
   }
-  std::sort(entries, entries + n, [](const entry& a, const entry& b) { return a.patch < b.patch || (a.patch == b.patch && a.set < b.set); });
   std::uint32_t inter[64];
-  index_t ni = 0;
-  std::uint32_t best = entries[0].patch;
-  index_t best_count = 0;
+  index_t ni = 0, head[4] = {0, 0, 0, 0};
+  std::uint32_t best = ids[0][0];
+  int best_count = 0;
   double best_error = 0;
-  for (index_t a = 0; a < n;) {
-    index_t b = a;
-    double error = 0;
-    for (float w : worst) error += w;
-    while (b < n && entries[b].patch == entries[a].patch) {
-      error += static_cast<double>(entries[b].error) - static_cast<double>(worst[entries[b].set]);
-      ++b;
+  for (;;) {
+    const std::uint32_t p = std::min(std::min(ids[0][head[0]], ids[1][head[1]]), std::min(ids[2][head[2]], ids[3][head[3]]));
+    if (p == none) break;
+    int count = 0;
+    double error = worst_sum;
+    for (int s = 0; s < 4; ++s) {
+      const bool hit = ids[s][head[s]] == p;
+      error += hit ? static_cast<double>(errs[s][head[s]]) - static_cast<double>(worst[s]) : 0.0;
+      count += hit;
+      head[s] += hit;
     }
-    const index_t count = b - a;
-    if (count == 4 && ni < 64) inter[ni++] = entries[a].patch;
-    if (count > best_count || (count == best_count && error < best_error)) {
-      best = entries[a].patch;
-      best_count = count;
-      best_error = error;
-    }
-    a = b;
+    inter[ni] = p;
+    ni += count == 4;
+    const bool better = count > best_count || (count == best_count && error < best_error);
+    best = better ? p : best;
+    best_count = better ? count : best_count;
+    best_error = better ? error : best_error;
   }
   if (ni > 0) return {inter[rng.below(static_cast<std::uint64_t>(ni), i, j)], false};
   return {best, true};
@@ -152,20 +155,29 @@ patch_plan make_plan(const patch_model<T, C>& m, index_t ox, index_t oy, index_t
   const index_t ncells = p.ncx * p.ncy;
   const std::vector<std::uint32_t> group = phase_group(m, seed, radius, min_group);
   const counter_rng place_rng(seed, stream_id("patch.place")), fill_rng(seed, stream_id("patch.fill"));
-  auto placed = [&](index_t i, index_t j) {
-    return group[static_cast<std::size_t>(place_rng.below(group.size(), i, j))];
-  };
+  // distributed cells first, on a grid one cell wider on every side (the vacant cells' neighbours)
+  const index_t gx = p.ncx + 2, gy = p.ncy + 2;
+  std::vector<std::uint32_t> grid(static_cast<std::size_t>(gx * gy));
+  exec.parallel_for(0, gy, [&](index_t row) {
+    const index_t j = p.cj0 - 1 + row;
+    for (index_t col = (p.ci0 - 1 + j) & 1; col < gx; col += 2)  // (i + j) even
+      grid[static_cast<std::size_t>(row * gx + col)] =
+          group[static_cast<std::size_t>(place_rng.below(group.size(), p.ci0 - 1 + col, j))];
+  });
   std::vector<std::uint32_t> patch(static_cast<std::size_t>(ncells));
   std::vector<index_t> empty_count(static_cast<std::size_t>(p.ncy), 0);
   exec.parallel_for(0, p.ncy, [&](index_t cj) {
     const index_t j = p.cj0 + cj;
+    const std::uint32_t* up = grid.data() + cj * gx + 1;  // row cj - 1 of the plan, column 0 at index 0
+    const std::uint32_t* mid = up + gx;
+    const std::uint32_t* down = mid + gx;
     for (index_t ci = 0; ci < p.ncx; ++ci) {
       const index_t i = p.ci0 + ci;
       std::uint32_t chosen;
       if (((i + j) & 1) == 0) {  // distributed cell
-        chosen = placed(i, j);
+        chosen = mid[ci];
       } else {
-        const auto [q, was_empty] = fill_cell(m, placed(i - 1, j), placed(i + 1, j), placed(i, j - 1), placed(i, j + 1), fill_rng, i, j);
+        const auto [q, was_empty] = fill_cell(m, mid[ci - 1], mid[ci + 1], up[ci], down[ci], fill_rng, i, j);
         chosen = q;
         empty_count[static_cast<std::size_t>(cj)] += was_empty ? 1 : 0;
       }

@@ -11,6 +11,10 @@
 #include <type_traits>
 #include <vector>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include "../../core/config.hpp"
 #include "../../core/image_buffer.hpp"
 #include "patch_plan.hpp"
@@ -34,18 +38,72 @@ blend_weight<T> feather_weight(index_t t, index_t v) {
   else return static_cast<blend_weight<T>>(u * static_cast<double>(weight_one<T>) + 0.5);
 }
 
-/// dst[i] = a[i] (1 - w[i]) + b[i] w[i], rounded; per-element weights.
+/// dst[i] = a[i] (1 - w[i]) + b[i] w[i], rounded, for i in [0, N): a fixed trip count the compiler
+/// turns into one or two vector operations.
+template <class T, index_t N>
+inline void blend_fixed(T* dst, const T* a, const T* b, const blend_weight<T>* w) noexcept {
+#if defined(__SSE2__)
+  if constexpr (std::is_same_v<T, std::uint8_t> && N == 16) {
+    // 16 channel values: widen to 16 bits, a (256 - w) + b w + 128, >> 8, narrow
+    const __m128i zero = _mm_setzero_si128(), half = _mm_set1_epi16(128), one = _mm_set1_epi16(256);
+    const __m128i va = _mm_loadu_si128(reinterpret_cast<const __m128i*>(a));
+    const __m128i vb = _mm_loadu_si128(reinterpret_cast<const __m128i*>(b));
+    const __m128i wlo = _mm_loadu_si128(reinterpret_cast<const __m128i*>(w));
+    const __m128i whi = _mm_loadu_si128(reinterpret_cast<const __m128i*>(w + 8));
+    auto mix = [&](__m128i x, __m128i y, __m128i wy) {
+      const __m128i wx = _mm_sub_epi16(one, wy);
+      return _mm_srli_epi16(_mm_add_epi16(_mm_add_epi16(_mm_mullo_epi16(x, wx), _mm_mullo_epi16(y, wy)), half), 8);
+    };
+    const __m128i lo = mix(_mm_unpacklo_epi8(va, zero), _mm_unpacklo_epi8(vb, zero), wlo);
+    const __m128i hi = mix(_mm_unpackhi_epi8(va, zero), _mm_unpackhi_epi8(vb, zero), whi);
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(dst), _mm_packus_epi16(lo, hi));
+    return;
+  }
+#endif
+  for (index_t i = 0; i < N; ++i) {
+    if constexpr (std::is_same_v<T, std::uint8_t>)
+      dst[i] = static_cast<std::uint8_t>((static_cast<std::uint16_t>(a[i] * (256 - w[i]) + b[i] * w[i] + 128)) >> 8);
+    else if constexpr (std::is_same_v<T, std::uint16_t>)
+      dst[i] = static_cast<std::uint16_t>((std::uint32_t{a[i]} * (32768u - w[i]) + std::uint32_t{b[i]} * w[i] + 16384u) >> 15);
+    else
+      dst[i] = a[i] * (1.0f - w[i]) + b[i] * w[i];
+  }
+}
+
+/// dst[i] = a[i] (1 - w[i]) + b[i] w[i], rounded; per-element weights. Overlap strips are short, so
+/// the span is covered by 16-byte chunks, the last one overlapping its predecessor (recomputing a few
+/// values is harmless: dst never aliases a or b).
 template <class T>
 inline void blend_span(T* dst, const T* a, const T* b, const blend_weight<T>* w, index_t n) noexcept {
-  if constexpr (std::is_same_v<T, std::uint8_t>) {
-    for (index_t i = 0; i < n; ++i)
-      dst[i] = static_cast<std::uint8_t>((static_cast<std::uint16_t>(a[i] * (256 - w[i]) + b[i] * w[i] + 128)) >> 8);
-  } else if constexpr (std::is_same_v<T, std::uint16_t>) {
-    for (index_t i = 0; i < n; ++i)
-      dst[i] = static_cast<std::uint16_t>((std::uint32_t{a[i]} * (32768u - w[i]) + std::uint32_t{b[i]} * w[i] + 16384u) >> 15);
-  } else {
-    for (index_t i = 0; i < n; ++i) dst[i] = a[i] * (1.0f - w[i]) + b[i] * w[i];
+  constexpr index_t chunk = 16 / static_cast<index_t>(sizeof(T));
+  if (n < chunk) {
+    for (index_t i = 0; i < n; ++i) blend_fixed<T, 1>(dst + i, a + i, b + i, w + i);
+    return;
   }
+  index_t i = 0;
+  for (; i + chunk <= n; i += chunk) blend_fixed<T, chunk>(dst + i, a + i, b + i, w + i);
+  if (i < n) blend_fixed<T, chunk>(dst + n - chunk, a + n - chunk, b + n - chunk, w + n - chunk);
+}
+
+/// memcpy for the short runs of a patch row: inline 16-byte moves (the last overlapping) instead of a
+/// library call per run; long runs go to std::memcpy.
+inline void copy_span_bytes(unsigned char* d, const unsigned char* s, std::size_t n) noexcept {
+  if (n > 256) {
+    std::memcpy(d, s, n);
+  } else if (n >= 16) {
+    std::size_t i = 0;
+    for (; i + 16 <= n; i += 16) std::memcpy(d + i, s + i, 16);
+    if (i < n) std::memcpy(d + n - 16, s + n - 16, 16);
+  } else if (n >= 8) {
+    std::memcpy(d, s, 8);
+    std::memcpy(d + n - 8, s + n - 8, 8);
+  } else {
+    for (std::size_t i = 0; i < n; ++i) d[i] = s[i];
+  }
+}
+template <class T>
+inline void copy_span(T* dst, const T* src, index_t n) noexcept {
+  copy_span_bytes(reinterpret_cast<unsigned char*>(dst), reinterpret_cast<const unsigned char*>(src), static_cast<std::size_t>(n) * sizeof(T));
 }
 
 /// dst[i] = a[i] (1 - w) + b[i] w, rounded; one weight.
@@ -155,14 +213,14 @@ class plan_renderer {
     const T* base = ex_.data() + r * stride_;
     for (const row_span& s : spans_[static_cast<std::size_t>(cj)]) {
       if (s.b < 0) {
-        std::memcpy(dst + s.dst, base + s.a, sizeof(T) * static_cast<std::size_t>(s.len));
+        copy_span(dst + s.dst, base + s.a, s.len);
       } else if (!p_.cut) {
         blend_span(dst + s.dst, base + s.a, base + s.b, weights_.data() + s.lx * C, s.len);
       } else {
         const index_t cut = p_.vseam[static_cast<std::size_t>(s.cell)][r];
         const index_t split = std::clamp<index_t>(cut - s.lx, 0, s.len / C) * C;
-        std::memcpy(dst + s.dst, base + s.a, sizeof(T) * static_cast<std::size_t>(split));
-        std::memcpy(dst + s.dst + split, base + s.b + split, sizeof(T) * static_cast<std::size_t>(s.len - split));
+        copy_span(dst + s.dst, base + s.a, split);
+        copy_span(dst + s.dst + split, base + s.b + split, s.len - split);
       }
     }
   }
