@@ -2,7 +2,8 @@
 // (GetWidth, GetTexel with packed 0xAABBGGRR texels; GetVertexCount, GetIndex, a Vec3 with X/Y/Z) are
 // adapted by specializing tessera::image_traits, tessera::mesh_traits and tessera::point_traits: a
 // few static functions, no change to the engine's classes. Pixels travel by value, so packed formats
-// fit. Usage: example_03_engine_types [OUTPUT_DIR]   (writes 03_engine_texture.png and _grey16.png)
+// fit. Usage: example_03_engine_types [OUTPUT_DIR]
+// (writes 03_engine_texture.png, 03_engine_texture_grey16.png and 03_engine_mesh.obj)
 #include <tessera/core/explain.hpp>
 #include <tessera/core/image.hpp>
 #include <tessera/core/image_buffer.hpp>
@@ -10,6 +11,7 @@
 #include <tessera/core/mesh_topology.hpp>
 #include <tessera/core/tri_mesh.hpp>
 #include <tessera/image/exemplars.hpp>
+#include <tessera/io/mesh_file.hpp>
 #include <tessera/io/png.hpp>
 
 #include <cstdint>
@@ -128,8 +130,10 @@ int main(int argc, char** argv) {
               "(%.2f, %.2f, %.2f)\n",
               tessera::num_vertices(tile), tessera::num_faces(tile), tessera::boundary_edges(tile).size(), box.min.z,
               box.max.z, normals[n * n / 2].x, normals[n * n / 2].y, normals[n * n / 2].z);
+  const std::string mesh_path = dir + "/03_engine_mesh.obj";
+  if (auto s = tessera::write_mesh(mesh_path, tile); !s) return fail(s);  // any Mesh, through mesh_traits
   tile.AddTriangle(0, 1, 400);  // an index past the last vertex is reported, not read
   std::printf("bad index: %s\n", tessera::validate_mesh(tile, "terrain tile").to_string().c_str());
-  std::printf("wrote %s\nwrote %s\n", path.c_str(), grey_path.c_str());
+  std::printf("wrote %s\nwrote %s\nwrote %s\n", path.c_str(), grey_path.c_str(), mesh_path.c_str());
   return 0;
 }

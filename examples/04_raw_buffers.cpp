@@ -3,13 +3,14 @@
 //   * mesh_view over an interleaved vertex buffer (position, normal, uv per vertex) and a uint32 index
 //     buffer, without copying either.
 // The make_* functions validate what the caller passes; the last part shows their messages.
-// Usage: example_04_raw_buffers [OUTPUT_DIR]   (writes 04_raw_buffers_atlas.png)
+// Usage: example_04_raw_buffers [OUTPUT_DIR]   (writes 04_raw_buffers_atlas.png and _mesh.obj)
 #include <tessera/core/image_buffer.hpp>
 #include <tessera/core/image_view.hpp>
 #include <tessera/core/mesh_topology.hpp>
 #include <tessera/core/mesh_view.hpp>
 #include <tessera/core/tri_mesh.hpp>
 #include <tessera/image/exemplars.hpp>
+#include <tessera/io/mesh_file.hpp>
 #include <tessera/io/png.hpp>
 
 #include <cstdint>
@@ -67,6 +68,8 @@ int main(int argc, char** argv) {
   }
   std::printf("  bounding box (%g, %g, %g) - (%g, %g, %g)\n", box.min.x, box.min.y, box.min.z, box.max.x, box.max.y,
               box.max.z);
+  const std::string mesh_path = dir + "/04_raw_buffers_mesh.obj";
+  if (auto s = tessera::write_mesh(mesh_path, *mesh); !s) return fail(s);  // straight from the engine's buffers
 
   // [snippet:raw-errors]
   // What the views say about bad buffers (nothing crashes, nothing is written).
@@ -81,6 +84,6 @@ int main(int argc, char** argv) {
   std::printf("bad index:        %s\n", tessera::validate_mesh(*bad_mesh).to_string().c_str());
   // [/snippet]
 
-  std::printf("wrote %s\n", atlas_path.c_str());
+  std::printf("wrote %s\nwrote %s\n", atlas_path.c_str(), mesh_path.c_str());
   return 0;
 }

@@ -1,18 +1,18 @@
 // 07_eigen_mesh: libigl-style V / F matrices as a tessera Mesh. V holds one vertex per row (n x 3
 // double), F one triangle per row (m x 3 int); any storage order, Maps and Refs work too. Here a
 // terrain patch displaced by a procedural height field and a torus floating above it share one V/F
-// pair; tessera finds the two parts, computes normals and the bounding box, and the result is
-// written as OBJ with tessera's vertex normals.
+// pair; tessera finds the two parts, computes normals and the bounding box, and writes the V/F
+// view as OBJ.
 // Usage: example_07_eigen_mesh [OUTPUT_DIR]   (writes 07_eigen_mesh.obj)
 #include <tessera/adapters/eigen.hpp>
 #include <tessera/core/image_buffer.hpp>
 #include <tessera/core/mesh_topology.hpp>
 #include <tessera/core/tri_mesh.hpp>
 #include <tessera/image/exemplars.hpp>
+#include <tessera/io/mesh_file.hpp>
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -70,25 +70,16 @@ int main(int argc, char** argv) {
   std::printf("V %td x 3, F %td x 3: %td components, %td boundary edges, %td non-manifold edges\n",
               std::ptrdiff_t(V.rows()), std::ptrdiff_t(F.rows()), parts.count, adjacency.boundary_edges,
               adjacency.nonmanifold_edges);
-  std::printf("bounding box (%.2f, %.2f, %.2f) - (%.2f, %.2f, %.2f)\n", box.min.x, box.min.y, box.min.z, box.max.x,
-              box.max.y, box.max.z);
+  std::printf("bounding box (%.2f, %.2f, %.2f) - (%.2f, %.2f, %.2f); normal of vertex 0 (%.2f, %.2f, %.2f)\n",
+              box.min.x, box.min.y, box.min.z, box.max.x, box.max.y, box.max.z, normals[0].x, normals[0].y, normals[0].z);
 
   // A transposed V (3 x n, a common slip) is named as such.
   const Eigen::MatrixXd Vt = V.transpose();
   std::printf("transposed V: %s\n", tessera::make_eigen_mesh_view(Vt, F).error().to_string().c_str());
 
-  // OBJ with tessera's vertex normals (faces are 1-based in OBJ).
+  // Any Mesh can be written; the V/F view goes to OBJ as it is.
   const std::string path = dir + "/07_eigen_mesh.obj";
-  std::ofstream obj(path);
-  obj << "# tessera example 07: V/F matrices, " << parts.count << " components\n";
-  for (Eigen::Index v = 0; v < V.rows(); ++v) obj << "v " << V(v, 0) << ' ' << V(v, 1) << ' ' << V(v, 2) << '\n';
-  for (const auto& n : normals) obj << "vn " << n.x << ' ' << n.y << ' ' << n.z << '\n';
-  for (Eigen::Index f = 0; f < F.rows(); ++f) {
-    obj << 'f';
-    for (int k = 0; k < 3; ++k) obj << ' ' << F(f, k) + 1 << "//" << F(f, k) + 1;
-    obj << '\n';
-  }
-  if (!obj.flush()) return fail(tessera::status::io_error(path + ": cannot write"));
+  if (auto s = tessera::write_mesh(path, *mesh); !s) return fail(s);
   std::printf("wrote %s\n", path.c_str());
   return 0;
 }

@@ -1,12 +1,13 @@
 // 08_glm: an engine built on GLM. Its texture stores glm::u8vec4 texels and its mesh glm::vec3
 // positions, glm::uvec3 triangles and glm::vec2 corner uvs; with tessera/adapters/glm.hpp both
 // model tessera's concepts member style, with nothing else to write.
-// Usage: example_08_glm [OUTPUT_DIR]   (writes 08_glm_uv_layout.png)
+// Usage: example_08_glm [OUTPUT_DIR]   (writes 08_glm_uv_layout.png and 08_glm_crate.obj)
 #include <tessera/adapters/glm.hpp>
 #include <tessera/core/image_buffer.hpp>
 #include <tessera/core/mesh_topology.hpp>
 #include <tessera/core/tri_mesh.hpp>
 #include <tessera/image/exemplars.hpp>
+#include <tessera/io/mesh_file.hpp>
 #include <tessera/io/png.hpp>
 
 #include <glm/gtc/type_precision.hpp>
@@ -99,9 +100,12 @@ int main(int argc, char** argv) {
   const std::string path = dir + "/08_glm_uv_layout.png";
   if (auto s = tessera::write_png(path, texture); !s) return fail(s);
 
+  const std::string obj_path = dir + "/08_glm_crate.obj";
+  if (auto s = tessera::write_mesh(obj_path, crate); !s) return fail(s);  // positions, faces and uvs
+
   // A bad index in the glm mesh is reported by name.
   crate.triangles[4].y = 42;
   std::printf("bad index: %s\n", tessera::validate_mesh(crate, "crate").to_string().c_str());
-  std::printf("wrote %s\n", path.c_str());
+  std::printf("wrote %s\nwrote %s\n", path.c_str(), obj_path.c_str());
   return 0;
 }

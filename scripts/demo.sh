@@ -4,6 +4,8 @@
 #
 # Layout for the lead: one function per family (demo_<family>), each a self-contained block that
 # writes under "$OUT/<family>" and runs in a few seconds; add a block and list it in DEMO_BLOCKS.
+# demo_foundation runs first and leaves the procedural exemplars in "$OUT/foundation/<kind>.png"
+# (grass sand rock bricks cells weave dots, 128 x 128) for the later blocks.
 set -euo pipefail
 source "$(dirname "$0")/common.sh"
 
@@ -34,30 +36,65 @@ has_command() { "$TESSERA" --help 2>/dev/null | grep -q "^  $1 "; }
 demo_foundation() {
   local out=$OUT/foundation
   mkdir -p "$out"
-  step "foundation: examples"
+  local examples=$OUT/examples
+  mkdir -p "$examples"
+  step "examples: every numbered example (foundation 0x, images 1x-2x, fabric 3x, terrain 4x, geometry 5x)"
   local src name
   for src in "$TESSERA_ROOT"/examples/[0-9][0-9]_*.cpp; do
     name=$(basename "$src" .cpp)
     if [[ -x $BUILD/examples/example_$name ]]; then
-      run "$BUILD/examples/example_$name" "$out"
+      run "$BUILD/examples/example_$name" "$examples"
     else
       echo "(skipping $name: not built; OpenMesh missing?)"
     fi
   done
+  if has_command sample; then
+    step "foundation: tessera sample (procedural exemplars used by the other demos)"
+    local kind
+    for kind in grass sand rock bricks cells weave dots; do
+      run "$TESSERA" sample "$kind" --size 128x128 --seed 1 --out "$out/$kind.png"
+    done
+  fi
   if has_command info; then
     step "foundation: tessera info / convert"
-    run "$TESSERA" info "$out/01_hello.png"
-    run "$TESSERA" info "$out/07_eigen_mesh.obj"
+    run "$TESSERA" info "$examples/01_hello.png"
+    run "$TESSERA" info "$examples/07_eigen_mesh.obj"
     if has_command convert; then
-      run "$TESSERA" convert "$out/07_eigen_mesh.obj" "$out/07_eigen_mesh.ply"
+      run "$TESSERA" convert "$examples/07_eigen_mesh.obj" "$out/07_eigen_mesh.ply" --binary
       run "$TESSERA" info "$out/07_eigen_mesh.ply"
+      run "$TESSERA" convert "$examples/01_hello.png" "$out/01_hello_grey16.png" --channels 1 --depth 16
     fi
   fi
 }
 
-# ---- (families add their blocks here: demo_image, demo_wang, demo_fabric, demo_terrain, ...) ------
+# ---- image quilting and Wang tiles ------------------------------------------------------------------
+demo_wang() {
+  local out=$OUT/wang
+  mkdir -p "$out"
+  step "wang: image quilting, a seamless texture, a Wang tile set and a hash-coloured plane"
+  run "$TESSERA" quilt --exemplar bricks --size 512x512 --seed 3 --out "$out/quilt_bricks.png" --stats
+  run "$TESSERA" quilt --exemplar cells --size 256x256 --seamless --out "$out/seamless_cells.png" --stats
+  run "$TESSERA" wang build --exemplar cells --colors 2,2 --tile 64 --out "$out/tiles" --stats
+  run "$TESSERA" wang tile --tiles "$out/tiles" --grid 16x9 --coloring hash --seed 5 --out "$out/plane.png" --stats
+  run "$TESSERA" wang tile --tiles "$out/tiles" --grid 16x9 --coloring hash --seed 5 --outline --out "$out/plane_outlined.png"
+}
 
-DEMO_BLOCKS=(foundation)
+# ---- fabric (paper 001) ------------------------------------------------------------------------------
+demo_fabric() {
+  local out=$OUT/fabric
+  mkdir -p "$out"
+  step "fabric: presets, a palette tweed, the inverse cat map and a period"
+  local preset
+  for preset in flannel twill tweed; do
+    run "$TESSERA" fabric --preset "$preset" --size 400 --out "$out/$preset.png" --stats
+  done
+  run "$TESSERA" fabric --palette "#1f3324:5,#4f6b3f:3,#b8b08a:1.5" --layout blocks --iterations 45 \
+    --generations 3 --out "$out/palette_tweed.png" --stats
+  run "$TESSERA" catmap --in "$out/twill.png" --iterations -31 --out "$out/twill_source.png" --stats --repeat 5
+  run "$TESSERA" catmap --period 1000000000000
+}
+
+DEMO_BLOCKS=(foundation wang fabric)
 for block in "${DEMO_BLOCKS[@]}"; do
   "demo_$block"
 done

@@ -1,4 +1,5 @@
 #include <tessera/core/tri_mesh.hpp>
+#include <tessera/core/mesh_topology.hpp>
 
 #include <array>
 #include <cmath>
@@ -26,6 +27,24 @@ bool mentions(const tessera::status& s, const std::string& t) { return s.message
 }  // namespace
 
 static_assert(tessera::Mesh<tri_mesh> && tessera::UVMesh<tri_mesh>);
+
+// A mesh type from a library whose namespace has Boost.Graph-style free functions of the same names
+// (CGAL, BGL adaptors): tessera must not pick those up through argument-dependent lookup.
+namespace graphlib {
+struct surface {
+  std::vector<tessera::vec3> pts{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+};
+inline int num_vertices(const surface&) { return -99; }  // a different meaning: must never be called
+inline int num_faces(const surface&) { return -99; }
+inline bool has_uvs(const surface&) { return true; }
+}  // namespace graphlib
+template <>
+struct tessera::mesh_traits<graphlib::surface> {
+  static index_t num_vertices(const graphlib::surface& s) { return static_cast<index_t>(s.pts.size()); }
+  static index_t num_faces(const graphlib::surface&) { return 1; }
+  static index_t face_vertex(const graphlib::surface&, index_t, int k) { return k; }
+  static const vec3& position(const graphlib::surface& s, index_t v) { return s.pts[static_cast<std::size_t>(v)]; }
+};
 
 TEST_CASE("tri_mesh: building and appending", "[tri_mesh]") {
   tri_mesh m;
@@ -57,10 +76,16 @@ TEST_CASE("tri_mesh: building and appending", "[tri_mesh]") {
   empty.append(u);
   REQUIRE(empty.uvs.size() == 2);
   REQUIRE(tessera::validate_mesh(empty).ok());
-  empty.append(m);  // m has no uvs: the result has none
+  tri_mesh points_only;
+  points_only.add_vertex({7, 7, 7});
+  empty.append(points_only);  // no faces: the uvs stay
+  REQUIRE(empty.uvs.size() == 2);
+  REQUIRE(tessera::validate_mesh(empty).ok());
+  empty.append(m);  // m has faces without uvs: the result has none
   REQUIRE_FALSE(empty.has_uvs());
   REQUIRE(tessera::validate_mesh(empty).ok());
   REQUIRE(empty.num_faces() == 3);
+  REQUIRE(empty.num_vertices() == 10);
 }
 
 TEST_CASE("tri_mesh: validate_mesh reports each problem", "[tri_mesh]") {
@@ -144,4 +169,17 @@ TEST_CASE("tri_mesh: normals, areas and bounding box", "[tri_mesh]") {
   flat.faces = {{0, 1, 2}};
   REQUIRE(tessera::face_normals(flat)[0] == vec3{});
   REQUIRE(tessera::vertex_normals(flat)[3] == vec3{});
+}
+
+TEST_CASE("tri_mesh: same-named free functions in a mesh type's namespace are not used", "[tri_mesh]") {
+  const graphlib::surface s;
+  REQUIRE(tessera::validate_mesh(s).ok());
+  const auto t = tessera::to_tri_mesh(s);
+  REQUIRE(t->num_vertices() == 3);
+  REQUIRE(t->num_faces() == 1);
+  REQUIRE_FALSE(t->has_uvs());
+  REQUIRE(tessera::vertex_normals(s).size() == 3);
+  REQUIRE(tessera::bounding_box(s).max == vec3{1, 1, 0});
+  REQUIRE(tessera::face_adjacency(s).boundary_edges == 3);
+  REQUIRE(tessera::connected_components(s).count == 1);
 }

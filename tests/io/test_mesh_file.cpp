@@ -44,6 +44,28 @@ TEST_CASE("mesh_file: a mesh survives OBJ -> PLY -> OFF -> OBJ", "[mesh_file]") 
   REQUIRE(bytes->find("format binary_little_endian 1.0") != std::string::npos);
 }
 
+namespace graphlib {  // a mesh type whose namespace has same-named free functions (see test_tri_mesh.cpp)
+struct surface {};
+inline int num_vertices(const surface&) { return -99; }
+inline bool has_uvs(const surface&) { return true; }
+}  // namespace graphlib
+template <>
+struct tessera::mesh_traits<graphlib::surface> {
+  static index_t num_vertices(const graphlib::surface&) { return 3; }
+  static index_t num_faces(const graphlib::surface&) { return 1; }
+  static index_t face_vertex(const graphlib::surface&, index_t, int k) { return k; }
+  static tessera::vec3 position(const graphlib::surface&, index_t v) { return {double(v == 1), double(v == 2), 0}; }
+};
+
+TEST_CASE("mesh_file: writers reach foreign meshes only through mesh_traits", "[mesh_file]") {
+  for (const char* name : {"foreign.obj", "foreign.off", "foreign.ply"}) {
+    REQUIRE(tessera::write_mesh(samples::out_path(name), graphlib::surface{}).ok());
+    const auto back = tessera::read_mesh(samples::out_path(name));
+    REQUIRE(back->num_vertices() == 3);
+    REQUIRE_FALSE(back->has_uvs());
+  }
+}
+
 TEST_CASE("mesh_file: errors name the file", "[mesh_file]") {
   const tri_mesh m = samples::grid(1, 1, false);
   REQUIRE(tessera::write_mesh(samples::out_path("x.stl"), m).code() == status_code::unsupported);

@@ -2,6 +2,7 @@
 
 #include <tessera/core/tile_coloring.hpp>
 
+#include <limits>
 #include <map>
 
 #include <catch2/catch.hpp>
@@ -30,6 +31,9 @@ TEST_CASE("hash colouring: neighbours agree everywhere, windows are views of the
         for (int s = 0; s < 4; ++s) REQUIRE(far->edge_color_at(c, r, s) == plane->edge_color_at(1'000'000'000 + c, -2'000'000'000 + r, s));
     for (index_t r = 0; r < 4; ++r)
       for (index_t c = 0; c < 4; ++c) REQUIRE(overlap->edges_at(c, r) == w->edges_at(c + 2, r + 1));
+    // the extreme cells of the index range are defined too (coordinates wrap as hash keys)
+    const index_t top = std::numeric_limits<index_t>::max();
+    REQUIRE(plane->edge_color_at(top, top, tessera::side_east) == plane->edge_color_at(std::numeric_limits<index_t>::min(), top, tessera::side_west));
   }
 }
 

@@ -2,8 +2,8 @@
 //
 //   pixel_traits<glm::vec<C, T, Q>>   glm vectors as pixels: glm::u8vec4 (RGBA8), glm::u16vec1,
 //                                     glm::vec3 (float RGB), ... (C in 1..4; T uint8, uint16, float)
-//   point_traits<glm::vec<L, T, Q>>   glm vectors as positions and uvs; coordinates past L read 0,
-//                                     so a glm::vec2 position is (x, y, 0)
+//   glm vectors as positions and uvs need nothing here: core/mesh.hpp's point_traits reads p[i]
+//   and knows glm's length(), so a glm::vec2 position is (x, y, 0)
 //
 // With these, an engine's own image whose read() returns glm::u8vec4, or a mesh whose position()
 // returns glm::vec3, models Image / Mesh directly (see examples/08_glm.cpp). Only the glm forward
@@ -16,7 +16,6 @@
 
 #include "../core/config.hpp"
 #include "../core/image.hpp"
-#include "../core/mesh.hpp"
 
 TESSERA_NAMESPACE_BEGIN
 
@@ -30,16 +29,6 @@ struct pixel_traits<glm::vec<C, T, Q>> {
   static constexpr int channels = static_cast<int>(C);
   static constexpr T get(const glm::vec<C, T, Q>& p, int c) noexcept { return p[static_cast<glm::length_t>(c)]; }
   static constexpr void set(glm::vec<C, T, Q>& p, int c, T v) noexcept { p[static_cast<glm::length_t>(c)] = v; }
-};
-
-/// glm vectors as points. glm's operator[] asserts on an index past the vector's length; here a
-/// missing coordinate reads 0 instead (a 2D position lies in the z = 0 plane).
-template <glm::length_t L, class T, glm::qualifier Q>
-  requires std::is_arithmetic_v<T>
-struct point_traits<glm::vec<L, T, Q>> {
-  static constexpr double get(const glm::vec<L, T, Q>& p, int i) noexcept {
-    return i >= 0 && i < static_cast<int>(L) ? static_cast<double>(p[static_cast<glm::length_t>(i)]) : 0.0;
-  }
 };
 
 TESSERA_NAMESPACE_END

@@ -64,18 +64,17 @@ struct point_traits<OpenMesh::VectorT<S, N>> {
 /// concurrent readers.
 template <detail::openmesh_mesh M>
 status validate_openmesh(const M& m, std::string_view what = "mesh") {
-  if (m.has_vertex_status())
-    for (auto v : m.all_vertices())
-      if (m.status(v).deleted())
-        return status::invalid_argument(detail::cat(what, ": vertex ", v.idx(),
-                                                    " is deleted; call garbage_collection() on the OpenMesh mesh "
-                                                    "before handing it to tessera"));
-  if (m.has_face_status())
-    for (auto f : m.all_faces())
-      if (m.status(f).deleted())
-        return status::invalid_argument(detail::cat(what, ": face ", f.idx(),
-                                                    " is deleted; call garbage_collection() on the OpenMesh mesh "
-                                                    "before handing it to tessera"));
+  auto first_deleted = [&](const char* kind, bool has_status, const auto& range) -> status {
+    if (has_status)
+      for (auto h : range)
+        if (m.status(h).deleted())
+          return status::invalid_argument(detail::cat(what, ": ", kind, " ", h.idx(),
+                                                      " is deleted; call garbage_collection() on the OpenMesh mesh "
+                                                      "before handing it to tessera"));
+    return {};
+  };
+  if (auto s = first_deleted("vertex", m.has_vertex_status(), m.all_vertices()); !s) return s;
+  if (auto s = first_deleted("face", m.has_face_status(), m.all_faces()); !s) return s;
   for (auto f : m.all_faces()) {
     if (!m.halfedge_handle(f).is_valid())
       return status::invalid_argument(detail::cat(what, ": face ", f.idx(), " has no halfedge"));

@@ -34,11 +34,11 @@ struct half_edge_key {
 /// the edge queries below cost one sort and no per-edge allocation.
 template <Mesh M>
 std::vector<half_edge_key> sorted_half_edges(const M& m) {
-  const index_t nf = num_faces(m);
+  const index_t nf = tessera::num_faces(m);
   std::vector<half_edge_key> hs;
   hs.reserve(static_cast<std::size_t>(3 * nf));
   for (index_t f = 0; f < nf; ++f) {
-    const index_t v[3] = {face_vertex(m, f, 0), face_vertex(m, f, 1), face_vertex(m, f, 2)};
+    const index_t v[3] = {tessera::face_vertex(m, f, 0), tessera::face_vertex(m, f, 1), tessera::face_vertex(m, f, 2)};
     for (int k = 0; k < 3; ++k) {
       const index_t a = v[k], b = v[(k + 1) % 3];
       hs.push_back({std::min(a, b), std::max(a, b), f, k});
@@ -91,7 +91,7 @@ struct face_adjacency_result {
 template <Mesh M>
 face_adjacency_result face_adjacency(const M& m) {
   face_adjacency_result r;
-  r.neighbor.assign(static_cast<std::size_t>(num_faces(m)), {-1, -1, -1});
+  r.neighbor.assign(static_cast<std::size_t>(tessera::num_faces(m)), {-1, -1, -1});
   const auto hs = detail::sorted_half_edges(m);
   detail::for_each_edge_group(hs, [&](std::size_t first, std::size_t count) {
     if (count == 2) {
@@ -120,7 +120,7 @@ std::vector<std::array<index_t, 2>> boundary_edges(const M& m) {
   std::sort(found.begin(), found.end());
   for (auto& fs : found) {
     const int k = static_cast<int>(fs[1]);
-    fs = {face_vertex(m, fs[0], k), face_vertex(m, fs[0], (k + 1) % 3)};
+    fs = {tessera::face_vertex(m, fs[0], k), tessera::face_vertex(m, fs[0], (k + 1) % 3)};
   }
   return found;
 }
@@ -144,7 +144,7 @@ struct mesh_components {
 /// Connected components of a valid mesh by union-find. O(F alpha(V)) time, O(V + F) memory.
 template <Mesh M>
 mesh_components connected_components(const M& m) {
-  const index_t nv = num_vertices(m), nf = num_faces(m);
+  const index_t nv = tessera::num_vertices(m), nf = tessera::num_faces(m);
   std::vector<index_t> parent(static_cast<std::size_t>(nv));
   std::iota(parent.begin(), parent.end(), index_t{0});
   auto find = [&](index_t v) {
@@ -158,7 +158,7 @@ mesh_components connected_components(const M& m) {
   std::vector<index_t> size(static_cast<std::size_t>(nv), 1);
   for (index_t f = 0; f < nf; ++f) {
     for (int k = 1; k < 3; ++k) {
-      index_t a = find(face_vertex(m, f, 0)), b = find(face_vertex(m, f, k));
+      index_t a = find(tessera::face_vertex(m, f, 0)), b = find(tessera::face_vertex(m, f, k));
       if (a == b) continue;
       if (size[static_cast<std::size_t>(a)] < size[static_cast<std::size_t>(b)]) std::swap(a, b);
       parent[static_cast<std::size_t>(b)] = a;  // union by size
@@ -170,10 +170,10 @@ mesh_components connected_components(const M& m) {
   c.face_component.resize(static_cast<std::size_t>(nf));
   std::vector<index_t> root_id(static_cast<std::size_t>(nv), -1);
   for (index_t f = 0; f < nf; ++f) {
-    auto& id = root_id[static_cast<std::size_t>(find(face_vertex(m, f, 0)))];
+    auto& id = root_id[static_cast<std::size_t>(find(tessera::face_vertex(m, f, 0)))];
     if (id < 0) id = c.count++;
     c.face_component[static_cast<std::size_t>(f)] = id;
-    for (int k = 0; k < 3; ++k) c.vertex_component[static_cast<std::size_t>(face_vertex(m, f, k))] = id;
+    for (int k = 0; k < 3; ++k) c.vertex_component[static_cast<std::size_t>(tessera::face_vertex(m, f, k))] = id;
   }
   return c;
 }

@@ -53,10 +53,12 @@ struct tri_mesh {
     uvs.push_back(corner_uvs);
     return num_faces() - 1;
   }
-  /// Appends another mesh (its vertices translated by `offset`), renumbering its indices. Uvs are kept
-  /// only when both meshes have them (or this one is empty).
+  /// Appends another mesh (its vertices translated by `offset`), renumbering its indices. The result
+  /// has uvs when every face of both meshes has them (a mesh without faces does not count); otherwise
+  /// all uvs are dropped, since uvs must cover every face.
   void append(const tri_mesh& other, vec3 offset = {}) {
-    const bool keep_uvs = other.has_uvs() && (has_uvs() || faces.empty());
+    const bool keep_uvs = (has_uvs() || faces.empty()) && (other.has_uvs() || other.faces.empty()) &&
+                          (has_uvs() || other.has_uvs());
     if (!keep_uvs) uvs.clear();
     const index_t base = num_vertices();
     positions.reserve(positions.size() + other.positions.size());
@@ -79,7 +81,7 @@ status validate_mesh(const M& m, std::string_view what = "mesh") {
   if constexpr (requires { { mesh_traits<M>::validate(m, what) } -> std::same_as<status>; }) {
     if (auto s = mesh_traits<M>::validate(m, what); !s) return s;
   }
-  const index_t nv = num_vertices(m), nf = num_faces(m);
+  const index_t nv = tessera::num_vertices(m), nf = tessera::num_faces(m);
   if (nv < 0 || nf < 0)
     return status::invalid_argument(detail::cat(what, ": negative vertex or face count (", nv, ", ", nf, ")"));
   if constexpr (std::is_same_v<M, tri_mesh>) {
@@ -88,7 +90,7 @@ status validate_mesh(const M& m, std::string_view what = "mesh") {
                                                   " faces; uvs must be empty or hold one triple per face"));
   }
   for (index_t v = 0; v < nv; ++v) {
-    const vec3 p = vertex_position(m, v);
+    const vec3 p = tessera::vertex_position(m, v);
     if (!is_finite(p))
       return status::invalid_argument(detail::cat(what, ": vertex ", v, " has a non-finite position (", p.x, ", ", p.y,
                                                   ", ", p.z, ")"));
@@ -96,10 +98,11 @@ status validate_mesh(const M& m, std::string_view what = "mesh") {
   for (index_t f = 0; f < nf; ++f) {
     index_t idx[3];
     for (int k = 0; k < 3; ++k) {
-      idx[k] = face_vertex(m, f, k);
-      if (idx[k] < 0 || idx[k] >= nv)
-        return status::out_of_range(detail::cat(what, ": face ", f, " corner ", k, " refers to vertex ", idx[k],
+      const index_t v = tessera::face_vertex(m, f, k);  // a local, not idx[k]: GCC's -Warray-bounds misfires
+      if (v < 0 || v >= nv)
+        return status::out_of_range(detail::cat(what, ": face ", f, " corner ", k, " refers to vertex ", v,
                                                 " but the mesh has ", nv, " vertices"));
+      idx[k] = v;
     }
     if (idx[0] == idx[1] || idx[1] == idx[2] || idx[0] == idx[2])
       return status::invalid_argument(detail::cat(what, ": face ", f, " is degenerate (vertices ", idx[0], ", ", idx[1],
@@ -120,12 +123,12 @@ template <Mesh M>
 result<tri_mesh> to_tri_mesh(const M& m, std::string_view what = "mesh") {
   if (auto s = validate_mesh(m, what); !s) return s;
   tri_mesh out;
-  const index_t nv = num_vertices(m), nf = num_faces(m);
+  const index_t nv = tessera::num_vertices(m), nf = tessera::num_faces(m);
   out.positions.resize(static_cast<std::size_t>(nv));
-  for (index_t v = 0; v < nv; ++v) out.positions[static_cast<std::size_t>(v)] = vertex_position(m, v);
+  for (index_t v = 0; v < nv; ++v) out.positions[static_cast<std::size_t>(v)] = tessera::vertex_position(m, v);
   out.faces.resize(static_cast<std::size_t>(nf));
   for (index_t f = 0; f < nf; ++f)
-    for (int k = 0; k < 3; ++k) out.faces[static_cast<std::size_t>(f)][static_cast<std::size_t>(k)] = face_vertex(m, f, k);
+    for (int k = 0; k < 3; ++k) out.faces[static_cast<std::size_t>(f)][static_cast<std::size_t>(k)] = tessera::face_vertex(m, f, k);
   if constexpr (UVMesh<M>) {
     if (mesh_traits<M>::has_uvs(m)) {
       out.uvs.resize(static_cast<std::size_t>(nf));
@@ -140,8 +143,8 @@ result<tri_mesh> to_tri_mesh(const M& m, std::string_view what = "mesh") {
 /// The three corner positions of face f.
 template <Mesh M>
 std::array<vec3, 3> face_corners(const M& m, index_t f) {
-  return {vertex_position(m, face_vertex(m, f, 0)), vertex_position(m, face_vertex(m, f, 1)),
-          vertex_position(m, face_vertex(m, f, 2))};
+  return {tessera::vertex_position(m, tessera::face_vertex(m, f, 0)), tessera::vertex_position(m, tessera::face_vertex(m, f, 1)),
+          tessera::vertex_position(m, tessera::face_vertex(m, f, 2))};
 }
 
 /// Un-normalized normal of face f: (b - a) x (c - a), length twice the area.
@@ -154,8 +157,8 @@ vec3 face_area_normal(const M& m, index_t f) {
 /// Unit normal per face (zero for zero-area faces).
 template <Mesh M>
 std::vector<vec3> face_normals(const M& m) {
-  std::vector<vec3> n(static_cast<std::size_t>(num_faces(m)));
-  for (index_t f = 0; f < num_faces(m); ++f) n[static_cast<std::size_t>(f)] = normalized(face_area_normal(m, f));
+  std::vector<vec3> n(static_cast<std::size_t>(tessera::num_faces(m)));
+  for (index_t f = 0; f < tessera::num_faces(m); ++f) n[static_cast<std::size_t>(f)] = normalized(face_area_normal(m, f));
   return n;
 }
 
@@ -163,10 +166,10 @@ std::vector<vec3> face_normals(const M& m) {
 /// no face of non-zero area).
 template <Mesh M>
 std::vector<vec3> vertex_normals(const M& m) {
-  std::vector<vec3> n(static_cast<std::size_t>(num_vertices(m)));
-  for (index_t f = 0; f < num_faces(m); ++f) {
+  std::vector<vec3> n(static_cast<std::size_t>(tessera::num_vertices(m)));
+  for (index_t f = 0; f < tessera::num_faces(m); ++f) {
     const vec3 an = face_area_normal(m, f);
-    for (int k = 0; k < 3; ++k) n[static_cast<std::size_t>(face_vertex(m, f, k))] += an;
+    for (int k = 0; k < 3; ++k) n[static_cast<std::size_t>(tessera::face_vertex(m, f, k))] += an;
   }
   for (vec3& v : n) v = normalized(v);
   return n;
@@ -182,7 +185,7 @@ double face_area(const M& m, index_t f) {
 template <Mesh M>
 aabb bounding_box(const M& m) {
   aabb b;
-  for (index_t v = 0; v < num_vertices(m); ++v) b.extend(vertex_position(m, v));
+  for (index_t v = 0; v < tessera::num_vertices(m); ++v) b.extend(tessera::vertex_position(m, v));
   return b;
 }
 

@@ -140,7 +140,7 @@ inline result<tri_mesh> read_obj(const std::string& path) {
 /// Precondition: validate_mesh(m) passed (write_obj checks it). O(V + F).
 template <Mesh M>
 std::string format_obj(const M& m) {
-  const index_t nv = num_vertices(m), nf = num_faces(m);
+  const index_t nv = tessera::num_vertices(m), nf = tessera::num_faces(m);
   std::string out;
   out.reserve(static_cast<std::size_t>(40 * nv + 30 * nf + 64));
   out += "# written by tessera: ";
@@ -149,7 +149,7 @@ std::string format_obj(const M& m) {
   detail::append_number(out, nf);
   out += " triangles\n";
   for (index_t v = 0; v < nv; ++v) {
-    const vec3 p = vertex_position(m, v);
+    const vec3 p = tessera::vertex_position(m, v);
     out += "v ";
     detail::append_number(out, p.x);
     out += ' ';
@@ -159,7 +159,7 @@ std::string format_obj(const M& m) {
     out += '\n';
   }
   std::vector<index_t> uv_id;  // per corner
-  if (has_uvs(m)) {
+  if (tessera::has_uvs(m)) {
     if constexpr (UVMesh<M>) {
       struct key_hash {
         std::size_t operator()(const std::pair<std::uint64_t, std::uint64_t>& k) const noexcept {
@@ -170,7 +170,7 @@ std::string format_obj(const M& m) {
       uv_id.resize(static_cast<std::size_t>(3 * nf));
       for (index_t f = 0; f < nf; ++f)
         for (int k = 0; k < 3; ++k) {
-          const vec2 t = corner_uv(m, f, k);
+          const vec2 t = tessera::corner_uv(m, f, k);
           std::pair<std::uint64_t, std::uint64_t> key;
           std::memcpy(&key.first, &t.x, 8);
           std::memcpy(&key.second, &t.y, 8);
@@ -190,7 +190,7 @@ std::string format_obj(const M& m) {
     out += 'f';
     for (int k = 0; k < 3; ++k) {
       out += ' ';
-      detail::append_number(out, face_vertex(m, f, k) + 1);
+      detail::append_number(out, tessera::face_vertex(m, f, k) + 1);
       if (!uv_id.empty()) {
         out += '/';
         detail::append_number(out, uv_id[static_cast<std::size_t>(3 * f + k)] + 1);

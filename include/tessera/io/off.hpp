@@ -130,7 +130,7 @@ inline result<tri_mesh> read_off(const std::string& path) {
 /// dropped). Precondition: validate_mesh(m) passed (write_off checks it). O(V + F).
 template <Mesh M>
 std::string format_off(const M& m) {
-  const index_t nv = num_vertices(m), nf = num_faces(m);
+  const index_t nv = tessera::num_vertices(m), nf = tessera::num_faces(m);
   std::string out = "OFF\n";
   out.reserve(static_cast<std::size_t>(40 * nv + 24 * nf + 32));
   detail::append_number(out, nv);
@@ -138,7 +138,7 @@ std::string format_off(const M& m) {
   detail::append_number(out, nf);
   out += " 0\n";
   for (index_t v = 0; v < nv; ++v) {
-    const vec3 p = vertex_position(m, v);
+    const vec3 p = tessera::vertex_position(m, v);
     detail::append_number(out, p.x);
     out += ' ';
     detail::append_number(out, p.y);
@@ -150,7 +150,7 @@ std::string format_off(const M& m) {
     out += '3';
     for (int k = 0; k < 3; ++k) {
       out += ' ';
-      detail::append_number(out, face_vertex(m, f, k));
+      detail::append_number(out, tessera::face_vertex(m, f, k));
     }
     out += '\n';
   }

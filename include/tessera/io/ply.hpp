@@ -192,8 +192,8 @@ struct ply_write_options {
 /// than 2^31 vertices (write_ply checks both). O(V + F).
 template <Mesh M>
 std::string format_ply(const M& m, const ply_write_options& opts = {}) {
-  const index_t nv = num_vertices(m), nf = num_faces(m);
-  const bool uvs = has_uvs(m), big = opts.big_endian;
+  const index_t nv = tessera::num_vertices(m), nf = tessera::num_faces(m);
+  const bool uvs = tessera::has_uvs(m), big = opts.big_endian;
   std::string out = "ply\nformat ";
   out += !opts.binary ? "ascii" : big ? "binary_big_endian" : "binary_little_endian";
   out += " 1.0\ncomment written by tessera\nelement vertex ";
@@ -206,7 +206,7 @@ std::string format_ply(const M& m, const ply_write_options& opts = {}) {
   out.reserve(out.size() + static_cast<std::size_t>(opts.binary ? 24 * nv + 13 * nf + (uvs ? 25 * nf : 0)
                                                                  : 40 * nv + 24 * nf + (uvs ? 60 * nf : 0)));
   for (index_t v = 0; v < nv; ++v) {
-    const vec3 p = vertex_position(m, v);
+    const vec3 p = tessera::vertex_position(m, v);
     for (int k = 0; k < 3; ++k) {
       if (opts.binary) {
         detail::put_binary(out, p[k], big);
@@ -219,12 +219,12 @@ std::string format_ply(const M& m, const ply_write_options& opts = {}) {
   for (index_t f = 0; f < nf; ++f) {
     if (opts.binary) {
       out += '\3';
-      for (int k = 0; k < 3; ++k) detail::put_binary(out, static_cast<std::int32_t>(face_vertex(m, f, k)), big);
+      for (int k = 0; k < 3; ++k) detail::put_binary(out, static_cast<std::int32_t>(tessera::face_vertex(m, f, k)), big);
     } else {
       out += '3';
       for (int k = 0; k < 3; ++k) {
         out += ' ';
-        detail::append_number(out, face_vertex(m, f, k));
+        detail::append_number(out, tessera::face_vertex(m, f, k));
       }
     }
     if constexpr (UVMesh<M>) {
@@ -232,7 +232,7 @@ std::string format_ply(const M& m, const ply_write_options& opts = {}) {
         if (opts.binary) out += '\6';
         else out += " 6";
         for (int k = 0; k < 3; ++k) {
-          const vec2 t = corner_uv(m, f, k);
+          const vec2 t = tessera::corner_uv(m, f, k);
           for (float c : {static_cast<float>(t.x), static_cast<float>(t.y)}) {
             if (opts.binary) {
               detail::put_binary(out, c, big);
@@ -255,8 +255,8 @@ std::string format_ply(const M& m, const ply_write_options& opts = {}) {
 template <Mesh M>
 status write_ply(const std::string& path, const M& m, const ply_write_options& opts = {}) {
   if (auto s = validate_mesh(m, path); !s) return s;
-  if (num_vertices(m) > std::numeric_limits<std::int32_t>::max())
-    return status::size_overflow(detail::cat(path, ": ", num_vertices(m), " vertices exceed PLY's 32-bit indices"));
+  if (tessera::num_vertices(m) > std::numeric_limits<std::int32_t>::max())
+    return status::size_overflow(detail::cat(path, ": ", tessera::num_vertices(m), " vertices exceed PLY's 32-bit indices"));
   return detail::write_file(path, format_ply(m, opts));
 }
 

@@ -70,14 +70,14 @@ class hash_coloring {
   [[nodiscard]] int edge_color_at(index_t col, index_t row, int side) const noexcept {
     switch (side) {
       case side_north: return horizontal(col, row);
-      case side_south: return horizontal(col, row + 1);
+      case side_south: return horizontal(col, next(row));
       case side_west: return vertical(col, row);
-      default: return vertical(col + 1, row);
+      default: return vertical(next(col), row);
     }
   }
   /// All four colours of cell (col, row). O(1).
   [[nodiscard]] wang_edges edges_at(index_t col, index_t row) const noexcept {
-    return {horizontal(col, row), vertical(col + 1, row), horizontal(col, row + 1), vertical(col, row)};
+    return {horizontal(col, row), vertical(next(col), row), horizontal(col, next(row)), vertical(col, row)};
   }
 
   /// The same colouring made periodic: colours repeat every `period_cols` cells eastwards and
@@ -101,6 +101,10 @@ class hash_coloring {
   [[nodiscard]] result<hash_coloring_window> window(index_t origin_col, index_t origin_row, index_t cols, index_t rows) const;
 
  private:
+  // v + 1, wrapping at the ends of the index range (coordinates are only hash keys)
+  [[nodiscard]] static index_t next(index_t v) noexcept {
+    return static_cast<index_t>(static_cast<std::uint64_t>(v) + 1u);
+  }
   [[nodiscard]] static index_t wrap(index_t v, index_t period) noexcept {
     if (period == 0) return v;
     const index_t r = v % period;
@@ -117,13 +121,13 @@ class hash_coloring {
   [[nodiscard]] int horizontal(index_t col, index_t row) const noexcept {
     const int free = static_cast<int>(below(nh_ / m_, 1, col, row));
     if (m_ == 1) return free;
-    return structured(potential(col, row), potential(col + 1, row)) + m_ * free;
+    return structured(potential(col, row), potential(next(col), row)) + m_ * free;
   }
   // the vertical edge from corner (col, row) to (col, row + 1): west side of cell (col, row)
   [[nodiscard]] int vertical(index_t col, index_t row) const noexcept {
     const int free = static_cast<int>(below(nv_ / m_, 2, col, row));
     if (m_ == 1) return free;
-    return structured(potential(col, row), potential(col, row + 1)) + m_ * free;
+    return structured(potential(col, row), potential(col, next(row))) + m_ * free;
   }
 
   int nh_ = 1, nv_ = 1, m_ = 1;

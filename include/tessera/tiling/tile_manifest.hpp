@@ -44,8 +44,8 @@ struct manifest_field {
 struct tile_manifest_entry {
   index_t index = 0;         ///< tile number; the entries hold each of 0..n-1 once
   std::string file;          ///< file name relative to the directory ("tile_3.png")
-  wang_edges edges;          ///< [north, east, south, west]
-  std::vector<manifest_field> extra;
+  wang_edges edges = {};     ///< [north, east, south, west]
+  std::vector<manifest_field> extra = {};
   friend bool operator==(const tile_manifest_entry&, const tile_manifest_entry&) = default;
 };
 
@@ -55,7 +55,7 @@ struct tile_manifest {
   int horizontal_colors = 0;
   int vertical_colors = 0;
   std::vector<tile_manifest_entry> tiles;  ///< sorted by index after reading
-  std::vector<manifest_field> extra;
+  std::vector<manifest_field> extra = {};
 
   /// The value of a top-level extra field, or `fallback`.
   [[nodiscard]] double extra_value(std::string_view name, double fallback = 0) const {

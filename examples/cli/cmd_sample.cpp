@@ -1,0 +1,73 @@
+// tessera sample KIND --size WxH --out E.png: a procedural exemplar image (image/exemplars.hpp).
+#include <cstdint>
+#include <string>
+
+#include <tessera/image/exemplars.hpp>
+#include <tessera/io/detail/file.hpp>
+#include <tessera/io/png.hpp>
+
+#include "cli.hpp"
+
+namespace {
+
+using tessera::status;
+
+inline constexpr tessera::index_t max_side = 16384;
+
+int run_sample(const cli::arguments& args) {
+  if (args.positional().size() != 1)
+    return cli::fail(args, status::invalid_argument(
+                               "expects one KIND: grass, sand, rock, bricks, cells, weave or dots (see tessera sample --help)"));
+  const auto kind = tessera::parse_exemplar_kind(args.positional()[0]);
+  if (!kind) return cli::fail(args, kind.error());
+  auto out = args.required("--out");
+  if (!out) return cli::fail(args, out.error());
+  if (tessera::detail::file_extension(*out) != "png")
+    return cli::fail(args, status::invalid_argument("--out must name a .png file, got '" + *out + "'"));
+  std::pair<tessera::index_t, tessera::index_t> size{128, 128};
+  if (args.has("--size")) {
+    auto s = args.size("--size");
+    if (!s) return cli::fail(args, s.error());
+    size = *s;
+  }
+  if (size.first > max_side || size.second > max_side)
+    return cli::fail(args, status::invalid_argument("--size is limited to " + std::to_string(max_side) + " x " +
+                                                    std::to_string(max_side) + ", got " + args.str("--size")));
+  const auto seed = args.integer("--seed", 1);
+  if (!seed) return cli::fail(args, seed.error());
+  tessera::result<tessera::image_buffer<std::uint8_t, 3>> img = status::internal_error("not made");
+  const double ms = cli::median_ms(args.repeat(), [&] {
+    img = tessera::make_exemplar(*kind, {.width = size.first, .height = size.second, .seed = static_cast<std::uint64_t>(*seed)});
+  });
+  if (!img) return cli::fail(args, img.error());
+  if (auto s = tessera::write_png(*out, *img); !s) return cli::fail(args, s);
+  if (args.stats())
+    cli::json_line()
+        .add("kind", tessera::to_string(*kind))
+        .add("width", size.first)
+        .add("height", size.second)
+        .add("seed", static_cast<long long>(*seed))
+        .add("output", *out)
+        .add("ms", ms)
+        .add("pixels_per_s", static_cast<double>(size.first * size.second) / (ms > 0 ? ms / 1000 : 1e-9))
+        .print();
+  else
+    std::printf("wrote %s (%s, %td x %td, seed %lld)\n", out->c_str(), std::string(tessera::to_string(*kind)).c_str(),
+                size.first, size.second, *seed);
+  return 0;
+}
+
+const cli::registrar reg({
+    .name = "sample",
+    .summary = "write a procedural exemplar image (grass sand rock bricks cells weave dots)",
+    .usage = "tessera sample KIND --size WxH --out E.png [--seed S] [--stats]",
+    .options = {{"--size", "WxH", "image size (default 128x128; at most 16384 per side)"},
+                {"--out", "FILE", "output PNG (required)"},
+                {"--seed", "S", "random seed (default 1); same seed, same image"},
+                {"--repeat", "N", "time the generation N times and report the median (default 1)"},
+                {"--stats", "", "print one JSON line instead of text"}},
+    .run = run_sample,
+    .positional = "KIND",
+});
+
+}  // namespace

@@ -1,0 +1,62 @@
+// Image inputs of the `tessera` command: an option naming either a PNG file or a procedural
+// exemplar kind (grass, sand, rock, bricks, cells, weave, dots; image/exemplars.hpp) rendered at
+// --exemplar-size with --seed, so every command also runs on generated data.
+#pragma once
+
+#include <fstream>
+#include <string>
+#include <utility>
+
+#include <tessera/core/format.hpp>
+#include <tessera/image/exemplars.hpp>
+#include <tessera/io/png.hpp>
+
+#include "cli.hpp"
+
+namespace cli {
+
+/// The pixel format of the image `option` names: the PNG's own (8 or 16 bits, 1 to 4 channels) or
+/// 8-bit RGB for a procedural kind.
+inline tessera::result<tessera::pixel_format> image_source_format(const arguments& args, std::string_view option) {
+  const std::string name = args.str(option);
+  if (std::ifstream(name).good()) {
+    auto info = tessera::read_png_info(name);
+    if (!info) return info.error();
+    return tessera::pixel_format{info->bit_depth == 16 ? tessera::channel_type::uint16 : tessera::channel_type::uint8,
+                                 info->channels};
+  }
+  if (!tessera::parse_exemplar_kind(name))
+    return tessera::status::invalid_argument(std::string(option) + " '" + name +
+                                             "' is neither a readable file nor a procedural kind (grass, sand, rock, "
+                                             "bricks, cells, weave, dots)");
+  return tessera::pixel_format{tessera::channel_type::uint8, 3};
+}
+
+/// Reads (or renders) the image `option` names as C channels of T.
+template <tessera::Channel T, int C>
+tessera::result<tessera::image_buffer<T, C>> load_image_source(const arguments& args, std::string_view option) {
+  const std::string name = args.str(option);
+  if (std::ifstream(name).good()) return tessera::read_png<T, C>(name);
+  auto kind = tessera::parse_exemplar_kind(name);
+  if (!kind) return kind.error();
+  auto size = args.integer("--exemplar-size", 128);
+  if (!size) return size.error();
+  return tessera::make_exemplar<T, C>(*kind, {.width = static_cast<tessera::index_t>(*size),
+                                               .height = static_cast<tessera::index_t>(*size),
+                                               .seed = args.seed()});
+}
+
+/// Calls `f(format_tag<T, C>{})` with the format of the image `option` names.
+template <class F>
+tessera::status with_image_source(const arguments& args, std::string_view option, F&& f) {
+  auto fmt = image_source_format(args, option);
+  if (!fmt) return fmt.error();
+  return tessera::dispatch_format(*fmt, std::forward<F>(f));
+}
+
+/// The --exemplar-size option that goes with image sources.
+inline option_spec exemplar_size_option() {
+  return {"--exemplar-size", "N", "side of a procedural exemplar named instead of a file (default 128)"};
+}
+
+}  // namespace cli

@@ -1,0 +1,143 @@
+// tessera/fabric/detail/life_kernels.hpp: one synchronous generation of the game-of-life lightness
+// rule over a toroidal float lightness field. Internal: no stability promise.
+//
+// A band of rows is processed with a rolling window of three rows padded by one wrapped value at
+// each end, so the neighbourhood loop has no wrap tests and the compiler vectorizes it: it classifies
+// every pixel (brighten / darken / keep) and records the two ends of its interpolation. A second,
+// scalar loop draws r only for the pixels whose rule fired.
+#pragma once
+
+#include <algorithm>
+#include <bit>
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+#include "../../core/config.hpp"
+#include "../../core/random.hpp"
+
+TESSERA_NAMESPACE_BEGIN
+namespace detail {
+
+/// The rule with its thresholds resolved (see life_perturbation_options).
+struct life_rule {
+  int live = 3;  // K: brighten when the live count is K (or >= K)
+  bool live_exact = true;
+  int dead = 6;      // N: darken when the dead count is >= N
+  int crowding = 0;  // darken when the live count is >= this (0 = off)
+  bool by_threshold = false;
+  float threshold = 0.5f;
+};
+
+/// r in [0, 1) for pixel `index` of a generation: SplitMix64 keyed by the perturbation's
+/// counter_rng, r = top 24 bits of mix64(rng.bits(generation) + (index + 1) * golden) / 2^24 (exact
+/// in float). The generation's key is hashed once; each pixel then costs one mix, and the value
+/// depends only on (seed, generation, pixel), never on the order of evaluation.
+class life_random {
+ public:
+  life_random(const counter_rng& rng, std::uint64_t generation) noexcept : key_(rng.bits(generation)) {}
+  [[nodiscard]] float operator()(std::uint64_t index) const noexcept {
+    const std::uint64_t bits = mix64(key_ + (index + 1) * 0x9e3779b97f4a7c15ULL);
+    return static_cast<float>(bits >> 40) * 0x1.0p-24f;
+  }
+
+ private:
+  std::uint64_t key_;
+};
+
+/// Copies row `src` (w values) into `dst` (w + 2 values) with one wrapped value at each end.
+inline void pad_row(const float* src, index_t w, float* dst) noexcept {
+  dst[0] = src[w - 1];
+  std::memcpy(dst + 1, src, sizeof(float) * static_cast<std::size_t>(w));
+  dst[w + 1] = src[0];
+}
+
+inline std::uint32_t life_mask(bool b) noexcept { return 0u - static_cast<std::uint32_t>(b); }
+/// m ? a : b for an all-ones / all-zeros mask, on the bits (vectorizes without float control flow).
+inline float life_select(std::uint32_t m, float a, float b) noexcept {
+  return std::bit_cast<float>((std::bit_cast<std::uint32_t>(a) & m) | (std::bit_cast<std::uint32_t>(b) & ~m));
+}
+
+/// Classifies one row from three padded rows: fire[x] != 0 where the rule fires with a neighbour to
+/// move towards, and then L' = lo[x] + (hi[x] - lo[x]) r (brighten: lo = L, hi = L_bright; darken:
+/// lo = L_dim, hi = L). Written with integer masks and bit selects, no float branches, so compilers
+/// vectorize it even under strict IEEE semantics.
+template <bool ByThreshold>
+void life_classify(const float* up, const float* mid, const float* down, index_t w, const life_rule& rule, float* lo,
+                   float* hi, std::int32_t* fire) {
+  const std::int32_t live_k = rule.live, dead_n = rule.dead, crowd = rule.crowding > 0 ? rule.crowding : 100;
+  const float threshold = rule.threshold;
+  const std::uint32_t exact = life_mask(rule.live_exact);
+  for (index_t x = 0; x < w; ++x) {
+    const float l = mid[x + 1];
+    float sb = 0, sd = 0;
+    std::int32_t nb = 0, nd = 0, na = 0;
+    auto add = [&](float v) {
+      const std::uint32_t gt = life_mask(v > l), lt = life_mask(v < l), bits = std::bit_cast<std::uint32_t>(v);
+      sb += std::bit_cast<float>(bits & gt);
+      sd += std::bit_cast<float>(bits & lt);
+      nb -= static_cast<std::int32_t>(gt);
+      nd -= static_cast<std::int32_t>(lt);
+      na += static_cast<std::int32_t>(v > threshold);
+    };
+    add(up[x]), add(up[x + 1]), add(up[x + 2]), add(mid[x]);
+    add(mid[x + 2]), add(down[x]), add(down[x + 1]), add(down[x + 2]);
+    const std::int32_t live = ByThreshold ? na : nb;
+    const std::int32_t dead = ByThreshold ? 8 - na : nd;
+    const std::uint32_t darken = life_mask(dead >= dead_n) | life_mask(live >= crowd);
+    const std::uint32_t lives = (life_mask(live == live_k) & exact) | (life_mask(live >= live_k) & ~exact);
+    const std::uint32_t brighten = ~darken & lives;
+    const float l_bright = sb / static_cast<float>(nb + static_cast<std::int32_t>(nb == 0));
+    const float l_dim = sd / static_cast<float>(nd + static_cast<std::int32_t>(nd == 0));
+    lo[x] = life_select(darken, l_dim, l);
+    hi[x] = life_select(darken, l, l_bright);
+    fire[x] = static_cast<std::int32_t>((darken & life_mask(nd > 0)) | (brighten & life_mask(nb > 0)));
+  }
+}
+
+/// Scratch of one band task: three padded rows, the classification of one row, its new lightness
+/// and the list of pixels whose rule fired.
+struct life_scratch {
+  std::vector<float> rows, lo, hi, next;
+  std::vector<std::int32_t> fire;
+  std::vector<index_t> fired;
+  explicit life_scratch(index_t w)
+      : rows(static_cast<std::size_t>(3 * (w + 2))), lo(static_cast<std::size_t>(w)), hi(lo.size()), next(lo.size()),
+        fire(lo.size()), fired(lo.size()) {}
+};
+
+/// Runs one generation on rows [y0, y1) of a W x H toroidal lightness field whose row y is written,
+/// padded, by fill(y, dst) (from a float field, or straight from the image for the first
+/// generation), calling emit(y, old_row, next_row, fired, n_fired) for each row with its lightness
+/// before and after and the n_fired columns whose lightness may have changed (all others keep
+/// theirs exactly).
+template <class Fill, class Emit>
+void life_band(index_t w, index_t h, index_t y0, index_t y1, const life_rule& rule, const life_random& random,
+               life_scratch& s, Fill&& fill, Emit&& emit) {
+  float* ring[3] = {s.rows.data(), s.rows.data() + (w + 2), s.rows.data() + 2 * (w + 2)};
+  fill((y0 + h - 1) % h, ring[0]);
+  fill(y0, ring[1]);
+  for (index_t y = y0; y < y1; ++y) {
+    fill((y + 1) % h, ring[2]);
+    if (rule.by_threshold) life_classify<true>(ring[0], ring[1], ring[2], w, rule, s.lo.data(), s.hi.data(), s.fire.data());
+    else life_classify<false>(ring[0], ring[1], ring[2], w, rule, s.lo.data(), s.hi.data(), s.fire.data());
+    // compact the fired columns without branches, then update only those
+    index_t n = 0;
+    for (index_t x = 0; x < w; ++x) {
+      s.fired[static_cast<std::size_t>(n)] = x;
+      n += s.fire[static_cast<std::size_t>(x)] != 0;
+    }
+    std::memcpy(s.next.data(), ring[1] + 1, sizeof(float) * static_cast<std::size_t>(w));
+    const std::uint64_t base = static_cast<std::uint64_t>(y * w);
+    for (index_t k = 0; k < n; ++k) {
+      const auto x = static_cast<std::size_t>(s.fired[static_cast<std::size_t>(k)]);
+      s.next[x] = s.lo[x] + (s.hi[x] - s.lo[x]) * random(base + x);
+    }
+    emit(y, static_cast<const float*>(ring[1] + 1), static_cast<const float*>(s.next.data()),
+         static_cast<const index_t*>(s.fired.data()), n);
+    std::rotate(ring, ring + 1, ring + 3);
+  }
+}
+
+}  // namespace detail
+TESSERA_NAMESPACE_END

@@ -1,0 +1,228 @@
+#include <tessera/fabric/life_perturbation.hpp>
+
+#include <cmath>
+#include <vector>
+
+#include <catch2/catch.hpp>
+
+#include <tessera/fabric/cat_map.hpp>
+#include <tessera/fabric/source_image.hpp>
+
+#include "fabric_test_support.hpp"
+
+using namespace tessera;
+using fabric_test::random_image;
+
+namespace {
+// Straightforward oracle of the rule (paper 001 §1.3 as documented in life_perturbation.hpp), in
+// double, on a lightness field: returns the field after `generations` synchronous generations.
+std::vector<double> oracle(std::vector<double> l, index_t w, index_t h, const life_perturbation_options& o) {
+  const counter_rng rng(o.seed, stream_id("fabric.life"));
+  for (int g = 0; g < o.generations; ++g) {
+    std::vector<double> next(l.size());
+    for (index_t y = 0; y < h; ++y)
+      for (index_t x = 0; x < w; ++x) {
+        const double c = l[static_cast<std::size_t>(y * w + x)];
+        double sb = 0, sd = 0;
+        int nb = 0, nd = 0, above = 0;
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dx = -1; dx <= 1; ++dx) {
+            if (dx == 0 && dy == 0) continue;
+            const double v = l[static_cast<std::size_t>(((y + dy + h) % h) * w + (x + dx + w) % w)];
+            if (v > c) sb += v, ++nb;
+            if (v < c) sd += v, ++nd;
+            if (v > static_cast<double>(o.threshold)) ++above;
+          }
+        const bool by_threshold = o.live_test == life_test::above_threshold;
+        const int live = by_threshold ? above : nb, dead = by_threshold ? 8 - above : nd;
+        const std::uint64_t key = rng.bits(g), i = static_cast<std::uint64_t>(y * w + x);
+        const double r = static_cast<double>(mix64(key + (i + 1) * 0x9e3779b97f4a7c15ULL) >> 40) / 16777216.0;
+        double out = c;
+        if (dead >= o.dead_count || (o.crowding_count > 0 && live >= o.crowding_count)) {
+          if (nd > 0) out = sd / nd + (c - sd / nd) * r;
+        } else if (o.live_exact ? live == o.live_count : live >= o.live_count) {
+          if (nb > 0) out = c + (sb / nb - c) * r;
+        }
+        next[static_cast<std::size_t>(y * w + x)] = out;
+      }
+    l = next;
+  }
+  return l;
+}
+
+std::vector<double> lightness_of(const image_buffer<float, 3>& img) {
+  std::vector<double> l;
+  for (index_t y = 0; y < img.height(); ++y)
+    for (index_t x = 0; x < img.width(); ++x) {
+      const auto p = img.read(x, y);
+      l.push_back(hls_lightness(p[0], p[1], p[2]));
+    }
+  return l;
+}
+
+double hue_distance(double a, double b) {
+  const double d = std::fmod(std::abs(a - b), 360.0);
+  return std::min(d, 360.0 - d);
+}
+
+// A cat-mapped fabric with some colour: the typical input of the perturbation.
+image_buffer<float, 3> fabric(index_t n) {
+  image_buffer<float, 3> src(n, n);
+  const palette tones = {{{0.30f, 0.22f, 0.16f}, 4}, {{0.55f, 0.45f, 0.33f}, 3}, {{0.78f, 0.72f, 0.60f}, 2}, {{0.6f, 0.25f, 0.15f}, 1}};
+  REQUIRE(make_source_image(src, tones, {.layout = source_layout::cells, .feature_size = 6}).ok());
+  return *cat_map(src, 17);
+}
+}  // namespace
+
+TEST_CASE("the perturbation follows the paper's brighten / darken rule (oracle)", "[life_perturbation]") {
+  const auto noisy = random_image<float, 3>(23, 17, 8);
+  const auto cloth = fabric(24);
+  std::vector<life_perturbation_options> cases = {
+      {},                                                                          // K = 3, N = 6
+      {.generations = 3, .seed = 9},                                               // synchronous generations
+      {.live_count = 2, .live_exact = false, .dead_count = 5},                     // at least K
+      {.generations = 2, .dead_count = 7, .crowding_count = 6},                    // §1.2's crowding rule
+      {.live_count = 4, .dead_count = 5, .live_test = life_test::above_threshold, .threshold = 0.45f},
+      {.live_count = 0, .dead_count = 1},
+  };
+  for (const auto* img : {&noisy, &cloth})
+    for (const auto& o : cases) {
+      image_buffer<float, 3> out(img->width(), img->height());
+      REQUIRE(life_perturbation(*img, out, o).ok());
+      const auto expected = oracle(lightness_of(*img), img->width(), img->height(), o);
+      const auto got = lightness_of(out);
+      int changed = 0;
+      for (std::size_t i = 0; i < got.size(); ++i) {
+        REQUIRE(got[i] == Approx(expected[i]).margin(2e-5));
+        changed += std::abs(expected[i] - lightness_of(*img)[i]) > 1e-6;
+      }
+      CHECK(changed > 0);  // the rule did fire
+    }
+}
+
+TEST_CASE("the perturbation keeps hue and saturation (float and 8-bit)", "[life_perturbation]") {
+  // float: exact up to float rounding, where hue and saturation are defined
+  const auto img = random_image<float, 3>(40, 40, 3);
+  for (int gens : {1, 4}) {
+    image_buffer<float, 3> out(40, 40);
+    REQUIRE(life_perturbation(img, out, {.generations = gens}).ok());
+    for (index_t y = 0; y < 40; ++y)
+      for (index_t x = 0; x < 40; ++x) {
+        const auto a = img.read(x, y), b = out.read(x, y);
+        const auto ha = rgb_to_hls(a[0], a[1], a[2]), hb = rgb_to_hls(b[0], b[1], b[2]);
+        if (ha.s < 1e-3f || hb.l < 1e-3f || hb.l > 1 - 1e-3f) continue;
+        REQUIRE(hb.s == Approx(ha.s).margin(2e-4));
+        REQUIRE(hue_distance(ha.h, hb.h) < 0.05);
+      }
+  }
+  // 8-bit RGBA: within the error of rounding each channel to 1/255; alpha exact
+  const auto rgba = random_image<std::uint8_t, 4>(48, 48, 4);
+  image_buffer<std::uint8_t, 4> out(48, 48);
+  REQUIRE(life_perturbation(rgba, out, {.generations = 3}).ok());
+  const float eps = 0.5f / 255.0f;
+  int checked = 0, changed = 0;
+  for (index_t y = 0; y < 48; ++y)
+    for (index_t x = 0; x < 48; ++x) {
+      const auto a = rgba.read(x, y), b = out.read(x, y);
+      REQUIRE(a[3] == b[3]);
+      changed += a != b;
+      auto u = [](std::uint8_t v) { return static_cast<float>(v) / 255.0f; };
+      const auto ha = rgb_to_hls(u(a[0]), u(a[1]), u(a[2])), hb = rgb_to_hls(u(b[0]), u(b[1]), u(b[2]));
+      const float chroma = std::max({u(b[0]), u(b[1]), u(b[2])}) - std::min({u(b[0]), u(b[1]), u(b[2])});
+      const float span = 1.0f - std::abs(2.0f * hb.l - 1.0f);
+      if (chroma < 24.0f / 255.0f || span < 0.1f) continue;  // hue / saturation ill-conditioned
+      ++checked;
+      REQUIRE(hue_distance(ha.h, hb.h) <= 60.0 * 4 * eps / (chroma - 2 * eps) + 1e-3);
+      REQUIRE(std::abs(hb.s - ha.s) <= 4 * eps / span * (1 + ha.s) + 1e-4);
+    }
+  CHECK(checked > 500);
+  CHECK(changed > 100);
+}
+
+TEST_CASE("perturbation output does not depend on the executor; in place works", "[life_perturbation]") {
+  const auto img = random_image<std::uint8_t, 4>(70, 53, 6);
+  for (int gens : {1, 2}) {
+    image_buffer<std::uint8_t, 4> serial(70, 53);
+    REQUIRE(life_perturbation(img, serial, {.generations = gens, .seed = 4}).ok());
+    for (int threads : {1, 2, 3, 7}) {
+      thread_pool_executor pool(threads);
+      image_buffer<std::uint8_t, 4> par(70, 53);
+      REQUIRE(life_perturbation(img, par, {.generations = gens, .seed = 4}, pool).ok());
+      REQUIRE(par == serial);
+      auto inplace = img;
+      REQUIRE(life_perturbation(inplace, inplace, {.generations = gens, .seed = 4}, pool).ok());
+      REQUIRE(inplace == serial);
+    }
+  }
+  // a member-style user type and other formats
+  const auto tex = fabric_test::random_user_texture(30, 20, 2);
+  fabric_test::user_texture out(30, 20);
+  REQUIRE(life_perturbation(tex, out).ok());
+  const auto buf = *to_buffer(tex);
+  image_buffer<float, 3> expected(30, 20);
+  REQUIRE(life_perturbation(buf, expected).ok());
+  REQUIRE(*to_buffer(out) == expected);
+}
+
+TEST_CASE("perturbation special cases: flat images, zero generations, grey and alpha", "[life_perturbation]") {
+  image_buffer<std::uint8_t, 3> flat(16, 16, {120, 80, 40});
+  image_buffer<std::uint8_t, 3> out(16, 16);
+  REQUIRE(life_perturbation(flat, out, {.generations = 5}).ok());
+  CHECK(out == flat);  // no brighter or dimmer neighbour anywhere
+  const auto img = random_image<std::uint16_t, 2>(20, 20, 1);
+  image_buffer<std::uint16_t, 2> o2(20, 20);
+  REQUIRE(life_perturbation(img, o2, {.generations = 0}).ok());
+  CHECK(o2 == img);
+  REQUIRE(life_perturbation(img, o2).ok());
+  int changed = 0;
+  for (index_t y = 0; y < 20; ++y)
+    for (index_t x = 0; x < 20; ++x) {
+      REQUIRE(o2.read(x, y)[1] == img.read(x, y)[1]);  // alpha
+      changed += o2.read(x, y)[0] != img.read(x, y)[0];
+    }
+  CHECK(changed > 0);
+  // a single row or column still wraps around
+  const auto line = random_image<float, 1>(9, 1, 3);
+  image_buffer<float, 1> lo(9, 1);
+  REQUIRE(life_perturbation(line, lo, {.live_count = 1, .live_exact = false}).ok());
+}
+
+TEST_CASE("perturbation rejects bad options and images, and can be cancelled", "[life_perturbation]") {
+  const auto img = random_image<std::uint8_t, 3>(8, 8, 1);
+  image_buffer<std::uint8_t, 3> out(8, 8);
+  struct bad_case {
+    life_perturbation_options o;
+    const char* name;
+  };
+  const std::vector<bad_case> bad = {
+      {{.generations = -1}, "generations"},
+      {{.live_count = 9}, "live_count"},
+      {{.live_count = -1}, "live_count"},
+      {{.dead_count = 0}, "dead_count"},
+      {{.dead_count = 9}, "dead_count"},
+      {{.crowding_count = 9}, "crowding_count"},
+      {{.threshold = 1.5f}, "threshold"},
+      {{.threshold = std::nanf("")}, "threshold"},
+      {{.live_test = static_cast<life_test>(5)}, "live_test"},
+  };
+  for (const auto& b : bad) {
+    auto s = life_perturbation(img, out, b.o);
+    INFO(s.to_string());
+    REQUIRE(s.code() == status_code::invalid_argument);
+    CHECK(s.message().find(b.name) != std::string::npos);
+  }
+  image_buffer<std::uint8_t, 3> small(4, 8);
+  CHECK(life_perturbation(img, small).code() == status_code::invalid_argument);
+  image_view<const std::uint8_t, 3> empty;
+  CHECK(life_perturbation(empty, out).code() == status_code::invalid_argument);
+
+  cancellation_token stop;
+  stop.cancel();
+  life_perturbation_options o{.generations = 3};
+  o.progress.token = &stop;
+  CHECK(life_perturbation(img, out, o).code() == status_code::cancelled);
+  int calls = 0;
+  o.progress = {};
+  o.progress.callback = [&](double, std::string_view) { return ++calls < 2; };
+  CHECK(life_perturbation(img, out, o).code() == status_code::cancelled);
+}
