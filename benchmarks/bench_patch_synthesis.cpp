@@ -5,7 +5,8 @@
 //     Mpix_s   output pixels per second in 10^6, MiPix_s in 2^20 (the paper's "M pixels")
 //     x_memcpy synthesis time / memcpy time of the same output buffer, measured in the same run
 //   memcpy/<output side>/<format>: the baseline alone
-//   preprocess/<exemplar side>/<kind>/<threads>: build_patch_model (size analysis included), model_MiB
+//   preprocess/<exemplar side>/<kind>/<threads>/<seams>: build_patch_model (size analysis included; seams:
+//     also the minimum-error seam of every compatible pair), model_MiB
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
@@ -100,11 +101,12 @@ void BM_preprocess(benchmark::State& state) {
   const index_t side = state.range(0);
   const auto kind = static_cast<tessera::exemplar_kind>(state.range(1));
   const int threads = static_cast<int>(state.range(2));
+  const tessera::patch_model_options opts{.seams = state.range(3) != 0};
   const auto ex = tessera::make_exemplar<std::uint8_t, 4>(kind, {.width = side, .height = side}).value();
   tessera::thread_pool_executor pool(threads);
   std::size_t bytes = 0;
   for (auto _ : state) {
-    auto m = threads == 1 ? tessera::build_patch_model(ex) : tessera::build_patch_model(ex, {}, pool);
+    auto m = threads == 1 ? tessera::build_patch_model(ex, opts) : tessera::build_patch_model(ex, opts, pool);
     if (!m) state.SkipWithError(m.error().message().c_str());
     else bytes = m->memory_bytes();
   }
@@ -124,7 +126,7 @@ void synthesis_args(benchmark::internal::Benchmark* b) {
 BENCHMARK(BM_memcpy)->ArgsProduct({{256, 512, 1024, 2048, 4096}, {0, 1}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_synthesize)->Apply(synthesis_args)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_preprocess)
-    ->ArgsProduct({{64, 128}, {0, 1, 2, 3, 4, 5, 6}, {2}})
+    ->ArgsProduct({{64, 128}, {0, 1, 2, 3, 4, 5, 6}, {1, 2}, {0, 1}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->Iterations(3);
