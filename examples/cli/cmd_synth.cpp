@@ -4,18 +4,17 @@
 //                 [--repeat N] [--stats]
 #include <algorithm>
 #include <cstdint>
-#include <fstream>
 #include <string>
 #include <vector>
 
 #include <tessera/core/format.hpp>
-#include <tessera/image/exemplars.hpp>
 #include <tessera/image/metrics.hpp>
 #include <tessera/image/patch_model.hpp>
 #include <tessera/image/patch_synthesis.hpp>
 #include <tessera/io/png.hpp>
 
 #include "cli.hpp"
+#include "image_source.hpp"
 
 namespace {
 
@@ -26,7 +25,7 @@ inline constexpr index_t max_side = 32768;
 
 struct synth_request {
   std::string exemplar, out, source_map;
-  index_t width = 0, height = 0, patch_w = 0, patch_h = 0, overlap = 0, exemplar_size = 128;
+  index_t width = 0, height = 0, patch_w = 0, patch_h = 0, overlap = 0;
   tessera::texture_offset origin;
   tessera::seam_mode seams = tessera::seam_mode::feather;
   std::uint64_t seed = 1;
@@ -91,36 +90,14 @@ tessera::result<synth_request> parse(const cli::arguments& args) {
   auto es = args.integer("--exemplar-size", 128);
   if (!es || *es < 8 || *es > 4096)
     return status::invalid_argument("--exemplar-size expects 8 to 4096, got '" + args.str("--exemplar-size") + "'");
-  r.exemplar_size = static_cast<index_t>(*es);
   r.source_map = args.str("--source-map");
   r.stats = args.stats();
   return r;
 }
 
-/// The exemplar's pixel format: the PNG's own, or 8-bit RGB for a procedural kind name.
-tessera::result<tessera::pixel_format> exemplar_format(const synth_request& r) {
-  if (std::ifstream(r.exemplar).good()) {
-    auto info = tessera::read_png_info(r.exemplar);
-    if (!info) return info.error();
-    return tessera::pixel_format{info->bit_depth == 16 ? tessera::channel_type::uint16 : tessera::channel_type::uint8, info->channels};
-  }
-  if (!tessera::parse_exemplar_kind(r.exemplar))
-    return status::invalid_argument("--exemplar '" + r.exemplar +
-                                    "' is neither a readable file nor a procedural kind (grass, sand, rock, bricks, cells, weave, dots)");
-  return tessera::pixel_format{tessera::channel_type::uint8, 3};
-}
-
-template <class T, int C>
-tessera::result<tessera::image_buffer<T, C>> load_exemplar(const synth_request& r) {
-  if (std::ifstream(r.exemplar).good()) return tessera::read_png<T, C>(r.exemplar);
-  auto kind = tessera::parse_exemplar_kind(r.exemplar);
-  if (!kind) return kind.error();
-  return tessera::make_exemplar<T, C>(*kind, {.width = r.exemplar_size, .height = r.exemplar_size, .seed = r.seed});
-}
-
 template <class T, int C>
 int run_format(const cli::arguments& args, const synth_request& r) {
-  auto ex = load_exemplar<T, C>(r);
+  auto ex = cli::load_image_source<T, C>(args, "--exemplar");
   if (!ex) return cli::fail(args, ex.error());
   tessera::thread_pool_executor pool(r.threads);
   const tessera::patch_model_options mo{.patch_width = r.patch_w,
@@ -199,7 +176,7 @@ int run_format(const cli::arguments& args, const synth_request& r) {
 int run_synth(const cli::arguments& args) {
   auto r = parse(args);
   if (!r) return cli::fail(args, r.error());
-  auto fmt = exemplar_format(*r);
+  auto fmt = cli::image_source_format(args, "--exemplar");
   if (!fmt) return cli::fail(args, fmt.error());
   int code = 0;
   const status s = tessera::dispatch_format(*fmt, [&]<class T, int C>(tessera::format_tag<T, C>) {
@@ -216,7 +193,7 @@ int run_synth(const cli::arguments& args) {
 std::vector<cli::option_spec> synth_options() {
   std::vector<cli::option_spec> o = {
       {"--exemplar", "E.png", "exemplar image (PNG, 8 or 16 bits, 1-4 channels) or a procedural kind: grass, sand, rock, bricks, cells, weave, dots"},
-      {"--exemplar-size", "N", "side of a procedural exemplar (default 128)"},
+      cli::exemplar_size_option(),
       {"--size", "WxH", "output size (required unless --window is given)"},
       {"--out", "O.png", "output image"},
       {"--patch", "P", "patch pitch P or WxH (default: chosen by the periodicity analysis, paper 002 section 2.1)"},
