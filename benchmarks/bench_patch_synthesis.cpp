@@ -6,13 +6,14 @@
 //     x_memcpy synthesis time / memcpy time of the same output buffer, measured in the same run
 //   memcpy/<output side>/<format>: the baseline alone
 //   preprocess/<exemplar side>/<kind>/<threads>/<seams>: build_patch_model (size analysis included; seams:
-//     also the minimum-error seam of every compatible pair), model_MiB
+//     also the minimum-error seam of every compatible pair), model_bytes and model_MiB (patch_model::memory_bytes)
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <cstring>
 #include <map>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include <benchmark/benchmark.h>
@@ -110,6 +111,7 @@ void BM_preprocess(benchmark::State& state) {
     if (!m) state.SkipWithError(m.error().message().c_str());
     else bytes = m->memory_bytes();
   }
+  state.counters["model_bytes"] = static_cast<double>(bytes);
   state.counters["model_MiB"] = static_cast<double>(bytes) / 1048576.0;
   state.SetLabel(std::string(tessera::to_string(kind)));
 }

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <catch2/catch.hpp>
@@ -280,4 +282,97 @@ TEST_CASE("synthesize: bad input and cancellation", "[patch_synthesis]") {
   p.progress.callback = [&](double, std::string_view) { return ++calls < 2; };
   CHECK(tessera::synthesize(m, big, p).error().code() == tessera::status_code::cancelled);
   CHECK(calls == 2);
+}
+
+namespace {
+
+// Seam cuts copy every pixel: the output equals the exemplar at the source map's coordinates.
+template <class T, int C>
+void check_copies_exemplar(tessera::exemplar_kind kind) {
+  const auto ex = exemplar<T, C>(kind, 32);
+  const auto m = tessera::build_patch_model(ex, {.patch_width = 10, .patch_height = 8, .overlap = 3, .candidates = 4}).value();
+  const tessera::patch_synthesis_options o{.origin = {-5, 11}, .seed = 2, .seams = seam_mode::cut};
+  tessera::image_buffer<T, C> out(37, 23);
+  tessera::image_buffer<std::uint16_t, 2> src(37, 23);
+  REQUIRE(tessera::synthesize(m, out, o).ok());
+  REQUIRE(tessera::synthesize_source_map(m, src, o).ok());
+  for (index_t y = 0; y < 23; ++y)
+    for (index_t x = 0; x < 37; ++x) {
+      const auto s = src.read(x, y);
+      REQUIRE(out.read(x, y) == ex.read(s[0], s[1]));
+    }
+  // feathering stays within the range of the channel type
+  tessera::image_buffer<T, C> blended(37, 23);
+  REQUIRE(tessera::synthesize(m, blended, {.origin = {-5, 11}, .seed = 2}).ok());
+  for (index_t y = 0; y < 23; ++y)
+    for (index_t x = 0; x < 37; ++x)
+      for (int c = 0; c < C; ++c) {
+        const double v = tessera::channel_to_unit(blended.read(x, y)[c]);
+        REQUIRE(v >= 0.0);
+        REQUIRE(v <= 1.0);
+      }
+}
+
+}  // namespace
+
+TEST_CASE("synthesize: models of every channel type and 1 to 4 channels", "[patch_synthesis]") {
+  check_copies_exemplar<std::uint8_t, 1>(tessera::exemplar_kind::rock);
+  check_copies_exemplar<std::uint8_t, 4>(tessera::exemplar_kind::cells);
+  check_copies_exemplar<std::uint16_t, 2>(tessera::exemplar_kind::grass);
+  check_copies_exemplar<std::uint16_t, 3>(tessera::exemplar_kind::bricks);
+  check_copies_exemplar<float, 1>(tessera::exemplar_kind::sand);
+  check_copies_exemplar<float, 4>(tessera::exemplar_kind::weave);
+}
+
+namespace {
+
+// A writable user image of any size, zero included, that stores nothing (image_buffer refuses 0 x N).
+template <class T, int C>
+struct sized_image {
+  index_t w = 0, h = 0;
+  index_t width() const { return w; }
+  index_t height() const { return h; }
+  std::array<T, C> read(index_t, index_t) const { return {}; }
+  void write(index_t, index_t, const std::array<T, C>&) { FAIL("a zero-size output was written"); }
+};
+
+}  // namespace
+
+TEST_CASE("synthesize: zero-size outputs and windows past the index range at every entry point", "[patch_synthesis]") {
+  const auto& m = bricks_model();
+  tessera::image_buffer<float, 3> aligned(m.exemplar().width(), m.exemplar().height());
+  REQUIRE(tessera::copy_image(m.exemplar(), aligned).ok());
+  for (auto [w, h] : {std::pair<index_t, index_t>{0, 5}, {5, 0}, {0, 0}}) {
+    INFO(w << " x " << h);
+    sized_image<std::uint8_t, 3> out{w, h};
+    sized_image<float, 3> out_f{w, h};
+    sized_image<std::uint16_t, 2> src{w, h};
+    const auto a = tessera::synthesize(m, out);
+    REQUIRE(!a);
+    CHECK(a.error().code() == tessera::status_code::invalid_argument);
+    CHECK(a.error().message().find("output") != std::string::npos);
+    CHECK(tessera::synthesize_aligned(m, aligned, out_f).error().code() == tessera::status_code::invalid_argument);
+    const auto s = tessera::synthesize_source_map(m, src);
+    REQUIRE(!s);
+    CHECK(s.error().message().find("source_map") != std::string::npos);
+  }
+  // windows whose cells would overflow index arithmetic: refused before any pixel is written
+  const index_t huge = std::numeric_limits<index_t>::max() - 4;
+  for (tessera::texture_offset origin : {tessera::texture_offset{huge, 0}, {0, huge}, {-huge, 0}, {0, -huge}}) {
+    tessera::image_buffer<std::uint8_t, 3> out(8, 8, {1, 2, 3});
+    tessera::image_buffer<float, 3> out_f(8, 8);
+    tessera::image_buffer<std::uint16_t, 2> src(8, 8);
+    const tessera::patch_synthesis_options o{.origin = origin};
+    const auto a = tessera::synthesize(m, out, o);
+    REQUIRE(!a);
+    CHECK(a.error().code() == tessera::status_code::out_of_range);
+    CHECK(a.error().message().find("origin") != std::string::npos);
+    CHECK(out.read(7, 7) == tessera::pixel<std::uint8_t, 3>{1, 2, 3});
+    CHECK(tessera::synthesize_aligned(m, aligned, out_f, o).error().code() == tessera::status_code::out_of_range);
+    CHECK(tessera::synthesize_source_map(m, src, o).error().code() == tessera::status_code::out_of_range);
+  }
+  // the last window inside the supported plane still renders
+  const index_t edge = index_t{1} << 52;
+  tessera::image_buffer<std::uint8_t, 3> out(8, 8);
+  CHECK(tessera::synthesize(m, out, {.origin = {edge - 8, -edge}}).ok());
 }
