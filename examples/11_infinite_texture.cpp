@@ -48,6 +48,7 @@ int main(int argc, char** argv) {
       normal.write(x, y, {static_cast<float>(0.5 - 0.5 * dx / len), static_cast<float>(0.5 - 0.5 * dy / len), static_cast<float>(0.5 + 0.5 / len)});
     }
 
+  // [snippet:patch_synthesis]
   auto model = tessera::build_patch_model(*albedo, {}, pool);
   if (!model) return fail(model.error());
   const tessera::texture_offset far_away{-1'000'000'000, 123'456'789};  // anywhere in the plane
@@ -65,6 +66,7 @@ int main(int argc, char** argv) {
     for (index_t y = 0; y < 128; ++y)
       for (index_t x = 0; x < 128; ++x) tiles.write(tx + x, ty + y, tile.read(x, y));
   }
+  // [/snippet]
   const bool identical = tiles == whole;
   std::printf("16 tiles rendered separately %s the single 512 x 512 render\n", identical ? "are bit-identical to" : "DIFFER from");
   for (index_t i = 0; i < 512; ++i)
@@ -75,6 +77,7 @@ int main(int argc, char** argv) {
   if (auto s = tessera::write_png(dir + "/11_tiles.png", tiles); !s) return fail(s);
 
   // aligned maps: the same cells and weights, other pixel types
+  // [snippet:patch_aligned]
   tessera::image_buffer<std::uint16_t, 1> out_height(256, 256);
   tessera::image_buffer<float, 3> out_normal(256, 256);
   tessera::image_buffer<std::uint8_t, 3> out_albedo(256, 256);
@@ -83,6 +86,7 @@ int main(int argc, char** argv) {
   if (auto s = tessera::synthesize_aligned(*model, height, out_height, opts, pool); !s) return fail(s.error());
   if (auto s = tessera::synthesize_aligned(*model, normal, out_normal, opts, pool); !s) return fail(s.error());
   if (auto s = tessera::synthesize_source_map(*model, source, opts, pool); !s) return fail(s.error());
+  // [/snippet]
   tessera::image_buffer<std::uint8_t, 3> shown(256, 256);  // source map: red = exemplar x, green = exemplar y
   for (index_t y = 0; y < 256; ++y)
     for (index_t x = 0; x < 256; ++x) {

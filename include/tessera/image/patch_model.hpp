@@ -418,9 +418,12 @@ struct patch_model_builder {
 ///  2. patches at every phase (every exemplar position), grouped by phase (§2, Fig. 2);
 ///  3. for every patch and each of its four sides, the compatible set: the `candidates` (k = 8) patches
 ///     whose overlap strip has the smallest L2 error. The paper takes an approximate nearest-neighbour
-///     search (ANN); here strips are projected on a PCA basis (Eigen) and a nanoflann kd-tree over the
-///     projections is searched with exact L2 pruning (projections never overestimate distances), so the
-///     sets are the exact top k, ties broken by the smaller patch index;
+///     search (ANN); here strips are projected on a PCA basis (Eigen) and searched in a nanoflann
+///     kd-tree over the projections. By default (approximate sets) the `search_pool` nearest
+///     projections are re-ranked by exact L2 and improved by `refine_iterations` rounds of coherence
+///     propagation (the neighbours' candidates, shifted); with `exact_sets` the search prunes with exact
+///     L2 (projections never overestimate distances), so the sets are the exact top k. Either way each
+///     set is ordered by exact error, ties broken by the smaller patch index;
 ///  4. optionally (`seams`), a minimum-error seam for every compatible pair: the improvement the paper
 ///     names for strongly structured textures but did not build (§2).
 /// The exemplar is converted to the model's pixel type (its own channel type and count).
@@ -445,9 +448,6 @@ auto build_patch_model(const I& exemplar, const patch_model_options& opts = {}, 
     return status::invalid_argument(detail::cat("build_patch_model: pca_dims must be in [1, 64], got ", opts.pca_dims));
   if (opts.pca_samples < 2)
     return status::invalid_argument(detail::cat("build_patch_model: pca_samples must be >= 2, got ", opts.pca_samples));
-  if (opts.search_pool < 1 || opts.refine_iterations < 0 || opts.refine_iterations > 64)
-    return status::invalid_argument(detail::cat("build_patch_model: search_pool must be >= 1 and refine_iterations in [0, 64], got ",
-                                                opts.search_pool, " and ", opts.refine_iterations));
   if (opts.search_pool < 1 || opts.refine_iterations < 0 || opts.refine_iterations > 64)
     return status::invalid_argument(detail::cat("build_patch_model: search_pool must be >= 1 and refine_iterations in [0, 64], got ",
                                                 opts.search_pool, " and ", opts.refine_iterations));
