@@ -43,12 +43,15 @@ template <int C>
 void gather_window(const image_buffer<float, C>& img, index_t x, index_t y, index_t w, float* out) {
   for (index_t r = 0; r < w; ++r) out = std::copy_n(img.pixel_ptr(x, y + r), w * C, out);
 }
-inline double squared_distance(const float* a, const float* b, index_t n) {
+/// Squared distance of two windows of `rows` rows of `row` floats; stops once above `bound`.
+inline double squared_distance(const float* a, const float* b, index_t rows, index_t row,
+                               double bound = std::numeric_limits<double>::infinity()) {
   double s = 0;
-  for (index_t i = 0; i < n; ++i) {
-    const double d = static_cast<double>(a[i]) - static_cast<double>(b[i]);
-    s += d * d;
-  }
+  for (index_t r = 0; r < rows && s <= bound; ++r)
+    for (index_t i = r * row; i < (r + 1) * row; ++i) {
+      const double d = static_cast<double>(a[i]) - static_cast<double>(b[i]);
+      s += d * d;
+    }
   return s;
 }
 }  // namespace detail
@@ -94,7 +97,7 @@ result<double> neighborhood_energy(const O& output, const E& exemplar, const nei
   // kd-tree over PCA projections of the exemplar windows (unless brute force is cheaper or asked for)
   const bool brute = opts.brute_force || static_cast<double>(ne) * static_cast<double>(qnx * qny) * static_cast<double>(D) < 4e6;
   Eigen::MatrixXd basis;
-  detail::lower_bound_knn index;
+  detail::lower_bound_knn<> index;
   if (!brute) {
     const index_t m = std::min<index_t>(ne, 512);
     Eigen::MatrixXd samples(m, D);
@@ -112,7 +115,7 @@ result<double> neighborhood_energy(const O& output, const E& exemplar, const nei
       Eigen::Map<Eigen::RowVectorXd>(proj.data() + i * d, d) = v.transpose() * basis;
       scale = std::max(scale, v.squaredNorm());
     }
-    index = detail::lower_bound_knn(std::move(proj), ne, d, scale);
+    index = detail::lower_bound_knn<>(std::move(proj), ne, d, scale);
   }
 
   std::vector<double> row_sums(static_cast<std::size_t>(qny), 0.0);
@@ -127,12 +130,14 @@ result<double> neighborhood_energy(const O& output, const E& exemplar, const nei
       if (brute) {
         nearest = std::numeric_limits<double>::infinity();
         for (index_t i = 0; i < ne; ++i)
-          nearest = std::min(nearest, detail::squared_distance(q.data(), windows.data() + i * D, D));
+          nearest = std::min(nearest, detail::squared_distance(q.data(), windows.data() + i * D, w, w * C, nearest));
       } else {
         for (index_t j = 0; j < D; ++j) qv(j) = q[static_cast<std::size_t>(j)];
         const Eigen::RowVectorXd qp = qv.transpose() * basis;
-        index.search(qp.data(), 1, [&](std::uint32_t i) { return detail::squared_distance(q.data(), windows.data() + i * D, D); },
-                     best);
+        index.search(
+            qp.data(), 1,
+            [&](std::uint32_t i, double bound) { return detail::squared_distance(q.data(), windows.data() + i * D, w, w * C, bound); },
+            best);
         nearest = best.front().dist;
       }
       sum += std::sqrt(nearest / static_cast<double>(D));
@@ -276,59 +281,15 @@ result<double> repetition_score(const I& image, index_t min_offset) {
                                                 "] for a ", w, " x ", h, " image, got ", min_offset));
   auto img = to_buffer<float, C>(image, "image");
   if (!img) return img.error();
-  const index_t pw = detail::next_pow2(w + mx), ph = detail::next_pow2(h + my);
-  const index_t nox = 2 * mx + 1, noy = my + 1;  // offsets dx in [-mx, mx], dy in [0, my] (symmetry)
-  std::vector<double> cov(static_cast<std::size_t>(nox * noy), 0.0), var_a(cov.size(), 0.0), var_b(cov.size(), 0.0);
-  std::vector<double> f(static_cast<std::size_t>(w * h));
-  std::vector<double> s1(static_cast<std::size_t>((w + 1) * (h + 1))), s2(s1.size());
-  for (int c = 0; c < C; ++c) {
-    double mean = 0;
-    for (index_t i = 0; i < w * h; ++i) mean += img->data()[i * C + c];
-    mean /= static_cast<double>(w * h);
-    for (index_t i = 0; i < w * h; ++i) f[static_cast<std::size_t>(i)] = img->data()[i * C + c] - mean;
-    // integral images of f and f^2: S(x, y) = sum over [0, x) x [0, y)
-    for (index_t y = 0; y <= h; ++y)
-      for (index_t x = 0; x <= w; ++x) {
-        const auto at = static_cast<std::size_t>(y * (w + 1) + x);
-        if (x == 0 || y == 0) {
-          s1[at] = s2[at] = 0;
-          continue;
-        }
-        const double v = f[static_cast<std::size_t>((y - 1) * w + x - 1)];
-        const auto l = at - 1, u = at - static_cast<std::size_t>(w + 1), ul = u - 1;
-        s1[at] = v + s1[l] + s1[u] - s1[ul];
-        s2[at] = v * v + s2[l] + s2[u] - s2[ul];
-      }
-    auto box = [&](const std::vector<double>& s, index_t x0, index_t y0, index_t x1, index_t y1) {
-      auto at = [&](index_t x, index_t y) { return s[static_cast<std::size_t>(y * (w + 1) + x)]; };
-      return at(x1, y1) - at(x0, y1) - at(x1, y0) + at(x0, y0);
-    };
-    const std::vector<double> r = detail::autocorrelation(f.data(), w, h, pw, ph);
-    for (index_t dy = 0; dy <= my; ++dy)
-      for (index_t dx = -mx; dx <= mx; ++dx) {
-        // pairs (x, y) and (x + dx, y + dy) with both inside
-        const index_t ax0 = std::max<index_t>(0, -dx), ax1 = std::min(w, w - dx), ay0 = 0, ay1 = h - dy;
-        const double n = static_cast<double>((ax1 - ax0) * (ay1 - ay0));
-        const double sa = box(s1, ax0, ay0, ax1, ay1), sb = box(s1, ax0 + dx, ay0 + dy, ax1 + dx, ay1 + dy);
-        const double saa = box(s2, ax0, ay0, ax1, ay1), sbb = box(s2, ax0 + dx, ay0 + dy, ax1 + dx, ay1 + dy);
-        const double sab = r[static_cast<std::size_t>(((dy + ph) % ph) * pw + (dx + pw) % pw)];
-        const auto o = static_cast<std::size_t>(dy * nox + dx + mx);
-        cov[o] += sab - sa * sb / n;
-        var_a[o] += saa - sa * sa / n;
-        var_b[o] += sbb - sb * sb / n;
-      }
-  }
+  const std::vector<double> values(img->data(), img->data() + w * h * C);
+  const std::vector<double> corr = detail::correlation_field(values.data(), w, h, C, mx, my);
   double best = 0;
   for (index_t dy = 0; dy <= my; ++dy)
     for (index_t dx = -mx; dx <= mx; ++dx) {
-      if (std::max(std::abs(dx), dy) < min_offset) continue;
-      const index_t ax = w - std::abs(dx), ay = h - dy;
-      const auto o = static_cast<std::size_t>(dy * nox + dx + mx);
-      const double tiny = 1e-9 * static_cast<double>(ax * ay);
-      if (!(var_a[o] > tiny) || !(var_b[o] > tiny)) continue;
-      best = std::max(best, cov[o] / std::sqrt(var_a[o] * var_b[o]));
+      const double r = corr[static_cast<std::size_t>(dy * (2 * mx + 1) + dx + mx)];
+      if (std::max(std::abs(dx), dy) >= min_offset && r > best) best = r;
     }
-  return std::min(best, 1.0);
+  return best;
 }
 
 TESSERA_NAMESPACE_END

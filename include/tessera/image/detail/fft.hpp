@@ -4,7 +4,9 @@
 
 #include <cmath>
 #include <complex>
+#include <algorithm>
 #include <cstddef>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -92,6 +94,66 @@ inline std::vector<double> autocorrelation(const double* f, index_t width, index
   const double scale = 1.0 / static_cast<double>(pw * ph);
   for (std::size_t i = 0; i < grid.size(); ++i) out[i] = grid[i].real() * scale;
   return out;
+}
+
+/// Normalized autocorrelation of an image of `channels` interleaved channels (any real values): for
+/// every offset dx in [-max_dx, max_dx], dy in [0, max_dy] (the other half follows by symmetry), the
+/// Pearson correlation between the pixels (x, y) and (x + dx, y + dy) over the pairs inside the image,
+/// channels pooled with per-channel means. Needs max_dx < width and max_dy < height. Offsets where either
+/// side has no variance hold NaN. Row-major result: index dy * (2 max_dx + 1) + dx + max_dx.
+/// O(channels N log N) through FFT correlation sums and integral images.
+inline std::vector<double> correlation_field(const double* f, index_t width, index_t height, int channels, index_t max_dx,
+                                             index_t max_dy) {
+  TESSERA_ASSERT(max_dx >= 0 && max_dy >= 0 && max_dx < width && max_dy < height);
+  const index_t w = width, h = height, pw = next_pow2(w + max_dx), ph = next_pow2(h + max_dy);
+  const index_t nox = 2 * max_dx + 1, noy = max_dy + 1;
+  const auto n_off = static_cast<std::size_t>(nox * noy);
+  std::vector<double> cov(3 * n_off, 0.0);  // covariance, then the two variances, per offset
+  double* const var_a = cov.data() + n_off;
+  double* const var_b = cov.data() + 2 * n_off;
+  std::vector<double> g(static_cast<std::size_t>(w * h));
+  std::vector<double> s1(static_cast<std::size_t>((w + 1) * (h + 1)), 0.0), s2(s1.size(), 0.0);
+  for (int c = 0; c < channels; ++c) {
+    double mean = 0;
+    for (index_t i = 0; i < w * h; ++i) mean += f[i * channels + c];
+    mean /= static_cast<double>(w * h);
+    for (index_t i = 0; i < w * h; ++i) g[static_cast<std::size_t>(i)] = f[i * channels + c] - mean;
+    // integral images of g and g^2: S(x, y) = sum over [0, x) x [0, y)
+    for (index_t y = 1; y <= h; ++y)
+      for (index_t x = 1; x <= w; ++x) {
+        const auto at = static_cast<std::size_t>(y * (w + 1) + x), up = at - static_cast<std::size_t>(w + 1);
+        const double v = g[static_cast<std::size_t>((y - 1) * w + x - 1)];
+        s1[at] = v + s1[at - 1] + s1[up] - s1[up - 1];
+        s2[at] = v * v + s2[at - 1] + s2[up] - s2[up - 1];
+      }
+    auto box = [&](const std::vector<double>& s, index_t x0, index_t y0, index_t x1, index_t y1) {
+      auto at = [&](index_t x, index_t y) { return s[static_cast<std::size_t>(y * (w + 1) + x)]; };
+      return at(x1, y1) - at(x0, y1) - at(x1, y0) + at(x0, y0);
+    };
+    const std::vector<double> r = autocorrelation(g.data(), w, h, pw, ph);
+    for (index_t dy = 0; dy <= max_dy; ++dy)
+      for (index_t dx = -max_dx; dx <= max_dx; ++dx) {
+        // pairs (x, y) and (x + dx, y + dy), both inside: x in [x0, x1), y in [0, h - dy)
+        const index_t x0 = std::max<index_t>(0, -dx), x1 = std::min(w, w - dx), y1 = h - dy;
+        const double n = static_cast<double>((x1 - x0) * y1);
+        const double sa = box(s1, x0, 0, x1, y1), sb = box(s1, x0 + dx, dy, x1 + dx, y1 + dy);
+        const double saa = box(s2, x0, 0, x1, y1), sbb = box(s2, x0 + dx, dy, x1 + dx, y1 + dy);
+        const double sab = r[static_cast<std::size_t>(dy * pw + (dx + pw) % pw)];
+        const auto o = static_cast<std::size_t>(dy * nox + dx + max_dx);
+        cov[o] += sab - sa * sb / n;
+        var_a[o] += saa - sa * sa / n;
+        var_b[o] += sbb - sb * sb / n;
+      }
+  }
+  for (index_t dy = 0; dy <= max_dy; ++dy)
+    for (index_t dx = -max_dx; dx <= max_dx; ++dx) {
+      const auto o = static_cast<std::size_t>(dy * nox + dx + max_dx);
+      const double tiny = 1e-9 * static_cast<double>((w - (dx < 0 ? -dx : dx)) * (h - dy));
+      cov[o] = (var_a[o] > tiny && var_b[o] > tiny) ? std::min(1.0, cov[o] / std::sqrt(var_a[o] * var_b[o]))
+                                                    : std::numeric_limits<double>::quiet_NaN();
+    }
+  cov.resize(n_off);
+  return cov;
 }
 
 }  // namespace detail

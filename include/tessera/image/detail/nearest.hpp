@@ -22,6 +22,7 @@
 #include <nanoflann.hpp>
 
 #include "../../core/config.hpp"
+#include "../../core/random.hpp"
 
 TESSERA_NAMESPACE_BEGIN
 namespace detail {
@@ -36,6 +37,11 @@ struct neighbor {
   friend bool operator==(const neighbor&, const neighbor&) = default;
 };
 
+/// The distance above which a candidate cannot enter a full top-k list (infinity while not full).
+inline double bound_of(const std::vector<neighbor>& best, std::size_t k) noexcept {
+  return best.size() < k ? std::numeric_limits<double>::infinity() : best.back().dist;
+}
+
 /// Inserts `n` into the ascending list `best` holding at most k entries.
 inline void insert_top_k(std::vector<neighbor>& best, std::size_t k, const neighbor& n) {
   if (best.size() == k && !(n < best.back())) return;
@@ -44,12 +50,30 @@ inline void insert_top_k(std::vector<neighbor>& best, std::size_t k, const neigh
   if (best.size() > k) best.pop_back();
 }
 
+/// Orthonormalizes the columns of `q` in place (modified Gram-Schmidt, twice); drops columns that
+/// vanish. Returns the number of columns kept (moved to the front).
+/// (This and `pca_basis` are templates only so that their Eigen code is instantiated by the
+/// translation units that use them, not by every file that includes this header.)
+template <class Matrix = Eigen::MatrixXd>
+Eigen::Index orthonormalize(Matrix& q) {
+  Eigen::Index kept = 0;
+  for (Eigen::Index i = 0; i < q.cols(); ++i) {
+    Eigen::VectorXd v = q.col(i);
+    const double before = v.norm();
+    for (int pass = 0; pass < 2; ++pass)
+      for (Eigen::Index j = 0; j < kept; ++j) v -= q.col(j).dot(v) * q.col(j);
+    const double n = v.norm();
+    if (!(n > 1e-10 * before) || n == 0) continue;
+    q.col(kept++) = v / n;
+  }
+  return kept;
+}
+
 /// Orthonormal basis (D x d, columns) of the top principal directions of the rows of `samples`
-/// (m x D). Uses the D x D covariance when D <= m, else the m x m Gram matrix. Directions with no
-/// variance are dropped; the result has at least one column. Columns are re-orthonormalized (twice
-/// modified Gram-Schmidt) so projections are exact lower bounds up to rounding.
-/// (A template only so that the eigen solver is instantiated by the translation units that use it,
-/// not by every file that includes this header.)
+/// (m x D). Small problems use an exact eigen-decomposition (of the D x D covariance or the m x m Gram
+/// matrix); larger ones a randomized range finder with two power iterations (Halko, Martinsson and
+/// Tropp 2011) whose test matrix is hash-based, so the basis is deterministic. Any orthonormal basis
+/// gives valid lower bounds; a good one only makes searches faster. The result has at least one column.
 template <class Matrix = Eigen::MatrixXd>
 Matrix pca_basis(Matrix samples, int dims) {
   const Eigen::Index m = samples.rows(), D = samples.cols();
@@ -59,22 +83,39 @@ Matrix pca_basis(Matrix samples, int dims) {
   const Eigen::Index want = std::min<Eigen::Index>({dims, D, m});
   Eigen::MatrixXd basis(D, want);
   Eigen::Index got = 0;
-  if (D <= m) {
-    const Eigen::MatrixXd cov = samples.transpose() * samples;
-    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(cov);
-    const double top = std::max(es.eigenvalues().maxCoeff(), 0.0);
-    for (Eigen::Index i = D - 1; i >= 0 && got < want; --i) {
+  auto take_top = [&](const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>& es, auto&& direction) {
+    const Eigen::Index n = es.eigenvalues().size();
+    const double top = std::max(es.eigenvalues()(n - 1), 0.0);
+    for (Eigen::Index i = n - 1; i >= 0 && got < want; --i) {
       if (!(es.eigenvalues()(i) > 1e-12 * top) || top == 0) break;
-      basis.col(got++) = es.eigenvectors().col(i);
+      basis.col(got++) = direction(i);
+    }
+  };
+  if (std::min(m, D) <= 64) {
+    if (D <= m) {
+      Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(samples.transpose() * samples);
+      take_top(es, [&](Eigen::Index i) { return Eigen::VectorXd(es.eigenvectors().col(i)); });
+    } else {
+      Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(samples * samples.transpose());
+      take_top(es, [&](Eigen::Index i) { return Eigen::VectorXd(samples.transpose() * es.eigenvectors().col(i)); });
     }
   } else {
-    const Eigen::MatrixXd gram = samples * samples.transpose();
-    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(gram);
-    const double top = std::max(es.eigenvalues().maxCoeff(), 0.0);
-    for (Eigen::Index i = m - 1; i >= 0 && got < want; --i) {
-      if (!(es.eigenvalues()(i) > 1e-12 * top) || top == 0) break;
-      basis.col(got++) = samples.transpose() * es.eigenvectors().col(i);
+    const Eigen::Index l = std::min<Eigen::Index>({want + 8, D, m});
+    Eigen::MatrixXd omega(D, l);
+    for (Eigen::Index j = 0; j < l; ++j)
+      for (Eigen::Index i = 0; i < D; ++i)
+        omega(i, j) = 2.0 * bits_to_unit(hash_keys(0x70636131u, static_cast<std::uint64_t>(i), static_cast<std::uint64_t>(j))) - 1.0;
+    Eigen::MatrixXd q = samples * omega;  // m x l
+    for (int power = 0; power < 2; ++power) {
+      q.conservativeResize(Eigen::NoChange, orthonormalize(q));
+      Eigen::MatrixXd z = samples.transpose() * q;  // D x l
+      z.conservativeResize(Eigen::NoChange, orthonormalize(z));
+      q = samples * z;
     }
+    q.conservativeResize(Eigen::NoChange, orthonormalize(q));
+    const Eigen::MatrixXd b = q.transpose() * samples;  // l x D: the samples in the found subspace
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(b * b.transpose());
+    take_top(es, [&](Eigen::Index i) { return Eigen::VectorXd(b.transpose() * es.eigenvectors().col(i)); });
   }
   if (got == 0) {  // no variance at all: any unit direction is a valid (trivial) lower bound
     basis.col(0).setZero();
@@ -82,37 +123,50 @@ Matrix pca_basis(Matrix samples, int dims) {
     got = 1;
   }
   basis.conservativeResize(D, got);
-  for (int pass = 0; pass < 2; ++pass)
-    for (Eigen::Index i = 0; i < got; ++i) {
-      for (Eigen::Index j = 0; j < i; ++j) basis.col(i) -= basis.col(j).dot(basis.col(i)) * basis.col(j);
-      const double n = basis.col(i).norm();
-      TESSERA_ASSERT(n > 0);
-      basis.col(i) /= n;
-    }
+  basis.conservativeResize(D, std::max<Eigen::Index>(1, orthonormalize(basis)));
   return basis;
 }
 
 /// Exact k-nearest-neighbour index over points known through their projections (n x d, row-major,
-/// owned) and an exact squared distance supplied at query time.
+/// owned) and an exact squared distance supplied at query time. `DIM` fixes d at compile time (faster
+/// distance loops) or is -1 for a run-time d.
+template <int DIM = -1>
 class lower_bound_knn {
  public:
   lower_bound_knn() = default;
   /// `projected`: n rows of d coordinates. `scale`: a typical squared vector length, for the
   /// absolute rounding margin of the pruning radius.
-  /// (A template only so that the kd-tree is instantiated where it is built, not wherever this
-  /// header is included.)
-  template <class Points = std::vector<double>>
-  lower_bound_knn(Points projected, index_t n, int d, double scale)
+  lower_bound_knn(std::vector<double> projected, index_t n, int d, double scale)
       : data_(std::make_unique<dataset>(dataset{std::move(projected), n, d})), margin_(1e-12 * std::max(scale, 1e-300)) {
-    TESSERA_ASSERT(n >= 1 && d >= 1 && static_cast<index_t>(data_->points.size()) == n * d);
+    TESSERA_ASSERT(n >= 1 && d >= 1 && static_cast<index_t>(data_->points.size()) == n * d && (DIM < 0 || DIM == d));
     tree_ = std::make_unique<tree>(d, *data_, nanoflann::KDTreeSingleIndexAdaptorParams(16));
   }
 
   [[nodiscard]] index_t size() const noexcept { return data_ ? data_->n : 0; }
   [[nodiscard]] int dims() const noexcept { return data_ ? data_->d : 0; }
 
-  /// The exact top k (by `exact(i)`, ties by index) for a query with projection `q` (d values).
-  /// `exact(i)` must return the squared distance whose lower bound the projections give.
+  /// `exact(i, bound)` returns the exact squared distance of point i, or any value above `bound` when
+  /// the distance exceeds it (so callers may stop summing early).
+  /// The top k by `exact` (ties by index) among the `pool` points nearest to `q` in the projected
+  /// space (eps-approximate kd-tree search: neighbours within (1 + eps) of the true ones): the
+  /// approximate search, where the exact distance re-ranks the projected candidates.
+  template <class Exact>
+  void search_approximate(const double* q, std::size_t k, std::size_t pool, float eps, Exact&& exact, std::vector<neighbor>& out,
+                          std::vector<std::uint32_t>& ids, std::vector<double>& dists) const {
+    out.clear();
+    if (!tree_ || k == 0) return;
+    pool = std::min(std::max(pool, k), static_cast<std::size_t>(data_->n));
+    ids.resize(pool);
+    dists.resize(pool);
+    nanoflann::KNNResultSet<double, std::uint32_t> rs(pool);
+    rs.init(ids.data(), dists.data());
+    tree_->findNeighbors(rs, q, nanoflann::SearchParams(32, eps, true));
+    const std::size_t found = rs.size();
+    for (std::size_t i = 0; i < found; ++i) insert_top_k(out, k, neighbor{exact(ids[i], bound_of(out, k)), ids[i]});
+  }
+
+  /// The exact top k (by `exact`, ties by index) for a query with projection `q` (d values). `exact`
+  /// must measure the squared distance whose lower bound the projections give.
   template <class Exact>
   void search(const double* q, std::size_t k, Exact&& exact, std::vector<neighbor>& out) const {
     out.clear();
@@ -135,7 +189,7 @@ class lower_bound_knn {
       return false;
     }
   };
-  using tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, dataset>, dataset, -1, std::uint32_t>;
+  using tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, dataset>, dataset, DIM, std::uint32_t>;
 
   /// nanoflann result set: exact distances for every point the tree offers, pruning radius = the
   /// k-th best exact distance plus a rounding margin (so equal distances with smaller indices are
@@ -150,7 +204,7 @@ class lower_bound_knn {
     [[nodiscard]] bool full() const { return best.size() == k; }
     bool addPoint(double lower, std::uint32_t index) {
       if (full() && lower > worstDist()) return true;
-      insert_top_k(best, k, neighbor{exact(index), index});
+      insert_top_k(best, k, neighbor{exact(index, bound_of(best, k)), index});
       return true;
     }
     [[nodiscard]] double worstDist() const {

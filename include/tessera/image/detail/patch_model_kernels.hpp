@@ -1,0 +1,216 @@
+// tessera/image/detail/patch_model_kernels.hpp: the preprocessing kernels of image/patch_model.hpp
+// (paper 002 §2, preprocessing steps 2 and 3): exact overlap errors, compatible sets through PCA +
+// nanoflann, and minimum-error seams. Internal; no stability promise.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <type_traits>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "../../core/config.hpp"
+#include "../../core/image_buffer.hpp"
+#include "nearest.hpp"
+
+TESSERA_NAMESPACE_BEGIN
+namespace detail {
+
+/// Sum of squared differences between two windows of `cols` x `rows` pixels of `img`, exact: integer
+/// arithmetic for uint8 and uint16 channels, double accumulation in a fixed order for float. Stops
+/// early (returning a partial sum above `bound`) once the sum exceeds `bound`.
+template <class T, int C>
+double window_ssd(const image_buffer<T, C>& img, index_t ax, index_t ay, index_t bx, index_t by, index_t cols, index_t rows,
+                  double bound = std::numeric_limits<double>::infinity()) {
+  const index_t n = cols * C;
+  if constexpr (std::is_same_v<T, std::uint8_t>) {
+    std::uint64_t total = 0;
+    for (index_t r = 0; r < rows; ++r) {
+      const std::uint8_t* a = img.pixel_ptr(ax, ay + r);
+      const std::uint8_t* b = img.pixel_ptr(bx, by + r);
+      std::uint32_t s = 0;  // n <= 65536 elements per row keeps this below 2^32
+      for (index_t i = 0; i < n; ++i) {
+        const int d = static_cast<int>(a[i]) - static_cast<int>(b[i]);
+        s += static_cast<std::uint32_t>(d * d);
+      }
+      total += s;
+      if (static_cast<double>(total) > bound) break;
+    }
+    return static_cast<double>(total);
+  } else if constexpr (std::is_same_v<T, std::uint16_t>) {
+    std::uint64_t total = 0;
+    for (index_t r = 0; r < rows; ++r) {
+      const std::uint16_t* a = img.pixel_ptr(ax, ay + r);
+      const std::uint16_t* b = img.pixel_ptr(bx, by + r);
+      for (index_t i = 0; i < n; ++i) {
+        const std::int64_t d = static_cast<std::int64_t>(a[i]) - static_cast<std::int64_t>(b[i]);
+        total += static_cast<std::uint64_t>(d * d);
+      }
+      if (static_cast<double>(total) > bound) break;
+    }
+    return static_cast<double>(total);
+  } else {
+    double total = 0;
+    for (index_t r = 0; r < rows; ++r) {
+      const float* a = img.pixel_ptr(ax, ay + r);
+      const float* b = img.pixel_ptr(bx, by + r);
+      for (index_t i = 0; i < n; ++i) {
+        const double d = static_cast<double>(a[i]) - static_cast<double>(b[i]);
+        total += d * d;
+      }
+      if (total > bound) break;
+    }
+    return total;
+  }
+}
+
+/// A family of equally sized exemplar windows (the vertical or the horizontal overlap strips) with
+/// their PCA projections.
+template <class T, int C>
+struct strip_family {
+  index_t cols = 0, rows = 0;          ///< window size in pixels
+  index_t count_x = 0, count_y = 0;    ///< window positions: x in [0, count_x), y in [0, count_y)
+  Eigen::MatrixXd basis;               ///< D x d
+  std::vector<double> projected;       ///< count_x * count_y rows of d values
+  int d = 0;
+
+  void gather(const image_buffer<T, C>& img, index_t x, index_t y, double* out) const {
+    for (index_t r = 0; r < rows; ++r) {
+      const T* p = img.pixel_ptr(x, y + r);
+      for (index_t i = 0; i < cols * C; ++i) *out++ = static_cast<double>(p[i]);
+    }
+  }
+
+  /// PCA basis from up to `samples` evenly spread windows, then every window projected (in blocks,
+  /// through Eigen's matrix product).
+  template <class Ex>
+  void build(const image_buffer<T, C>& img, index_t cols_, index_t rows_, index_t count_x_, index_t count_y_, int dims,
+             index_t samples, Ex&& exec) {
+    cols = cols_;
+    rows = rows_;
+    count_x = count_x_;
+    count_y = count_y_;
+    const index_t n = count_x * count_y, D = cols * rows * C;
+    const index_t m = std::min(n, samples);
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> sample(m, D);
+    for (index_t s = 0; s < m; ++s) {
+      const index_t i = s * n / m;
+      gather(img, i % count_x, i / count_x, sample.row(s).data());
+    }
+    basis = pca_basis(Eigen::MatrixXd(sample), dims);
+    d = static_cast<int>(basis.cols());
+    projected.assign(static_cast<std::size_t>(n * d), 0.0);
+    constexpr index_t block = 128;
+    exec.parallel_for(0, (n + block - 1) / block, [&](index_t b) {
+      const index_t first = b * block, last = std::min(n, first + block);
+      Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> x(last - first, D);
+      for (index_t i = first; i < last; ++i) gather(img, i % count_x, i / count_x, x.row(i - first).data());
+      Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> out(projected.data() + first * d,
+                                                                                             last - first, d);
+      out.noalias() = x * basis;
+    });
+  }
+  [[nodiscard]] const double* projection(index_t x, index_t y) const { return projected.data() + (y * count_x + x) * d; }
+};
+
+/// One round of coherence propagation over approximate compatible sets (the k-coherence idea of paper
+/// 002's ref. [3], in PatchMatch's form): queries are patches on an nx x ny grid whose strips overlap
+/// their grid neighbours' strips, so if b fits a's neighbour a + (dx, dy) well, b - (dx, dy) likely fits
+/// a. Every patch's set is re-ranked with those shifted candidates by `exact(a, b, bound)` (see
+/// lower_bound_knn::search_approximate for `bound`); ties by index. Sets may start empty (entries
+/// with a NaN distance are ignored, and neighbours' NaN entries propose nothing); a set that stays
+/// short of k gets `refill(a, best)`. Reads the old sets and writes new ones, so the result does not
+/// depend on the executor.
+template <class Exact, class Refill, class Ex>
+void propagate_sets(index_t nx, index_t ny, index_t k, std::vector<std::uint32_t>& ids, std::vector<double>& dists,
+                    Exact&& exact, Refill&& refill, Ex&& exec) {
+  std::vector<std::uint32_t> new_ids(ids.size());
+  std::vector<double> new_dists(dists.size());
+  const auto kk = static_cast<std::size_t>(k);
+  exec.parallel_for(0, ny, [&](index_t y) {
+    std::vector<neighbor> best;
+    std::vector<std::uint32_t> cand;
+    for (index_t x = 0; x < nx; ++x) {
+      const index_t a = y * nx + x;
+      best.clear();
+      for (index_t r = 0; r < k; ++r)
+        if (!std::isnan(dists[static_cast<std::size_t>(a * k + r)]))
+          best.push_back({dists[static_cast<std::size_t>(a * k + r)], ids[static_cast<std::size_t>(a * k + r)]});
+      cand.clear();
+      constexpr index_t shifts[4][2] = {{-1, 0}, {1, 0}, {0, -1}, {0, 1}};
+      for (const auto& d : shifts) {
+        const index_t qx = x + d[0], qy = y + d[1];
+        if (qx < 0 || qy < 0 || qx >= nx || qy >= ny) continue;
+        for (index_t r = 0; r < k; ++r) {
+          const auto at = static_cast<std::size_t>((qy * nx + qx) * k + r);
+          if (std::isnan(dists[at])) continue;
+          const index_t b = ids[at], bx = b % nx - d[0], by = b / nx - d[1];
+          if (bx >= 0 && by >= 0 && bx < nx && by < ny) cand.push_back(static_cast<std::uint32_t>(by * nx + bx));
+        }
+      }
+      std::sort(cand.begin(), cand.end());
+      cand.erase(std::unique(cand.begin(), cand.end()), cand.end());
+      for (std::uint32_t c : cand) {
+        bool known = false;
+        for (const neighbor& n : best) known = known || n.index == c;
+        if (!known) insert_top_k(best, kk, neighbor{exact(a, c, bound_of(best, kk)), c});
+      }
+      if (best.size() < kk) refill(a, best);
+      TESSERA_ASSERT(best.size() == kk);
+      for (index_t r = 0; r < k; ++r) {
+        new_ids[static_cast<std::size_t>(a * k + r)] = best[static_cast<std::size_t>(r)].index;
+        new_dists[static_cast<std::size_t>(a * k + r)] = best[static_cast<std::size_t>(r)].dist;
+      }
+    }
+  });
+  ids.swap(new_ids);
+  dists.swap(new_dists);
+}
+
+/// Minimum-error boundary cut (Efros and Freeman's dynamic programming, the improvement paper 002 §2
+/// names) through the overlap of a left patch at exemplar origin (lx, ly) and a right patch at (rx,
+/// ry): the overlap is the columns [pw, pw + v) of the left patch and [0, v) of the right one, over
+/// `len` rows. For each row, writes the cut c in [0, v): columns < c come from the left patch, >= c
+/// from the right. A horizontal seam is the same problem with x and y exchanged (`transpose`). Ties go
+/// to the smaller column. `scratch` is reused between calls.
+template <class T, int C>
+void min_error_seam(const image_buffer<T, C>& img, index_t lx, index_t ly, index_t rx, index_t ry, index_t offset, index_t v,
+                    index_t len, bool transpose, std::uint8_t* cut, std::vector<double>& scratch) {
+  scratch.resize(static_cast<std::size_t>(len * v));
+  auto err = [&](index_t r, index_t c) {
+    const T* a = transpose ? img.pixel_ptr(lx + r, ly + offset + c) : img.pixel_ptr(lx + offset + c, ly + r);
+    const T* b = transpose ? img.pixel_ptr(rx + r, ry + c) : img.pixel_ptr(rx + c, ry + r);
+    double s = 0;
+    for (int k = 0; k < C; ++k) {
+      const double d = static_cast<double>(a[k]) - static_cast<double>(b[k]);
+      s += d * d;
+    }
+    return s;
+  };
+  double* m = scratch.data();
+  for (index_t c = 0; c < v; ++c) m[c] = err(0, c);
+  for (index_t r = 1; r < len; ++r)
+    for (index_t c = 0; c < v; ++c) {
+      double best = m[(r - 1) * v + c];
+      if (c > 0) best = std::min(best, m[(r - 1) * v + c - 1]);
+      if (c + 1 < v) best = std::min(best, m[(r - 1) * v + c + 1]);
+      m[r * v + c] = err(r, c) + best;
+    }
+  index_t c = 0;
+  for (index_t k = 1; k < v; ++k)
+    if (m[(len - 1) * v + k] < m[(len - 1) * v + c]) c = k;
+  cut[len - 1] = static_cast<std::uint8_t>(c);
+  for (index_t r = len - 1; r > 0; --r) {
+    index_t next = c;
+    for (index_t k = std::max<index_t>(0, c - 1); k <= std::min(v - 1, c + 1); ++k)
+      if (m[(r - 1) * v + k] < m[(r - 1) * v + next] || (m[(r - 1) * v + k] == m[(r - 1) * v + next] && k < next)) next = k;
+    c = next;
+    cut[r - 1] = static_cast<std::uint8_t>(c);
+  }
+}
+
+}  // namespace detail
+TESSERA_NAMESPACE_END

@@ -1,0 +1,253 @@
+// tessera/image/detail/patch_plan.hpp: the per-cell decisions of patch synthesis (paper 002 §2):
+// which patch every cell of a window holds (checkerboard distribution, then filling by compatible-set
+// intersection) and, for seam cuts, which seam joins every pair of neighbours. Internal.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "../../core/config.hpp"
+#include "../../core/random.hpp"
+#include "../patch_model.hpp"
+#include "patch_model_kernels.hpp"
+
+TESSERA_NAMESPACE_BEGIN
+namespace detail {
+
+/// floor(a / b) for b > 0.
+constexpr index_t floor_div(index_t a, index_t b) noexcept {
+  const index_t q = a / b;
+  return (a % b != 0 && a < 0) ? q - 1 : q;
+}
+
+/// Counts a synthesis call reports.
+struct plan_counts {
+  index_t cells = 0, placed = 0, filled = 0, empty_intersections = 0, computed_seams = 0, phase_group = 0;
+};
+
+/// The decisions for a window [ox, ox + w) x [oy, oy + h) of the infinite texture. Cell (i, j) holds a
+/// patch whose top-left pixel lands on (i pw, j ph); cells [ci0, ci0 + ncx) x [cj0, cj0 + ncy) touch
+/// the window (including the left and top neighbours that overlap it).
+struct patch_plan {
+  index_t pw = 0, ph = 0, v = 0;
+  index_t ox = 0, oy = 0, w = 0, h = 0;
+  index_t ci0 = 0, cj0 = 0, ncx = 0, ncy = 0;
+  std::vector<index_t> sx, sy;  ///< per cell (row-major): exemplar origin of its patch
+  bool cut = false;
+  std::vector<const std::uint8_t*> vseam;  ///< per cell: cut against the west neighbour (ph + v entries) or null
+  std::vector<const std::uint8_t*> hseam;  ///< per cell: cut against the north neighbour (pw + v entries) or null
+  std::vector<std::uint8_t> own_seams;     ///< seams computed for this plan (pairs outside the compatible sets)
+  plan_counts counts;
+  [[nodiscard]] index_t cell(index_t ci, index_t cj) const noexcept { return cj * ncx + ci; }
+};
+
+/// The patches placed on the checkerboard, the phase group (paper §2 and Fig. 2: "only patches of near
+/// phases"): around a phase drawn from the seed, either the phases within Chebyshev distance `radius`
+/// (modulo the pitch), or (radius < 0) the phases in order of appearance similarity to it (the model's
+/// phase_similarity(): for a texture that repeats, phases a period apart look alike) - all phases at
+/// least `equivalent` similar, then more until the group holds `min_size` patches.
+template <Channel T, int C>
+std::vector<std::uint32_t> phase_group(const patch_model<T, C>& m, std::uint64_t seed, index_t radius, index_t min_size,
+                                       double equivalent = 0.9) {
+  const index_t pw = m.patch_width(), ph = m.patch_height();
+  std::vector<index_t> nonempty;
+  for (index_t p = 0; p < m.num_phases(); ++p)
+    if (!m.phase_patches(p).empty()) nonempty.push_back(p);
+  const counter_rng rng(seed, stream_id("patch.phase"));
+  const index_t center = nonempty[static_cast<std::size_t>(rng.below(nonempty.size()))];
+  const index_t cx = center % pw, cy = center / pw;
+  std::vector<std::uint32_t> group;
+  auto add = [&](index_t dx, index_t dy) {
+    const index_t px = ((cx + dx) % pw + pw) % pw, py = ((cy + dy) % ph + ph) % ph;
+    for (std::uint32_t p : m.phase_patches(py * pw + px)) group.push_back(p);
+  };
+  if (radius >= 0) {
+    const index_t nxp = std::min(2 * radius + 1, pw), nyp = std::min(2 * radius + 1, ph);
+    for (index_t dy = 0; dy < nyp; ++dy)
+      for (index_t dx = 0; dx < nxp; ++dx) add(dx - radius, dy - radius);
+    return group;
+  }
+  for (const phase_offset& o : m.phase_similarity()) {
+    if (o.similarity < equivalent && static_cast<index_t>(group.size()) >= min_size) break;
+    add(o.dx, o.dy);
+  }
+  return group;
+}
+
+/// Fills a vacant cell from its four placed neighbours (paper §2): a random member of the intersection
+/// of their compatible sets facing the cell (sorted small vectors), keyed by (seed, i, j). When the
+/// intersection is empty, the patch appearing in the most sets (the paper's rule); ties go to the
+/// smallest estimated overlap error (its errors in the sets holding it, plus each other set's k-th
+/// error, a lower bound of its error there), then the smallest index. Returns the patch and whether
+/// the intersection was empty.
+template <Channel T, int C>
+std::pair<std::uint32_t, bool> fill_cell(const patch_model<T, C>& m, std::uint32_t west, std::uint32_t east, std::uint32_t north,
+                                         std::uint32_t south, const counter_rng& rng, index_t i, index_t j) {
+  // a 4-way merge of the sets ordered by patch index, branch-free: copies end with a sentinel
+  const std::uint32_t owners[4] = {west, east, north, south};
+  constexpr patch_side facing[4] = {patch_side::east, patch_side::west, patch_side::south, patch_side::north};
+  const index_t k = m.candidates();
+  constexpr std::uint32_t none = ~std::uint32_t{0};
+  std::uint32_t ids[4][65];
+  float errs[4][65];
+  float worst[4];
+  double worst_sum = 0;
+  for (int s = 0; s < 4; ++s) {
+    const auto set = m.compatible_by_index(owners[s], facing[s]);
+    for (index_t r = 0; r < k; ++r) {
+      ids[s][r] = set[static_cast<std::size_t>(r)].patch;
+      errs[s][r] = set[static_cast<std::size_t>(r)].error;
+    }
+    ids[s][k] = none;
+    errs[s][k] = 0;
+    worst[s] = m.kth_error(owners[s], facing[s]);
+    worst_sum += worst[s];
+  }
+  std::uint32_t inter[64];
+  index_t ni = 0, head[4] = {0, 0, 0, 0};
+  std::uint32_t best = ids[0][0];
+  int best_count = 0;
+  double best_error = 0;
+  for (;;) {
+    const std::uint32_t p = std::min(std::min(ids[0][head[0]], ids[1][head[1]]), std::min(ids[2][head[2]], ids[3][head[3]]));
+    if (p == none) break;
+    int count = 0;
+    double error = worst_sum;
+    for (int s = 0; s < 4; ++s) {
+      const bool hit = ids[s][head[s]] == p;
+      error += hit ? static_cast<double>(errs[s][head[s]]) - static_cast<double>(worst[s]) : 0.0;
+      count += hit;
+      head[s] += hit;
+    }
+    inter[ni] = p;
+    ni += count == 4;
+    const bool better = count > best_count || (count == best_count && error < best_error);
+    best = better ? p : best;
+    best_count = better ? count : best_count;
+    best_error = better ? error : best_error;
+  }
+  if (ni > 0) return {inter[rng.below(static_cast<std::uint64_t>(ni), i, j)], false};
+  return {best, true};
+}
+
+/// Decides every cell of the window: placed cells ((i + j) even) from the phase group, vacant cells
+/// by fill_cell, then (cut mode) the seam of every neighbouring pair inside the plan: the model's
+/// precomputed seam when the pair is in a compatible set, else one computed here.
+template <Channel T, int C, class Ex>
+patch_plan make_plan(const patch_model<T, C>& m, index_t ox, index_t oy, index_t w, index_t h, std::uint64_t seed, bool cut,
+                     index_t radius, index_t min_group, Ex&& exec) {
+  patch_plan p;
+  p.pw = m.patch_width();
+  p.ph = m.patch_height();
+  p.v = m.overlap();
+  p.ox = ox;
+  p.oy = oy;
+  p.w = w;
+  p.h = h;
+  p.ci0 = floor_div(ox, p.pw) - 1;
+  p.cj0 = floor_div(oy, p.ph) - 1;
+  p.ncx = floor_div(ox + w - 1, p.pw) - p.ci0 + 1;
+  p.ncy = floor_div(oy + h - 1, p.ph) - p.cj0 + 1;
+  p.cut = cut;
+  const index_t ncells = p.ncx * p.ncy;
+  const std::vector<std::uint32_t> group = phase_group(m, seed, radius, min_group);
+  const counter_rng place_rng(seed, stream_id("patch.place")), fill_rng(seed, stream_id("patch.fill"));
+  // distributed cells first, on a grid one cell wider on every side (the vacant cells' neighbours)
+  const index_t gx = p.ncx + 2, gy = p.ncy + 2;
+  std::vector<std::uint32_t> grid(static_cast<std::size_t>(gx * gy));
+  exec.parallel_for(0, gy, [&](index_t row) {
+    const index_t j = p.cj0 - 1 + row;
+    for (index_t col = (p.ci0 - 1 + j) & 1; col < gx; col += 2)  // (i + j) even
+      grid[static_cast<std::size_t>(row * gx + col)] =
+          group[static_cast<std::size_t>(place_rng.below(group.size(), p.ci0 - 1 + col, j))];
+  });
+  std::vector<std::uint32_t> patch(static_cast<std::size_t>(ncells));
+  std::vector<index_t> empty_count(static_cast<std::size_t>(p.ncy), 0);
+  exec.parallel_for(0, p.ncy, [&](index_t cj) {
+    const index_t j = p.cj0 + cj;
+    const std::uint32_t* up = grid.data() + cj * gx + 1;  // row cj - 1 of the plan, column 0 at index 0
+    const std::uint32_t* mid = up + gx;
+    const std::uint32_t* down = mid + gx;
+    for (index_t ci = 0; ci < p.ncx; ++ci) {
+      const index_t i = p.ci0 + ci;
+      std::uint32_t chosen;
+      if (((i + j) & 1) == 0) {  // distributed cell
+        chosen = mid[ci];
+      } else {
+        const auto [q, was_empty] = fill_cell(m, mid[ci - 1], mid[ci + 1], up[ci], down[ci], fill_rng, i, j);
+        chosen = q;
+        empty_count[static_cast<std::size_t>(cj)] += was_empty ? 1 : 0;
+      }
+      patch[static_cast<std::size_t>(p.cell(ci, cj))] = chosen;
+    }
+  });
+  p.sx.resize(static_cast<std::size_t>(ncells));
+  p.sy.resize(static_cast<std::size_t>(ncells));
+  for (index_t c = 0; c < ncells; ++c) {
+    const patch_origin o = m.origin(patch[static_cast<std::size_t>(c)]);
+    p.sx[static_cast<std::size_t>(c)] = o.x;
+    p.sy[static_cast<std::size_t>(c)] = o.y;
+  }
+  p.counts.cells = ncells;
+  p.counts.phase_group = static_cast<index_t>(group.size());
+  for (index_t cj = 0; cj < p.ncy; ++cj)
+    for (index_t ci = 0; ci < p.ncx; ++ci) (((p.ci0 + ci + p.cj0 + cj) & 1) == 0 ? p.counts.placed : p.counts.filled) += 1;
+  for (index_t e : empty_count) p.counts.empty_intersections += e;
+  if (!cut) return p;
+
+  // seams: look up the pair in the compatible sets (either direction), else compute it
+  p.vseam.assign(static_cast<std::size_t>(ncells), nullptr);
+  p.hseam.assign(static_cast<std::size_t>(ncells), nullptr);
+  auto lookup = [&](std::uint32_t first, std::uint32_t second, bool vertical) -> const std::uint8_t* {
+    if (!m.has_seams()) return nullptr;
+    const patch_side fwd = vertical ? patch_side::east : patch_side::south, back = vertical ? patch_side::west : patch_side::north;
+    const auto a = m.compatible(first, fwd);
+    for (std::size_t r = 0; r < a.size(); ++r)
+      if (a[r] == second) return m.seam(first, fwd, static_cast<index_t>(r)).data();
+    const auto b = m.compatible(second, back);
+    for (std::size_t r = 0; r < b.size(); ++r)
+      if (b[r] == first) return m.seam(second, back, static_cast<index_t>(r)).data();
+    return nullptr;
+  };
+  const index_t vlen = p.ph + p.v, hlen = p.pw + p.v;
+  std::vector<index_t> voff(static_cast<std::size_t>(ncells), -1), hoff(static_cast<std::size_t>(ncells), -1);
+  index_t storage = 0;
+  for (index_t cj = 0; cj < p.ncy; ++cj)
+    for (index_t ci = 0; ci < p.ncx; ++ci) {
+      const auto c = static_cast<std::size_t>(p.cell(ci, cj));
+      if (ci > 0) {
+        p.vseam[c] = lookup(patch[static_cast<std::size_t>(p.cell(ci - 1, cj))], patch[c], true);
+        if (p.vseam[c] == nullptr) voff[c] = std::exchange(storage, storage + vlen);
+      }
+      if (cj > 0) {
+        p.hseam[c] = lookup(patch[static_cast<std::size_t>(p.cell(ci, cj - 1))], patch[c], false);
+        if (p.hseam[c] == nullptr) hoff[c] = std::exchange(storage, storage + hlen);
+      }
+    }
+  p.own_seams.assign(static_cast<std::size_t>(storage), 0);
+  exec.parallel_for(0, p.ncy, [&](index_t cj) {
+    std::vector<double> scratch;
+    for (index_t ci = 0; ci < p.ncx; ++ci) {
+      const auto c = static_cast<std::size_t>(p.cell(ci, cj));
+      if (voff[c] >= 0) {
+        const auto l = static_cast<std::size_t>(p.cell(ci - 1, cj));
+        min_error_seam(m.exemplar(), p.sx[l], p.sy[l], p.sx[c], p.sy[c], p.pw, p.v, vlen, false, p.own_seams.data() + voff[c], scratch);
+      }
+      if (hoff[c] >= 0) {
+        const auto u = static_cast<std::size_t>(p.cell(ci, cj - 1));
+        min_error_seam(m.exemplar(), p.sx[u], p.sy[u], p.sx[c], p.sy[c], p.ph, p.v, hlen, true, p.own_seams.data() + hoff[c], scratch);
+      }
+    }
+  });
+  for (std::size_t c = 0; c < static_cast<std::size_t>(ncells); ++c) {
+    if (voff[c] >= 0) p.vseam[c] = p.own_seams.data() + voff[c], ++p.counts.computed_seams;
+    if (hoff[c] >= 0) p.hseam[c] = p.own_seams.data() + hoff[c], ++p.counts.computed_seams;
+  }
+  return p;
+}
+
+}  // namespace detail
+TESSERA_NAMESPACE_END

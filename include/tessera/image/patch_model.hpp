@@ -1,0 +1,460 @@
+// tessera/image/patch_model.hpp: the reusable preprocessing of patch synthesis (paper 002 §2): the
+// exemplar's patches at every phase, grouped by phase, and for each patch and side its compatible
+// set, the k patches whose overlap strip matches best. Build it once per exemplar, keep it, and
+// synthesize any number of outputs or windows from it (image/patch_synthesis.hpp).
+//
+//   auto model = tessera::build_patch_model(exemplar).value();          // ~0.1-0.5 s for 128 x 128
+//   tessera::synthesize(model, output, {.seed = 7});                     // milliseconds
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "../core/config.hpp"
+#include "../core/executor.hpp"
+#include "../core/image.hpp"
+#include "../core/image_buffer.hpp"
+#include "../core/image_checks.hpp"
+#include "../core/progress.hpp"
+#include "../core/status.hpp"
+#include "detail/fft.hpp"
+#include "detail/nearest.hpp"
+#include "detail/patch_model_kernels.hpp"
+#include "patch_size.hpp"
+
+TESSERA_NAMESPACE_BEGIN
+
+/// A side of a patch, numbered like tessera's grid convention: 0 north, 1 east, 2 south, 3 west.
+enum class patch_side : int { north = 0, east = 1, south = 2, west = 3 };
+
+inline constexpr std::string_view to_string(patch_side s) noexcept {
+  constexpr std::string_view names[] = {"north", "east", "south", "west"};
+  return names[static_cast<int>(s) & 3];
+}
+
+struct patch_model_options {
+  index_t patch_width = 0;     ///< cell pitch in x; 0: chosen by analyze_patch_size (paper §2.1)
+  index_t patch_height = 0;    ///< cell pitch in y; 0: chosen by analyze_patch_size
+  index_t overlap = 0;         ///< overlap width between neighbouring patches; 0: chosen by the analysis
+  int candidates = 8;          ///< k, the size of each compatible set (paper: 8), 1 to 64; at most the number of patches
+  bool exact_sets = false;     ///< exact top-k sets (branch and bound); slower on stochastic exemplars
+  int pca_dims = 8;            ///< PCA dimensions of the strip descriptors
+  index_t pca_samples = 384;   ///< strips sampled to estimate the PCA basis
+  int search_pool = 16;        ///< approximate sets: kd-tree candidates re-ranked by exact L2 per patch and side
+  int refine_iterations = 4;   ///< approximate sets: coherence propagation rounds after the kd-tree search
+  bool seams = false;          ///< also precompute a minimum-error seam for every compatible pair
+  patch_size_options analysis = {};  ///< options of the size analysis when a size or the overlap is 0
+  tessera::progress progress = {};  ///< fraction done; return false (or raise the token) to cancel
+};
+
+namespace detail {
+struct patch_model_builder;
+}
+
+/// Exemplar coordinates of a patch's top-left pixel.
+struct patch_origin {
+  index_t x = 0;
+  index_t y = 0;
+  friend bool operator==(const patch_origin&, const patch_origin&) = default;
+};
+
+/// A member of a compatible set and its overlap error.
+struct indexed_candidate {
+  std::uint32_t patch = 0;
+  float error = 0;
+};
+
+/// A shift between two phases and how alike patches of the two phases look (autocorrelation).
+struct phase_offset {
+  index_t dx = 0;
+  index_t dy = 0;
+  double similarity = 0;
+};
+
+/// The preprocessed exemplar. A patch is a (patch_width + overlap) x (patch_height + overlap) block of
+/// the exemplar; synthesis places patches on a grid of pitch patch_width x patch_height, so neighbours
+/// overlap by `overlap` pixels. Patches start at every exemplar position ("every phase"): patch p has
+/// origin (p % patches_x, p / patches_x), and its phase is (x mod patch_width, y mod patch_height).
+/// Immutable after building; safe to share between threads.
+template <Channel T, int C>
+class patch_model {
+ public:
+  using channel_type = T;
+  static constexpr int channels = C;
+
+  patch_model() = default;
+
+  [[nodiscard]] index_t patch_width() const noexcept { return pw_; }
+  [[nodiscard]] index_t patch_height() const noexcept { return ph_; }
+  [[nodiscard]] index_t overlap() const noexcept { return v_; }
+  /// Size of every compatible set.
+  [[nodiscard]] index_t candidates() const noexcept { return k_; }
+  /// The exemplar, converted to the model's pixel type.
+  [[nodiscard]] const image_buffer<T, C>& exemplar() const noexcept { return exemplar_; }
+  [[nodiscard]] index_t num_patches() const noexcept { return nx_ * ny_; }
+  [[nodiscard]] index_t patches_x() const noexcept { return nx_; }
+  [[nodiscard]] index_t patches_y() const noexcept { return ny_; }
+  [[nodiscard]] patch_origin origin(index_t patch) const noexcept { return {patch % nx_, patch / nx_}; }
+
+  /// The k patches that fit best on `side` of `patch` (b on the east side of a: a's last `overlap`
+  /// columns against b's first ones, over the full patch height), ascending by overlap_error, ties by
+  /// index.
+  [[nodiscard]] std::span<const std::uint32_t> compatible(index_t patch, patch_side side) const noexcept {
+    const auto s = static_cast<std::size_t>(side);
+    return {compat_[s].data() + patch * k_, static_cast<std::size_t>(k_)};
+  }
+  /// The compatible set with its errors ordered by patch index (for set intersections).
+  [[nodiscard]] std::span<const indexed_candidate> compatible_by_index(index_t patch, patch_side side) const noexcept {
+    const auto s = static_cast<std::size_t>(side);
+    return {by_index_[s].data() + patch * k_, static_cast<std::size_t>(k_)};
+  }
+  /// overlap_error(patch, compatible(patch, side)[r], side) for every r (ascending), as floats.
+  [[nodiscard]] std::vector<float> compatible_errors(index_t patch, patch_side side) const {
+    std::vector<float> out;
+    const auto by_id = compatible_by_index(patch, side);
+    for (std::uint32_t q : compatible(patch, side))
+      for (const indexed_candidate& c : by_id)
+        if (c.patch == q) out.push_back(c.error);
+    return out;
+  }
+  /// The largest error in the set (its k-th), a lower bound of the error of any patch outside it.
+  [[nodiscard]] float kth_error(index_t patch, patch_side side) const noexcept {
+    return worst_[static_cast<std::size_t>(patch * 4 + static_cast<index_t>(side))];
+  }
+  /// The exemplar's normalized autocorrelation at a shift of one patch pitch (mean of the shifts
+  /// (patch_width, 0) and (0, patch_height)): near 1 when the texture repeats with the patch grid.
+  [[nodiscard]] double pitch_alignment() const noexcept { return alignment_; }
+  /// Every phase offset (dx in [0, patch_width), dy in [0, patch_height)) with the exemplar's
+  /// autocorrelation at that shift (its smallest representative modulo the pitch), most similar first
+  /// (stable: ties keep row-major order). Phases this similar look alike: synthesis draws its
+  /// distributed patches from the phases most similar to one phase.
+  [[nodiscard]] std::span<const phase_offset> phase_similarity() const noexcept { return phase_order_; }
+
+  /// Exact sum of squared channel differences (in channel units) over the overlap strip when patch b
+  /// sits on `side` of patch a. Integer-exact for uint8 and uint16 channels.
+  [[nodiscard]] double overlap_error(index_t a, index_t b, patch_side side) const {
+    return bounded_error(a, b, side, std::numeric_limits<double>::infinity());
+  }
+
+  /// Phases are numbered py * patch_width + px.
+  [[nodiscard]] index_t num_phases() const noexcept { return pw_ * ph_; }
+  [[nodiscard]] index_t phase_of(index_t patch) const noexcept {
+    const patch_origin o = origin(patch);
+    return (o.y % ph_) * pw_ + o.x % pw_;
+  }
+  /// The patches of one phase, ascending.
+  [[nodiscard]] std::span<const std::uint32_t> phase_patches(index_t phase) const noexcept {
+    const auto b = phase_start_[static_cast<std::size_t>(phase)], e = phase_start_[static_cast<std::size_t>(phase + 1)];
+    return {phase_members_.data() + b, static_cast<std::size_t>(e - b)};
+  }
+
+  [[nodiscard]] bool has_seams() const noexcept { return !seams_[0].empty(); }
+  /// The precomputed minimum-error seam between `patch` and compatible(patch, side)[rank], oriented
+  /// from the left (or top) patch to the right (or bottom) one: entry t is the cut c in [0, overlap)
+  /// along the overlap (row t of a vertical overlap, column t of a horizontal one); pixels before the
+  /// cut come from the left/top patch. Empty when the model was built without seams.
+  [[nodiscard]] std::span<const std::uint8_t> seam(index_t patch, patch_side side, index_t rank) const noexcept {
+    const auto s = static_cast<std::size_t>(side);
+    if (seams_[s].empty()) return {};
+    const index_t len = seam_length(side);
+    return {seams_[s].data() + (patch * k_ + rank) * len, static_cast<std::size_t>(len)};
+  }
+  /// Length of a seam along an overlap on `side` (patch height + overlap for east/west).
+  [[nodiscard]] index_t seam_length(patch_side side) const noexcept {
+    return side == patch_side::east || side == patch_side::west ? ph_ + v_ : pw_ + v_;
+  }
+
+  /// The size analysis, when the model ran it (a size or the overlap was left at 0).
+  [[nodiscard]] const std::optional<patch_size_analysis>& analysis() const noexcept { return analysis_; }
+
+  /// Bytes held by the model (exemplar, phase lists, compatible sets, seams).
+  [[nodiscard]] std::size_t memory_bytes() const noexcept {
+    std::size_t b = exemplar_.size_bytes() + phase_start_.size() * sizeof(index_t) + phase_members_.size() * sizeof(std::uint32_t) +
+                    phase_order_.size() * sizeof(phase_offset);
+    for (int s = 0; s < 4; ++s)
+      b += compat_[s].size() * sizeof(std::uint32_t) + worst_.size() * sizeof(float) / 4 +
+           by_index_[s].size() * sizeof(indexed_candidate) + seams_[s].size();
+    return b + sizeof(*this);
+  }
+
+ private:
+  friend struct detail::patch_model_builder;
+
+  /// overlap_error, or a partial sum above `bound` once it exceeds `bound`.
+  [[nodiscard]] double bounded_error(index_t a, index_t b, patch_side side, double bound) const {
+    const patch_origin A = origin(a), B = origin(b);
+    switch (side) {
+      case patch_side::east: return detail::window_ssd(exemplar_, A.x + pw_, A.y, B.x, B.y, v_, ph_ + v_, bound);
+      case patch_side::west: return detail::window_ssd(exemplar_, B.x + pw_, B.y, A.x, A.y, v_, ph_ + v_, bound);
+      case patch_side::south: return detail::window_ssd(exemplar_, A.x, A.y + ph_, B.x, B.y, pw_ + v_, v_, bound);
+      case patch_side::north: return detail::window_ssd(exemplar_, B.x, B.y + ph_, A.x, A.y, pw_ + v_, v_, bound);
+    }
+    return 0;
+  }
+
+  image_buffer<T, C> exemplar_;
+  index_t pw_ = 0, ph_ = 0, v_ = 0, k_ = 0, nx_ = 0, ny_ = 0;
+  std::vector<index_t> phase_start_;
+  std::vector<std::uint32_t> phase_members_;
+  std::vector<std::uint32_t> compat_[4];
+  std::vector<float> worst_;  ///< per patch and side: the k-th error
+  std::vector<indexed_candidate> by_index_[4];
+  double alignment_ = 0;
+  std::vector<phase_offset> phase_order_;
+  std::vector<std::uint8_t> seams_[4];
+  std::optional<patch_size_analysis> analysis_;
+};
+
+namespace detail {
+/// Builds patch models per (channel type, count); friend of patch_model.
+struct patch_model_builder {
+  template <Channel T, int C, Executor E>
+  static result<patch_model<T, C>> build(image_buffer<T, C> ex, const patch_model_options& opts, E&& exec) {
+    patch_model<T, C> m;
+    m.exemplar_ = std::move(ex);
+    const index_t W = m.exemplar_.width(), H = m.exemplar_.height();
+    m.pw_ = opts.patch_width;
+    m.ph_ = opts.patch_height;
+    m.v_ = opts.overlap;
+    if (m.pw_ == 0 || m.ph_ == 0 || m.v_ == 0) {
+      patch_size_options a = opts.analysis;
+      if (!a.progress.callback && a.progress.token == nullptr) a.progress.token = opts.progress.token;
+      auto analysis = (m.pw_ == 0 || m.ph_ == 0) ? analyze_patch_size(m.exemplar_, a, exec)
+                                                 : analyze_overlap(m.exemplar_, m.pw_, m.ph_, a);
+      if (!analysis) return analysis.error();
+      if (m.pw_ == 0) m.pw_ = analysis->patch_width;
+      if (m.ph_ == 0) m.ph_ = analysis->patch_height;
+      if (m.v_ == 0) m.v_ = m.pw_ == analysis->patch_width && m.ph_ == analysis->patch_height
+                                ? analysis->overlap
+                                : std::max<index_t>(1, std::min({analysis->overlap, m.pw_, m.ph_}));
+      m.analysis_ = std::move(*analysis);
+    }
+    const index_t pw = m.pw_, ph = m.ph_, v = m.v_;
+
+    if (pw < 2 || ph < 2 || v < 1 || v > pw || v > ph)
+      return status::invalid_argument(detail::cat("build_patch_model: patch ", pw, " x ", ph, " with overlap ", v,
+                                                  " is invalid (patch sides >= 2, 1 <= overlap <= patch side)"));
+    if (pw + v > W || ph + v > H)
+      return status::invalid_argument(detail::cat("build_patch_model: patches of ", pw + v, " x ", ph + v, " (patch ", pw, " x ",
+                                                  ph, " + overlap ", v, ") do not fit the ", W, " x ", H, " exemplar"));
+    m.nx_ = W - pw - v + 1;
+    m.ny_ = H - ph - v + 1;
+    const index_t n = m.nx_ * m.ny_;
+    if (n < 2)
+      return status::invalid_argument(detail::cat("build_patch_model: the ", W, " x ", H, " exemplar holds fewer than two patches of ",
+                                                  pw + v, " x ", ph + v));
+    if (n > index_t{1} << 31)
+      return status::size_overflow(detail::cat("build_patch_model: ", n, " patches exceed the supported 2^31"));
+    if (opts.seams && v > 255)
+      return status::invalid_argument(detail::cat("build_patch_model: seams need overlap <= 255, got ", v));
+    m.k_ = std::min<index_t>(opts.candidates, n);
+    {  // the exemplar's autocorrelation at the patch pitch and at every phase offset
+      const index_t mx = std::min(pw, W - 1), my = std::min(ph, H - 1);
+      std::vector<double> grey(static_cast<std::size_t>(W * H));
+      for (index_t i = 0; i < W * H; ++i) {
+        pixel<T, C> px;
+        for (int c = 0; c < C; ++c) px[static_cast<std::size_t>(c)] = m.exemplar_.data()[i * C + c];
+        grey[static_cast<std::size_t>(i)] = convert_pixel<float>(px);
+      }
+      const std::vector<double> corr = detail::correlation_field(grey.data(), W, H, 1, mx, my);
+      auto at = [&](index_t dx, index_t dy) {
+        if (dy < 0) dx = -dx, dy = -dy;
+        const double r = corr[static_cast<std::size_t>(dy * (2 * mx + 1) + dx + mx)];
+        return std::isnan(r) ? -1.0 : r;
+      };
+      m.alignment_ = 0.5 * (at(mx, 0) + at(0, my));
+      for (index_t dy = 0; dy < ph; ++dy)
+        for (index_t dx = 0; dx < pw; ++dx) {
+          // the shift between the phases, taken as its smallest representative modulo the pitch
+          const index_t sx = 2 * dx <= pw ? dx : dx - pw, sy = 2 * dy <= ph ? dy : dy - ph;
+          m.phase_order_.push_back({dx, dy, dx == 0 && dy == 0 ? 1.0 : at(sx, sy)});
+        }
+      std::stable_sort(m.phase_order_.begin(), m.phase_order_.end(),
+                       [](const phase_offset& a, const phase_offset& b) { return a.similarity > b.similarity; });
+    }
+    const index_t k = m.k_;
+    if (!opts.progress.report(0.05, "patch model: phases")) return status::cancelled();
+
+    // patches grouped by phase (counting sort, so each phase lists its patches ascending)
+    m.phase_start_.assign(static_cast<std::size_t>(pw * ph + 1), 0);
+    for (index_t p = 0; p < n; ++p) ++m.phase_start_[static_cast<std::size_t>(m.phase_of(p) + 1)];
+    for (std::size_t i = 1; i < m.phase_start_.size(); ++i) m.phase_start_[i] += m.phase_start_[i - 1];
+    m.phase_members_.resize(static_cast<std::size_t>(n));
+    {
+      std::vector<index_t> fill(m.phase_start_.begin(), m.phase_start_.end() - 1);
+      for (index_t p = 0; p < n; ++p) m.phase_members_[static_cast<std::size_t>(fill[static_cast<std::size_t>(m.phase_of(p))]++)] = static_cast<std::uint32_t>(p);
+    }
+
+    // strip families with PCA projections: vertical strips (v x (ph + v)) at x in [0, W - v], horizontal
+    // strips ((pw + v) x v) at y in [0, H - v]
+    detail::strip_family<T, C> vertical, horizontal;
+    vertical.build(m.exemplar_, v, ph + v, W - v + 1, m.ny_, opts.pca_dims, opts.pca_samples, exec);
+    if (!opts.progress.report(0.15, "patch model: projections")) return status::cancelled();
+    horizontal.build(m.exemplar_, pw + v, v, m.nx_, H - v + 1, opts.pca_dims, opts.pca_samples, exec);
+    if (!opts.progress.report(0.25, "patch model: compatible sets")) return status::cancelled();
+    double max_value = 0;
+    for (index_t i = 0; i < W * H * C; ++i) max_value = std::max(max_value, std::abs(static_cast<double>(m.exemplar_.data()[i])));
+    auto make_points = [&](const detail::strip_family<T, C>& f, index_t dx, index_t dy) {
+      // one point per patch: the strip at (patch x + dx, patch y + dy)
+      std::vector<double> pts(static_cast<std::size_t>(n * f.d));
+      for (index_t p = 0; p < n; ++p) {
+        const double* src = f.projection(p % m.nx_ + dx, p / m.nx_ + dy);
+        std::copy(src, src + f.d, pts.data() + p * f.d);
+      }
+      return pts;
+    };
+
+    constexpr patch_side sides[4] = {patch_side::north, patch_side::east, patch_side::south, patch_side::west};
+    for (int si = 0; si < 4; ++si) {
+      const patch_side side = sides[si];
+      // the data points are the strips of candidate patches b facing a; the query is a's own strip
+      const bool vert = side == patch_side::east || side == patch_side::west;
+      const detail::strip_family<T, C>& f = vert ? vertical : horizontal;
+      const index_t data_dx = side == patch_side::west ? pw : 0, data_dy = side == patch_side::north ? ph : 0;
+      const index_t query_dx = side == patch_side::east ? pw : 0, query_dy = side == patch_side::south ? ph : 0;
+      const double scale = max_value * max_value * static_cast<double>(f.cols * f.rows * C);
+      // the kd-tree with a compile-time dimension for the default PCA size (faster distance loops)
+      const bool fixed = f.d == 8;
+      const detail::lower_bound_knn<8> index8 = fixed ? detail::lower_bound_knn<8>(make_points(f, data_dx, data_dy), n, 8, scale)
+                                                      : detail::lower_bound_knn<8>();
+      const detail::lower_bound_knn<> index = fixed ? detail::lower_bound_knn<>() : detail::lower_bound_knn<>(make_points(f, data_dx, data_dy), n, f.d, scale);
+      auto& out = m.compat_[si];
+      out.assign(static_cast<std::size_t>(n * k), 0);
+      std::vector<double> dist(static_cast<std::size_t>(n * k), 0.0);
+      auto exact = [&](index_t a, index_t b, double bound) { return m.bounded_error(a, b, side, bound); };
+      bool stop = false;
+      const auto kk = static_cast<std::size_t>(k), pool = static_cast<std::size_t>(opts.search_pool);
+      // the kd-tree search for one patch: exact (branch and bound) or approximate (re-ranked pool)
+      auto search = [&](index_t a, std::vector<detail::neighbor>& best, std::vector<std::uint32_t>& ids, std::vector<double>& ds) {
+        const double* q = f.projection(a % m.nx_ + query_dx, a / m.nx_ + query_dy);
+        auto exact_a = [&](std::uint32_t b, double bound) { return exact(a, b, bound); };
+        if (opts.exact_sets) fixed ? index8.search(q, kk, exact_a, best) : index.search(q, kk, exact_a, best);
+        else if (fixed) index8.search_approximate(q, kk, pool, 1.0f, exact_a, best, ids, ds);
+        else index.search_approximate(q, kk, pool, 1.0f, exact_a, best, ids, ds);
+      };
+      // approximate sets: the kd-tree seeds every other patch (a checkerboard); the first coherence
+      // round fills the others from their seeded neighbours, the following rounds improve all
+      const index_t chunks = std::min<index_t>(opts.exact_sets ? 8 : 2, m.ny_);
+      for (index_t chunk = 0; chunk < chunks && !stop; ++chunk) {
+        const index_t y0 = chunk * m.ny_ / chunks, y1 = (chunk + 1) * m.ny_ / chunks;
+        exec.parallel_for(y0, y1, [&](index_t y) {
+          std::vector<detail::neighbor> best;
+          std::vector<std::uint32_t> ids;
+          std::vector<double> ds;
+          for (index_t x = 0; x < m.nx_; ++x) {
+            const index_t a = y * m.nx_ + x;
+            const bool seeded = opts.exact_sets || opts.refine_iterations == 0 || ((x + y) & 1) == 0;
+            if (seeded) search(a, best, ids, ds);
+            else best.clear();
+            for (index_t r = 0; r < k; ++r) {
+              const bool has = r < static_cast<index_t>(best.size());
+              out[static_cast<std::size_t>(a * k + r)] = has ? best[static_cast<std::size_t>(r)].index : 0;
+              dist[static_cast<std::size_t>(a * k + r)] = has ? best[static_cast<std::size_t>(r)].dist : std::numeric_limits<double>::quiet_NaN();
+            }
+          }
+        });
+        stop = !opts.progress.report(0.25 + 0.6 * (si + 0.5 * static_cast<double>(chunk + 1) / static_cast<double>(chunks)) / 4.0,
+                                     "patch model: compatible sets");
+      }
+      auto refill = [&](index_t a, std::vector<detail::neighbor>& best) {
+        std::vector<std::uint32_t> ids;
+        std::vector<double> ds;
+        search(a, best, ids, ds);
+      };
+      for (int it = 0; it < opts.refine_iterations && !opts.exact_sets && !stop; ++it) {
+        detail::propagate_sets(m.nx_, m.ny_, k, out, dist, exact, refill, exec);
+        stop = !opts.progress.report(0.25 + 0.6 * (si + 0.5 + 0.5 * (it + 1) / opts.refine_iterations) / 4.0,
+                                     "patch model: compatible sets");
+      }
+      if (stop) return status::cancelled();
+      m.worst_.resize(static_cast<std::size_t>(n * 4));
+      for (index_t a = 0; a < n; ++a) m.worst_[static_cast<std::size_t>(a * 4 + si)] = static_cast<float>(dist[static_cast<std::size_t>(a * k + k - 1)]);
+      // the same sets ordered by patch index, for the merges of synthesis (set intersection)
+      auto& by_id = m.by_index_[si];
+      by_id.resize(static_cast<std::size_t>(n * k));
+      for (index_t a = 0; a < n; ++a) {
+        auto* e = by_id.data() + a * k;
+        for (index_t r = 0; r < k; ++r) e[r] = {out[static_cast<std::size_t>(a * k + r)], static_cast<float>(dist[static_cast<std::size_t>(a * k + r)])};
+        std::sort(e, e + k, [](const indexed_candidate& x, const indexed_candidate& y) { return x.patch < y.patch; });
+      }
+    }
+
+    if (opts.seams) {
+      for (int si = 0; si < 4; ++si) {
+        const patch_side side = sides[si];
+        const index_t len = m.seam_length(side);
+        m.seams_[si].assign(static_cast<std::size_t>(n * k * len), 0);
+        exec.parallel_for(0, m.ny_, [&](index_t y) {
+          std::vector<double> scratch;
+          for (index_t x = 0; x < m.nx_; ++x) {
+            const index_t a = y * m.nx_ + x;
+            for (index_t r = 0; r < k; ++r) {
+              const index_t b = m.compat_[si][static_cast<std::size_t>(a * k + r)];
+              const bool a_first = side == patch_side::east || side == patch_side::south;
+              const patch_origin first = m.origin(a_first ? a : b), second = m.origin(a_first ? b : a);
+              const bool vert = side == patch_side::east || side == patch_side::west;
+              detail::min_error_seam(m.exemplar_, first.x, first.y, second.x, second.y, vert ? pw : ph, v, len, !vert,
+                                     m.seams_[si].data() + (a * k + r) * len, scratch);
+            }
+          }
+        });
+        if (!opts.progress.report(0.85 + 0.15 * (si + 1) / 4.0, "patch model: seams")) return status::cancelled();
+      }
+    }
+    if (!opts.progress.report(1.0, "patch model")) return status::cancelled();
+    return m;
+  }
+};
+}  // namespace detail
+
+/// Builds the patch model of an exemplar (paper 002 §2, preprocessing):
+///  1. patch size and overlap width from analyze_patch_size (§2.1) unless given;
+///  2. patches at every phase (every exemplar position), grouped by phase (§2, Fig. 2);
+///  3. for every patch and each of its four sides, the compatible set: the `candidates` (k = 8) patches
+///     whose overlap strip has the smallest L2 error. The paper takes an approximate nearest-neighbour
+///     search (ANN); here strips are projected on a PCA basis (Eigen) and searched in a nanoflann
+///     kd-tree over the projections. By default (approximate sets) the `search_pool` nearest
+///     projections are re-ranked by exact L2 and improved by `refine_iterations` rounds of coherence
+///     propagation (the neighbours' candidates, shifted); with `exact_sets` the search prunes with exact
+///     L2 (projections never overestimate distances), so the sets are the exact top k. Either way each
+///     set is ordered by exact error, ties broken by the smaller patch index;
+///  4. optionally (`seams`), a minimum-error seam for every compatible pair: the improvement the paper
+///     names for strongly structured textures but did not build (§2).
+/// The exemplar is converted to the model's pixel type (its own channel type and count).
+///
+/// Errors: invalid_argument for an empty exemplar, an exemplar holding fewer than two patches, patch or
+/// overlap sizes that do not fit (patch side < 2, overlap < 1 or > patch side, patch + overlap larger
+/// than the exemplar), candidates outside [1, 64], pca_dims outside [1, 64], pca_samples < 2, seams with an
+/// overlap > 255; errors of analyze_patch_size; cancelled when `progress` says so.
+/// Complexity: about O(4 n k D) for n patches and strips of D channel values when the PCA captures the
+/// strips well, O(n^2 D) worst case; memory O(n k) (+ O(n k (patch + overlap)) bytes with seams).
+/// Runs on `exec`; the model does not depend on it. Thread safety: pure function of its inputs.
+template <Image I, Executor E = serial_executor>
+auto build_patch_model(const I& exemplar, const patch_model_options& opts = {}, E&& exec = {})
+    -> result<patch_model<channel_t<I>, channels_v<I>>> {
+  if (auto s = validate_image(exemplar, "exemplar"); !s) return s;
+  if (opts.patch_width < 0 || opts.patch_height < 0 || opts.overlap < 0)
+    return status::invalid_argument(detail::cat("build_patch_model: patch_width, patch_height and overlap must be >= 0 (0: automatic), got ",
+                                                opts.patch_width, ", ", opts.patch_height, ", ", opts.overlap));
+  if (opts.candidates < 1 || opts.candidates > 64)
+    return status::invalid_argument(detail::cat("build_patch_model: candidates must be in [1, 64], got ", opts.candidates));
+  if (opts.pca_dims < 1 || opts.pca_dims > 64)
+    return status::invalid_argument(detail::cat("build_patch_model: pca_dims must be in [1, 64], got ", opts.pca_dims));
+  if (opts.pca_samples < 2)
+    return status::invalid_argument(detail::cat("build_patch_model: pca_samples must be >= 2, got ", opts.pca_samples));
+  if (opts.search_pool < 1 || opts.refine_iterations < 0 || opts.refine_iterations > 64)
+    return status::invalid_argument(detail::cat("build_patch_model: search_pool must be >= 1 and refine_iterations in [0, 64], got ",
+                                                opts.search_pool, " and ", opts.refine_iterations));
+
+  auto ex = to_buffer<channel_t<I>, channels_v<I>>(exemplar, "exemplar");
+  if (!ex) return ex.error();
+  return detail::patch_model_builder::build(std::move(*ex), opts, exec);
+}
+
+TESSERA_NAMESPACE_END

@@ -1,0 +1,378 @@
+#include <tessera/image/patch_synthesis.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <catch2/catch.hpp>
+#include <tessera/core/random.hpp>
+#include <tessera/image/exemplars.hpp>
+
+using tessera::index_t;
+using tessera::seam_mode;
+
+namespace {
+
+// A member-style writable user image of 16-bit RGB.
+struct user_image {
+  index_t w = 0, h = 0;
+  std::vector<std::array<std::uint16_t, 3>> px;
+  user_image(index_t w_, index_t h_) : w(w_), h(h_), px(static_cast<std::size_t>(w_ * h_)) {}
+  index_t width() const { return w; }
+  index_t height() const { return h; }
+  std::array<std::uint16_t, 3> read(index_t x, index_t y) const { return px[static_cast<std::size_t>(y * w + x)]; }
+  void write(index_t x, index_t y, const std::array<std::uint16_t, 3>& p) { px[static_cast<std::size_t>(y * w + x)] = p; }
+};
+
+template <class T = std::uint8_t, int C = 3>
+tessera::image_buffer<T, C> exemplar(tessera::exemplar_kind kind, index_t size, std::uint64_t seed = 1) {
+  return tessera::make_exemplar<T, C>(kind, {.width = size, .height = size, .seed = seed}).value();
+}
+
+template <class T, int C>
+tessera::image_buffer<T, C> crop(const tessera::image_buffer<T, C>& src, index_t x0, index_t y0, index_t w, index_t h) {
+  tessera::image_buffer<T, C> out(w, h);
+  for (index_t y = 0; y < h; ++y)
+    for (index_t x = 0; x < w; ++x) out.write(x, y, src.read(x0 + x, y0 + y));
+  return out;
+}
+
+// A small model shared by several tests (built once).
+const tessera::patch_model<std::uint8_t, 3>& bricks_model() {
+  static const auto model = [] {
+    const auto ex = exemplar(tessera::exemplar_kind::bricks, 48);
+    return tessera::build_patch_model(ex, {.patch_width = 12, .patch_height = 12, .overlap = 4, .seams = true}).value();
+  }();
+  return model;
+}
+
+}  // namespace
+
+TEST_CASE("synthesize: windows of the infinite texture are bit-identical to one large render", "[patch_synthesis]") {
+  const auto& m = bricks_model();
+  for (seam_mode mode : {seam_mode::feather, seam_mode::cut}) {
+    const tessera::patch_synthesis_options whole{.origin = {-53, 29}, .seed = 11, .seams = mode};
+    tessera::image_buffer<std::uint8_t, 3> full(101, 77);
+    REQUIRE(tessera::synthesize(m, full, whole).ok());
+    // uneven pieces, including ones that start inside overlaps and cells
+    const index_t xs[] = {0, 7, 40, 41, 101}, ys[] = {0, 13, 14, 60, 77};
+    for (int a = 0; a < 4; ++a)
+      for (int b = 0; b < 4; ++b) {
+        const index_t x0 = xs[a], y0 = ys[b], w = xs[a + 1] - x0, h = ys[b + 1] - y0;
+        tessera::image_buffer<std::uint8_t, 3> piece(w, h);
+        auto o = whole;
+        o.origin = {whole.origin.x + x0, whole.origin.y + y0};
+        REQUIRE(tessera::synthesize(m, piece, o).ok());
+        INFO("piece at " << x0 << ", " << y0);
+        CHECK(piece == crop(full, x0, y0, w, h));
+      }
+    // far from the origin, negative coordinates
+    tessera::image_buffer<std::uint8_t, 3> far1(40, 30), far2(20, 30);
+    REQUIRE(tessera::synthesize(m, far1, {.origin = {-(index_t{1} << 40), 123456789}, .seed = 11, .seams = mode}).ok());
+    REQUIRE(tessera::synthesize(m, far2, {.origin = {-(index_t{1} << 40) + 20, 123456789}, .seed = 11, .seams = mode}).ok());
+    CHECK(far2 == crop(far1, 20, 0, 20, 30));
+  }
+}
+
+TEST_CASE("synthesize: bit-identical for any executor and thread count; seeded", "[patch_synthesis]") {
+  const auto& m = bricks_model();
+  for (seam_mode mode : {seam_mode::feather, seam_mode::cut}) {
+    tessera::image_buffer<std::uint8_t, 3> a(150, 97), b(150, 97), c(150, 97), d(150, 97);
+    const tessera::patch_synthesis_options o{.origin = {5, -3}, .seed = 2, .seams = mode};
+    const auto sa = tessera::synthesize(m, a, o).value();
+    tessera::thread_pool_executor two(2), three(3);
+    const auto sb = tessera::synthesize(m, b, o, two).value();
+    REQUIRE(tessera::synthesize(m, c, o, three).ok());
+    CHECK(a == b);
+    CHECK(a == c);
+    CHECK(sa.cells == sb.cells);
+    CHECK(sa.empty_intersections == sb.empty_intersections);
+    auto other = o;
+    other.seed = 3;
+    REQUIRE(tessera::synthesize(m, d, other).ok());
+    CHECK(!(a == d));
+  }
+}
+
+TEST_CASE("synthesize: checkerboard counts and intersections", "[patch_synthesis]") {
+  const auto& m = bricks_model();
+  tessera::image_buffer<std::uint8_t, 3> out(60, 60);
+  const auto s = tessera::synthesize(m, out, {.seed = 1}).value();
+  // cells -1..4 in both directions touch the window (the left/top ones through their overlap)
+  CHECK(s.cells == 36);
+  CHECK(s.placed == 18);
+  CHECK(s.filled == 18);
+  CHECK(s.empty_intersections <= s.filled);
+  CHECK(s.phase_group >= 16);
+  // when every set holds every patch, the four sets always intersect
+  const auto ex = exemplar(tessera::exemplar_kind::sand, 16);
+  const auto all = tessera::build_patch_model(ex, {.patch_width = 8, .patch_height = 8, .overlap = 2, .candidates = 64}).value();
+  REQUIRE(all.candidates() == all.num_patches());
+  const auto t = tessera::synthesize(all, out, {.seed = 1}).value();
+  CHECK(t.empty_intersections == 0);
+  // a fixed phase radius of 0 uses one phase only
+  const auto r0 = tessera::synthesize(m, out, {.seed = 1, .phase_radius = 0}).value();
+  std::size_t most = 0;
+  for (index_t p = 0; p < m.num_phases(); ++p) most = std::max(most, m.phase_patches(p).size());
+  CHECK(r0.phase_group >= 1);
+  CHECK(r0.phase_group <= static_cast<index_t>(most));
+}
+
+TEST_CASE("synthesize: quality invariants", "[patch_synthesis]") {
+  for (auto kind : {tessera::exemplar_kind::sand, tessera::exemplar_kind::bricks, tessera::exemplar_kind::weave}) {
+    const auto ex = exemplar(kind, 64);
+    const auto m = tessera::build_patch_model(ex, {.patch_width = 20, .patch_height = 20, .overlap = 5}).value();
+    tessera::image_buffer<std::uint8_t, 3> out(128, 128), noise(48, 48);
+    REQUIRE(tessera::synthesize(m, out, {.seed = 4}).ok());
+    const tessera::counter_rng rng(9);
+    for (index_t i = 0; i < 48 * 48 * 3; ++i) noise.data()[i] = static_cast<std::uint8_t>(rng.below(256, i));
+    const tessera::neighborhood_energy_options eo{.window = 5, .sample_step = 4};
+    const double e_out = tessera::neighborhood_energy(out, ex, eo).value();
+    const double e_noise = tessera::neighborhood_energy(noise, ex, eo).value();
+    INFO(tessera::to_string(kind) << ": energy " << e_out << " vs noise " << e_noise);
+    CHECK(e_out < 0.1 * e_noise);
+    CHECK(tessera::histogram_distance(out, ex).value() < 0.35);
+    const auto seams = tessera::patch_seam_lines(m, 128, 128);
+    const double ratio = tessera::seam_gradient_ratio(out, seams, ex).value();
+    INFO("seam gradient ratio " << ratio);
+    CHECK(ratio < 1.5);
+  }
+  // stochastic textures do not repeat visibly
+  const auto sand = exemplar(tessera::exemplar_kind::sand, 64);
+  const auto m = tessera::build_patch_model(sand).value();  // automatic size and overlap
+  CHECK(m.analysis().has_value());
+  tessera::image_buffer<std::uint8_t, 3> out(128, 128);
+  REQUIRE(tessera::synthesize(m, out, {.seed = 4}).ok());
+  CHECK(tessera::repetition_score(out, 16).value() < 0.6);
+}
+
+TEST_CASE("synthesize: pixels come from the exemplar (source map)", "[patch_synthesis]") {
+  const auto& m = bricks_model();
+  const auto& ex = m.exemplar();
+  const tessera::patch_synthesis_options cut{.origin = {-9, 4}, .seed = 8, .seams = seam_mode::cut};
+  tessera::image_buffer<std::uint8_t, 3> out(70, 50);
+  tessera::image_buffer<std::uint16_t, 2> src(70, 50);
+  tessera::image_buffer<float, 3> srcf(70, 50);
+  REQUIRE(tessera::synthesize(m, out, cut).ok());
+  REQUIRE(tessera::synthesize_source_map(m, src, cut).ok());
+  REQUIRE(tessera::synthesize_source_map(m, srcf, cut).ok());
+  for (index_t y = 0; y < 50; ++y)
+    for (index_t x = 0; x < 70; ++x) {
+      const auto s = src.read(x, y);
+      REQUIRE(s[0] < ex.width());
+      REQUIRE(s[1] < ex.height());
+      CHECK(out.read(x, y) == ex.read(s[0], s[1]));  // a seam cut copies every pixel
+      CHECK(srcf.read(x, y)[0] == float(s[0]));
+      CHECK(srcf.read(x, y)[2] == 0.0f);
+    }
+  // feathering: outside the overlaps pixels are copies too; inside they lie between their sources
+  tessera::patch_synthesis_options feather = cut;
+  feather.seams = seam_mode::feather;
+  REQUIRE(tessera::synthesize(m, out, feather).ok());
+  REQUIRE(tessera::synthesize_source_map(m, src, feather).ok());
+  for (index_t y = 0; y < 50; ++y)
+    for (index_t x = 0; x < 70; ++x) {
+      const index_t X = x - 9, Y = y + 4;
+      const bool in_overlap = ((X % 12) + 12) % 12 < 4 || ((Y % 12) + 12) % 12 < 4;
+      if (!in_overlap) CHECK(out.read(x, y) == ex.read(src.read(x, y)[0], src.read(x, y)[1]));
+    }
+}
+
+TEST_CASE("synthesize_aligned: several maps from one model", "[patch_synthesis]") {
+  const auto& m = bricks_model();
+  const auto& albedo = m.exemplar();
+  // the same content as float RGB and as 16-bit grey height
+  tessera::image_buffer<float, 3> albedo_f(albedo.width(), albedo.height());
+  tessera::image_buffer<std::uint16_t, 1> height(albedo.width(), albedo.height());
+  REQUIRE(tessera::copy_image(albedo, albedo_f).ok());
+  REQUIRE(tessera::copy_image(albedo, height).ok());
+  for (seam_mode mode : {seam_mode::feather, seam_mode::cut}) {
+    const tessera::patch_synthesis_options o{.origin = {17, 5}, .seed = 21, .seams = mode};
+    tessera::image_buffer<std::uint8_t, 3> out(64, 48);
+    tessera::image_buffer<float, 3> out_f(64, 48);
+    tessera::image_buffer<std::uint16_t, 1> out_h(64, 48);
+    REQUIRE(tessera::synthesize(m, out, o).ok());
+    REQUIRE(tessera::synthesize_aligned(m, albedo_f, out_f, o).ok());
+    REQUIRE(tessera::synthesize_aligned(m, height, out_h, o).ok());
+    for (index_t y = 0; y < 48; ++y)
+      for (index_t x = 0; x < 64; ++x)
+        for (int c = 0; c < 3; ++c) {
+          const float a = tessera::channel_to_unit(out.read(x, y)[c]), b = out_f.read(x, y)[c];
+          if (mode == seam_mode::cut) CHECK(a == Approx(b).margin(1e-6));  // same pixels exactly
+          else CHECK(a == Approx(b).margin(1.0 / 255.0));                  // same weights, other rounding
+        }
+    // the aligned grey map follows the same patches
+    tessera::image_buffer<std::uint16_t, 1> grey(64, 48);
+    REQUIRE(tessera::copy_image(out_f, grey).ok());
+    for (index_t y = 0; y < 48; ++y)
+      for (index_t x = 0; x < 64; ++x) CHECK(std::abs(int(grey.read(x, y)[0]) - int(out_h.read(x, y)[0])) <= 520);
+  }
+  // an aligned map of another size is refused
+  tessera::image_buffer<float, 1> wrong(47, 48);
+  tessera::image_buffer<float, 1> out(8, 8);
+  auto r = tessera::synthesize_aligned(m, wrong, out);
+  REQUIRE(!r);
+  CHECK(r.error().message().find("aligned_exemplar") != std::string::npos);
+}
+
+TEST_CASE("synthesize: generic outputs through image_traits", "[patch_synthesis]") {
+  const auto& m = bricks_model();
+  const tessera::patch_synthesis_options o{.origin = {3, 3}, .seed = 6};
+  tessera::image_buffer<std::uint8_t, 3> direct(33, 29);
+  REQUIRE(tessera::synthesize(m, direct, o).ok());
+  user_image user(33, 29);
+  tessera::thread_pool_executor pool(2);
+  REQUIRE(tessera::synthesize(m, user, o, pool).ok());
+  std::vector<std::uint8_t> raw(33 * 29 * 4, 7);
+  auto view = tessera::make_image_view<4>(raw.data(), 33, 29).value();  // RGBA view of an RGB model
+  REQUIRE(tessera::synthesize(m, view, o).ok());
+  for (index_t y = 0; y < 29; ++y)
+    for (index_t x = 0; x < 33; ++x) {
+      CHECK(user.read(x, y) == tessera::convert_pixel<std::array<std::uint16_t, 3>>(direct.read(x, y)));
+      const auto p = view.read(x, y);
+      CHECK(p[0] == direct.read(x, y)[0]);
+      CHECK(p[3] == 255);
+    }
+  // a strided view of the model's own pixel type writes in place and leaves the padding alone
+  std::vector<std::uint8_t> padded(40 * 29 * 3, 99);
+  auto strided = tessera::make_image_view<3>(padded.data(), 33, 29, 40 * 3).value();
+  REQUIRE(tessera::synthesize(m, strided, o).ok());
+  for (index_t y = 0; y < 29; ++y) {
+    for (index_t x = 0; x < 33; ++x) CHECK(strided.read(x, y) == direct.read(x, y));
+    for (index_t i = 33 * 3; i < 40 * 3; ++i) CHECK(padded[static_cast<std::size_t>(y * 120 + i)] == 99);
+  }
+}
+
+TEST_CASE("synthesize: bad input and cancellation", "[patch_synthesis]") {
+  const auto& m = bricks_model();
+  tessera::image_view<std::uint8_t, 3> empty;
+  CHECK(tessera::synthesize(m, empty).error().code() == tessera::status_code::invalid_argument);
+  tessera::image_buffer<std::uint8_t, 3> out(16, 16);
+  const tessera::patch_model<std::uint8_t, 3> none;
+  CHECK(tessera::synthesize(none, out).error().message().find("empty") != std::string::npos);
+  auto far = tessera::synthesize(m, out, {.origin = {index_t{1} << 60, 0}});
+  REQUIRE(!far);
+  CHECK(far.error().code() == tessera::status_code::out_of_range);
+  CHECK(far.error().message().find("origin") != std::string::npos);
+  CHECK(!tessera::synthesize(m, out, {.origin = {0, -(index_t{1} << 53)}}));
+  CHECK(tessera::synthesize(m, out, {.phase_radius = -2}).error().message().find("phase_radius") != std::string::npos);
+  CHECK(tessera::synthesize(m, out, {.min_phase_group = 0}).error().message().find("min_phase_group") != std::string::npos);
+  tessera::image_buffer<std::uint16_t, 1> one(4, 4);
+  CHECK(tessera::synthesize_source_map(m, one).error().message().find("2 channels") != std::string::npos);
+  // uint8 source maps cannot address exemplars wider than 256 pixels
+  const auto wide = tessera::make_exemplar<std::uint8_t, 1>(tessera::exemplar_kind::sand, {.width = 300, .height = 14}).value();
+  const auto wm = tessera::build_patch_model(wide, {.patch_width = 8, .patch_height = 8, .overlap = 2, .candidates = 2}).value();
+  tessera::image_buffer<std::uint8_t, 2> small(4, 4);
+  CHECK(tessera::synthesize_source_map(wm, small).error().message().find("channel type") != std::string::npos);
+  tessera::image_buffer<std::uint16_t, 2> ok(4, 4);
+  CHECK(tessera::synthesize_source_map(wm, ok).ok());
+  // cancellation: a raised token, or a callback saying stop
+  tessera::cancellation_token stop;
+  stop.cancel();
+  tessera::patch_synthesis_options o;
+  o.progress.token = &stop;
+  CHECK(tessera::synthesize(m, out, o).error().code() == tessera::status_code::cancelled);
+  tessera::image_buffer<std::uint8_t, 3> big(64, 256);
+  tessera::patch_synthesis_options p;
+  int calls = 0;
+  p.progress.callback = [&](double, std::string_view) { return ++calls < 2; };
+  CHECK(tessera::synthesize(m, big, p).error().code() == tessera::status_code::cancelled);
+  CHECK(calls == 2);
+}
+
+namespace {
+
+// Seam cuts copy every pixel: the output equals the exemplar at the source map's coordinates.
+template <class T, int C>
+void check_copies_exemplar(tessera::exemplar_kind kind) {
+  const auto ex = exemplar<T, C>(kind, 32);
+  const auto m = tessera::build_patch_model(ex, {.patch_width = 10, .patch_height = 8, .overlap = 3, .candidates = 4}).value();
+  const tessera::patch_synthesis_options o{.origin = {-5, 11}, .seed = 2, .seams = seam_mode::cut};
+  tessera::image_buffer<T, C> out(37, 23);
+  tessera::image_buffer<std::uint16_t, 2> src(37, 23);
+  REQUIRE(tessera::synthesize(m, out, o).ok());
+  REQUIRE(tessera::synthesize_source_map(m, src, o).ok());
+  for (index_t y = 0; y < 23; ++y)
+    for (index_t x = 0; x < 37; ++x) {
+      const auto s = src.read(x, y);
+      REQUIRE(out.read(x, y) == ex.read(s[0], s[1]));
+    }
+  // feathering stays within the range of the channel type
+  tessera::image_buffer<T, C> blended(37, 23);
+  REQUIRE(tessera::synthesize(m, blended, {.origin = {-5, 11}, .seed = 2}).ok());
+  for (index_t y = 0; y < 23; ++y)
+    for (index_t x = 0; x < 37; ++x)
+      for (int c = 0; c < C; ++c) {
+        const double v = tessera::channel_to_unit(blended.read(x, y)[c]);
+        REQUIRE(v >= 0.0);
+        REQUIRE(v <= 1.0);
+      }
+}
+
+}  // namespace
+
+TEST_CASE("synthesize: models of every channel type and 1 to 4 channels", "[patch_synthesis]") {
+  check_copies_exemplar<std::uint8_t, 1>(tessera::exemplar_kind::rock);
+  check_copies_exemplar<std::uint8_t, 4>(tessera::exemplar_kind::cells);
+  check_copies_exemplar<std::uint16_t, 2>(tessera::exemplar_kind::grass);
+  check_copies_exemplar<std::uint16_t, 3>(tessera::exemplar_kind::bricks);
+  check_copies_exemplar<float, 1>(tessera::exemplar_kind::sand);
+  check_copies_exemplar<float, 4>(tessera::exemplar_kind::weave);
+}
+
+namespace {
+
+// A writable user image of any size, zero included, that stores nothing (image_buffer refuses 0 x N).
+template <class T, int C>
+struct sized_image {
+  index_t w = 0, h = 0;
+  index_t width() const { return w; }
+  index_t height() const { return h; }
+  std::array<T, C> read(index_t, index_t) const { return {}; }
+  void write(index_t, index_t, const std::array<T, C>&) { FAIL("a zero-size output was written"); }
+};
+
+}  // namespace
+
+TEST_CASE("synthesize: zero-size outputs and windows past the index range at every entry point", "[patch_synthesis]") {
+  const auto& m = bricks_model();
+  tessera::image_buffer<float, 3> aligned(m.exemplar().width(), m.exemplar().height());
+  REQUIRE(tessera::copy_image(m.exemplar(), aligned).ok());
+  for (auto [w, h] : {std::pair<index_t, index_t>{0, 5}, {5, 0}, {0, 0}}) {
+    INFO(w << " x " << h);
+    sized_image<std::uint8_t, 3> out{w, h};
+    sized_image<float, 3> out_f{w, h};
+    sized_image<std::uint16_t, 2> src{w, h};
+    const auto a = tessera::synthesize(m, out);
+    REQUIRE(!a);
+    CHECK(a.error().code() == tessera::status_code::invalid_argument);
+    CHECK(a.error().message().find("output") != std::string::npos);
+    CHECK(tessera::synthesize_aligned(m, aligned, out_f).error().code() == tessera::status_code::invalid_argument);
+    const auto s = tessera::synthesize_source_map(m, src);
+    REQUIRE(!s);
+    CHECK(s.error().message().find("source_map") != std::string::npos);
+  }
+  // windows whose cells would overflow index arithmetic: refused before any pixel is written
+  const index_t huge = std::numeric_limits<index_t>::max() - 4;
+  for (tessera::texture_offset origin : {tessera::texture_offset{huge, 0}, {0, huge}, {-huge, 0}, {0, -huge}}) {
+    tessera::image_buffer<std::uint8_t, 3> out(8, 8, {1, 2, 3});
+    tessera::image_buffer<float, 3> out_f(8, 8);
+    tessera::image_buffer<std::uint16_t, 2> src(8, 8);
+    const tessera::patch_synthesis_options o{.origin = origin};
+    const auto a = tessera::synthesize(m, out, o);
+    REQUIRE(!a);
+    CHECK(a.error().code() == tessera::status_code::out_of_range);
+    CHECK(a.error().message().find("origin") != std::string::npos);
+    CHECK(out.read(7, 7) == tessera::pixel<std::uint8_t, 3>{1, 2, 3});
+    CHECK(tessera::synthesize_aligned(m, aligned, out_f, o).error().code() == tessera::status_code::out_of_range);
+    CHECK(tessera::synthesize_source_map(m, src, o).error().code() == tessera::status_code::out_of_range);
+  }
+  // the last window inside the supported plane still renders
+  const index_t edge = index_t{1} << 52;
+  tessera::image_buffer<std::uint8_t, 3> out(8, 8);
+  CHECK(tessera::synthesize(m, out, {.origin = {edge - 8, -edge}}).ok());
+}
