@@ -64,7 +64,7 @@ inline mesh_quilt_result finish_quilt(quilt_engine& engine) {
   r.mesh = combine_elements(r.elements);
   return r;
 }
-inline quilt_params to_params(const mesh_quilt_options& o, bool constrained, std::uint64_t stream) {
+inline mesh_quilt_params to_params(const mesh_quilt_options& o, bool constrained, std::uint64_t stream) {
   return {o.patch_cells, o.lambda, o.max_samples, o.tolerance, o.icp, o.icp_iterations, o.correspondence_distance,
           o.deform_weight, o.merge, o.smooth_rings, o.seed, stream, constrained};
 }

@@ -56,7 +56,7 @@ struct mesh_quilt_stats {
 
 namespace detail {
 
-struct quilt_params {
+struct mesh_quilt_params {
   int patch_cells = 0;
   double lambda = 1.0;
   int max_samples = 160;
@@ -77,7 +77,7 @@ class quilt_engine {
   /// Runs fn(i) for i in [0, n), possibly in parallel (an Executor's parallel_for).
   using parallel_for_fn = std::function<void(index_t, const std::function<void(index_t)>&)>;
 
-  quilt_engine(const quilt_exemplar& ex, xy_rect domain, const quilt_params& p, parallel_for_fn pfor = {})
+  quilt_engine(const quilt_exemplar& ex, xy_rect domain, const mesh_quilt_params& p, parallel_for_fn pfor = {})
       : ex_(ex), domain_(domain), p_(p), pfor_(std::move(pfor)) {
     if (!pfor_)
       pfor_ = [](index_t n, const std::function<void(index_t)>& fn) {
@@ -429,7 +429,7 @@ class quilt_engine {
 
   const quilt_exemplar& ex_;
   xy_rect domain_;
-  quilt_params p_;
+  mesh_quilt_params p_;
   parallel_for_fn pfor_;
   double cell_ = 1, margin_ = 0, corr_ = 0;
   index_t cols_ = 1, rows_ = 1;
