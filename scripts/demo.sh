@@ -94,7 +94,44 @@ demo_fabric() {
   run "$TESSERA" catmap --period 1000000000000
 }
 
-DEMO_BLOCKS=(foundation wang fabric)
+# ---- large textures by patch distribution (paper 002) -----------------------------------------------
+demo_patch() {
+  local out=$OUT/patch
+  mkdir -p "$out"
+  step "patch synthesis: 1024² textures, a far-away window with seam cuts and its source map"
+  local kind
+  for kind in grass bricks sand; do
+    run "$TESSERA" synth --exemplar "$kind" --size 1024x1024 --out "$out/$kind.png" --repeat 5 --stats
+  done
+  run "$TESSERA" synth --exemplar weave --window -1000000,500000,512,512 --seams cut \
+    --source-map "$out/weave_source.png" --out "$out/weave_window.png" --stats
+}
+
+# ---- terrain (paper 003) -----------------------------------------------------------------------------
+demo_terrain() {
+  local out=$OUT/terrain
+  mkdir -p "$out"
+  step "terrain: a grazing frame textured by synthesis, the same frame tiled, and its scale field"
+  run "$TESSERA" terrain --exemplar grass --grid 128 --camera grazing --viewport 960x540 --min-scale 0.5 \
+    --out "$out/grass.png" --tiled-out "$out/grass_tiled.png" --scale-out "$out/scale_field.png" --stats
+  run "$TESSERA" terrain --exemplar rock --grid 128 --camera oblique --viewport 960x540 \
+    --out "$out/rock.png" --tiled-out "$out/rock_tiled.png" --stats
+}
+
+# ---- geometric textures (paper 000) ---------------------------------------------------------------------
+demo_geometry() {
+  local out=$OUT/geometry
+  mkdir -p "$out"
+  step "geometry: an exemplar, a quilted larger texture, a geometric Wang tile set and a tiled plane"
+  run "$TESSERA" exemplar stones --out "$out/stones.obj" --seed 3
+  run "$TESSERA" mesh-quilt --exemplar "$out/stones.obj" --size 16,12 --out "$out/quilt.obj" --stats
+  run "$TESSERA" geo-wang build --exemplar "$out/stones.obj" --colors 2,2 --tile 6.4 --out "$out/tiles" --stats
+  run "$TESSERA" geo-wang tile --tiles "$out/tiles" --grid 8x6 --out "$out/plane.obj" --stats
+  run "$TESSERA" render "$out/quilt.obj" --out "$out/quilt.png"
+  run "$TESSERA" render "$out/plane.obj" --out "$out/plane.png" --grid 6.4
+}
+
+DEMO_BLOCKS=(foundation patch wang fabric terrain geometry)
 for block in "${DEMO_BLOCKS[@]}"; do
   "demo_$block"
 done

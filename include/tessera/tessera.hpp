@@ -22,11 +22,14 @@
 #include "core/tri_mesh.hpp"
 #include "core/vec.hpp"
 
-// images: exemplars, metrics, quilting, Wang tiles (issue 4)
+// images: exemplars, metrics, patch synthesis (paper 002), quilting, Wang tiles
 #include "image/compose_tiles.hpp"
 #include "image/constrained_quilt.hpp"
 #include "image/exemplars.hpp"
 #include "image/metrics.hpp"
+#include "image/patch_model.hpp"
+#include "image/patch_size.hpp"
+#include "image/patch_synthesis.hpp"
 #include "image/quilt.hpp"
 #include "image/wang_atlas.hpp"
 #include "image/wang_seam_quality.hpp"
@@ -52,3 +55,28 @@
 
 // rendering
 #include "render/triangle_rasterizer.hpp"
+
+// terrain (paper 003)
+#include "terrain/assign_scale_field.hpp"
+#include "terrain/build_exemplar_pyramid.hpp"
+#include "terrain/make_terrain.hpp"
+#include "terrain/prepare_terrain_mesh.hpp"
+#include "terrain/project_mesh.hpp"
+#include "terrain/render_terrain_frame.hpp"
+#include "terrain/render_tiled_frame.hpp"
+#include "terrain/synthesize_triangles.hpp"
+#include "terrain/terrain_camera.hpp"
+
+// geometric textures (paper 000 §2-3); tile-set files are in geometry/geometric_tile_files.hpp
+#include "geometry/bvh.hpp"
+#include "geometry/check_geometric_texture.hpp"
+#include "geometry/constrained_mesh_quilt.hpp"
+#include "geometry/geometric_wang_tiles.hpp"
+#include "geometry/icp.hpp"
+#include "geometry/laplacian.hpp"
+#include "geometry/max_flow.hpp"
+#include "geometry/mesh_elements.hpp"
+#include "geometry/mesh_exemplars.hpp"
+#include "geometry/mesh_quilt.hpp"
+#include "geometry/quilt_exemplar.hpp"
+#include "geometry/tile_geometric_plane.hpp"
