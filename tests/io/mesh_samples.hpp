@@ -13,7 +13,12 @@
 
 namespace samples {
 
-inline std::string out_path(const std::string& name) { return std::string(TESSERA_TEST_OUTPUT_DIR) + "/" + name; }
+inline std::string out_path(const std::string& name) {
+  std::string path = TESSERA_TEST_OUTPUT_DIR;
+  path += '/';
+  path += name;
+  return path;
+}
 
 /// A (cols x rows)-quad grid with jittered double coordinates (values that need all 17 digits),
 /// optionally with per-corner uvs that are exact in float.
