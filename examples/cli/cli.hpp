@@ -5,7 +5,12 @@
 #pragma once
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <limits>
 #include <cstdio>
 #include <functional>
 #include <map>
@@ -107,32 +112,46 @@ class arguments {
     if (!has(name)) return tessera::status::invalid_argument("missing required option " + std::string(name));
     return str(name);
   }
-  [[nodiscard]] tessera::result<long long> integer(std::string_view name, long long fallback) const {
+  /// An integer option in [lo, hi]; `fallback` when absent. Overflow and trailing text are errors.
+  [[nodiscard]] tessera::result<long long> integer(std::string_view name, long long fallback,
+                                                   long long lo = std::numeric_limits<long long>::min(),
+                                                   long long hi = std::numeric_limits<long long>::max()) const {
     if (!has(name)) return fallback;
     const std::string s = str(name);
     char* end = nullptr;
+    errno = 0;
     const long long v = std::strtoll(s.c_str(), &end, 10);
-    if (s.empty() || *end != '\0') return bad(name, s, "an integer");
+    if (s.empty() || *end != '\0' || errno == ERANGE) return bad(name, s, "an integer");
+    if (v < lo || v > hi) return bad(name, s, "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
     return v;
   }
-  [[nodiscard]] tessera::result<double> number(std::string_view name, double fallback) const {
+  /// A finite number option in [lo, hi]; `fallback` when absent.
+  [[nodiscard]] tessera::result<double> number(std::string_view name, double fallback,
+                                               double lo = -std::numeric_limits<double>::max(),
+                                               double hi = std::numeric_limits<double>::max()) const {
     if (!has(name)) return fallback;
     const std::string s = str(name);
     char* end = nullptr;
     const double v = std::strtod(s.c_str(), &end);
-    if (s.empty() || *end != '\0') return bad(name, s, "a number");
+    if (s.empty() || *end != '\0' || !std::isfinite(v)) return bad(name, s, "a finite number");
+    if (v < lo || v > hi) return bad(name, s, "a number in [" + format_number(lo) + ", " + format_number(hi) + "]");
     return v;
   }
-  /// "WxH" (or a single "N" meaning N x N).
-  [[nodiscard]] tessera::result<std::pair<index_t, index_t>> size(std::string_view name) const {
+  /// "WxH" (or a single "N" meaning N x N): positive integers, each at most `max_side`, and at
+  /// most `max_pixels` in all, so a typo cannot ask for terabytes.
+  [[nodiscard]] tessera::result<std::pair<index_t, index_t>> size(std::string_view name, index_t max_side = 65536,
+                                                                  index_t max_pixels = index_t{1} << 28) const {
     const std::string s = str(name);
     std::vector<double> v;
     if (!split_numbers(s, 'x', v) || (v.size() != 1 && v.size() != 2)) return bad(name, s, "WxH");
-    const auto w = static_cast<index_t>(v[0]), h = static_cast<index_t>(v.size() == 2 ? v[1] : v[0]);
-    if (w <= 0 || h <= 0 || double(w) != v[0]) return bad(name, s, "positive integers WxH");
-    return std::pair{w, h};
+    const double wd = v[0], hd = v.size() == 2 ? v[1] : v[0];
+    if (!(wd >= 1 && hd >= 1) || wd != std::floor(wd) || hd != std::floor(hd)) return bad(name, s, "positive integers WxH");
+    if (wd > double(max_side) || hd > double(max_side) || wd * hd > double(max_pixels))
+      return bad(name, s, "at most " + std::to_string(max_side) + " per side and " + std::to_string(max_pixels) +
+                              " in all");
+    return std::pair{static_cast<index_t>(wd), static_cast<index_t>(hd)};
   }
-  /// Comma-separated numbers, exactly `count` of them ("x,y,z").
+  /// Comma-separated finite numbers, exactly `count` of them ("x,y,z").
   [[nodiscard]] tessera::result<std::vector<double>> numbers(std::string_view name, std::size_t count) const {
     const std::string s = str(name);
     std::vector<double> v;
@@ -140,14 +159,37 @@ class arguments {
       return bad(name, s, std::to_string(count) + " comma-separated numbers");
     return v;
   }
-  [[nodiscard]] std::uint64_t seed() const { return static_cast<std::uint64_t>(integer("--seed", 1).value_or(1)); }
-  [[nodiscard]] int threads() const { return static_cast<int>(integer("--threads", 0).value_or(0)); }
-  [[nodiscard]] int repeat() const { return static_cast<int>(std::max<long long>(1, integer("--repeat", 1).value_or(1))); }
+  /// Checks the options every command shares (--seed, --threads, --repeat); main() calls it before
+  /// a command runs, so seed(), threads() and repeat() below never see an invalid value.
+  [[nodiscard]] tessera::status check_common() const {
+    if (has("--seed")) {
+      const std::string s = str("--seed");
+      char* end = nullptr;
+      errno = 0;
+      (void)std::strtoull(s.c_str(), &end, 10);
+      if (s.empty() || s[0] == '-' || *end != '\0' || errno == ERANGE)
+        return bad("--seed", s, "an integer in [0, 2^64 - 1]");
+    }
+    if (auto t = integer("--threads", 0, 0, max_threads); !t) return t.error();
+    if (auto r = integer("--repeat", 1, 1, 100000); !r) return r.error();
+    return {};
+  }
+  static constexpr long long max_threads = 1024;
+  [[nodiscard]] std::uint64_t seed() const {
+    return has("--seed") ? std::strtoull(str("--seed").c_str(), nullptr, 10) : std::uint64_t{1};
+  }
+  [[nodiscard]] int threads() const { return static_cast<int>(integer("--threads", 0, 0, max_threads).value_or(0)); }
+  [[nodiscard]] int repeat() const { return static_cast<int>(integer("--repeat", 1, 1, 100000).value_or(1)); }
   [[nodiscard]] bool stats() const { return has("--stats"); }
 
  private:
   static tessera::status bad(std::string_view name, const std::string& value, const std::string& expected) {
     return tessera::status::invalid_argument(std::string(name) + " expects " + expected + ", got '" + value + "'");
+  }
+  static std::string format_number(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
   }
   static bool split_numbers(const std::string& s, char sep, std::vector<double>& out) {
     std::size_t start = 0;
@@ -156,7 +198,7 @@ class arguments {
       const std::string part = s.substr(start, end - start);
       char* stop = nullptr;
       const double v = std::strtod(part.c_str(), &stop);
-      if (part.empty() || *stop != '\0') return false;
+      if (part.empty() || *stop != '\0' || !std::isfinite(v)) return false;
       out.push_back(v);
       start = end + 1;
     }
@@ -192,6 +234,7 @@ class json_line {
     return raw(key, buf);
   }
   json_line& add(std::string_view key, long long v) { return raw(key, std::to_string(v)); }
+  json_line& add(std::string_view key, std::uint64_t v) { return raw(key, std::to_string(v)); }
   json_line& add(std::string_view key, int v) { return raw(key, std::to_string(v)); }
   json_line& add(std::string_view key, index_t v) { return raw(key, std::to_string(v)); }
   json_line& add(std::string_view key, bool v) { return raw(key, v ? "true" : "false"); }

@@ -26,18 +26,13 @@ int run_sample(const cli::arguments& args) {
     return cli::fail(args, status::invalid_argument("--out must name a .png file, got '" + *out + "'"));
   std::pair<tessera::index_t, tessera::index_t> size{128, 128};
   if (args.has("--size")) {
-    auto s = args.size("--size");
+    auto s = args.size("--size", max_side);
     if (!s) return cli::fail(args, s.error());
     size = *s;
   }
-  if (size.first > max_side || size.second > max_side)
-    return cli::fail(args, status::invalid_argument("--size is limited to " + std::to_string(max_side) + " x " +
-                                                    std::to_string(max_side) + ", got " + args.str("--size")));
-  const auto seed = args.integer("--seed", 1);
-  if (!seed) return cli::fail(args, seed.error());
   tessera::result<tessera::image_buffer<std::uint8_t, 3>> img = status::internal_error("not made");
   const double ms = cli::median_ms(args.repeat(), [&] {
-    img = tessera::make_exemplar(*kind, {.width = size.first, .height = size.second, .seed = static_cast<std::uint64_t>(*seed)});
+    img = tessera::make_exemplar(*kind, {.width = size.first, .height = size.second, .seed = args.seed()});
   });
   if (!img) return cli::fail(args, img.error());
   if (auto s = tessera::write_png(*out, *img); !s) return cli::fail(args, s);
@@ -46,14 +41,14 @@ int run_sample(const cli::arguments& args) {
         .add("kind", tessera::to_string(*kind))
         .add("width", size.first)
         .add("height", size.second)
-        .add("seed", static_cast<long long>(*seed))
+        .add("seed", args.seed())
         .add("output", *out)
         .add("ms", ms)
         .add("pixels_per_s", static_cast<double>(size.first * size.second) / (ms > 0 ? ms / 1000 : 1e-9))
         .print();
   else
-    std::printf("wrote %s (%s, %td x %td, seed %lld)\n", out->c_str(), std::string(tessera::to_string(*kind)).c_str(),
-                size.first, size.second, *seed);
+    std::printf("wrote %s (%s, %td x %td, seed %llu)\n", out->c_str(), std::string(tessera::to_string(*kind)).c_str(),
+                size.first, size.second, static_cast<unsigned long long>(args.seed()));
   return 0;
 }
 

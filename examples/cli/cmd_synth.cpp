@@ -76,17 +76,9 @@ tessera::result<synth_request> parse(const cli::arguments& args) {
   const std::string seams = args.str("--seams", "feather");
   if (seams == "cut") r.seams = tessera::seam_mode::cut;
   else if (seams != "feather") return status::invalid_argument("--seams expects feather or cut, got '" + seams + "'");
-  auto seed = args.integer("--seed", 1);
-  if (!seed) return seed.error();
-  r.seed = static_cast<std::uint64_t>(*seed);
-  auto threads = args.integer("--threads", 0);
-  if (!threads || *threads < 0 || *threads > 1024)
-    return status::invalid_argument("--threads expects 0 (all cores) to 1024, got '" + args.str("--threads") + "'");
-  r.threads = static_cast<int>(*threads);
-  auto repeat = args.integer("--repeat", 1);
-  if (!repeat || *repeat < 1 || *repeat > 10000)
-    return status::invalid_argument("--repeat expects 1 to 10000, got '" + args.str("--repeat") + "'");
-  r.repeat = static_cast<int>(*repeat);
+  r.seed = args.seed();  // --seed, --threads and --repeat were checked by main (check_common)
+  r.threads = args.threads();
+  r.repeat = args.repeat();
   auto es = args.integer("--exemplar-size", 128);
   if (!es || *es < 8 || *es > 4096)
     return status::invalid_argument("--exemplar-size expects 8 to 4096, got '" + args.str("--exemplar-size") + "'");

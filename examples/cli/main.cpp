@@ -75,5 +75,9 @@ int main(int argc, char** argv) {
     print_help(*found);
     return 0;
   }
+  if (auto s = args->check_common(); !s) {
+    std::fprintf(stderr, "tessera %s: %s\n", found->name.c_str(), s.to_string().c_str());
+    return 2;
+  }
   return found->run(*args);
 }
