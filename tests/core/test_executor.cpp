@@ -137,3 +137,12 @@ TEST_CASE("thread pool: a loop nested inside another pool's loop runs serially",
   });
   for (int v : out) REQUIRE(v == 45);
 }
+
+TEST_CASE("thread pool: absurd thread counts are clamped, not obeyed", "[executor][bad_input]") {
+  tessera::thread_pool_executor huge(1 << 30);
+  REQUIRE(huge.concurrency() >= 1);
+  REQUIRE(huge.concurrency() <= tessera::thread_pool_executor::max_threads);
+  std::atomic<index_t> sum{0};
+  huge.parallel_for(0, 1000, [&](index_t i) { sum += i; });
+  REQUIRE(sum.load() == 999 * 1000 / 2);
+}

@@ -69,6 +69,12 @@ TEST_CASE("image_buffer: create validates the size", "[image_buffer]") {
           status_code::size_overflow);
   const auto s = image_buffer<float, 3>::create(-1, 2).error();
   REQUIRE(s.message().find("image_buffer") != std::string::npos);
+  // the plain constructor never throws or over-allocates: a bad size gives an empty image
+  for (auto [w, h] : {std::pair<index_t, index_t>{-1, 2}, {0, 0}, {3, 0}, {std::numeric_limits<index_t>::max(), 2}}) {
+    const image_buffer<float, 3> img(w, h);
+    CHECK(img.width() == 0);
+    CHECK(img.height() == 0);
+  }
 }
 
 TEST_CASE("image_buffer: to_buffer converts any image", "[image_buffer]") {

@@ -199,3 +199,27 @@ TEST_CASE("mesh_topology: works on any Mesh type", "[mesh_topology]") {
   REQUIRE(tessera::mesh_edges(empty).empty());
   REQUIRE(tessera::connected_components(empty).count == 0);
 }
+
+TEST_CASE("mesh_topology: faces naming vertices out of range are ignored, never indexed", "[mesh_topology][bad_input]") {
+  // The tetrahedron plus three bad faces: a negative index, one past the end, a huge one. Under
+  // ASan any read or write through those indices would fail this test.
+  tri_mesh m = tetrahedron();
+  m.faces.push_back({0, 1, -1});
+  m.faces.push_back({4, 1, 2});
+  m.faces.push_back({0, 1000000, 2});
+  REQUIRE_FALSE(tessera::validate_mesh(m).ok());
+
+  const auto adj = tessera::face_adjacency(m);
+  REQUIRE(adj.neighbor.size() == 7);
+  CHECK(adj.boundary_edges == 0);  // the four good faces still close up
+  CHECK(adj.nonmanifold_edges == 0);
+  for (std::size_t f = 4; f < 7; ++f) CHECK(adj.neighbor[f] == std::array<index_t, 3>{-1, -1, -1});
+  CHECK(tessera::mesh_edges(m).size() == 6);
+  CHECK(tessera::boundary_edges(m).empty());
+  CHECK(tessera::count_nonmanifold_edges(m) == 0);
+  const auto c = tessera::connected_components(m);
+  CHECK(c.count == 1);
+  CHECK(c.face_component == std::vector<index_t>{0, 0, 0, 0, -1, -1, -1});
+  CHECK(tessera::face_normals(m)[5] == tessera::vec3{});
+  CHECK(tessera::vertex_normals(m).size() == 4);
+}

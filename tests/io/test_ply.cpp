@@ -259,3 +259,21 @@ TEST_CASE("ply: write errors", "[ply]") {
   REQUIRE(tessera::write_ply(samples::out_path("bad.ply"), bad).code() == status_code::invalid_argument);
   REQUIRE(tessera::write_ply(samples::out_path("no/dir.ply"), samples::grid(1, 1, false)).code() == status_code::io_error);
 }
+
+TEST_CASE("ply: an element without properties holds no data, whatever count it declares", "[ply][bad_input]") {
+  // A 2^63 - 1 count of property-less elements must not loop: they occupy no bytes.
+  for (const encoding& e : encodings) {
+    INFO(e.name);
+    const std::string header = "ply\n" + format_line(e.binary, e.big) +
+                               "element marker 9223372036854775807\n"
+                               "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                               "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+    body b{e.binary, e.big, {}};
+    for (int v = 0; v < 3; ++v) b.put(float(v)).put(float(v == 2)).put(0.0f).endl();
+    b.put(std::uint8_t{3}).put(0).put(1).put(2).endl();
+    const auto r = tessera::parse_ply(header + b.out, "marker.ply");
+    REQUIRE(r.ok());
+    CHECK(r->num_vertices() == 3);
+    CHECK(r->num_faces() == 1);
+  }
+}

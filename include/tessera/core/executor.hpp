@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <exception>
 #include <mutex>
+#include <system_error>
 #include <thread>
 #include <type_traits>
 #include <utility>
@@ -21,6 +22,9 @@
 
 TESSERA_NAMESPACE_BEGIN
 
+/// Where tessera runs its parallel loops: any type with `parallel_for(begin, end, fn)` that calls
+/// fn(i) exactly once for each i in [begin, end), in any order, on any threads, and returns when all
+/// calls have returned. Algorithms take one as their last argument (default serial_executor).
 template <class E>
 concept Executor = requires(E& e, index_t n, void (*fn)(index_t)) { e.parallel_for(index_t{0}, n, fn); };
 
@@ -43,12 +47,26 @@ inline thread_local bool inside_parallel_for = false;
 /// rethrown on the calling thread after the loop stops. Calls from several threads are serialized.
 class thread_pool_executor {
  public:
-  /// `threads` workers in total including the caller; 0 means std::thread::hardware_concurrency().
+  /// Most threads a pool starts; larger requests are clamped (a typo must not start 10^9 threads).
+  static constexpr int max_threads = 256;
+
+  /// `threads` workers in total including the caller; 0 (or negative) means
+  /// std::thread::hardware_concurrency(); clamped to max_threads. If the system refuses to start a
+  /// thread (std::system_error), the pool runs with those it has: concurrency() tells how many.
   explicit thread_pool_executor(int threads = 0) {
     if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-    threads_ = threads;
+    threads = std::min(threads, max_threads);
     workers_.reserve(static_cast<std::size_t>(threads - 1));
+#if TESSERA_HAS_EXCEPTIONS
+    try {
+      for (int t = 1; t < threads; ++t) workers_.emplace_back([this] { worker_loop(); });
+    } catch (const std::system_error&) {
+      // keep the workers already running; parallel_for counts workers_, not the request
+    }
+#else
     for (int t = 1; t < threads; ++t) workers_.emplace_back([this] { worker_loop(); });
+#endif
+    threads_ = static_cast<int>(workers_.size()) + 1;
   }
   thread_pool_executor(const thread_pool_executor&) = delete;
   thread_pool_executor& operator=(const thread_pool_executor&) = delete;
@@ -61,7 +79,10 @@ class thread_pool_executor {
     for (auto& w : workers_) w.join();
   }
 
+  /// Threads that run a parallel_for: the workers plus the calling thread.
   [[nodiscard]] int concurrency() const noexcept { return threads_; }
+
+  /// Calls fn(i) for every i in [begin, end) on the pool and the calling thread; returns when done.
 
   template <class F>
   void parallel_for(index_t begin, index_t end, F&& fn) {

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <new>
 #include <vector>
 
 #include "config.hpp"
@@ -26,19 +27,32 @@ class image_buffer {
   static constexpr int channels = C;
 
   image_buffer() = default;
-  /// Unchecked (asserts the size); use create() for sizes that come from a caller.
-  image_buffer(index_t width, index_t height, const pixel_type& fill = {})
-      : width_(width), height_(height) {
-    TESSERA_ASSERT(validate_image_extent(width, height, C, "image_buffer").ok());
+  /// A width x height image filled with `fill`. A size that is not positive or whose byte count
+  /// overflows gives an empty 0 x 0 image (never a throw or a huge allocation); use create() when the
+  /// size comes from a caller and the reason matters.
+  image_buffer(index_t width, index_t height, const pixel_type& fill = {}) {
+    if (!validate_image_extent(width, height, C, "image_buffer").ok()) return;
+    width_ = width;
+    height_ = height;
     data_.resize(static_cast<std::size_t>(width * height * C));
     for (index_t i = 0; i < width * height; ++i)
       for (int c = 0; c < C; ++c) data_[static_cast<std::size_t>(i * C + c)] = fill[static_cast<std::size_t>(c)];
   }
 
-  /// Validated construction: a status when the size is not positive or overflows.
+  /// Validated construction: a status when the size is not positive or overflows, and (in builds
+  /// with exceptions) size_overflow when the system cannot allocate it.
   static result<image_buffer> create(index_t width, index_t height, const pixel_type& fill = {}) {
     if (auto s = validate_image_extent(width, height, C, "image_buffer"); !s) return s;
+#if TESSERA_HAS_EXCEPTIONS
+    try {
+      return image_buffer(width, height, fill);
+    } catch (const std::bad_alloc&) {
+      return status::size_overflow(detail::cat("image_buffer: cannot allocate ", width, " x ", height, " x ", C, " x ",
+                                               sizeof(T), " bytes"));
+    }
+#else
     return image_buffer(width, height, fill);
+#endif
   }
 
   [[nodiscard]] index_t width() const noexcept { return width_; }

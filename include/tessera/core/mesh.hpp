@@ -65,11 +65,13 @@ concept Point = requires(const P& p) {
   { point_traits<std::remove_cvref_t<P>>::get(p, 0) } -> std::convertible_to<double>;
 };
 
+/// The first three coordinates of any Point as a vec3.
 template <Point P>
 vec3 to_vec3(const P& p) {
   using T = point_traits<std::remove_cvref_t<P>>;
   return {T::get(p, 0), T::get(p, 1), T::get(p, 2)};
 }
+/// The first two coordinates of any Point as a vec2.
 template <Point P>
 vec2 to_vec2(const P& p) {
   using T = point_traits<std::remove_cvref_t<P>>;
@@ -124,15 +126,31 @@ concept UVMesh = Mesh<M> && requires(const M& m, index_t f, int k) {
   { mesh_traits<M>::corner_uv(m, f, k) } -> Point;
 };
 
-// Convenience accessors for any Mesh.
+/// Number of vertices of any Mesh (through mesh_traits).
 template <Mesh M>
 index_t num_vertices(const M& m) { return mesh_traits<M>::num_vertices(m); }
+/// Number of triangle faces of any Mesh.
 template <Mesh M>
 index_t num_faces(const M& m) { return mesh_traits<M>::num_faces(m); }
+/// Vertex index of corner k (0..2) of face f. Not range-checked: validate_mesh checks every index once.
 template <Mesh M>
 index_t face_vertex(const M& m, index_t f, int k) { return mesh_traits<M>::face_vertex(m, f, k); }
+/// Position of vertex v as a vec3 (double), whatever the mesh stores.
 template <Mesh M>
 vec3 vertex_position(const M& m, index_t v) { return to_vec3(mesh_traits<M>::position(m, v)); }
+
+namespace detail {
+/// True when all three corners of face f name a vertex in [0, nv): the guard of the whole-mesh
+/// helpers (topology, normals), which skip such faces instead of indexing out of bounds.
+template <Mesh M>
+bool face_in_range(const M& m, index_t f, index_t nv) {
+  for (int k = 0; k < 3; ++k) {
+    const index_t v = tessera::face_vertex(m, f, k);
+    if (v < 0 || v >= nv) return false;
+  }
+  return true;
+}
+}  // namespace detail
 /// True when the mesh carries per-corner uvs (always false for a Mesh that is not a UVMesh).
 template <Mesh M>
 bool has_uvs(const M& m) {

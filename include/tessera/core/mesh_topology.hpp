@@ -1,7 +1,9 @@
 // tessera/core/mesh_topology.hpp: connectivity of any Mesh: undirected edges with their faces, face
 // adjacency across edges, boundary and non-manifold edges, connected components (a geometric
 // texture's "elements"). All deterministic: edges are sorted by vertex pair, components numbered in
-// order of their first face. Inputs must be valid (validate_mesh); these functions do not re-check.
+// order of their first face. They expect a valid mesh (validate_mesh) but never read or write out of
+// bounds on an invalid one: a face naming a vertex outside [0, V) is ignored (not an edge, no
+// component), so a bad index costs a wrong answer about that face, never memory safety.
 #pragma once
 
 #include <algorithm>
@@ -31,13 +33,14 @@ struct half_edge_key {
   int k;
 };
 /// All 3F face sides keyed by their sorted vertex pair, sorted by (a, b, f, k): one flat array, so
-/// the edge queries below cost one sort and no per-edge allocation.
+/// the edge queries below cost one sort and no per-edge allocation. Faces out of range are skipped.
 template <Mesh M>
 std::vector<half_edge_key> sorted_half_edges(const M& m) {
-  const index_t nf = tessera::num_faces(m);
+  const index_t nv = tessera::num_vertices(m), nf = std::max<index_t>(0, tessera::num_faces(m));
   std::vector<half_edge_key> hs;
   hs.reserve(static_cast<std::size_t>(3 * nf));
   for (index_t f = 0; f < nf; ++f) {
+    if (!face_in_range(m, f, nv)) continue;
     const index_t v[3] = {tessera::face_vertex(m, f, 0), tessera::face_vertex(m, f, 1), tessera::face_vertex(m, f, 2)};
     for (int k = 0; k < 3; ++k) {
       const index_t a = v[k], b = v[(k + 1) % 3];
@@ -91,7 +94,7 @@ struct face_adjacency_result {
 template <Mesh M>
 face_adjacency_result face_adjacency(const M& m) {
   face_adjacency_result r;
-  r.neighbor.assign(static_cast<std::size_t>(tessera::num_faces(m)), {-1, -1, -1});
+  r.neighbor.assign(static_cast<std::size_t>(std::max<index_t>(0, tessera::num_faces(m))), {-1, -1, -1});
   const auto hs = detail::sorted_half_edges(m);
   detail::for_each_edge_group(hs, [&](std::size_t first, std::size_t count) {
     if (count == 2) {
@@ -134,7 +137,7 @@ index_t count_nonmanifold_edges(const M& m) {
 }
 
 /// Connected components through shared vertices. Component ids run 0..count-1 in order of each
-/// component's first face; vertices used by no face get -1.
+/// component's first face; vertices used by no face get -1 (so do faces out of range).
 struct mesh_components {
   index_t count = 0;
   std::vector<index_t> vertex_component;
@@ -144,7 +147,7 @@ struct mesh_components {
 /// Connected components of a valid mesh by union-find. O(F alpha(V)) time, O(V + F) memory.
 template <Mesh M>
 mesh_components connected_components(const M& m) {
-  const index_t nv = tessera::num_vertices(m), nf = tessera::num_faces(m);
+  const index_t nv = std::max<index_t>(0, tessera::num_vertices(m)), nf = std::max<index_t>(0, tessera::num_faces(m));
   std::vector<index_t> parent(static_cast<std::size_t>(nv));
   std::iota(parent.begin(), parent.end(), index_t{0});
   auto find = [&](index_t v) {
@@ -157,6 +160,7 @@ mesh_components connected_components(const M& m) {
   };
   std::vector<index_t> size(static_cast<std::size_t>(nv), 1);
   for (index_t f = 0; f < nf; ++f) {
+    if (!detail::face_in_range(m, f, nv)) continue;
     for (int k = 1; k < 3; ++k) {
       index_t a = find(tessera::face_vertex(m, f, 0)), b = find(tessera::face_vertex(m, f, k));
       if (a == b) continue;
@@ -167,9 +171,10 @@ mesh_components connected_components(const M& m) {
   }
   mesh_components c;
   c.vertex_component.assign(static_cast<std::size_t>(nv), -1);
-  c.face_component.resize(static_cast<std::size_t>(nf));
+  c.face_component.assign(static_cast<std::size_t>(nf), -1);
   std::vector<index_t> root_id(static_cast<std::size_t>(nv), -1);
   for (index_t f = 0; f < nf; ++f) {
+    if (!detail::face_in_range(m, f, nv)) continue;
     auto& id = root_id[static_cast<std::size_t>(find(tessera::face_vertex(m, f, 0)))];
     if (id < 0) id = c.count++;
     c.face_component[static_cast<std::size_t>(f)] = id;

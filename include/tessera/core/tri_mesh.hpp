@@ -1,10 +1,13 @@
 // tessera/core/tri_mesh.hpp: tessera's owning triangle mesh (double positions, optional per-corner
 // uvs), validation of any Mesh, conversion of any Mesh into a tri_mesh, and per-face / per-vertex
 // geometry (normals, areas, bounding box). Connectivity (adjacency, boundary, components) is in
-// core/mesh_topology.hpp. The geometry helpers expect a valid mesh (validate_mesh) and do not
-// re-check it; all are O(V + F), allocation only for their result, and thread-safe on const input.
+// core/mesh_topology.hpp. The geometry helpers expect a valid mesh (validate_mesh): the whole-mesh
+// ones (face_normals, vertex_normals, bounding_box) ignore faces naming a vertex out of range rather
+// than touch memory outside the mesh; the per-face ones take a face index in [0, F) as a precondition,
+// like operator[]. All are O(V + F), allocate only their result, and are thread-safe on const input.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <concepts>
@@ -38,6 +41,7 @@ struct tri_mesh {
     return uvs[static_cast<std::size_t>(f)][static_cast<std::size_t>(k)];
   }
 
+  /// Appends a vertex; returns its index.
   index_t add_vertex(vec3 p) {
     positions.push_back(p);
     return num_vertices() - 1;
@@ -140,7 +144,7 @@ result<tri_mesh> to_tri_mesh(const M& m, std::string_view what = "mesh") {
   return out;
 }
 
-/// The three corner positions of face f.
+/// The three corner positions of face f. Precondition: f in [0, F) and the face's vertices in range.
 template <Mesh M>
 std::array<vec3, 3> face_corners(const M& m, index_t f) {
   return {tessera::vertex_position(m, tessera::face_vertex(m, f, 0)), tessera::vertex_position(m, tessera::face_vertex(m, f, 1)),
@@ -154,11 +158,13 @@ vec3 face_area_normal(const M& m, index_t f) {
   return cross(c[1] - c[0], c[2] - c[0]);
 }
 
-/// Unit normal per face (zero for zero-area faces).
+/// Unit normal per face (zero for zero-area faces and for faces naming a vertex out of range).
 template <Mesh M>
 std::vector<vec3> face_normals(const M& m) {
-  std::vector<vec3> n(static_cast<std::size_t>(tessera::num_faces(m)));
-  for (index_t f = 0; f < tessera::num_faces(m); ++f) n[static_cast<std::size_t>(f)] = normalized(face_area_normal(m, f));
+  const index_t nv = tessera::num_vertices(m), nf = std::max<index_t>(0, tessera::num_faces(m));
+  std::vector<vec3> n(static_cast<std::size_t>(nf));
+  for (index_t f = 0; f < nf; ++f)
+    if (detail::face_in_range(m, f, nv)) n[static_cast<std::size_t>(f)] = normalized(face_area_normal(m, f));
   return n;
 }
 
@@ -166,8 +172,10 @@ std::vector<vec3> face_normals(const M& m) {
 /// no face of non-zero area).
 template <Mesh M>
 std::vector<vec3> vertex_normals(const M& m) {
-  std::vector<vec3> n(static_cast<std::size_t>(tessera::num_vertices(m)));
-  for (index_t f = 0; f < tessera::num_faces(m); ++f) {
+  const index_t nv = std::max<index_t>(0, tessera::num_vertices(m)), nf = std::max<index_t>(0, tessera::num_faces(m));
+  std::vector<vec3> n(static_cast<std::size_t>(nv));
+  for (index_t f = 0; f < nf; ++f) {
+    if (!detail::face_in_range(m, f, nv)) continue;
     const vec3 an = face_area_normal(m, f);
     for (int k = 0; k < 3; ++k) n[static_cast<std::size_t>(tessera::face_vertex(m, f, k))] += an;
   }

@@ -80,6 +80,7 @@ status read_ply_elements(const ply_header& h, Source& src, std::string_view name
       have_face_uv = texcoord >= 0;
       m.faces.reserve(static_cast<std::size_t>(e.count));
     }
+    if (e.properties.empty()) continue;  // holds no data, however many it declares (no 2^63-step loop)
     std::vector<vec2> corner_uv;
     for (index_t i = 0; i < e.count; ++i) {
       auto where = [&] { return cat("element '", e.name, "' ", i); };  // built only for messages
