@@ -23,6 +23,7 @@ TESSERA_NAMESPACE_BEGIN
 /// Component type of a runtime pixel format.
 enum class channel_type { uint8, uint16, float32 };
 
+/// "uint8", "uint16" or "float32".
 constexpr std::string_view to_string(channel_type t) noexcept {
   switch (t) {
     case channel_type::uint8: return "uint8";

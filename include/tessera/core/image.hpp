@@ -207,6 +207,7 @@ concept WritableImage = Image<I> && requires(I& img, index_t x, index_t y, const
 /// Channel type and count of an image's pixels.
 template <Image I>
 using channel_t = typename pixel_traits<pixel_t<I>>::channel_type;
+/// Channel count (1 to 4) of an image's pixels.
 template <Image I>
 inline constexpr int channels_v = pixel_traits<pixel_t<I>>::channels;
 
@@ -215,6 +216,7 @@ template <Image I>
 index_t width_of(const I& img) {
   return static_cast<index_t>(image_traits<I>::width(img));
 }
+/// Height of any Image.
 template <Image I>
 index_t height_of(const I& img) {
   return static_cast<index_t>(image_traits<I>::height(img));

@@ -17,6 +17,9 @@
 
 TESSERA_NAMESPACE_BEGIN
 
+/// Owning image of width x height pixels, C interleaved channels of T (uint8_t, uint16_t or float),
+/// rows packed. What algorithms convert caller images into; models Image and WritableImage. Copyable
+/// and movable like a std::vector; view() gives an image_view of it.
 template <class T, int C>
 class image_buffer {
  public:

@@ -14,6 +14,10 @@
 
 TESSERA_NAMESPACE_BEGIN
 
+/// Non-owning view of `height` rows of `width` pixels, C interleaved channels of T each, rows
+/// `stride` channel values apart. Models Image (and WritableImage when T is not const). Build it with
+/// make_image_view(), which validates the size, stride and pointer; the constructor does not (like
+/// std::span). Pixel reads and writes are by value; the view never owns or copies the pixels.
 template <class T, int C>
 class image_view {
  public:

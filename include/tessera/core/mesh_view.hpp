@@ -15,6 +15,9 @@
 
 TESSERA_NAMESPACE_BEGIN
 
+/// Non-owning triangle mesh over an engine's raw buffers (see the file comment). Build it with
+/// make_mesh_view(), which validates counts, stride and index range; the constructor does not (like
+/// std::span). Never copies or modifies the buffers.
 template <class Scalar = float, class Index = std::uint32_t>
 class mesh_view {
   static_assert(std::is_same_v<Scalar, float> || std::is_same_v<Scalar, double>, "mesh_view positions are float or double");

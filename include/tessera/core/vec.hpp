@@ -11,6 +11,7 @@
 
 TESSERA_NAMESPACE_BEGIN
 
+/// A 2D point or vector (texture coordinates, XY positions): plain doubles, constexpr arithmetic.
 struct vec2 {
   double x = 0, y = 0;
   constexpr double& operator[](int i) noexcept { return i == 0 ? x : y; }
@@ -27,6 +28,7 @@ struct vec2 {
   friend constexpr bool operator==(vec2, vec2) = default;
 };
 
+/// A 3D point or vector (positions, normals): plain doubles, constexpr arithmetic.
 struct vec3 {
   double x = 0, y = 0, z = 0;
   constexpr double& operator[](int i) noexcept { return i == 0 ? x : i == 1 ? y : z; }
@@ -43,13 +45,16 @@ struct vec3 {
   friend constexpr bool operator==(vec3, vec3) = default;
 };
 
+/// Dot product.
 constexpr double dot(vec2 a, vec2 b) noexcept { return a.x * b.x + a.y * b.y; }
 constexpr double dot(vec3 a, vec3 b) noexcept { return a.x * b.x + a.y * b.y + a.z * b.z; }
 /// z of the 3D cross product: twice the signed area of the triangle (0, a, b).
 constexpr double cross(vec2 a, vec2 b) noexcept { return a.x * b.y - a.y * b.x; }
+/// Cross product a x b.
 constexpr vec3 cross(vec3 a, vec3 b) noexcept {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
+/// Euclidean length, squared length and distance.
 inline double norm(vec2 a) noexcept { return std::sqrt(dot(a, a)); }
 inline double norm(vec3 a) noexcept { return std::sqrt(dot(a, a)); }
 constexpr double squared_norm(vec2 a) noexcept { return dot(a, a); }
@@ -65,8 +70,10 @@ inline vec3 normalized(vec3 a) noexcept {
   const double n = norm(a);
   return n > 0 && std::isfinite(n) ? a / n : vec3{};
 }
+/// True when no coordinate is NaN or infinite.
 inline bool is_finite(vec3 a) noexcept { return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z); }
 inline bool is_finite(vec2 a) noexcept { return std::isfinite(a.x) && std::isfinite(a.y); }
+/// Component-wise minimum and maximum.
 constexpr vec3 min(vec3 a, vec3 b) noexcept { return {std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z)}; }
 constexpr vec3 max(vec3 a, vec3 b) noexcept { return {std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)}; }
 

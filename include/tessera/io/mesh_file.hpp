@@ -20,6 +20,7 @@ TESSERA_NAMESPACE_BEGIN
 
 enum class mesh_format { obj, off, ply };
 
+/// "obj", "off" or "ply".
 constexpr std::string_view to_string(mesh_format f) noexcept {
   return f == mesh_format::obj ? "obj" : f == mesh_format::off ? "off" : "ply";
 }
