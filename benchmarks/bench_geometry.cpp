@@ -1,7 +1,8 @@
-// Benchmarks of the geometry family (paper 000): building blocks (BVH, max-flow, Laplacian, ICP),
-// mesh quilting per output area, geometric Wang tile sets per tile and per set, tiling 64 x 64 tiles.
-// Same-run baselines: brute-force closest point, a memcpy of the tiled plane's bytes (warm and into
-// fresh memory), Edmonds-Karp.
+// Benchmarks of the geometry family (paper 000): building blocks (BVH closest point and ray casts,
+// element extraction, max-flow, Laplacian, ICP), mesh quilting per output area, geometric Wang tile
+// sets per tile and per set, tiling 64 x 64 tiles. Same-run baselines: brute-force closest point and
+// ray casts, a copy of the exemplar, a memcpy of the tiled plane's bytes (warm and into fresh
+// memory), Edmonds-Karp.
 #include <benchmark/benchmark.h>
 
 #include <cstring>
@@ -15,6 +16,7 @@
 #include <tessera/geometry/icp.hpp>
 #include <tessera/geometry/laplacian.hpp>
 #include <tessera/geometry/max_flow.hpp>
+#include <tessera/geometry/mesh_elements.hpp>
 #include <tessera/geometry/mesh_exemplars.hpp>
 #include <tessera/geometry/mesh_quilt.hpp>
 #include <tessera/geometry/tile_geometric_plane.hpp>
@@ -70,6 +72,82 @@ static void BM_baseline_brute_closest_point(benchmark::State& state) {
   state.counters["queries/s"] = benchmark::Counter(10.0 * double(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_baseline_brute_closest_point)->Unit(benchmark::kMicrosecond);
+
+// BVH ray casts: rays from above the texture straight down and slanted, over the ring exemplar (what
+// the preview renderer and shell mapping ask); baseline: the same rays against every triangle
+namespace {
+std::vector<std::pair<vec3, vec3>> rays(int n) {
+  counter_rng rng(5);
+  std::vector<std::pair<vec3, vec3>> r;
+  for (int i = 0; i < n; ++i) {
+    const vec3 o{rng.uniform(i, 0) * 8, rng.uniform(i, 1) * 8, 2};
+    r.push_back({o, normalized(vec3{rng.uniform(i, 2) - 0.5, rng.uniform(i, 3) - 0.5, -1})});
+  }
+  return r;
+}
+}  // namespace
+
+static void BM_bvh_raycast(benchmark::State& state) {
+  const triangle_bvh bvh(rings());
+  const auto r = rays(1000);
+  index_t hits = 0;
+  for (auto _ : state)
+    for (const auto& [o, d] : r) hits += bvh.raycast(o, d).face >= 0;
+  benchmark::DoNotOptimize(hits);
+  state.counters["rays/s"] = benchmark::Counter(1000.0 * double(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["hit_fraction"] = double(hits) / (1000.0 * double(state.iterations()));
+}
+BENCHMARK(BM_bvh_raycast)->Unit(benchmark::kMicrosecond);
+
+static void BM_baseline_brute_raycast(benchmark::State& state) {
+  const tri_mesh& m = rings();
+  std::vector<std::array<vec3, 3>> tris;
+  for (const auto& f : m.faces) tris.push_back({m.positions[std::size_t(f[0])], m.positions[std::size_t(f[1])], m.positions[std::size_t(f[2])]});
+  const auto r = rays(10);
+  for (auto _ : state)
+    for (const auto& [o, d] : r) {
+      double best = 1e300;
+      for (const auto& t : tris) {  // Moller-Trumbore
+        const vec3 e1 = t[1] - t[0], e2 = t[2] - t[0], pv = cross(d, e2);
+        const double det = dot(e1, pv);
+        if (std::abs(det) < 1e-14) continue;
+        const vec3 tv = o - t[0];
+        const double u = dot(tv, pv) / det;
+        if (u < 0 || u > 1) continue;
+        const vec3 qv = cross(tv, e1);
+        const double v = dot(d, qv) / det;
+        if (v < 0 || u + v > 1) continue;
+        const double tt = dot(e2, qv) / det;
+        if (tt >= 0 && tt < best) best = tt;
+      }
+      benchmark::DoNotOptimize(best);
+    }
+  state.counters["rays/s"] = benchmark::Counter(10.0 * double(state.iterations()), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_baseline_brute_raycast)->Unit(benchmark::kMicrosecond);
+
+// element extraction (connected components into per-element meshes, closed/manifold checks) and the
+// whole exemplar preparation it is part of; baseline: copying the exemplar's arrays once
+static void BM_extract_elements(benchmark::State& state) {
+  for (auto _ : state) benchmark::DoNotOptimize(extract_elements(rings()));
+  state.counters["triangles/s"] = benchmark::Counter(double(rings().num_faces()) * double(state.iterations()), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_extract_elements)->Unit(benchmark::kMillisecond);
+
+static void BM_prepare_quilt_exemplar(benchmark::State& state) {
+  for (auto _ : state) benchmark::DoNotOptimize(prepare_quilt_exemplar(rings()));
+  state.counters["triangles/s"] = benchmark::Counter(double(rings().num_faces()) * double(state.iterations()), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_prepare_quilt_exemplar)->Unit(benchmark::kMillisecond);
+
+static void BM_baseline_copy_exemplar(benchmark::State& state) {
+  for (auto _ : state) {
+    tri_mesh copy = rings();
+    benchmark::DoNotOptimize(copy.positions.data());
+  }
+  state.counters["triangles/s"] = benchmark::Counter(double(rings().num_faces()) * double(state.iterations()), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_baseline_copy_exemplar)->Unit(benchmark::kMillisecond);
 
 namespace {
 // a w x w 4-connected grid with seeds on the left (source) and right (sink), random capacities

@@ -17,13 +17,12 @@ int run(const cli::arguments& args) {
   const std::string kind = args.positional()[0];
   auto out = args.required("--out");
   if (!out) return cli::fail(args, out.error());
-  auto size = args.number("--size", 8.0);
-  auto density = args.number("--density", 1.0);
-  auto detail_level = args.integer("--segments", 0);
+  auto size = args.number("--size", 8.0, 0.5, 256);
+  auto density = args.number("--density", 1.0, 1.0 / 16, 16);
+  auto detail_level = args.integer("--segments", 0, 0, 256);
   if (!size) return cli::fail(args, size.error());
   if (!density) return cli::fail(args, density.error());
   if (!detail_level) return cli::fail(args, detail_level.error());
-  if (!(*density > 0)) return cli::fail(args, status::invalid_argument("--density must be > 0"));
   const int seg = static_cast<int>(*detail_level);
   result<tri_mesh> mesh = status::invalid_argument("unknown exemplar kind '" + kind + "' (rings, stones or weave)");
   const double ms = cli::median_ms(args.repeat(), [&] {
@@ -47,6 +46,7 @@ int run(const cli::arguments& args) {
   if (auto s = write_mesh(*out, *mesh); !s) return cli::fail(args, s);
   if (args.stats()) {
     const auto rep = check_geometric_texture(*mesh);
+    if (!rep) return cli::fail(args, rep.error());
     cli::json_line()
         .add("kind", kind)
         .add("generate_ms", ms)

@@ -1,5 +1,6 @@
 // tessera geo-wang build / geo-wang tile: planar geometric-texture Wang tiles (paper 000 §3):
 // build a complete tile set from an exemplar mesh, and tile a plane from a tile set directory.
+#include <cmath>
 #include <string>
 
 #include <tessera/geometry/check_geometric_texture.hpp>
@@ -23,8 +24,8 @@ int build(const cli::arguments& args) {
   if (!args.has("--colors")) return cli::fail(args, status::invalid_argument("missing required option --colors"));
   if (!args.has("--tile")) return cli::fail(args, status::invalid_argument("missing required option --tile"));
   auto colors = args.numbers("--colors", 2);
-  auto tile = args.number("--tile", 0);
-  auto edge = args.number("--edge-height", 0);
+  auto tile = args.number("--tile", 0, 0, 1e6);
+  auto edge = args.number("--edge-height", 0, 0, 1e6);
   if (!colors) return cli::fail(args, colors.error());
   if (!tile) return cli::fail(args, tile.error());
   if (!edge) return cli::fail(args, edge.error());
@@ -32,11 +33,12 @@ int build(const cli::arguments& args) {
   if (!ex_mesh) return cli::fail(args, ex_mesh.error());
   auto ex = prepare_quilt_exemplar(*ex_mesh);
   if (!ex) return cli::fail(args, ex.error());
+  for (const double c : *colors)
+    if (!(c >= 0 && c <= max_wang_colors) || c != std::floor(c))
+      return cli::fail(args, status::invalid_argument(detail::cat("--colors expects two integers NH,NV in [1, ", max_wang_colors, "], got ", c)));
   geometric_wang_options o;
   o.horizontal_colors = static_cast<int>((*colors)[0]);
   o.vertical_colors = static_cast<int>((*colors)[1]);
-  if (o.horizontal_colors != (*colors)[0] || o.vertical_colors != (*colors)[1])
-    return cli::fail(args, status::invalid_argument("--colors expects two integers NH,NV"));
   o.tile_size = *tile;
   o.edge_height = *edge;
   o.quilt.seed = args.seed();
@@ -49,6 +51,7 @@ int build(const cli::arguments& args) {
     geometric_texture_report sum;
     for (const auto& t : set->tiles) {
       const auto rep = check_geometric_texture(t, {0, 0, set->tile_size, set->tile_size});
+      if (!rep) return cli::fail(args, rep.error());
       sum.open_edges_inside += rep->open_edges_inside;
       sum.nonmanifold_edges += rep->nonmanifold_edges;
       sum.intersecting_pairs += rep->intersecting_pairs;
@@ -59,12 +62,18 @@ int build(const cli::arguments& args) {
         .add("build_ms", ms)
         .add("tiles", static_cast<index_t>(set->tiles.size()))
         .add("ms_per_tile", ms / double(set->tiles.size()))
+        .add("tile_size", set->tile_size)
         .add("edge_height", set->edge_height)
         .add("crossing_elements", set->crossing_elements)
         .add("quilted_source", set->quilted_source)
         .add("elements", sum.elements)
         .add("merges_succeeded", set->stats.merges_succeeded)
         .add("merges_attempted", set->stats.merges_attempted)
+        .add("elements_merged", set->stats.elements_merged)
+        .add("elements_dropped", set->stats.elements_dropped)
+        .add("frame_merges_attempted", set->frame_merges_attempted)
+        .add("frame_merged", set->frame_merged)
+        .add("frame_dropped", set->frame_dropped)
         .add("merge_fail_correspondence", set->stats.merge_fail_correspondence)
         .add("merge_fail_deform", set->stats.merge_fail_deform)
         .add("merge_fail_cut", set->stats.merge_fail_cut)
@@ -73,6 +82,7 @@ int build(const cli::arguments& args) {
         .add("open_edges_inside", sum.open_edges_inside)
         .add("nonmanifold_edges", sum.nonmanifold_edges)
         .add("intersecting_pairs", sum.intersecting_pairs)
+        .add("corner_crossings", tile_set_corner_crossings(*set))
         .add("border_mismatch", mismatch ? *mismatch : index_t{-1})
         .print();
   } else {
@@ -118,6 +128,7 @@ int tile(const cli::arguments& args) {
   if (args.stats()) {
     const double w = set->tile_size;
     const auto rep = check_geometric_texture(*plane, {0, 0, double(cols) * w, double(rows) * w});
+    if (!rep) return cli::fail(args, rep.error());
     const auto mismatch = tile_set_border_mismatch(*set);
     cli::json_line()
         .add("tiling_ms", ms)
@@ -128,6 +139,7 @@ int tile(const cli::arguments& args) {
         .add("open_edges_inside", rep->open_edges_inside)
         .add("nonmanifold_edges", rep->nonmanifold_edges)
         .add("intersecting_pairs", rep->intersecting_pairs)
+        .add("corner_crossings", tile_set_corner_crossings(*set))
         .add("border_mismatch", mismatch ? *mismatch : index_t{-1})
         .print();
   } else {

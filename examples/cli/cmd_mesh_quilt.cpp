@@ -19,7 +19,7 @@ int run(const cli::arguments& args) {
   auto size = args.numbers("--size", 2);
   if (!args.has("--size")) return cli::fail(args, status::invalid_argument("missing required option --size"));
   if (!size) return cli::fail(args, size.error());
-  auto lambda = args.number("--lambda", 1.0);
+  auto lambda = args.number("--lambda", 1.0, 0, 1e6);
   if (!lambda) return cli::fail(args, lambda.error());
   auto ex_mesh = read_mesh(*in);
   if (!ex_mesh) return cli::fail(args, ex_mesh.error());
@@ -35,6 +35,7 @@ int run(const cli::arguments& args) {
   if (auto s = write_mesh(*out, r->mesh); !s) return cli::fail(args, s);
   if (args.stats()) {
     const auto rep = check_geometric_texture(r->mesh);
+    if (!rep) return cli::fail(args, rep.error());
     cli::json_line()
         .add("quilt_ms", ms)
         .add("vertices", r->mesh.num_vertices())
@@ -51,6 +52,8 @@ int run(const cli::arguments& args) {
         .add("merge_fail_cut", r->stats.merge_fail_cut)
         .add("merge_fail_loops", r->stats.merge_fail_loops)
         .add("merge_fail_check", r->stats.merge_fail_check)
+        .add("icp_iterations", r->stats.icp_iterations)
+        .add("icp_discarded", r->stats.icp_discarded)
         .add("open_edges_inside", rep->open_edges_inside)
         .add("nonmanifold_edges", rep->nonmanifold_edges)
         .add("intersecting_pairs", rep->intersecting_pairs)

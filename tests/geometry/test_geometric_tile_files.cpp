@@ -5,6 +5,8 @@
 #include <catch2/catch.hpp>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 using namespace tessera;
 
@@ -36,6 +38,59 @@ TEST_CASE("geometric tile sets save and load exactly", "[tile_files]") {
   REQUIRE(back->edge_height == set.edge_height);
   REQUIRE(back->edges == set.edges);
   REQUIRE(back->tiles == set.tiles);  // bit-exact positions
+  // the manifest holds the exact tile size, not a rounded integer
+  std::ifstream json(dir + "/tiles.json");
+  const std::string text((std::istreambuf_iterator<char>(json)), std::istreambuf_iterator<char>());
+  REQUIRE(text.find("\"tile_size\": 2.5,") != std::string::npos);
+}
+
+TEST_CASE("tile sets in the older layout (integer tile_size + tile_world_size) still load", "[tile_files]") {
+  const std::string dir = std::string(TESSERA_TEST_OUTPUT_DIR) + "/geometric_tiles_old_layout";
+  std::filesystem::remove_all(dir);
+  REQUIRE(save_geometric_tile_set(dir, tiny_set()).ok());
+  {
+    std::ofstream json(dir + "/tiles.json", std::ios::trunc);
+    json << "{\"tile_size\": 3, \"horizontal_colors\": 1, \"vertical_colors\": 1, \"tile_world_size\": 2.5, \"edge_height\": 0.8,\n"
+            " \"tiles\": [{\"index\": 0, \"file\": \"tile_0.obj\", \"edges\": [0, 0, 0, 0]}]}\n";
+  }
+  const auto back = load_geometric_tile_set(dir);
+  REQUIRE(back.ok());
+  REQUIRE(back->tile_size == 2.5);
+  REQUIRE(back->tiles == tiny_set().tiles);
+  // and an integer-only manifest reads its integer size
+  {
+    std::ofstream json(dir + "/tiles.json", std::ios::trunc);
+    json << "{\"tile_size\": 3, \"horizontal_colors\": 1, \"vertical_colors\": 1,"
+            " \"tiles\": [{\"index\": 0, \"file\": \"tile_0.obj\", \"edges\": [0, 0, 0, 0]}]}\n";
+  }
+  REQUIRE(load_geometric_tile_set(dir)->tile_size == 3.0);
+  {
+    std::ofstream json(dir + "/tiles.json", std::ios::trunc);
+    json << "{\"tile_size\": -1, \"horizontal_colors\": 1, \"vertical_colors\": 1,"
+            " \"tiles\": [{\"index\": 0, \"file\": \"tile_0.obj\", \"edges\": [0, 0, 0, 0]}]}\n";
+  }
+  REQUIRE(load_geometric_tile_set(dir).error().message().find("tile_size must be > 0, got -1") != std::string::npos);
+}
+
+TEST_CASE("loading rejects a tile set whose borders do not match", "[tile_files]") {
+  const std::string dir = std::string(TESSERA_TEST_OUTPUT_DIR) + "/geometric_tiles_mismatch";
+  std::filesystem::remove_all(dir);
+  auto set = tiny_set();
+  // an element touching the north side only: with one colour, north and south must agree
+  tri_mesh& t = set.tiles[0];
+  t.add_face(t.add_vertex({0.5, 2.5, 0}), t.add_vertex({0.9, 2.5, 0}), t.add_vertex({0.7, 2.2, 0.3}));
+  REQUIRE(save_geometric_tile_set(dir, set).ok());
+  const auto r = load_geometric_tile_set(dir);
+  REQUIRE(r.error().code() == status_code::invalid_argument);
+  REQUIRE(r.error().message().find("border_mismatch 1:") != std::string::npos);
+  // a matching south side within the tolerance (1e-6) loads; beyond it, it does not
+  for (const double dz : {1e-8, 1e-4}) {
+    auto both = set;
+    tri_mesh& u = both.tiles[0];
+    u.add_face(u.add_vertex({0.5, 0, 0}), u.add_vertex({0.7, 0.3, 0.3}), u.add_vertex({0.9, 0, dz}));
+    REQUIRE(save_geometric_tile_set(dir, both).ok());
+    REQUIRE(load_geometric_tile_set(dir).ok() == (dz < 1e-6));
+  }
 }
 
 TEST_CASE("loading a tile directory with a missing file fails with a clear status", "[tile_files]") {

@@ -73,8 +73,10 @@ class max_flow_graph {
   }
 
   /// After solve(): true when `node` is on the SOURCE side of the minimum cut (reachable from
-  /// SOURCE in the residual graph). Nodes on neither search tree are on the SINK side.
+  /// SOURCE in the residual graph). Nodes on neither search tree are on the SINK side. False for a
+  /// node out of range and before solve().
   [[nodiscard]] bool in_source_set(index_t node) const noexcept {
+    if (!solved_ || node < 0 || node >= num_nodes()) return false;
     return nodes_[static_cast<std::size_t>(node)].tree == tree_source;
   }
 

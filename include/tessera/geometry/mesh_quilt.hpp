@@ -33,6 +33,7 @@ struct mesh_quilt_options {
   double deform_weight = 1.0;          ///< mu of eq. 6-7
   bool merge = true;                   ///< merge corresponding elements (§3.3.6); false drops overlapping ones
   int smooth_rings = 2;                ///< vertex rings relaxed around each merge seam
+  merge_rules rules = merge_rules::tessera;  ///< SOURCE/SINK rules of the element cuts (§3.3.6; see merge_rules)
   std::uint64_t seed = 0;
   tessera::progress progress = {};
 };
@@ -66,7 +67,7 @@ inline mesh_quilt_result finish_quilt(quilt_engine& engine) {
 }
 inline mesh_quilt_params to_params(const mesh_quilt_options& o, bool constrained, std::uint64_t stream) {
   return {o.patch_cells, o.lambda, o.max_samples, o.tolerance, o.icp, o.icp_iterations, o.correspondence_distance,
-          o.deform_weight, o.merge, o.smooth_rings, o.seed, stream, constrained};
+          o.deform_weight, o.merge, o.smooth_rings, o.seed, stream, constrained, o.rules};
 }
 }  // namespace detail
 

@@ -14,6 +14,7 @@
 
 #include "../core/config.hpp"
 #include "../core/executor.hpp"
+#include "../core/mesh_topology.hpp"
 #include "../core/status.hpp"
 #include "../core/tile_coloring.hpp"
 #include "../core/tri_mesh.hpp"
@@ -52,6 +53,37 @@ inline result<tile_border_layout> tile_border_vertices(const tri_mesh& tile, dou
     });
   }
   return l;
+}
+
+/// Elements (connected components) of a tile that touch two adjacent sides of [0, tile_size]^2
+/// (north and east, east and south, ...): elements crossing a tile corner, which §3.1 of paper 000
+/// (after Cohen et al.) rules out. An element may touch two opposite sides (a thread across the
+/// tile). A vertex counts as touching a side when its coordinate equals the side exactly (border
+/// vertices are cut exactly on the line). O(V + F).
+inline index_t tile_corner_crossings(const tri_mesh& tile, double tile_size) {
+  const mesh_components comp = connected_components(tile);
+  std::vector<unsigned> sides(static_cast<std::size_t>(comp.count), 0);
+  for (std::size_t f = 0; f < tile.faces.size(); ++f)
+    for (index_t v : tile.faces[f]) {
+      if (v < 0 || v >= tile.num_vertices()) continue;
+      const vec3 p = tile.positions[static_cast<std::size_t>(v)];
+      auto& b = sides[static_cast<std::size_t>(comp.face_component[f])];
+      b |= (p.y == tile_size ? border_bit(side_north) : 0u) | (p.x == tile_size ? border_bit(side_east) : 0u) |
+           (p.y == 0 ? border_bit(side_south) : 0u) | (p.x == 0 ? border_bit(side_west) : 0u);
+    }
+  index_t n = 0;
+  for (unsigned b : sides) {
+    const bool ns = b & (border_bit(side_north) | border_bit(side_south)), ew = b & (border_bit(side_east) | border_bit(side_west));
+    n += ns && ew ? 1 : 0;
+  }
+  return n;
+}
+
+/// tile_corner_crossings summed over the tiles of a set.
+inline index_t tile_set_corner_crossings(const geometric_tile_set& set) {
+  index_t n = 0;
+  for (const auto& t : set.tiles) n += tile_corner_crossings(t, set.tile_size);
+  return n;
 }
 
 /// Counts (tile, side) pairs whose border geometry differs from the reference of its colour (the

@@ -2,9 +2,9 @@
 // §3.3.5-3.3.6 of paper 000 (after Zhou et al. 2006): correspondences by closest points, Laplacian
 // deformation of both elements towards the midpoints (eq. 6 and 7) with border vertices fixed, a
 // graph cut of each element on its triangle dual graph with the eq. 8 weights and the SOURCE/SINK
-// rules, and a join of the two cut paths by a seam of new triangles, smoothed by a Poisson-style
-// solve (the Laplacian of the seam vertices driven to zero, details kept elsewhere, after Yu et al.
-// 2004). The result is checked (manifold, closed except on the tile border, no self-intersection,
+// rules, and a join of the two cut paths by a ladder of new triangles, smoothed by uniform-Laplacian
+// sweeps around the seam (element_seam.hpp; the paper joins by Poisson mesh merging, Yu et al. 2004,
+// which this is not). The result is checked (manifold, closed except on the tile border, no self-intersection,
 // inside the domain) and rejected otherwise, so callers can fall back without ever storing a bad
 // element.
 #pragma once
@@ -27,10 +27,25 @@
 #include "../laplacian.hpp"
 #include "../max_flow.hpp"
 #include "../mesh_elements.hpp"
+#include "element_seam.hpp"
 #include "mesh_clip.hpp"
 #include "triangle_geometry.hpp"
 
 TESSERA_NAMESPACE_BEGIN
+
+/// Which SOURCE/SINK rules cut the two elements (§3.3.6).
+///  - `paper`: as the paper words them. C_T: SOURCE = faces outside P_T, border triangles, fixed
+///    faces; SINK = faces around a vertex whose corresponding C_in face lies in the new region, is a
+///    border triangle of C_in, or is on C_in's frontier. C_in "by the same method", roles swapped.
+///  - `tessera` (default; docs/geometry.md says why, with measurements): C_T's vertices whose
+///    corresponding C_in face is a border triangle are not sent to SINK (C_in's border triangles
+///    cross the tile border and are always removed, so C_T must stay there); C_T's corresponded faces
+///    in the new region go to SINK; C_in's border triangles are hard SINK, and the rest of C_in is
+///    made consistent with C_T's cut (dropped where C_T is kept, kept where it was removed).
+/// Both: nothing non-fixed of C_in may cross a constrained domain's sides, and C_in's faces over old
+/// output outside P_T go.
+enum class merge_rules { tessera, paper };
+
 namespace detail {
 
 struct merge_params {
@@ -43,6 +58,19 @@ struct merge_params {
   /// Regions: "old" is what was synthesized before this patch (occupied cells), "patch" is P_T. The
   /// overlap of §3.3.6 is old and patch; the new region is patch but not old.
   std::function<bool(vec3)> is_old, in_patch;
+  merge_rules rules = merge_rules::tessera;
+};
+
+
+/// What merge_pair decided, for tests and diagnostics: terminal links per face (+1 SOURCE, -1 SINK,
+/// 0 free), the kept faces of each element after its cut, Dist(v, other element) per vertex (eq. 8,
+/// capped), and the number of seams joined.
+struct merge_trace {
+  std::vector<signed char> term_t, term_in;
+  std::vector<unsigned char> keep_t, keep_in;
+  std::vector<double> dist_t, dist_in;
+  tri_mesh deformed_t, deformed_in;
+  index_t seams = 0;
 };
 
 struct merge_counters {
@@ -52,101 +80,6 @@ struct merge_counters {
 
 inline bool strictly_inside(const xy_rect& d, vec3 p, double m) {
   return p.x > d.x0 + m && p.x < d.x1 - m && p.y > d.y0 + m && p.y < d.y1 - m;
-}
-
-/// Vertex -> incident faces (CSR).
-struct vertex_faces {
-  std::vector<index_t> offset, faces;
-  explicit vertex_faces(const tri_mesh& m) {
-    offset.assign(m.positions.size() + 1, 0);
-    for (const auto& f : m.faces)
-      for (index_t v : f) ++offset[static_cast<std::size_t>(v) + 1];
-    for (std::size_t i = 1; i < offset.size(); ++i) offset[i] += offset[i - 1];
-    faces.resize(static_cast<std::size_t>(offset.back()));
-    std::vector<index_t> fill(offset.begin(), offset.end() - 1);
-    for (std::size_t f = 0; f < m.faces.size(); ++f)
-      for (index_t v : m.faces[f]) faces[static_cast<std::size_t>(fill[static_cast<std::size_t>(v)]++)] = static_cast<index_t>(f);
-  }
-  template <class Fn>
-  void each(index_t v, Fn&& fn) const {
-    for (index_t i = offset[static_cast<std::size_t>(v)]; i < offset[static_cast<std::size_t>(v) + 1]; ++i) fn(faces[static_cast<std::size_t>(i)]);
-  }
-};
-
-inline vec3 centroid(const tri_mesh& m, index_t f) {
-  const auto& t = m.faces[static_cast<std::size_t>(f)];
-  return (m.positions[static_cast<std::size_t>(t[0])] + m.positions[static_cast<std::size_t>(t[1])] + m.positions[static_cast<std::size_t>(t[2])]) / 3.0;
-}
-
-/// Keeps the faces with keep[f] != 0; returns the sub-mesh and the old -> new vertex map.
-inline tri_mesh submesh(const tri_mesh& m, const std::vector<unsigned char>& keep, std::vector<index_t>& map) {
-  tri_mesh out;
-  map.assign(m.positions.size(), -1);
-  for (std::size_t f = 0; f < m.faces.size(); ++f) {
-    if (!keep[f]) continue;
-    std::array<index_t, 3> t{};
-    for (int k = 0; k < 3; ++k) {
-      const index_t v = m.faces[f][static_cast<std::size_t>(k)];
-      auto& id = map[static_cast<std::size_t>(v)];
-      if (id < 0) id = out.add_vertex(m.positions[static_cast<std::size_t>(v)]);
-      t[static_cast<std::size_t>(k)] = id;
-    }
-    out.add_face(t[0], t[1], t[2]);
-  }
-  return out;
-}
-
-/// Boundary edges of `m` as a set of directed pairs.
-inline std::vector<std::pair<index_t, index_t>> boundary_edge_set(const tri_mesh& m) {
-  std::vector<std::pair<index_t, index_t>> e;
-  for (const auto& b : boundary_edges(m)) e.push_back({std::min(b[0], b[1]), std::max(b[0], b[1])});
-  std::sort(e.begin(), e.end());
-  return e;
-}
-
-/// The boundary loops of a kept part that the cut created (`loops` of the part, `map` from the
-/// original mesh to the part). Loops made only of the original's boundary edges are left out; a loop
-/// mixing both makes the cut unusable (returns false). `out` may alias `loops`.
-inline bool cut_loops(const tri_mesh& original, const std::vector<index_t>& map, const std::vector<std::vector<index_t>>& loops,
-                      std::vector<std::vector<index_t>>& out) {
-  const std::vector<std::pair<index_t, index_t>> orig = boundary_edge_set(original);
-  std::vector<index_t> back;
-  for (std::size_t v = 0; v < map.size(); ++v)
-    if (map[v] >= 0) {
-      if (back.size() <= static_cast<std::size_t>(map[v])) back.resize(static_cast<std::size_t>(map[v]) + 1);
-      back[static_cast<std::size_t>(map[v])] = static_cast<index_t>(v);
-    }
-  std::vector<std::vector<index_t>> kept;
-  for (const auto& l : loops) {
-    std::size_t n = 0;
-    for (std::size_t i = 0; i < l.size(); ++i) {
-      const index_t a = back[static_cast<std::size_t>(l[i])], b = back[static_cast<std::size_t>(l[(i + 1) % l.size()])];
-      n += std::binary_search(orig.begin(), orig.end(), std::pair{std::min(a, b), std::max(a, b)}) ? 1 : 0;
-    }
-    if (n == l.size()) continue;
-    if (n != 0) return false;
-    kept.push_back(l);
-  }
-  out = std::move(kept);
-  return true;
-}
-
-/// True when any two faces of `m` that share no vertex intersect.
-inline bool self_intersects(const tri_mesh& m) {
-  const triangle_bvh bvh(m);
-  bool hit = false;
-  bvh.for_each_self_intersection(
-      [&](index_t f, index_t g) {
-        if (hit) return true;
-        const auto& a = m.faces[static_cast<std::size_t>(f)];
-        const auto& b = m.faces[static_cast<std::size_t>(g)];
-        for (index_t x : a)
-          for (index_t y : b)
-            if (x == y) return true;
-        return false;
-      },
-      [&](index_t, index_t) { hit = true; });
-  return hit;
 }
 
 // Minimum cut of a mesh's triangle dual graph with the eq. 8 weights. `dist[v]` is Dist(v, other
@@ -182,47 +115,13 @@ inline std::optional<std::vector<unsigned char>> dual_graph_cut(const tri_mesh& 
   return keep;
 }
 
-inline vec3 vector_area(const tri_mesh& m, const std::vector<index_t>& loop) {
-  vec3 a;
-  for (std::size_t i = 0; i < loop.size(); ++i)
-    a += cross(m.positions[static_cast<std::size_t>(loop[i])], m.positions[static_cast<std::size_t>(loop[(i + 1) % loop.size()])]);
-  return a * 0.5;
-}
-
-// Joins loop a (ids in `m`, running as the boundary half-edges of its side) to loop b (same, other
-// side) with a ladder of triangles, choosing the shorter diagonal at each step.
-inline void stitch_loops(tri_mesh& m, const std::vector<index_t>& a, std::vector<index_t> b) {
-  std::reverse(b.begin(), b.end());
-  const std::size_t na = a.size(), nb = b.size();
-  std::size_t start = 0;
-  double best = std::numeric_limits<double>::infinity();
-  for (std::size_t k = 0; k < nb; ++k) {
-    const double d = squared_norm(m.positions[static_cast<std::size_t>(b[k])] - m.positions[static_cast<std::size_t>(a[0])]);
-    if (d < best) best = d, start = k;
-  }
-  auto A = [&](std::size_t i) { return a[i % na]; };
-  auto B = [&](std::size_t k) { return b[(start + k) % nb]; };
-  auto P = [&](index_t v) { return m.positions[static_cast<std::size_t>(v)]; };
-  std::size_t i = 0, k = 0;
-  while (i < na || k < nb) {
-    const bool adv_a = k == nb || (i < na && squared_norm(P(A(i + 1)) - P(B(k))) <= squared_norm(P(A(i)) - P(B(k + 1))));
-    if (adv_a) {
-      m.add_face(A(i + 1), A(i), B(k));
-      ++i;
-    } else {
-      m.add_face(B(k), B(k + 1), A(i));
-      ++k;
-    }
-  }
-}
-
 /// Deforms and merges `ct` (already in the output, may carry fixed vertices and a border set) with
 /// `cin` (a new element from the translated exemplar). Returns the merged element or nothing.
 inline std::optional<texture_element> merge_pair(const texture_element& ct, const texture_element& cin, const merge_params& p,
-                                                 merge_counters& stats) {
+                                                 merge_counters& stats, merge_trace* trace = nullptr) {
   ++stats.attempted;
   const double corr2 = p.corr_dist * p.corr_dist;
-  const double dist_cap = 4 * p.corr_dist;
+  const double dist_cap = 4 * p.corr_dist;  // Dist of eq. 8 is searched up to 4 correspondence radii, capped there
   // --- §3.3.4 correspondences: C_T vertices -> closest points on C_in
   struct corr {
     index_t v, face;
@@ -268,7 +167,6 @@ inline std::optional<texture_element> merge_pair(const texture_element& ct, cons
   const triangle_bvh t_bvh(t2), in_bvh(in2);
   texture_element t_el{t2, fixed_t, ct.border, {}}, in_el{in2, fixed_in, cin_b.border, {}};
   const auto border_t = border_triangles(t_el, p.domain), border_in = border_triangles(in_el, p.domain);
-  const vertex_faces vf_t(t2), vf_in(in2);
 
   // --- §3.3.6 cut of C_T
   std::vector<double> dist_t(t2.positions.size()), dist_in(in2.positions.size());
@@ -283,51 +181,73 @@ inline std::optional<texture_element> merge_pair(const texture_element& ct, cons
     dist_in[v] = h.face >= 0 ? std::sqrt(h.squared_distance) : dist_cap;
     if (h.face >= 0 && h.squared_distance <= corr2) corr_face_in[v] = h.face;
   }
-  // faces of C_in that have C_T within the correspondence distance (all three corners), and the
-  // frontier of that set: where C_in goes on beyond C_T
-  std::vector<unsigned char> in_corresponded(in2.faces.size(), 0), in_frontier(in2.faces.size(), 0);
-  for (std::size_t f = 0; f < in2.faces.size(); ++f) {
-    bool all = true;
-    for (index_t v : in2.faces[f]) all = all && corr_face_in[static_cast<std::size_t>(v)] >= 0;
-    in_corresponded[f] = all ? 1 : 0;
-  }
-  const auto adj_in = face_adjacency(in2);
-  for (std::size_t f = 0; f < in2.faces.size(); ++f)
-    if (in_corresponded[f])
-      for (index_t g : adj_in.neighbor[f])
-        if (g >= 0 && !in_corresponded[static_cast<std::size_t>(g)]) in_frontier[f] = 1;
-  // SOURCE: C_T outside the overlap (old, not in the patch), its border triangles and fixed parts.
-  // SINK: around C_T vertices whose corresponding C_in face must be kept (in the new region, or on the
-  // frontier of the corresponded part of C_in), unless the C_in face is a border triangle.
+  if (trace) trace->dist_t = dist_t, trace->dist_in = dist_in, trace->deformed_t = t2, trace->deformed_in = in2;
+  // The "frontier" of §3.3.6 on each element: faces all of whose corners have the other element
+  // within the correspondence distance, next to a face that has not (where the element goes on beyond
+  // the other one). The paper asks for the faces whose neighbours no vertex of the other element is
+  // closest to; closest-face sets are too sparse on meshes of similar density, so every face near
+  // the other element counts as corresponded.
+  auto frontier = [](const tri_mesh& m, const std::vector<index_t>& corr_face) {
+    std::vector<unsigned char> corresponded(m.faces.size(), 0), out(m.faces.size(), 0);
+    for (std::size_t f = 0; f < m.faces.size(); ++f) {
+      bool all = true;
+      for (index_t v : m.faces[f]) all = all && corr_face[static_cast<std::size_t>(v)] >= 0;
+      corresponded[f] = all ? 1 : 0;
+    }
+    const auto adj = face_adjacency(m);
+    for (std::size_t f = 0; f < m.faces.size(); ++f)
+      if (corresponded[f])
+        for (index_t g : adj.neighbor[f])
+          if (g >= 0 && !corresponded[static_cast<std::size_t>(g)]) out[f] = 1;
+    return out;
+  };
+  const std::vector<unsigned char> in_frontier = frontier(in2, corr_face_in);
+  const bool paper = p.rules == merge_rules::paper;
+  // SOURCE of an element: its faces outside the overlap (C_T: old and outside the patch; C_in: the
+  // new region), its border triangles, faces with a fixed vertex. SINK: the faces around each vertex
+  // whose corresponding face on the other element is outside the overlap, a border triangle (paper
+  // rules only; see merge_rules) or on the other element's frontier.
   auto is_new = [&](vec3 c) { return p.in_patch(c) && !p.is_old(c); };
+  auto is_kept_old = [&](vec3 c) { return p.is_old(c) && !p.in_patch(c); };
   std::vector<signed char> term_t(t2.faces.size(), 0);
   bool any_source = false;
   for (std::size_t f = 0; f < t2.faces.size(); ++f) {
     const vec3 c = centroid(t2, static_cast<index_t>(f));
-    bool src = (p.is_old(c) && !p.in_patch(c)) || border_t[f];
+    bool src = (paper ? !p.in_patch(c) : is_kept_old(c)) || border_t[f];
     for (index_t v : t2.faces[f]) src = src || fixed_t[static_cast<std::size_t>(v)];
     if (src) term_t[f] = 1, any_source = true;
   }
   std::vector<unsigned char> sink_vertex(t2.positions.size(), 0);
   for (std::size_t v = 0; v < t2.positions.size(); ++v) {
     const index_t fi = corr_face_t[v];
-    if (fi < 0 || border_in[static_cast<std::size_t>(fi)]) continue;
+    if (fi < 0) continue;
+    if (border_in[static_cast<std::size_t>(fi)]) {
+      sink_vertex[v] = paper ? 1 : 0;
+      continue;
+    }
     const vec3 c = centroid(in2, fi);
     if (is_new(c) || (in_frontier[static_cast<std::size_t>(fi)] && p.in_patch(c))) sink_vertex[v] = 1;
   }
-  bool any_sink = false;
+  bool any_sink = false, conflict = false;
   for (std::size_t f = 0; f < t2.faces.size(); ++f) {
-    if (term_t[f] != 0) continue;
-    bool sink = is_new(centroid(t2, static_cast<index_t>(f))) && corr_face_t[static_cast<std::size_t>(t2.faces[f][0])] >= 0;
+    bool sink = !paper && is_new(centroid(t2, static_cast<index_t>(f))) && corr_face_t[static_cast<std::size_t>(t2.faces[f][0])] >= 0;
     for (index_t v : t2.faces[f]) sink = sink || sink_vertex[static_cast<std::size_t>(v)];
-    if (sink) term_t[f] = -1, any_sink = true;
+    if (!sink) continue;
+    if (term_t[f] > 0) {
+      // SOURCE and SINK at once: the paper's graph has an infinite cut there; tessera keeps SOURCE
+      // (the face is kept, the seam goes around it)
+      conflict = conflict || paper;
+      continue;
+    }
+    term_t[f] = -1, any_sink = true;
   }
   if (!any_source) {
     // C_T lies entirely in the patch: anchor it on its old part away from the sinks
     for (std::size_t f = 0; f < t2.faces.size(); ++f)
       if (term_t[f] == 0 && p.is_old(centroid(t2, static_cast<index_t>(f)))) term_t[f] = 1, any_source = true;
   }
-  if (!any_sink || !any_source) {
+  if (trace) trace->term_t = term_t;
+  if (!any_sink || !any_source || conflict) {
     ++stats.fail_cut;
     return std::nullopt;
   }
@@ -339,25 +259,42 @@ inline std::optional<texture_element> merge_pair(const texture_element& ct, cons
     ++stats.fail_cut;
     return std::nullopt;
   }
-  // --- cut of C_in: never keep what crosses the tile border; keep what lies in the new region; and
-  // stay consistent with the cut of C_T (drop where C_T is kept, keep where C_T was removed)
+  if (trace) trace->keep_t = *keep_t;
+  // --- cut of C_in. Both rule sets: nothing non-fixed may cross a tile border (§3.3.5: the part of
+  // C_in merged into M_T must not cross it), and exemplar content over old output outside the patch
+  // goes (the exemplar only fills P_T).
   std::vector<signed char> term_in(in2.faces.size(), 0);
-  for (std::size_t f = 0; f < in2.faces.size(); ++f) {
+  const std::vector<unsigned char> t_frontier = paper ? frontier(t2, corr_face_t) : std::vector<unsigned char>{};
+  std::vector<unsigned char> sink_in(in2.positions.size(), 0);
+  if (paper)
+    for (std::size_t v = 0; v < in2.positions.size(); ++v) {
+      const index_t ft = corr_face_in[v];
+      if (ft < 0) continue;
+      const vec3 c = centroid(t2, ft);
+      sink_in[v] = is_kept_old(c) || border_t[static_cast<std::size_t>(ft)] || (t_frontier[static_cast<std::size_t>(ft)] && p.in_patch(c));
+    }
+  for (std::size_t f = 0; f < in2.faces.size() && !conflict; ++f) {
     bool has_fixed = false;
     for (index_t v : in2.faces[f]) has_fixed = has_fixed || (static_cast<std::size_t>(v) < cin.fixed.size() && cin.fixed[static_cast<std::size_t>(v)]);
+    bool must_go = false;
+    if (p.constrained)
+      for (index_t v : in2.faces[f]) must_go = must_go || !strictly_inside(p.domain, in2.positions[static_cast<std::size_t>(v)], p.margin);
+    const vec3 c = centroid(in2, static_cast<index_t>(f));
+    must_go = must_go || is_kept_old(c);
+    if (paper) {
+      // "the same method" as for C_T, with the roles of the two elements swapped
+      bool src = has_fixed || is_new(c) || border_in[f];
+      bool sink = must_go;
+      for (index_t v : in2.faces[f]) sink = sink || sink_in[static_cast<std::size_t>(v)];
+      if (src && sink) conflict = true;
+      term_in[f] = src ? 1 : sink ? -1 : 0;
+      continue;
+    }
     if (has_fixed) {  // a border part it brought from an earlier merge: keep
       term_in[f] = 1;
       continue;
     }
-    bool hard_sink = border_in[f] != 0;
-    if (p.constrained)
-      for (index_t v : in2.faces[f]) hard_sink = hard_sink || !strictly_inside(p.domain, in2.positions[static_cast<std::size_t>(v)], p.margin);
-    if (hard_sink) {
-      term_in[f] = -1;
-      continue;
-    }
-    const vec3 c = centroid(in2, static_cast<index_t>(f));
-    if (p.is_old(c) && !p.in_patch(c)) {  // exemplar content over old output outside the patch
+    if (must_go || border_in[f]) {  // C_in's border triangles cross the tile border: never kept
       term_in[f] = -1;
       continue;
     }
@@ -365,6 +302,7 @@ inline std::optional<texture_element> merge_pair(const texture_element& ct, cons
       term_in[f] = 1;
       continue;
     }
+    // consistent with the cut of C_T: drop where C_T is kept, keep where C_T was removed
     int to_kept = 0, to_removed = 0;
     for (index_t v : in2.faces[f]) {
       const index_t ft = corr_face_in[static_cast<std::size_t>(v)];
@@ -374,6 +312,11 @@ inline std::optional<texture_element> merge_pair(const texture_element& ct, cons
     if (to_kept > 0 && to_removed == 0) term_in[f] = -1;
     else if (to_removed > 0 && to_kept == 0) term_in[f] = 1;
   }
+  if (trace) trace->term_in = term_in;
+  if (conflict) {
+    ++stats.fail_cut;
+    return std::nullopt;
+  }
   std::vector<double> bias_in(in2.faces.size());
   for (std::size_t f = 0; f < in2.faces.size(); ++f) bias_in[f] = p.is_old(centroid(in2, static_cast<index_t>(f))) ? -bias_weight : bias_weight;
   const auto keep_in = dual_graph_cut(in2, dist_in, term_in, bias_in);
@@ -381,6 +324,7 @@ inline std::optional<texture_element> merge_pair(const texture_element& ct, cons
     ++stats.fail_cut;
     return std::nullopt;
   }
+  if (trace) trace->keep_in = *keep_in;
   const auto count = [](const std::vector<unsigned char>& k) { return std::count(k.begin(), k.end(), 1); };
   if (count(*keep_t) == 0 || count(*keep_t) == static_cast<std::ptrdiff_t>(keep_t->size()) || count(*keep_in) == 0 ||
       count(*keep_in) == static_cast<std::ptrdiff_t>(keep_in->size())) {
@@ -440,48 +384,9 @@ inline std::optional<texture_element> merge_pair(const texture_element& ct, cons
     stitch_loops(out.mesh, new_t[i], b);
     seam_vertices.insert(seam_vertices.end(), new_t[i].begin(), new_t[i].end());
     seam_vertices.insert(seam_vertices.end(), b.begin(), b.end());
+    if (trace) ++trace->seams;
   }
-  // --- smooth around the seam: Gauss-Seidel on L w = delta*, delta* = 0 on the seam, original
-  // Laplacian coordinates (uniform weights) elsewhere; fixed and border vertices stay put
-  {
-    const std::size_t nv = out.mesh.positions.size();
-    std::vector<std::vector<index_t>> nbr(nv);
-    for (const auto& f : out.mesh.faces)
-      for (int k = 0; k < 3; ++k) {
-        nbr[static_cast<std::size_t>(f[static_cast<std::size_t>(k)])].push_back(f[static_cast<std::size_t>((k + 1) % 3)]);
-        nbr[static_cast<std::size_t>(f[static_cast<std::size_t>((k + 1) % 3)])].push_back(f[static_cast<std::size_t>(k)]);
-      }
-    for (auto& n : nbr) {
-      std::sort(n.begin(), n.end());
-      n.erase(std::unique(n.begin(), n.end()), n.end());
-    }
-    std::vector<int> ring(nv, -1);
-    std::vector<index_t> frontier = seam_vertices;
-    for (index_t v : frontier) ring[static_cast<std::size_t>(v)] = 0;
-    for (int r = 1; r <= p.smooth_rings; ++r) {
-      std::vector<index_t> next;
-      for (index_t v : frontier)
-        for (index_t w : nbr[static_cast<std::size_t>(v)])
-          if (ring[static_cast<std::size_t>(w)] < 0) ring[static_cast<std::size_t>(w)] = r, next.push_back(w);
-      frontier = std::move(next);
-    }
-    texture_element tmp{out.mesh, out.fixed, out.border, {}};
-    const auto bverts = border_vertices(tmp, p.domain);
-    std::vector<vec3> delta(nv);
-    for (std::size_t v = 0; v < nv; ++v) {
-      if (ring[v] <= 0 || nbr[v].empty()) continue;
-      vec3 avg;
-      for (index_t w : nbr[v]) avg += out.mesh.positions[static_cast<std::size_t>(w)];
-      delta[v] = out.mesh.positions[v] - avg / double(nbr[v].size());
-    }
-    for (int sweep = 0; sweep < 30; ++sweep)
-      for (std::size_t v = 0; v < nv; ++v) {
-        if (ring[v] < 0 || out.fixed[v] || bverts[v] || nbr[v].empty()) continue;
-        vec3 avg;
-        for (index_t w : nbr[v]) avg += out.mesh.positions[static_cast<std::size_t>(w)];
-        out.mesh.positions[v] = avg / double(nbr[v].size()) + delta[v];
-      }
-  }
+  smooth_seam(out, seam_vertices, p.domain, p.smooth_rings);
   // --- checks
   const edge_defects d = count_edge_defects(out.mesh);
   bool ok = d.nonmanifold_edges == 0;

@@ -40,6 +40,7 @@ struct mesh_quilt_stats {
   index_t merges_attempted = 0;  ///< pairwise merges tried (one exemplar element may merge several)
   index_t merges_succeeded = 0;
   index_t icp_iterations = 0;    ///< total ICP updates (eq. 5)
+  index_t icp_discarded = 0;     ///< ICP results not used (no pairs, or a move of a cell or more)
   /// Why merges failed: too few correspondences, deformation solve, graph cut (nothing to cut or
   /// an infinite cut), cut paths that could not be paired, and the final check (self-intersection,
   /// leaving the tile, open or non-manifold edges).
@@ -49,7 +50,7 @@ struct mesh_quilt_stats {
     merge_fail_cut += o.merge_fail_cut, merge_fail_loops += o.merge_fail_loops, merge_fail_check += o.merge_fail_check;
     patches += o.patches, elements_added += o.elements_added, elements_merged += o.elements_merged;
     elements_dropped += o.elements_dropped, merges_attempted += o.merges_attempted, merges_succeeded += o.merges_succeeded;
-    icp_iterations += o.icp_iterations;
+    icp_iterations += o.icp_iterations, icp_discarded += o.icp_discarded;
     return *this;
   }
 };
@@ -70,6 +71,7 @@ struct mesh_quilt_params {
   std::uint64_t seed = 0;
   std::uint64_t stream = 0;  // distinguishes tiles of one set
   bool constrained = false;
+  merge_rules rules = merge_rules::tessera;
 };
 
 class quilt_engine {
@@ -142,69 +144,15 @@ class quilt_engine {
   }
   [[nodiscard]] const mesh_quilt_stats& stats() const noexcept { return stats_; }
 
- private:
-  void push(texture_element e) {
-    elems_.push_back(std::move(e));
-    alive_.push_back(1);
-    bvh_.emplace_back();
-    normals_.emplace_back();
-  }
-  const triangle_bvh& bvh_of(std::size_t i) {
-    if (!bvh_[i]) bvh_[i].emplace(elems_[i].mesh);
-    return *bvh_[i];
-  }
-
-  [[nodiscard]] index_t cell_of(vec3 p) const {
-    const auto i = static_cast<index_t>(std::floor((p.x - domain_.x0) / cell_));
-    const auto j = static_cast<index_t>(std::floor((p.y - domain_.y0) / cell_));
-    if (i < 0 || j < 0 || i >= cols_ || j >= rows_) return -1;
-    return j * cols_ + i;
-  }
-  [[nodiscard]] bool occupied(vec3 p) const {
-    const index_t c = cell_of(p);
-    return c >= 0 && occ_[static_cast<std::size_t>(c)];
-  }
-
-  // §3.3.2: the unoccupied cell with the most occupied neighbours (ties: smallest index)
-  [[nodiscard]] index_t pick_seed() const {
-    index_t best = -1;
-    int best_n = -1;
-    for (index_t j = 0; j < rows_; ++j)
-      for (index_t i = 0; i < cols_; ++i) {
-        if (occ_[static_cast<std::size_t>(j * cols_ + i)]) continue;
-        int n = 0;
-        for (int dj = -1; dj <= 1; ++dj)
-          for (int di = -1; di <= 1; ++di) {
-            const index_t a = i + di, b = j + dj;
-            if ((di || dj) && a >= 0 && b >= 0 && a < cols_ && b < rows_ && occ_[static_cast<std::size_t>(b * cols_ + a)]) ++n;
-          }
-        if (n > best_n) best_n = n, best = j * cols_ + i;
-      }
-    return best;
-  }
-
-  struct sample {
-    vec3 p, n;
-  };
-  std::vector<sample> samples_in(const xy_rect& w) {
-    std::vector<sample> s;
-    for (std::size_t i = 0; i < elems_.size(); ++i) {
-      if (!alive_[i] || !w.overlaps(elems_[i].box)) continue;
-      if (normals_[i].empty()) normals_[i] = vertex_normals(elems_[i].mesh);
-      const auto& m = elems_[i].mesh;
-      for (std::size_t v = 0; v < m.positions.size(); ++v)
-        if (w.contains(m.positions[v])) s.push_back({m.positions[v], normals_[i][v]});
-    }
-    if (static_cast<int>(s.size()) > p_.max_samples) {
-      std::vector<sample> sub;
-      const double step = double(s.size()) / p_.max_samples;
-      for (int i = 0; i < p_.max_samples; ++i) sub.push_back(s[static_cast<std::size_t>(i * step)]);
-      s = std::move(sub);
-    }
-    return s;
-  }
-
-  // §3.3.3: grid-restricted best translation (eq. 1-4), then ICP (eq. 5)
+  /// §3.3.3: the translation of the exemplar for the patch window `w` (the `patch`-th patch: seeds
+  /// the random pick). Candidates are the grid multiples that cover `w` with a margin; each is
+  /// scored by eq. 4, the sum over M_T's vertices in `w` of eq. 2, the minimum over exemplar faces
+  /// of eq. 1. Simplifications (docs/geometry.md): eq. 2 looks at faces within one grid cell (farther
+  /// surface costs as if a cell away with an orthogonal normal); eq. 4 runs on at most max_samples
+  /// evenly thinned vertices; with more than 8 candidates, every 4th sample ranks them all and only
+  /// the best 8 get the full eq. 4; one is drawn among those within (1 + tolerance) of the best.
+  /// ICP (eq. 5) then refines it in XY for at most icp_iterations steps; its result is discarded
+  /// when it pairs nothing or moves a cell or more. Public for tests; run() calls it per patch.
   vec3 find_translation(const xy_rect& w, index_t patch) {
     const aabb& eb = ex_.bounds();
     const vec3 ext = eb.extent();
@@ -291,9 +239,73 @@ class quilt_engine {
       if (r && r->pairs > 0 && norm(r->translation - t) < cell_) {
         t = r->translation;
         stats_.icp_iterations += r->iterations;
+      } else {
+        ++stats_.icp_discarded;
       }
     }
     return t;
+  }
+
+ private:
+  void push(texture_element e) {
+    elems_.push_back(std::move(e));
+    alive_.push_back(1);
+    bvh_.emplace_back();
+    normals_.emplace_back();
+  }
+  const triangle_bvh& bvh_of(std::size_t i) {
+    if (!bvh_[i]) bvh_[i].emplace(elems_[i].mesh);
+    return *bvh_[i];
+  }
+
+  [[nodiscard]] index_t cell_of(vec3 p) const {
+    const auto i = static_cast<index_t>(std::floor((p.x - domain_.x0) / cell_));
+    const auto j = static_cast<index_t>(std::floor((p.y - domain_.y0) / cell_));
+    if (i < 0 || j < 0 || i >= cols_ || j >= rows_) return -1;
+    return j * cols_ + i;
+  }
+  [[nodiscard]] bool occupied(vec3 p) const {
+    const index_t c = cell_of(p);
+    return c >= 0 && occ_[static_cast<std::size_t>(c)];
+  }
+
+  // §3.3.2: the unoccupied cell with the most occupied neighbours (ties: smallest index)
+  [[nodiscard]] index_t pick_seed() const {
+    index_t best = -1;
+    int best_n = -1;
+    for (index_t j = 0; j < rows_; ++j)
+      for (index_t i = 0; i < cols_; ++i) {
+        if (occ_[static_cast<std::size_t>(j * cols_ + i)]) continue;
+        int n = 0;
+        for (int dj = -1; dj <= 1; ++dj)
+          for (int di = -1; di <= 1; ++di) {
+            const index_t a = i + di, b = j + dj;
+            if ((di || dj) && a >= 0 && b >= 0 && a < cols_ && b < rows_ && occ_[static_cast<std::size_t>(b * cols_ + a)]) ++n;
+          }
+        if (n > best_n) best_n = n, best = j * cols_ + i;
+      }
+    return best;
+  }
+
+  struct sample {
+    vec3 p, n;
+  };
+  std::vector<sample> samples_in(const xy_rect& w) {
+    std::vector<sample> s;
+    for (std::size_t i = 0; i < elems_.size(); ++i) {
+      if (!alive_[i] || !w.overlaps(elems_[i].box)) continue;
+      if (normals_[i].empty()) normals_[i] = vertex_normals(elems_[i].mesh);
+      const auto& m = elems_[i].mesh;
+      for (std::size_t v = 0; v < m.positions.size(); ++v)
+        if (w.contains(m.positions[v])) s.push_back({m.positions[v], normals_[i][v]});
+    }
+    if (static_cast<int>(s.size()) > p_.max_samples) {
+      std::vector<sample> sub;
+      const double step = double(s.size()) / p_.max_samples;
+      for (int i = 0; i < p_.max_samples; ++i) sub.push_back(s[static_cast<std::size_t>(i * step)]);
+      s = std::move(sub);
+    }
+    return s;
   }
 
   // The part of an exemplar element inside `clip` (capped where cut); one element per component.
@@ -339,6 +351,7 @@ class quilt_engine {
     mp.corr_dist = corr_;
     mp.mu = p_.deform_weight;
     mp.smooth_rings = p_.smooth_rings;
+    mp.rules = p_.rules;
     mp.margin = 1e-7 * cell_;
     mp.is_old = [&](vec3 p) { return occupied(p); };
     mp.in_patch = [&](vec3 p) { return w.contains(p); };

@@ -1,0 +1,181 @@
+// tessera/geometry/detail/element_seam.hpp: the mesh plumbing of element merging (paper 000 §3.3.6):
+// sub-meshes of the faces a cut keeps, the boundary loops a cut creates, a ladder of triangles joining
+// two facing loops, and the smoothing of the vertices around the seam. The seam join is NOT the
+// Poisson mesh merging of Yu et al. 2004 that the paper cites: it is a ladder of new triangles between
+// the two cut paths, then a few Gauss-Seidel sweeps of uniform-Laplacian smoothing that pull the seam
+// ring to the average of its neighbours (delta = 0) and keep the original uniform Laplacian
+// coordinates of the rings around it.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <utility>
+#include <vector>
+
+#include "../../core/config.hpp"
+#include "../../core/mesh_topology.hpp"
+#include "../../core/tri_mesh.hpp"
+#include "../../core/vec.hpp"
+#include "../bvh.hpp"
+#include "../mesh_elements.hpp"
+
+TESSERA_NAMESPACE_BEGIN
+namespace detail {
+
+inline vec3 centroid(const tri_mesh& m, index_t f) {
+  const auto& t = m.faces[static_cast<std::size_t>(f)];
+  return (m.positions[static_cast<std::size_t>(t[0])] + m.positions[static_cast<std::size_t>(t[1])] + m.positions[static_cast<std::size_t>(t[2])]) / 3.0;
+}
+
+/// Keeps the faces with keep[f] != 0; returns the sub-mesh and the old -> new vertex map.
+inline tri_mesh submesh(const tri_mesh& m, const std::vector<unsigned char>& keep, std::vector<index_t>& map) {
+  tri_mesh out;
+  map.assign(m.positions.size(), -1);
+  for (std::size_t f = 0; f < m.faces.size(); ++f) {
+    if (!keep[f]) continue;
+    std::array<index_t, 3> t{};
+    for (int k = 0; k < 3; ++k) {
+      const index_t v = m.faces[f][static_cast<std::size_t>(k)];
+      auto& id = map[static_cast<std::size_t>(v)];
+      if (id < 0) id = out.add_vertex(m.positions[static_cast<std::size_t>(v)]);
+      t[static_cast<std::size_t>(k)] = id;
+    }
+    out.add_face(t[0], t[1], t[2]);
+  }
+  return out;
+}
+
+/// Boundary edges of `m` as a set of directed pairs.
+inline std::vector<std::pair<index_t, index_t>> boundary_edge_set(const tri_mesh& m) {
+  std::vector<std::pair<index_t, index_t>> e;
+  for (const auto& b : boundary_edges(m)) e.push_back({std::min(b[0], b[1]), std::max(b[0], b[1])});
+  std::sort(e.begin(), e.end());
+  return e;
+}
+
+/// The boundary loops of a kept part that the cut created (`loops` of the part, `map` from the
+/// original mesh to the part). Loops made only of the original's boundary edges are left out; a loop
+/// mixing both makes the cut unusable (returns false). `out` may alias `loops`.
+inline bool cut_loops(const tri_mesh& original, const std::vector<index_t>& map, const std::vector<std::vector<index_t>>& loops,
+                      std::vector<std::vector<index_t>>& out) {
+  const std::vector<std::pair<index_t, index_t>> orig = boundary_edge_set(original);
+  std::vector<index_t> back;
+  for (std::size_t v = 0; v < map.size(); ++v)
+    if (map[v] >= 0) {
+      if (back.size() <= static_cast<std::size_t>(map[v])) back.resize(static_cast<std::size_t>(map[v]) + 1);
+      back[static_cast<std::size_t>(map[v])] = static_cast<index_t>(v);
+    }
+  std::vector<std::vector<index_t>> kept;
+  for (const auto& l : loops) {
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < l.size(); ++i) {
+      const index_t a = back[static_cast<std::size_t>(l[i])], b = back[static_cast<std::size_t>(l[(i + 1) % l.size()])];
+      n += std::binary_search(orig.begin(), orig.end(), std::pair{std::min(a, b), std::max(a, b)}) ? 1 : 0;
+    }
+    if (n == l.size()) continue;
+    if (n != 0) return false;
+    kept.push_back(l);
+  }
+  out = std::move(kept);
+  return true;
+}
+
+/// True when any two faces of `m` that share no vertex intersect.
+inline bool self_intersects(const tri_mesh& m) {
+  const triangle_bvh bvh(m);
+  bool hit = false;
+  bvh.for_each_self_intersection(
+      [&](index_t f, index_t g) {
+        if (hit) return true;
+        const auto& a = m.faces[static_cast<std::size_t>(f)];
+        const auto& b = m.faces[static_cast<std::size_t>(g)];
+        for (index_t x : a)
+          for (index_t y : b)
+            if (x == y) return true;
+        return false;
+      },
+      [&](index_t, index_t) { hit = true; });
+  return hit;
+}
+
+inline vec3 vector_area(const tri_mesh& m, const std::vector<index_t>& loop) {
+  vec3 a;
+  for (std::size_t i = 0; i < loop.size(); ++i)
+    a += cross(m.positions[static_cast<std::size_t>(loop[i])], m.positions[static_cast<std::size_t>(loop[(i + 1) % loop.size()])]);
+  return a * 0.5;
+}
+
+// Joins loop a (ids in `m`, running as the boundary half-edges of its side) to loop b (same, other
+// side) with a ladder of triangles, choosing the shorter diagonal at each step.
+inline void stitch_loops(tri_mesh& m, const std::vector<index_t>& a, std::vector<index_t> b) {
+  std::reverse(b.begin(), b.end());
+  const std::size_t na = a.size(), nb = b.size();
+  std::size_t start = 0;
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < nb; ++k) {
+    const double d = squared_norm(m.positions[static_cast<std::size_t>(b[k])] - m.positions[static_cast<std::size_t>(a[0])]);
+    if (d < best) best = d, start = k;
+  }
+  auto A = [&](std::size_t i) { return a[i % na]; };
+  auto B = [&](std::size_t k) { return b[(start + k) % nb]; };
+  auto P = [&](index_t v) { return m.positions[static_cast<std::size_t>(v)]; };
+  std::size_t i = 0, k = 0;
+  while (i < na || k < nb) {
+    const bool adv_a = k == nb || (i < na && squared_norm(P(A(i + 1)) - P(B(k))) <= squared_norm(P(A(i)) - P(B(k + 1))));
+    if (adv_a) {
+      m.add_face(A(i + 1), A(i), B(k));
+      ++i;
+    } else {
+      m.add_face(B(k), B(k + 1), A(i));
+      ++k;
+    }
+  }
+}
+
+/// Smooths the `rings` vertex rings around `seam` (ids in out.mesh): Gauss-Seidel sweeps of
+/// uniform-Laplacian smoothing, v = average(neighbours) + delta, with delta = 0 on the seam itself and
+/// the original uniform Laplacian coordinate elsewhere (details kept). Fixed vertices and the border
+/// vertices of `domain` (§3.3.5) stay put. O(sweeps * ring size).
+inline void smooth_seam(texture_element& out, const std::vector<index_t>& seam_vertices, const xy_rect& domain, int rings) {
+  const std::size_t nv = out.mesh.positions.size();
+  std::vector<std::vector<index_t>> nbr(nv);
+  for (const auto& f : out.mesh.faces)
+    for (int k = 0; k < 3; ++k) {
+      nbr[static_cast<std::size_t>(f[static_cast<std::size_t>(k)])].push_back(f[static_cast<std::size_t>((k + 1) % 3)]);
+      nbr[static_cast<std::size_t>(f[static_cast<std::size_t>((k + 1) % 3)])].push_back(f[static_cast<std::size_t>(k)]);
+    }
+  for (auto& n : nbr) {
+    std::sort(n.begin(), n.end());
+    n.erase(std::unique(n.begin(), n.end()), n.end());
+  }
+  std::vector<int> ring(nv, -1);
+  std::vector<index_t> frontier = seam_vertices;
+  for (index_t v : frontier) ring[static_cast<std::size_t>(v)] = 0;
+  for (int r = 1; r <= rings; ++r) {
+    std::vector<index_t> next;
+    for (index_t v : frontier)
+      for (index_t w : nbr[static_cast<std::size_t>(v)])
+        if (ring[static_cast<std::size_t>(w)] < 0) ring[static_cast<std::size_t>(w)] = r, next.push_back(w);
+    frontier = std::move(next);
+  }
+  const auto bverts = border_vertices(out, domain);
+  std::vector<vec3> delta(nv);
+  for (std::size_t v = 0; v < nv; ++v) {
+    if (ring[v] <= 0 || nbr[v].empty()) continue;
+    vec3 avg;
+    for (index_t w : nbr[v]) avg += out.mesh.positions[static_cast<std::size_t>(w)];
+    delta[v] = out.mesh.positions[v] - avg / double(nbr[v].size());
+  }
+  for (int sweep = 0; sweep < 30; ++sweep)
+    for (std::size_t v = 0; v < nv; ++v) {
+      if (ring[v] < 0 || out.fixed[v] || bverts[v] || nbr[v].empty()) continue;
+      vec3 avg;
+      for (index_t w : nbr[v]) avg += out.mesh.positions[static_cast<std::size_t>(w)];
+      out.mesh.positions[v] = avg / double(nbr[v].size()) + delta[v];
+    }
+}
+
+}  // namespace detail
+TESSERA_NAMESPACE_END

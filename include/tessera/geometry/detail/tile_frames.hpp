@@ -1,0 +1,183 @@
+// tessera/geometry/detail/tile_frames.hpp: the frames of planar geometric Wang tiles, paper 000
+// §3.1-3.2: choosing one edge strip per colour so that crossing elements keep clear of the tile
+// corners and the border elements of horizontal and vertical strips never collide at a corner, and
+// building a tile's frame from the halves of its four strips, merging free elements that collide where
+// strips overlap (tile border held fixed).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "../../core/config.hpp"
+#include "../../core/random.hpp"
+#include "../../core/status.hpp"
+#include "../../tiling/complete_tile_set.hpp"
+#include "../constrained_mesh_quilt.hpp"
+#include "../quilt_exemplar.hpp"
+#include "edge_strips.hpp"
+#include "element_merge.hpp"
+
+TESSERA_NAMESPACE_BEGIN
+namespace detail {
+
+/// What building one tile's frame did: the frame, and the corner merges of §3.2 (free strip elements
+/// that collide with elements of another strip where strips overlap: merged, with the tile border
+/// held fixed, or dropped).
+struct tile_frame_result {
+  quilt_frame frame;
+  index_t merges_attempted = 0;  ///< merge_pair calls
+  index_t merged = 0;            ///< free elements merged into the frame element(s) they hit
+  index_t dropped = 0;           ///< free elements left out (a failed merge, or not inside the tile)
+};
+
+// Frame of one tile (§3.2): border elements of the four strip halves, then free elements; a free
+// element colliding with frame elements where strips overlap is deformed and merged with each of
+// them in turn (free or border: the border ones keep their border triangles and fixed vertices, the
+// tile border is never moved), or dropped when a merge fails or the result hits another element.
+// Border elements of two strips never collide: choose_strips picks vertical strips that fit every
+// horizontal one at all four corners.
+inline tile_frame_result build_frame(const std::vector<edge_strip>& hs, const std::vector<edge_strip>& vs, const wang_edges& e, double w,
+                                     double hh, double cell) {
+  tile_frame_result r;
+  struct part {
+    std::vector<texture_element> elems;
+    xy_rect window;
+  };
+  const part parts[4] = {
+      {place_half(hs[static_cast<std::size_t>(e.south)], true, side_south, 0), {0, 0, w, hh}},
+      {place_half(vs[static_cast<std::size_t>(e.east)], false, side_east, w), {w - hh, 0, w, w}},
+      {place_half(hs[static_cast<std::size_t>(e.north)], false, side_north, w), {0, w - hh, w, w}},
+      {place_half(vs[static_cast<std::size_t>(e.west)], true, side_west, 0), {0, 0, hh, w}}};
+  std::vector<texture_element>& out = r.frame.elements;
+  std::vector<int> owner;  // which part each frame element came from
+  for (int i = 0; i < 4; ++i)
+    for (const auto& el : parts[i].elems)
+      if (el.border) out.push_back(el), owner.push_back(i);
+  const xy_rect tile{0, 0, w, w};
+  auto collides = [&](const texture_element& x, const texture_element& y) {
+    if (!boxes_overlap(x.box, y.box)) return false;
+    const triangle_bvh bx(x.mesh), by(y.mesh);
+    bool hit = false;
+    for_each_intersecting_pair(bx, by, [&](index_t, index_t) { hit = true; });
+    return hit;
+  };
+  for (int i = 0; i < 4; ++i)
+    for (const auto& el : parts[i].elems) {
+      if (el.border) continue;
+      bool inside = true;
+      for (const vec3& p : el.mesh.positions) inside = inside && strictly_inside(tile, p, 1e-7 * w);
+      if (!inside) {
+        ++r.dropped;
+        continue;
+      }
+      std::vector<std::size_t> hits;
+      for (std::size_t k = 0; k < out.size(); ++k)
+        if (collides(out[k], el)) hits.push_back(k);
+      if (hits.empty()) {
+        out.push_back(el), owner.push_back(i);
+        continue;
+      }
+      // merge with every element it hits, the frame element as C_T (its window is the old region)
+      std::optional<texture_element> cur = el;
+      for (std::size_t k : hits) {
+        merge_params mp;
+        mp.domain = tile;
+        mp.constrained = true;
+        mp.corr_dist = 0.5 * cell;
+        mp.margin = 1e-7 * w;
+        const xy_rect old_w = parts[owner[k]].window, new_w = parts[i].window;
+        mp.is_old = [old_w](vec3 p) { return old_w.contains(p); };
+        mp.in_patch = [new_w](vec3 p) { return new_w.contains(p); };
+        merge_counters mc;
+        cur = merge_pair(out[k], *cur, mp, mc);
+        r.merges_attempted += mc.attempted;
+        if (!cur) break;
+      }
+      bool clear = cur.has_value();
+      for (std::size_t k = 0; k < out.size() && clear; ++k)
+        if (std::find(hits.begin(), hits.end(), k) == hits.end()) clear = !collides(out[k], *cur);
+      if (!clear) {
+        ++r.dropped;
+        continue;
+      }
+      // the merged element replaces the first element it hit; the others it absorbed go
+      out[hits[0]] = std::move(*cur);
+      for (std::size_t j = hits.size(); j-- > 1;) {
+        out.erase(out.begin() + static_cast<std::ptrdiff_t>(hits[j]));
+        owner.erase(owner.begin() + static_cast<std::ptrdiff_t>(hits[j]));
+      }
+      ++r.merged;
+    }
+  // the cells the frame's elements cover start occupied (§3.3.1); the rest of the strips is filled
+  // by the interior synthesis like any other unoccupied cell
+  for (const auto& el : out) r.frame.occupied.push_back({el.box.min.x, el.box.min.y, el.box.max.x, el.box.max.y});
+  return r;
+}
+
+inline status choose_strips(const quilt_exemplar& src, int horizontal_colors, int vertical_colors, const strip_params& sp, std::uint64_t seed,
+                            std::vector<edge_strip>& hs, std::vector<edge_strip>& vs) {
+  const double step = 0.5 * src.cell_size();
+  const counter_rng rng(seed, stream_id("geometry.wang.strips"));
+  auto pick = [&](bool horizontal, int color, std::vector<strip_candidate>& cands, const std::vector<edge_strip>& against,
+                  edge_strip& out) -> bool {
+    // prefer windows with many crossing elements (continuity across the edge), random among those,
+    // away from windows used by other colours
+    std::vector<std::size_t> order(cands.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::vector<double> key(cands.size());
+    for (std::size_t i = 0; i < cands.size(); ++i) key[i] = -double(cands[i].crossing) - rng.uniform(horizontal ? 1 : 2, color, i);
+    std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return key[x] < key[y] || (key[x] == key[y] && x < y); });
+    const std::vector<edge_strip>& mine = horizontal ? hs : vs;
+    int tries = 0;
+    for (std::size_t i : order) {
+      const strip_candidate& c = cands[i];
+      bool far = true;
+      for (const edge_strip& s : mine) {
+        const int a = horizontal ? 0 : 1, b = horizontal ? 1 : 0;
+        far = far && (std::abs(s.origin[a] - c.along0) > 0.5 * sp.tile_size || std::abs(s.origin[b] - c.across0) > sp.half_height);
+      }
+      if (!far && tries < static_cast<int>(order.size()) / 2) continue;
+      if (++tries > 400) break;
+      edge_strip s;
+      if (!extract_strip(src, horizontal, sp, c, s)) continue;
+      // vertical strips must not collide with any horizontal strip at any of the four corners
+      bool ok = true;
+      for (const edge_strip& h : against) {
+        for (int corner = 0; corner < 4 && ok; ++corner) {
+          const bool north = corner >= 2, east = corner % 2 == 1;
+          ok = !border_elements_collide(place_half(h, !north, north ? side_north : side_south, north ? sp.tile_size : 0.0),
+                                        place_half(s, !east, east ? side_east : side_west, east ? sp.tile_size : 0.0));
+        }
+        if (!ok) break;
+      }
+      if (!ok) continue;
+      out = std::move(s);
+      return true;
+    }
+    return false;
+  };
+  auto hc = strip_candidates(src, true, sp, step), vc = strip_candidates(src, false, sp, step);
+  for (int c = 0; c < horizontal_colors; ++c) {
+    edge_strip s;
+    if (!pick(true, c, hc, {}, s))
+      return status::invalid_argument(detail::cat("geometric wang tiles: no horizontal edge strip of width ", sp.tile_size, " and height ",
+                                                  2 * sp.half_height, " avoids elements crossing the tile corners (", hc.size(),
+                                                  " candidate windows); try another tile_size, edge_height or corner_margin"));
+    hs.push_back(std::move(s));
+  }
+  for (int c = 0; c < vertical_colors; ++c) {
+    edge_strip s;
+    if (!pick(false, c, vc, hs, s))
+      return status::invalid_argument(detail::cat("geometric wang tiles: no vertical edge strip of width ", sp.tile_size, " and height ",
+                                                  2 * sp.half_height, " fits every horizontal strip at the tile corners (", vc.size(),
+                                                  " candidate windows); try another tile_size, edge_height or corner_margin"));
+    vs.push_back(std::move(s));
+  }
+  return {};
+}
+
+}  // namespace detail
+TESSERA_NAMESPACE_END
