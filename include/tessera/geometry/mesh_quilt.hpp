@@ -58,7 +58,8 @@ inline status check_quilt_options(const mesh_quilt_options& o) {
   if (o.smooth_rings < 0) return status::invalid_argument(detail::cat("mesh_quilt: smooth_rings must be >= 0, got ", o.smooth_rings));
   return {};
 }
-inline mesh_quilt_result finish_quilt(quilt_engine& engine) {
+template <class Engine>
+mesh_quilt_result finish_quilt(Engine& engine) {
   mesh_quilt_result r;
   r.stats = engine.stats();
   r.elements = engine.take_elements();

@@ -117,7 +117,10 @@ inline std::optional<std::vector<unsigned char>> dual_graph_cut(const tri_mesh& 
 
 /// Deforms and merges `ct` (already in the output, may carry fixed vertices and a border set) with
 /// `cin` (a new element from the translated exemplar). Returns the merged element or nothing.
-inline std::optional<texture_element> merge_pair(const texture_element& ct, const texture_element& cin, const merge_params& p,
+/// A template (`Deferred` is always void) only so that the Eigen sparse solves inside are compiled
+/// by the translation units that quilt, not by every includer of tessera.hpp (its compile-time goal).
+template <class Deferred = void>
+std::optional<texture_element> merge_pair(const texture_element& ct, const texture_element& cin, const merge_params& p,
                                                  merge_counters& stats, merge_trace* trace = nullptr) {
   ++stats.attempted;
   const double corr2 = p.corr_dist * p.corr_dist;

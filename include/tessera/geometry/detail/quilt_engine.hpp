@@ -74,12 +74,15 @@ struct mesh_quilt_params {
   merge_rules rules = merge_rules::tessera;
 };
 
-class quilt_engine {
+// A class template (`Deferred` is always void) only so that its merge step, and the Eigen sparse
+// solves behind it, are compiled by the translation units that quilt (see merge_pair).
+template <class Deferred = void>
+class basic_quilt_engine {
  public:
   /// Runs fn(i) for i in [0, n), possibly in parallel (an Executor's parallel_for).
   using parallel_for_fn = std::function<void(index_t, const std::function<void(index_t)>&)>;
 
-  quilt_engine(const quilt_exemplar& ex, xy_rect domain, const mesh_quilt_params& p, parallel_for_fn pfor = {})
+  basic_quilt_engine(const quilt_exemplar& ex, xy_rect domain, const mesh_quilt_params& p, parallel_for_fn pfor = {})
       : ex_(ex), domain_(domain), p_(p), pfor_(std::move(pfor)) {
     if (!pfor_)
       pfor_ = [](index_t n, const std::function<void(index_t)>& fn) {
@@ -454,6 +457,7 @@ class quilt_engine {
   std::vector<std::vector<vec3>> normals_;
   mesh_quilt_stats stats_;
 };
+using quilt_engine = basic_quilt_engine<>;
 
 }  // namespace detail
 TESSERA_NAMESPACE_END

@@ -39,7 +39,8 @@ struct tile_frame_result {
 // tile border is never moved), or dropped when a merge fails or the result hits another element.
 // Border elements of two strips never collide: choose_strips picks vertical strips that fit every
 // horizontal one at all four corners.
-inline tile_frame_result build_frame(const std::vector<edge_strip>& hs, const std::vector<edge_strip>& vs, const wang_edges& e, double w,
+template <class Deferred = void>  // compiled only where tiles are built (see merge_pair)
+tile_frame_result build_frame(const std::vector<edge_strip>& hs, const std::vector<edge_strip>& vs, const wang_edges& e, double w,
                                      double hh, double cell) {
   tile_frame_result r;
   struct part {
