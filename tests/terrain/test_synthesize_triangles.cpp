@@ -111,7 +111,7 @@ TEST_CASE("synthesize_triangles: every rule of §2.3 holds on the recorded order
 TEST_CASE("synthesize_triangles: corner coordinates are congruent copies of the screen triangle", "[terrain][synthesis]") {
   const scene s = make_scene(24, tessera::camera_preset::oblique);
   const auto r = tessera::synthesize_triangles(s.mesh, s.proj, s.field, 128, 128).value();
-  const auto uv = tessera::export_corner_uvs(s.mesh, s.proj, s.field, r);
+  const auto uv = tessera::export_corner_uvs(s.mesh, s.proj, s.field, r).value();
   for (const std::int32_t f : s.proj.visible) {
     const auto fi = static_cast<std::size_t>(f);
     for (std::size_t k = 0; k < 3; ++k) {
@@ -157,6 +157,34 @@ TEST_CASE("synthesize_triangles: a pure function of the inputs and the seed", "[
   REQUIRE(tessera::synthesize_triangles(s.mesh, s.proj, s.field, 64, 64, {.seed = 9}, reuse));
   REQUIRE(reuse.offset == a.offset);
   REQUIRE(reuse.restarts == a.restarts);
+}
+
+TEST_CASE("synthesize_triangles: the same synthesis with a thread pool of any size", "[terrain][synthesis]") {
+  // 20000 visible faces: more than one 16384-face chunk in the parallel passes
+  const scene s = make_scene(100, tessera::camera_preset::overview, 320, 180);
+  REQUIRE(s.proj.num_visible() > 16384);
+  const auto a = tessera::synthesize_triangles(s.mesh, s.proj, s.field, 64, 64, {.seed = 5}).value();
+  for (const int threads : {1, 2, 3}) {
+    tessera::thread_pool_executor pool(threads);
+    tessera::triangle_synthesis b;
+    b.offset.assign(7, {1, 1});  // a reused output object with stale content
+    REQUIRE(tessera::synthesize_triangles(s.mesh, s.proj, s.field, 64, 64, {.seed = 5}, b, pool));
+    REQUIRE(b.offset == a.offset);
+    REQUIRE(b.region == a.region);
+    REQUIRE(b.seam == a.seam);
+    REQUIRE(b.order == a.order);
+    REQUIRE(b.restarts == a.restarts);
+    REQUIRE(b.continuous_edges == a.continuous_edges);
+    REQUIRE(b.min_area_face == a.min_area_face);
+    REQUIRE(b.min_area_ratio == a.min_area_ratio);
+    // and the whole per-frame pipeline before it
+    const auto proj = tessera::project_mesh(s.mesh, terrain_test::preset_camera(s.mesh, tessera::camera_preset::overview, 320, 180), {},
+                                            pool).value();
+    REQUIRE(proj.visible == s.proj.visible);
+    REQUIRE(proj.bounds == s.proj.bounds);
+    const auto field = tessera::assign_scale_field(s.mesh, proj, {.min_scale = 0.5}, pool).value();
+    REQUIRE(field.scale == s.field.scale);
+  }
 }
 
 TEST_CASE("synthesize_triangles: exemplars too small for the triangles give a warning", "[terrain][synthesis]") {

@@ -89,6 +89,7 @@ struct triangle_synthesis {
   double continuous_fraction = 1;  ///< continuous_edges / shared_edges (1 when there are none)
   double min_area_ratio = std::numeric_limits<double>::infinity();  ///< min over faces of level-image area / screen area
   index_t min_area_face = -1;
+  index_t exemplar_width = 0, exemplar_height = 0;  ///< the exemplar size synthesized for (level 0 of the pyramid)
   status warning;  ///< ok, or out_of_range describing an exemplar too small for the triangles (§3 (1))
 };
 
@@ -99,6 +100,8 @@ inline double visible_screen_area(const terrain_mesh& mesh, const screen_project
   const double box = static_cast<double>(b[2] - b[0]) * static_cast<double>(b[3] - b[1]);
   if (proj.state[static_cast<std::size_t>(f)] != static_cast<std::uint8_t>(face_visibility::inside)) return box;
   const auto& face = mesh.faces[static_cast<std::size_t>(f)];
+  for (const std::int32_t v : face)
+    if (v < 0 || static_cast<std::size_t>(v) >= proj.screen.size()) return box;
   const vec2 a = proj.screen[static_cast<std::size_t>(face[0])], p = proj.screen[static_cast<std::size_t>(face[1])],
              q = proj.screen[static_cast<std::size_t>(face[2])];
   return std::min(box, 0.5 * std::abs(cross(p - a, q - a)));
@@ -120,9 +123,10 @@ status synthesize_triangles(const terrain_mesh& mesh, const screen_projection& p
     return status::invalid_argument(detail::cat("exemplar size must be positive, got ", exemplar_width, " x ", exemplar_height));
   if (!(opts.margin >= 0) || !std::isfinite(opts.margin))
     return status::invalid_argument(detail::cat("margin must be >= 0, got ", opts.margin));
+  if (auto s = detail::check_projection(mesh, proj, "synthesize_triangles"); !s) return s;
   const index_t nf = mesh.num_faces();
-  if (static_cast<index_t>(proj.state.size()) != nf || static_cast<index_t>(field.level.size()) != nf)
-    return status::invalid_argument(detail::cat("projection (", proj.state.size(), " faces) and scale field (", field.level.size(),
+  if (static_cast<index_t>(field.level.size()) != nf || static_cast<index_t>(field.scale.size()) != nf)
+    return status::invalid_argument(detail::cat("synthesize_triangles: the scale field (", field.level.size(),
                                                 " faces) must belong to the mesh (", nf, " faces)"));
   {
     triangle_synthesis fresh;  // statistics reset, storage reused
@@ -132,10 +136,19 @@ status synthesize_triangles(const terrain_mesh& mesh, const screen_projection& p
     fresh.order = std::move(out.order);
     out = std::move(fresh);
   }
-  out.offset.assign(static_cast<std::size_t>(nf), vec2{});
-  out.region.assign(static_cast<std::size_t>(nf), -1);
-  out.seam.assign(static_cast<std::size_t>(nf), 0);
+  constexpr index_t block = 16384;
+  out.offset.resize(static_cast<std::size_t>(nf));
+  out.region.resize(static_cast<std::size_t>(nf));
+  out.seam.resize(static_cast<std::size_t>(nf));
+  exec.parallel_for(0, (nf + block - 1) / block, [&](index_t c) {  // culled faces: offset 0, region -1, no seam
+    const auto a = static_cast<std::ptrdiff_t>(c * block), b = static_cast<std::ptrdiff_t>(std::min(nf, (c + 1) * block));
+    std::fill(out.offset.begin() + a, out.offset.begin() + b, vec2{});
+    std::fill(out.region.begin() + a, out.region.begin() + b, -1);
+    std::fill(out.seam.begin() + a, out.seam.begin() + b, std::uint8_t{0});
+  });
   out.order.clear();
+  out.exemplar_width = exemplar_width;
+  out.exemplar_height = exemplar_height;
   const index_t nvis = proj.num_visible();
   out.visible = nvis;
   if (nvis == 0) return {};
@@ -143,9 +156,7 @@ status synthesize_triangles(const terrain_mesh& mesh, const screen_projection& p
   const counter_rng rng(opts.seed, stream_id("terrain.synthesize_triangles"));
   const double W = static_cast<double>(exemplar_width), H = static_cast<double>(exemplar_height), m = opts.margin;
   auto box = [&](std::int32_t f) -> const std::array<float, 4>& { return proj.bounds[static_cast<std::size_t>(f)]; };
-  auto fits = [&](std::int32_t f, vec2 o) {
-    const auto& b = box(f);
-    const double hw = 0.5 * W * field.scale[static_cast<std::size_t>(f)] - m, hh = 0.5 * H * field.scale[static_cast<std::size_t>(f)] - m;
+  auto fits = [](const std::array<float, 4>& b, double hw, double hh, vec2 o) {
     return b[0] + o.x >= -hw && b[2] + o.x <= hw && b[1] + o.y >= -hh && b[3] + o.y <= hh;
   };
   // one axis of a new placement: [lo, hi] are the feasible offsets, `toward` in [0, 1] the preferred
@@ -163,56 +174,67 @@ status synthesize_triangles(const terrain_mesh& mesh, const screen_projection& p
   const auto start = static_cast<index_t>(rng.below(static_cast<std::uint64_t>(nvis), 0));
   index_t done = 0;
   for (index_t idx = 0; idx < nvis; ++idx) {
-    const std::int32_t seed_face = proj.visible[static_cast<std::size_t>((start + idx) % nvis)];
+    const index_t at = (start + idx) % nvis;
+    const std::int32_t seed_face = proj.visible[static_cast<std::size_t>(at)];
+    if (!detail::is_visible_face(proj, seed_face)) return detail::bad_visible_entry("synthesize_triangles", at, seed_face);
     if (out.region[static_cast<std::size_t>(seed_face)] >= 0) continue;
     ++out.components;
     stack.push_back(seed_face);
     while (!stack.empty()) {
       const std::int32_t f = stack.back();
       stack.pop_back();
-      if (out.region[static_cast<std::size_t>(f)] >= 0) continue;
-      const auto& nb = mesh.neighbors[static_cast<std::size_t>(f)];
+      const auto fi = static_cast<std::size_t>(f);
+      if (out.region[fi] >= 0) continue;
+      const double s = field.scale[fi];
+      if (!(s > 0 && s <= 1) || field.level[fi] < 0)
+        return status::invalid_argument(detail::cat("synthesize_triangles: visible face ", f, " has scale ", s, " and level ",
+                                                    field.level[fi], " in the scale field: compute the field from this projection"));
+      const auto& nb = mesh.neighbors[fi];
+      const auto& b = box(f);
+      const double hw = 0.5 * W * s - m, hh = 0.5 * H * s - m;  // half the level image, less the margin
       // candidates: offsets of synthesized neighbours; the oldest placement that fits wins
       int best = -1, synthesized = 0;
-      vec2 away{};
+      std::int32_t best_region = 0;
       for (int k = 0; k < 3; ++k) {
         const std::int32_t n = nb[static_cast<std::size_t>(k)];
-        if (n < 0 || out.region[static_cast<std::size_t>(n)] < 0) continue;
+        if (!detail::is_face_index(n, nf)) continue;
+        const std::int32_t r = out.region[static_cast<std::size_t>(n)];
+        if (r < 0) continue;
         ++synthesized;
-        const auto& bn = box(n);
-        away += vec2{static_cast<double>(bn[0] + bn[2]), static_cast<double>(bn[1] + bn[3])} * 0.5;
-        const bool older = best < 0 || (opts.continuation == continuation_rule::oldest_placement &&
-                                        out.region[static_cast<std::size_t>(n)] <
-                                            out.region[static_cast<std::size_t>(nb[static_cast<std::size_t>(best)])]);
-        if (older && fits(f, out.offset[static_cast<std::size_t>(n)])) best = k;
+        const bool older = best < 0 || (opts.continuation == continuation_rule::oldest_placement && r < best_region);
+        if (older && fits(b, hw, hh, out.offset[static_cast<std::size_t>(n)])) best = k, best_region = r;
       }
       if (best >= 0) {
-        const std::int32_t n = nb[static_cast<std::size_t>(best)];
-        out.offset[static_cast<std::size_t>(f)] = out.offset[static_cast<std::size_t>(n)];
-        out.region[static_cast<std::size_t>(f)] = out.region[static_cast<std::size_t>(n)];
+        out.offset[fi] = out.offset[static_cast<std::size_t>(nb[static_cast<std::size_t>(best)])];
+        out.region[fi] = best_region;
       } else {
-        // a new congruent placement inside the level image
-        const auto& b = box(f);
-        const double s = field.scale[static_cast<std::size_t>(f)];
+        // a new congruent placement inside the level image, biased away from the synthesized neighbours
         vec2 toward{0.5, 0.5};
         if (synthesized > 0) {
+          vec2 away{};
+          for (int k = 0; k < 3; ++k) {
+            const std::int32_t n = nb[static_cast<std::size_t>(k)];
+            if (!detail::is_face_index(n, nf) || out.region[static_cast<std::size_t>(n)] < 0) continue;
+            const auto& bn = box(n);
+            away += vec2{static_cast<double>(bn[0] + bn[2]), static_cast<double>(bn[1] + bn[3])} * 0.5;
+          }
           const vec2 d = vec2{static_cast<double>(b[0] + b[2]), static_cast<double>(b[1] + b[3])} * 0.5 - away / synthesized;
           const double len = norm(d);
           if (len > 0) toward = vec2{0.5 - 0.5 * d.x / len, 0.5 - 0.5 * d.y / len};
         }
         bool big = false;
-        const double hw = 0.5 * W * s - m, hh = 0.5 * H * s - m;
         const vec2 o{place_axis(-hw - b[0], hw - b[2], rng.uniform(f, 1), toward.x, big),
                      place_axis(-hh - b[1], hh - b[3], rng.uniform(f, 2), toward.y, big)};
-        out.offset[static_cast<std::size_t>(f)] = o;
-        out.region[static_cast<std::size_t>(f)] = static_cast<std::int32_t>(out.regions++);
+        out.offset[fi] = o;
+        out.region[fi] = static_cast<std::int32_t>(out.regions++);
         out.oversized += big ? 1 : 0;
         out.restarts += synthesized > 0 ? 1 : 0;
       }
       out.order.push_back(f);
       for (int k = 0; k < 3; ++k) {
         const std::int32_t n = nb[static_cast<std::size_t>(k)];
-        if (n >= 0 && proj.state[static_cast<std::size_t>(n)] != 0 && out.region[static_cast<std::size_t>(n)] < 0) stack.push_back(n);
+        if (detail::is_face_index(n, nf) && proj.state[static_cast<std::size_t>(n)] != 0 && out.region[static_cast<std::size_t>(n)] < 0)
+          stack.push_back(n);
       }
       if ((++done & 0xffff) == 0 && !opts.progress.report(static_cast<double>(done) / static_cast<double>(nvis), "synthesize triangles"))
         return status::cancelled();
@@ -225,7 +247,6 @@ status synthesize_triangles(const terrain_mesh& mesh, const screen_projection& p
     double ratio = std::numeric_limits<double>::infinity();
     std::int32_t face = -1;
   };
-  constexpr index_t block = 16384;
   const index_t chunks = (nvis + block - 1) / block;
   std::vector<partial> part(static_cast<std::size_t>(chunks));
   exec.parallel_for(0, chunks, [&](index_t c) {
@@ -236,7 +257,7 @@ status synthesize_triangles(const terrain_mesh& mesh, const screen_projection& p
       std::uint8_t bits = 0;
       for (int k = 0; k < 3; ++k) {
         const std::int32_t n = nb[static_cast<std::size_t>(k)];
-        if (n < 0 || proj.state[static_cast<std::size_t>(n)] == 0) continue;
+        if (!detail::is_face_index(n, nf) || out.region[static_cast<std::size_t>(n)] < 0) continue;
         const bool same = out.offset[static_cast<std::size_t>(n)] == out.offset[static_cast<std::size_t>(f)];
         bits = static_cast<std::uint8_t>(bits | (same ? 0 : 1 << k));
         if (n > f) p.shared += 1, p.same += same ? 1 : 0;
@@ -273,40 +294,72 @@ result<triangle_synthesis> synthesize_triangles(const terrain_mesh& mesh, const 
   return out;
 }
 
-/// What a shader needs, per face: corner texture coordinates (level-image pixels from the level
-/// image's centre: the exemplar, shrunk by the face's scale, is sampled at normalized coordinates
-/// 0.5 + uv / (width * scale, height * scale)), the level and the scale. Interpolate uv linearly in
-/// SCREEN space (GLSL `noperspective`), or compute uv = gl_FragCoord.xy (flipped to y down) + offset
-/// per pixel. Culled faces have level -1; corners behind the eye of near-clipped faces have NaN
-/// coordinates (use the offset form there).
+/// What a shader needs to texture every visible face. Per face (indexed like the mesh):
+///   - `offset`: uv = pixel position (x right, y DOWN, pixel centres at +0.5) + offset, in pixels of
+///     the face's level image measured from that image's centre. This form works for every visible
+///     face, including faces crossing the near plane: compute it per fragment from gl_FragCoord
+///     (flip y: y_down = height - y_up).
+///   - `corner_uv`: the same at the three corners (u0 v0 u1 v1 u2 v2), to interpolate linearly in
+///     SCREEN space (GLSL `noperspective`). NaN at corners behind the eye (state near_clipped):
+///     such a corner has no screen position; use the offset form for those faces.
+///   - `level`, `scale`: the pyramid level and the scale; the exemplar shrunk by `scale` is sampled
+///     at normalized coordinates 0.5 + uv / (exemplar_width * scale, exemplar_height * scale).
+///   - `state`: a face_visibility (0 culled: level -1, scale 0, NaN coordinates).
 struct terrain_uv_buffer {
+  index_t viewport_width = 0, viewport_height = 0;
+  index_t exemplar_width = 0, exemplar_height = 0;
+  index_t levels = 0;     ///< of the scale field
+  double min_scale = 1;   ///< of the scale field
   std::vector<std::array<float, 6>> corner_uv;  ///< u0 v0 u1 v1 u2 v2
   std::vector<std::array<float, 2>> offset;
   std::vector<std::int32_t> level;
   std::vector<float> scale;
+  std::vector<std::uint8_t> state;
 };
 
-/// Collects the engine-facing outputs of a synthesis. O(F).
-inline terrain_uv_buffer export_corner_uvs(const terrain_mesh& mesh, const screen_projection& proj, const scale_field& field,
-                                           const triangle_synthesis& syn) {
-  terrain_uv_buffer b;
+/// Collects the engine-facing outputs of a synthesis (see terrain_uv_buffer). Errors
+/// (invalid_argument): a projection, field or synthesis that does not belong to `mesh`, or a
+/// visible face the field or the synthesis did not cover (made from another projection). O(F).
+inline result<terrain_uv_buffer> export_corner_uvs(const terrain_mesh& mesh, const screen_projection& proj, const scale_field& field,
+                                                   const triangle_synthesis& syn) {
+  if (auto s = detail::check_projection(mesh, proj, "export_corner_uvs"); !s) return s;
   const auto nf = static_cast<std::size_t>(mesh.num_faces());
+  if (field.level.size() != nf || field.scale.size() != nf || syn.offset.size() != nf || syn.region.size() != nf)
+    return status::invalid_argument(detail::cat("export_corner_uvs: the scale field (", field.level.size(), " faces) and synthesis (",
+                                                syn.region.size(), " faces) must belong to the mesh (", nf, " faces)"));
+  terrain_uv_buffer b;
+  b.viewport_width = proj.width;
+  b.viewport_height = proj.height;
+  b.exemplar_width = syn.exemplar_width;
+  b.exemplar_height = syn.exemplar_height;
+  b.levels = field.levels;
+  b.min_scale = field.min_scale;
   const float nan = std::numeric_limits<float>::quiet_NaN();
   b.corner_uv.assign(nf, {nan, nan, nan, nan, nan, nan});
   b.offset.assign(nf, {nan, nan});
   b.level.assign(nf, -1);
   b.scale.assign(nf, 0.0f);
-  for (const std::int32_t f : proj.visible) {
-    const auto i = static_cast<std::size_t>(f);
-    const vec2 o = syn.offset[i];
+  b.state.assign(nf, 0);
+  for (std::size_t i = 0; i < proj.visible.size(); ++i) {
+    const std::int32_t f = proj.visible[i];
+    if (!detail::is_visible_face(proj, f)) return detail::bad_visible_entry("export_corner_uvs", static_cast<index_t>(i), f);
+    const auto fi = static_cast<std::size_t>(f);
+    if (field.level[fi] < 0 || syn.region[fi] < 0)
+      return status::invalid_argument(detail::cat("export_corner_uvs: visible face ", f, " has level ", field.level[fi], " and region ",
+                                                  syn.region[fi], ": the field and synthesis must come from this projection"));
+    const vec2 o = syn.offset[fi];
     for (std::size_t k = 0; k < 3; ++k) {
-      const vec2 p = proj.screen[static_cast<std::size_t>(mesh.faces[i][k])] + o;
-      b.corner_uv[i][2 * k] = static_cast<float>(p.x);
-      b.corner_uv[i][2 * k + 1] = static_cast<float>(p.y);
+      const std::int32_t v = mesh.faces[fi][k];
+      if (v < 0 || static_cast<std::size_t>(v) >= proj.screen.size())
+        return status::out_of_range(detail::cat("export_corner_uvs: face ", f, " corner ", k, " names vertex ", v));
+      const vec2 p = proj.screen[static_cast<std::size_t>(v)] + o;
+      b.corner_uv[fi][2 * k] = static_cast<float>(p.x);
+      b.corner_uv[fi][2 * k + 1] = static_cast<float>(p.y);
     }
-    b.offset[i] = {static_cast<float>(o.x), static_cast<float>(o.y)};
-    b.level[i] = field.level[i];
-    b.scale[i] = field.scale[i];
+    b.offset[fi] = {static_cast<float>(o.x), static_cast<float>(o.y)};
+    b.level[fi] = field.level[fi];
+    b.scale[fi] = field.scale[fi];
+    b.state[fi] = proj.state[fi];
   }
   return b;
 }
