@@ -169,6 +169,9 @@ status synthesize_triangles(const terrain_mesh& mesh, const screen_projection& p
     const double t = opts.placement == placement_strategy::uniform ? u : std::clamp(toward + (u - 0.5) * 1.0, 0.0, 1.0);
     return lo + t * (hi - lo);
   };
+  // the offset of each placement: faces of one region share it, so the serial loop below reads and
+  // writes 4-byte region ids (and this small table) instead of a 16-byte offset per face
+  std::vector<vec2> placements;
   std::vector<std::int32_t> stack;
   stack.reserve(static_cast<std::size_t>(std::min<index_t>(3 * nvis + 1, 1 << 20)));
   const auto start = static_cast<index_t>(rng.below(static_cast<std::uint64_t>(nvis), 0));
@@ -186,7 +189,7 @@ status synthesize_triangles(const terrain_mesh& mesh, const screen_projection& p
       const auto fi = static_cast<std::size_t>(f);
       if (out.region[fi] >= 0) continue;
       const double s = field.scale[fi];
-      if (!(s > 0 && s <= 1) || field.level[fi] < 0)
+      if (!(s > 0 && s <= 1))  // e.g. 0 for a face the field's projection culled
         return status::invalid_argument(detail::cat("synthesize_triangles: visible face ", f, " has scale ", s, " and level ",
                                                     field.level[fi], " in the scale field: compute the field from this projection"));
       const auto& nb = mesh.neighbors[fi];
@@ -202,10 +205,9 @@ status synthesize_triangles(const terrain_mesh& mesh, const screen_projection& p
         if (r < 0) continue;
         ++synthesized;
         const bool older = best < 0 || (opts.continuation == continuation_rule::oldest_placement && r < best_region);
-        if (older && fits(b, hw, hh, out.offset[static_cast<std::size_t>(n)])) best = k, best_region = r;
+        if (older && fits(b, hw, hh, placements[static_cast<std::size_t>(r)])) best = k, best_region = r;
       }
       if (best >= 0) {
-        out.offset[fi] = out.offset[static_cast<std::size_t>(nb[static_cast<std::size_t>(best)])];
         out.region[fi] = best_region;
       } else {
         // a new congruent placement inside the level image, biased away from the synthesized neighbours
@@ -225,7 +227,7 @@ status synthesize_triangles(const terrain_mesh& mesh, const screen_projection& p
         bool big = false;
         const vec2 o{place_axis(-hw - b[0], hw - b[2], rng.uniform(f, 1), toward.x, big),
                      place_axis(-hh - b[1], hh - b[3], rng.uniform(f, 2), toward.y, big)};
-        out.offset[fi] = o;
+        placements.push_back(o);
         out.region[fi] = static_cast<std::int32_t>(out.regions++);
         out.oversized += big ? 1 : 0;
         out.restarts += synthesized > 0 ? 1 : 0;
@@ -240,7 +242,11 @@ status synthesize_triangles(const terrain_mesh& mesh, const screen_projection& p
         return status::cancelled();
     }
   }
-  // seams, continuity and the exemplar-size check: independent per face, in chunks whose partial
+  if (static_cast<index_t>(out.order.size()) != nvis)  // a face marked visible but missing from proj.visible was reached
+    return status::invalid_argument(detail::cat("synthesize_triangles: the projection marks ", out.order.size(),
+                                                " reachable faces visible but lists ", nvis, ": project this mesh first"));
+  // offsets from the placement table, seams, continuity and the exemplar-size check: independent per
+  // face, in chunks whose partial
   // results combine in chunk order (so ties resolve to the smallest face, for any executor)
   struct partial {
     index_t shared = 0, same = 0;
@@ -253,12 +259,14 @@ status synthesize_triangles(const terrain_mesh& mesh, const screen_projection& p
     partial& p = part[static_cast<std::size_t>(c)];
     for (index_t i = c * block; i < std::min(nvis, (c + 1) * block); ++i) {
       const std::int32_t f = proj.visible[static_cast<std::size_t>(i)];
+      const vec2 own = placements[static_cast<std::size_t>(out.region[static_cast<std::size_t>(f)])];
+      out.offset[static_cast<std::size_t>(f)] = own;
       const auto& nb = mesh.neighbors[static_cast<std::size_t>(f)];
       std::uint8_t bits = 0;
       for (int k = 0; k < 3; ++k) {
         const std::int32_t n = nb[static_cast<std::size_t>(k)];
         if (!detail::is_face_index(n, nf) || out.region[static_cast<std::size_t>(n)] < 0) continue;
-        const bool same = out.offset[static_cast<std::size_t>(n)] == out.offset[static_cast<std::size_t>(f)];
+        const bool same = placements[static_cast<std::size_t>(out.region[static_cast<std::size_t>(n)])] == own;
         bits = static_cast<std::uint8_t>(bits | (same ? 0 : 1 << k));
         if (n > f) p.shared += 1, p.same += same ? 1 : 0;
       }
