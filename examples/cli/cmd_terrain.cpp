@@ -19,7 +19,7 @@
 #include <tessera/terrain/render_tiled_frame.hpp>
 #include <tessera/terrain/synthesize_triangles.hpp>
 #include <tessera/terrain/terrain_camera.hpp>
-#include <tessera/terrain/terrain_uv_file.hpp>
+#include <tessera/terrain/export_corner_uvs.hpp>
 
 #include "cli.hpp"
 #include "image_source.hpp"
@@ -87,7 +87,9 @@ int run_terrain(const cli::arguments& args) {
   for (const status* s : {&min_scale.error(), &levels.error(), &feather.error(), &grid.error(), &relief.error()})
     if (!s->ok()) return fail(*s);
   const std::string mode = args.str("--mode", "stepped"), placement = args.str("--placement", "away");
-  const std::string continuation = args.str("--continuation", "oldest");
+  const std::string continuation = args.str("--continuation", "oldest"), restart = args.str("--restart", "wait");
+  if (restart != "wait" && restart != "immediate")
+    return fail(status::invalid_argument("--restart expects wait or immediate, got '" + restart + "'"));
   if (continuation != "oldest" && continuation != "first")
     return fail(status::invalid_argument("--continuation expects oldest or first, got '" + continuation + "'"));
   if (mode != "stepped" && mode != "continuous") return fail(status::invalid_argument("--mode expects stepped or continuous, got '" + mode + "'"));
@@ -125,7 +127,8 @@ int run_terrain(const cli::arguments& args) {
   const tessera::triangle_synthesis_options syn_opts{
       .seed = args.seed(),
       .placement = placement == "uniform" ? tessera::placement_strategy::uniform : tessera::placement_strategy::away_from_neighbors,
-      .continuation = continuation == "first" ? tessera::continuation_rule::first_neighbor : tessera::continuation_rule::oldest_placement};
+      .continuation = continuation == "first" ? tessera::continuation_rule::first_neighbor : tessera::continuation_rule::oldest_placement,
+      .defer_restarts = restart == "wait"};
   const double syn_ms = cli::median_ms(args.repeat(), [&] {
     if (error.ok()) error = tessera::synthesize_triangles(*mesh, proj, field, exemplar->width(), exemplar->height(), syn_opts, syn);
   });
@@ -200,6 +203,8 @@ std::vector<cli::option_spec> terrain_options() {
       {"--placement", "P", "restart placement: away (from synthesized neighbours) or uniform (the paper) (default away)"},
       {"--continuation", "R", "which synthesized neighbour's coordinates to continue: oldest (placement) or first (in side "
                               "order, the paper read literally) (default oldest)"},
+      {"--restart", "R", "a face that fits no neighbour's coordinates: wait (once, for neighbours synthesized later) or immediate "
+                         "(a new placement at once, the paper) (default wait)"},
       {"--feather", "PX", "seam blending width in pixels (default 3; 0 = none)"},
       {"--shading", "S", "frame shading: texture, scale or regions (default texture)"},
       {"--sun", "x,y,z", "direction towards a light: flat Lambert shading of the frames (default: unlit)"},

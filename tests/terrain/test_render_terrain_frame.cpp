@@ -1,5 +1,6 @@
 #include <tessera/terrain/render_terrain_frame.hpp>
 #include <tessera/terrain/render_tiled_frame.hpp>
+#include <tessera/terrain/export_corner_uvs.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,8 @@
-// tessera/terrain/terrain_uv_file.hpp: the per-face texture coordinates of a synthesized terrain
-// frame (paper 003, §2.3; export_corner_uvs) as a small binary file an engine or a script can read
-// (`tessera terrain --uv-out`). All numbers little-endian, no padding:
+// tessera/terrain/export_corner_uvs.hpp: what an engine needs from a synthesized terrain frame
+// (paper 003, §2.3): per face the texture offset, corner coordinates, level and scale
+// (export_corner_uvs), and the same as a small binary file an engine or a script can read
+// (`tessera terrain --uv-out`; write_terrain_uv_file / read_terrain_uv_file). The file's layout,
+// all numbers little-endian, no padding:
 //
 //   offset  size  header
 //        0     4  magic "TSUV"
@@ -28,14 +30,90 @@
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <string>
 #include <vector>
 
 #include "../core/config.hpp"
 #include "../core/status.hpp"
+#include "../core/vec.hpp"
+#include "assign_scale_field.hpp"
+#include "prepare_terrain_mesh.hpp"
+#include "project_mesh.hpp"
 #include "synthesize_triangles.hpp"
 
 TESSERA_NAMESPACE_BEGIN
+
+/// What a shader needs to texture every visible face. Per face (indexed like the mesh):
+///   - `offset`: uv = pixel position (x right, y DOWN, pixel centres at +0.5) + offset, in pixels of
+///     the face's level image measured from that image's centre. This form works for every visible
+///     face, including faces crossing the near plane: compute it per fragment from gl_FragCoord
+///     (flip y: y_down = height - y_up).
+///   - `corner_uv`: the same at the three corners (u0 v0 u1 v1 u2 v2), to interpolate linearly in
+///     SCREEN space (GLSL `noperspective`). NaN at corners behind the eye (state near_clipped):
+///     such a corner has no screen position; use the offset form for those faces.
+///   - `level`, `scale`: the pyramid level and the scale; the exemplar shrunk by `scale` is sampled
+///     at normalized coordinates 0.5 + uv / (exemplar_width * scale, exemplar_height * scale).
+///   - `state`: a face_visibility (0 culled: level -1, scale 0, NaN coordinates).
+struct terrain_uv_buffer {
+  index_t viewport_width = 0, viewport_height = 0;
+  index_t exemplar_width = 0, exemplar_height = 0;
+  index_t levels = 0;     ///< of the scale field
+  double min_scale = 1;   ///< of the scale field
+  std::vector<std::array<float, 6>> corner_uv;  ///< u0 v0 u1 v1 u2 v2
+  std::vector<std::array<float, 2>> offset;
+  std::vector<std::int32_t> level;
+  std::vector<float> scale;
+  std::vector<std::uint8_t> state;
+};
+
+/// Collects the engine-facing outputs of a synthesis (see terrain_uv_buffer). Errors
+/// (invalid_argument): a projection, field or synthesis that does not belong to `mesh`, or a
+/// visible face the field or the synthesis did not cover (made from another projection). O(F).
+inline result<terrain_uv_buffer> export_corner_uvs(const terrain_mesh& mesh, const screen_projection& proj, const scale_field& field,
+                                                   const triangle_synthesis& syn) {
+  if (auto s = detail::check_projection(mesh, proj, "export_corner_uvs"); !s) return s;
+  const auto nf = static_cast<std::size_t>(mesh.num_faces());
+  if (field.level.size() != nf || field.scale.size() != nf || syn.offset.size() != nf || syn.region.size() != nf)
+    return status::invalid_argument(detail::cat("export_corner_uvs: the scale field (", field.level.size(), " faces) and synthesis (",
+                                                syn.region.size(), " faces) must belong to the mesh (", nf, " faces)"));
+  terrain_uv_buffer b;
+  b.viewport_width = proj.width;
+  b.viewport_height = proj.height;
+  b.exemplar_width = syn.exemplar_width;
+  b.exemplar_height = syn.exemplar_height;
+  b.levels = field.levels;
+  b.min_scale = field.min_scale;
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  b.corner_uv.assign(nf, {nan, nan, nan, nan, nan, nan});
+  b.offset.assign(nf, {nan, nan});
+  b.level.assign(nf, -1);
+  b.scale.assign(nf, 0.0f);
+  b.state.assign(nf, 0);
+  for (std::size_t i = 0; i < proj.visible.size(); ++i) {
+    const std::int32_t f = proj.visible[i];
+    if (!detail::is_visible_face(proj, f)) return detail::bad_visible_entry("export_corner_uvs", static_cast<index_t>(i), f);
+    const auto fi = static_cast<std::size_t>(f);
+    if (field.level[fi] < 0 || syn.region[fi] < 0)
+      return status::invalid_argument(detail::cat("export_corner_uvs: visible face ", f, " has level ", field.level[fi], " and region ",
+                                                  syn.region[fi], ": the field and synthesis must come from this projection"));
+    const vec2 o = syn.offset[fi];
+    for (std::size_t k = 0; k < 3; ++k) {
+      const std::int32_t v = mesh.faces[fi][k];
+      if (v < 0 || static_cast<std::size_t>(v) >= proj.screen.size())
+        return status::out_of_range(detail::cat("export_corner_uvs: face ", f, " corner ", k, " names vertex ", v));
+      const vec2 p = proj.screen[static_cast<std::size_t>(v)] + o;
+      b.corner_uv[fi][2 * k] = static_cast<float>(p.x);
+      b.corner_uv[fi][2 * k + 1] = static_cast<float>(p.y);
+    }
+    b.offset[fi] = {static_cast<float>(o.x), static_cast<float>(o.y)};
+    b.level[fi] = field.level[fi];
+    b.scale[fi] = field.scale[fi];
+    b.state[fi] = proj.state[fi];
+  }
+  return b;
+}
+
 
 inline constexpr std::uint32_t terrain_uv_file_version = 2;
 inline constexpr std::size_t terrain_uv_header_bytes = 36, terrain_uv_record_bytes = 44;

@@ -1,4 +1,4 @@
-#include <tessera/terrain/terrain_uv_file.hpp>
+#include <tessera/terrain/export_corner_uvs.hpp>
 
 #include <cmath>
 #include <cstdint>
