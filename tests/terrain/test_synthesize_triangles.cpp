@@ -34,7 +34,8 @@ bool fits(const scene& s, std::int32_t f, tessera::vec2 o, double W, double H, d
 // With `immediate` (defer_restarts = false) the order is exactly depth first; deferred faces come
 // later than that, so the depth-first check is skipped for them.
 void check_rules(const scene& s, const tessera::triangle_synthesis& r, double W, double H, double m,
-                 tessera::continuation_rule rule = tessera::continuation_rule::oldest_placement, bool immediate = false) {
+                 tessera::continuation_rule rule = tessera::continuation_rule::oldest_placement, bool immediate = false,
+                 bool keep_axis = true) {
   const auto nf = static_cast<std::size_t>(s.mesh.num_faces());
   REQUIRE(r.order.size() == s.proj.visible.size());
   std::vector<index_t> pos(nf, -1);
@@ -43,7 +44,7 @@ void check_rules(const scene& s, const tessera::triangle_synthesis& r, double W,
     pos[static_cast<std::size_t>(r.order[i])] = static_cast<index_t>(i);
   }
   for (std::size_t f = 0; f < nf; ++f) REQUIRE((pos[f] >= 0) == s.proj.is_visible(static_cast<index_t>(f)));
-  index_t starts = 0, restarts = 0, oversized = 0;
+  index_t starts = 0, restarts = 0, oversized = 0, kept_axis = 0;
   std::int32_t next_region = 0;
   for (std::size_t i = 0; i < r.order.size(); ++i) {
     const std::int32_t f = r.order[i];
@@ -66,6 +67,22 @@ void check_rules(const scene& s, const tessera::triangle_synthesis& r, double W,
       REQUIRE(r.region[fi] == next_region++);
       if (earlier.empty()) ++starts;
       else ++restarts;
+      // it keeps the offset along an axis where the oldest neighbouring placement still fits
+      std::int32_t oldest = -1;
+      int axis = -1;
+      for (const std::int32_t n : earlier) {
+        const auto o = r.offset[static_cast<std::size_t>(n)];
+        const auto& b = s.proj.bounds[fi];
+        const double hw = 0.5 * W * s.field.scale[fi] - m, hh = 0.5 * H * s.field.scale[fi] - m;
+        const bool fx = b[0] + o.x >= -hw && b[2] + o.x <= hw, fy = b[1] + o.y >= -hh && b[3] + o.y <= hh;
+        if ((fx || fy) && (oldest < 0 || r.region[static_cast<std::size_t>(n)] < r.region[static_cast<std::size_t>(oldest)]))
+          oldest = n, axis = fx ? 0 : 1;
+      }
+      if (keep_axis && oldest >= 0) {
+        if (axis == 0) REQUIRE(r.offset[fi].x == r.offset[static_cast<std::size_t>(oldest)].x);
+        else REQUIRE(r.offset[fi].y == r.offset[static_cast<std::size_t>(oldest)].y);
+        ++kept_axis;
+      }
       if (!fits(s, f, r.offset[fi], W, H, m)) ++oversized;
     }
     // depth first: if f left unsynthesized visible neighbours, the next face is the last one pushed
@@ -78,6 +95,7 @@ void check_rules(const scene& s, const tessera::triangle_synthesis& r, double W,
   REQUIRE(restarts == r.restarts);
   REQUIRE(r.regions == starts + restarts);
   REQUIRE(oversized == r.oversized);
+  if (keep_axis && restarts > 2) REQUIRE(kept_axis > 0);
   // seams and the continuity figure
   index_t shared = 0, same = 0;
   for (const std::int32_t f : s.proj.visible) {
@@ -114,6 +132,9 @@ TEST_CASE("synthesize_triangles: every rule of §2.3 holds on the recorded order
       check_rules(s, immediate, 64, 64, 1.0, tessera::continuation_rule::oldest_placement, true);
       REQUIRE(r.deferred > 0);
       REQUIRE(r.restarts < immediate.restarts);  // waiting saves placements
+      const auto both_random = tessera::synthesize_triangles(s.mesh, s.proj, s.field, 64, 64,
+                                                             {.seed = 3, .placement = placement, .keep_fitting_axis = false}).value();
+      check_rules(s, both_random, 64, 64, 1.0, tessera::continuation_rule::oldest_placement, false, false);
     }
   }
 }

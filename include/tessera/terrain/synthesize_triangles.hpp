@@ -26,7 +26,8 @@
 //            congruent triangle at random"); by default biased so the triangle sits at the side of
 //            the level image facing its synthesized neighbours, leaving the rest of the image for the
 //            unsynthesized side (placement_strategy::away_from_neighbors; the paper's uniform choice
-//            is placement_strategy::uniform)
+//            is placement_strategy::uniform), and keeping the offset along an axis where the
+//            oldest neighbouring placement still fits (keep_fitting_axis)
 //   seams    sides where a synthesized neighbour has other coordinates are marked for colour
 //            blending (step 3; render_terrain_frame feathers across them)
 //
@@ -79,6 +80,10 @@ struct triangle_synthesis_options {
   /// the stack empties, in case a neighbour synthesized later brings coordinates that fit; only
   /// then is it given a new placement. False: the paper's immediate restart.
   bool defer_restarts = true;
+  /// A new placement next to a synthesized placement that still fits the face along one axis keeps
+  /// that axis's offset and draws only the other: the seam becomes a one-dimensional shift, which
+  /// textures with a direction (grass blades) carry across almost unseen. False: both at random.
+  bool keep_fitting_axis = true;
   tessera::progress progress = {};
 };
 
@@ -246,9 +251,25 @@ status synthesize_triangles(const terrain_mesh& mesh, const screen_projection& p
           const double len = norm(d);
           if (len > 0) toward = vec2{0.5 - 0.5 * d.x / len, 0.5 - 0.5 * d.y / len};
         }
+        // keep the coordinate of the oldest neighbouring placement that still fits along one axis:
+        // the seam is then a shift along the other axis only (blades of grass run on across it)
+        int keep = -1;
+        vec2 kept{};
+        if (opts.keep_fitting_axis) {
+          std::int32_t oldest = std::numeric_limits<std::int32_t>::max();
+          for (int k = 0; k < 3; ++k) {
+            const std::int32_t n = nb[static_cast<std::size_t>(k)];
+            if (!detail::is_face_index(n, nf)) continue;
+            const std::int32_t r = out.region[static_cast<std::size_t>(n)];
+            if (r < 0 || r >= oldest) continue;
+            const vec2 p = placements[static_cast<std::size_t>(r)];
+            const bool fx = b[0] + p.x >= -hw && b[2] + p.x <= hw, fy = b[1] + p.y >= -hh && b[3] + p.y <= hh;
+            if (fx || fy) oldest = r, keep = fx ? 0 : 1, kept = p;
+          }
+        }
         bool big = false;
-        const vec2 o{place_axis(-hw - b[0], hw - b[2], rng.uniform(f, 1), toward.x, big),
-                     place_axis(-hh - b[1], hh - b[3], rng.uniform(f, 2), toward.y, big)};
+        const vec2 o{keep == 0 ? kept.x : place_axis(-hw - b[0], hw - b[2], rng.uniform(f, 1), toward.x, big),
+                     keep == 1 ? kept.y : place_axis(-hh - b[1], hh - b[3], rng.uniform(f, 2), toward.y, big)};
         placements.push_back(o);
         out.region[fi] = static_cast<std::int32_t>(out.regions++);
         out.oversized += big ? 1 : 0;
