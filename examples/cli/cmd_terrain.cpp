@@ -90,6 +90,8 @@ int run_terrain(const cli::arguments& args) {
   const std::string continuation = args.str("--continuation", "oldest"), restart = args.str("--restart", "wait");
   if (restart != "wait" && restart != "immediate")
     return fail(status::invalid_argument("--restart expects wait or immediate, got '" + restart + "'"));
+  const std::string keep_axis = args.str("--keep-axis", "yes");
+  if (keep_axis != "yes" && keep_axis != "no") return fail(status::invalid_argument("--keep-axis expects yes or no, got '" + keep_axis + "'"));
   if (continuation != "oldest" && continuation != "first")
     return fail(status::invalid_argument("--continuation expects oldest or first, got '" + continuation + "'"));
   if (mode != "stepped" && mode != "continuous") return fail(status::invalid_argument("--mode expects stepped or continuous, got '" + mode + "'"));
@@ -128,7 +130,8 @@ int run_terrain(const cli::arguments& args) {
       .seed = args.seed(),
       .placement = placement == "uniform" ? tessera::placement_strategy::uniform : tessera::placement_strategy::away_from_neighbors,
       .continuation = continuation == "first" ? tessera::continuation_rule::first_neighbor : tessera::continuation_rule::oldest_placement,
-      .defer_restarts = restart == "wait"};
+      .defer_restarts = restart == "wait",
+      .keep_fitting_axis = keep_axis == "yes"};
   const double syn_ms = cli::median_ms(args.repeat(), [&] {
     if (error.ok()) error = tessera::synthesize_triangles(*mesh, proj, field, exemplar->width(), exemplar->height(), syn_opts, syn);
   });
@@ -205,6 +208,8 @@ std::vector<cli::option_spec> terrain_options() {
                               "order, the paper read literally) (default oldest)"},
       {"--restart", "R", "a face that fits no neighbour's coordinates: wait (once, for neighbours synthesized later) or immediate "
                          "(a new placement at once, the paper) (default wait)"},
+      {"--keep-axis", "yes|no", "a new placement keeps the offset along an axis where a neighbouring placement still fits (default "
+                                "yes; no: both axes at random, the paper)"},
       {"--feather", "PX", "seam blending width in pixels (default 3; 0 = none)"},
       {"--shading", "S", "frame shading: texture, scale or regions (default texture)"},
       {"--sun", "x,y,z", "direction towards a light: flat Lambert shading of the frames (default: unlit)"},
