@@ -198,6 +198,7 @@ status synthesize_triangles(const terrain_mesh& mesh, const screen_projection& p
     if (out.region[static_cast<std::size_t>(seed_face)] >= 0) continue;
     ++out.components;
     stack.push_back(seed_face);
+    deferred.clear();  // the previous region took up all of its list
     std::size_t next_deferred = 0;
     while (!stack.empty() || next_deferred < deferred.size()) {
       bool forced = false;
