@@ -13,6 +13,7 @@
 #include <cstring>
 #include <map>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include <tessera/image/exemplars.hpp>
@@ -36,7 +37,15 @@ struct scene {
   tessera::scale_field field;
   tessera::triangle_synthesis syn;
   double tiled_ms = 0;  ///< median time of the plain tiled frame, for the ratio counters
+  std::string error;    ///< why the scene could not be built (the benchmarks then skip with it)
 };
+
+/// Reports a failed status to Google Benchmark (the run shows the message instead of a figure).
+bool failed(benchmark::State& state, const tessera::status& s) {
+  if (s) return false;
+  state.SkipWithError(s.to_string().c_str());
+  return true;
+}
 
 tessera::thread_pool_executor& pool() {
   static tessera::thread_pool_executor p(2);
@@ -64,22 +73,40 @@ scene& get_scene(index_t triangles) {
   if (s) return *s;
   s = std::make_unique<scene>();
   const auto cells = static_cast<index_t>(std::llround(std::sqrt(static_cast<double>(triangles) / 2)));
-  const auto m = tessera::make_terrain({.cells_x = cells, .cells_y = cells}, pool()).value();
-  s->mesh = tessera::prepare_terrain_mesh(m).value();
-  const auto cam = tessera::make_camera_preset(tessera::camera_preset::overview, tessera::bounding_box(m), frame_w, frame_h).value();
-  (void)tessera::project_mesh(s->mesh, cam, s->proj, {}, pool());
-  (void)tessera::assign_scale_field(s->mesh, s->proj, {.min_scale = 0.5, .max_levels = pyramid().num_levels()}, s->field, pool());
-  (void)tessera::synthesize_triangles(s->mesh, s->proj, s->field, exemplar_side, exemplar_side, {}, s->syn);
-  tessera::image_buffer<std::uint8_t, 3> frame(frame_w, frame_h);
-  std::vector<double> t;
-  for (int r = 0; r < 3; ++r) {
-    const auto a = std::chrono::steady_clock::now();
-    (void)tessera::render_tiled_frame(s->mesh, s->proj, tiled(), frame, {}, pool());
-    t.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - a).count());
-  }
-  std::sort(t.begin(), t.end());
-  s->tiled_ms = t[1];
+  auto build = [&]() -> tessera::status {
+    const auto m = tessera::make_terrain({.cells_x = cells, .cells_y = cells}, pool());
+    if (!m) return m.error();
+    auto mesh = tessera::prepare_terrain_mesh(*m);
+    if (!mesh) return mesh.error();
+    s->mesh = std::move(*mesh);
+    const auto cam = tessera::make_camera_preset(tessera::camera_preset::overview, tessera::bounding_box(*m), frame_w, frame_h);
+    if (!cam) return cam.error();
+    if (auto st = tessera::project_mesh(s->mesh, *cam, s->proj, {}, pool()); !st) return st;
+    if (auto st = tessera::assign_scale_field(s->mesh, s->proj, {.min_scale = 0.5, .max_levels = pyramid().num_levels()}, s->field, pool());
+        !st)
+      return st;
+    if (auto st = tessera::synthesize_triangles(s->mesh, s->proj, s->field, exemplar_side, exemplar_side, {}, s->syn); !st) return st;
+    tessera::image_buffer<std::uint8_t, 3> frame(frame_w, frame_h);
+    std::vector<double> t;
+    for (int r = 0; r < 3; ++r) {
+      const auto a = std::chrono::steady_clock::now();
+      if (auto st = tessera::render_tiled_frame(s->mesh, s->proj, tiled(), frame, {}, pool()); !st) return st;
+      t.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - a).count());
+    }
+    std::sort(t.begin(), t.end());
+    s->tiled_ms = t[1];
+    return {};
+  };
+  if (auto st = build(); !st) s->error = st.to_string();
   return *s;
+}
+
+/// The scene of `triangles` faces, or nullptr after reporting why it could not be built.
+scene* scene_or_skip(benchmark::State& state, index_t triangles) {
+  scene& s = get_scene(triangles);
+  if (s.error.empty()) return &s;
+  state.SkipWithError(s.error.c_str());
+  return nullptr;
 }
 
 void set_counters(benchmark::State& state, const scene& s) {
@@ -90,18 +117,21 @@ void set_counters(benchmark::State& state, const scene& s) {
 // scale field + synthesis, the per-frame work of §2.2-2.3 (the goal: 10^6 under 100 ms)
 template <bool Threads>
 void BM_ScaleFieldAndSynthesis(benchmark::State& state) {
-  scene& s = get_scene(state.range(0));
+  scene* sp = scene_or_skip(state, state.range(0));
+  if (!sp) return;
+  scene& s = *sp;
   tessera::serial_executor serial;
   double total_ms = 0;
   for (auto _ : state) {
     const auto a = std::chrono::steady_clock::now();
-    if constexpr (Threads) {
-      (void)tessera::assign_scale_field(s.mesh, s.proj, {.max_levels = pyramid().num_levels()}, s.field, pool());
-      (void)tessera::synthesize_triangles(s.mesh, s.proj, s.field, exemplar_side, exemplar_side, {}, s.syn, pool());
-    } else {
-      (void)tessera::assign_scale_field(s.mesh, s.proj, {.max_levels = pyramid().num_levels()}, s.field, serial);
-      (void)tessera::synthesize_triangles(s.mesh, s.proj, s.field, exemplar_side, exemplar_side, {}, s.syn, serial);
-    }
+    auto run = [&](auto& exec) {
+      if (auto st = tessera::assign_scale_field(s.mesh, s.proj, {.max_levels = pyramid().num_levels()}, s.field, exec); !st) return st;
+      return tessera::synthesize_triangles(s.mesh, s.proj, s.field, exemplar_side, exemplar_side, {}, s.syn, exec);
+    };
+    tessera::status st;
+    if constexpr (Threads) st = run(pool());
+    else st = run(serial);
+    if (failed(state, st)) break;
     benchmark::DoNotOptimize(s.syn.offset.data());
     total_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - a).count();
   }
@@ -113,10 +143,12 @@ BENCHMARK(BM_ScaleFieldAndSynthesis<false>)->Name("ScaleFieldAndSynthesis/serial
 BENCHMARK(BM_ScaleFieldAndSynthesis<true>)->Name("ScaleFieldAndSynthesis/2threads")->Arg(10000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void BM_ScaleField(benchmark::State& state) {
-  scene& s = get_scene(state.range(0));
+  scene* sp = scene_or_skip(state, state.range(0));
+  if (!sp) return;
+  scene& s = *sp;
   tessera::serial_executor serial;
   for (auto _ : state) {
-    (void)tessera::assign_scale_field(s.mesh, s.proj, {.max_levels = pyramid().num_levels()}, s.field, serial);
+    if (failed(state, tessera::assign_scale_field(s.mesh, s.proj, {.max_levels = pyramid().num_levels()}, s.field, serial))) break;
     benchmark::DoNotOptimize(s.field.level.data());
   }
   set_counters(state, s);
@@ -124,11 +156,13 @@ void BM_ScaleField(benchmark::State& state) {
 BENCHMARK(BM_ScaleField)->Arg(10000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void BM_Synthesis(benchmark::State& state) {
-  scene& s = get_scene(state.range(0));
+  scene* sp = scene_or_skip(state, state.range(0));
+  if (!sp) return;
+  scene& s = *sp;
   double total_ms = 0;
   for (auto _ : state) {
     const auto a = std::chrono::steady_clock::now();
-    (void)tessera::synthesize_triangles(s.mesh, s.proj, s.field, exemplar_side, exemplar_side, {}, s.syn);
+    if (failed(state, tessera::synthesize_triangles(s.mesh, s.proj, s.field, exemplar_side, exemplar_side, {}, s.syn))) break;
     benchmark::DoNotOptimize(s.syn.offset.data());
     total_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - a).count();
   }
@@ -138,11 +172,14 @@ void BM_Synthesis(benchmark::State& state) {
 BENCHMARK(BM_Synthesis)->Arg(10000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void BM_Projection(benchmark::State& state) {
-  scene& s = get_scene(state.range(0));
-  const auto cam = tessera::make_camera_preset(tessera::camera_preset::overview, tessera::bounding_box(s.mesh), frame_w, frame_h).value();
+  scene* sp = scene_or_skip(state, state.range(0));
+  if (!sp) return;
+  scene& s = *sp;
+  const auto cam = tessera::make_camera_preset(tessera::camera_preset::overview, tessera::bounding_box(s.mesh), frame_w, frame_h);
+  if (failed(state, cam.error())) return;
   tessera::screen_projection p;
   for (auto _ : state) {
-    (void)tessera::project_mesh(s.mesh, cam, p, {}, pool());
+    if (failed(state, tessera::project_mesh(s.mesh, *cam, p, {}, pool()))) break;
     benchmark::DoNotOptimize(p.visible.data());
   }
   set_counters(state, s);
@@ -152,11 +189,15 @@ BENCHMARK(BM_Projection)->Arg(10000)->Arg(100000)->Arg(1000000)->Unit(benchmark:
 // 1920 x 1080 frames of the same scene: synthesized (with seam feathering) and plain tiled
 template <bool Synthesized>
 void BM_Render(benchmark::State& state) {
-  scene& s = get_scene(state.range(0));
+  scene* sp = scene_or_skip(state, state.range(0));
+  if (!sp) return;
+  scene& s = *sp;
   tessera::image_buffer<std::uint8_t, 3> frame(frame_w, frame_h);
   for (auto _ : state) {
-    if constexpr (Synthesized) (void)tessera::render_terrain_frame(s.mesh, s.proj, s.field, s.syn, pyramid(), frame, {}, pool());
-    else (void)tessera::render_tiled_frame(s.mesh, s.proj, tiled(), frame, {}, pool());
+    tessera::status st;
+    if constexpr (Synthesized) st = tessera::render_terrain_frame(s.mesh, s.proj, s.field, s.syn, pyramid(), frame, {}, pool());
+    else st = tessera::render_tiled_frame(s.mesh, s.proj, tiled(), frame, {}, pool());
+    if (failed(state, st)) break;
     benchmark::DoNotOptimize(frame.data());
   }
   set_counters(state, s);

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <fstream>
 #include <string>
 #include <vector>
 
@@ -20,6 +19,7 @@
 #include <tessera/terrain/render_tiled_frame.hpp>
 #include <tessera/terrain/synthesize_triangles.hpp>
 #include <tessera/terrain/terrain_camera.hpp>
+#include <tessera/terrain/export_corner_uvs.hpp>
 
 #include "cli.hpp"
 #include "image_source.hpp"
@@ -67,20 +67,8 @@ result<tessera::terrain_camera> make_cli_camera(const cli::arguments& args, cons
   return tessera::make_camera(*look, w, h);
 }
 
-status write_uvs(const std::string& path, const tessera::terrain_uv_buffer& uv) {
-  std::ofstream out(path, std::ios::binary);
-  if (!out) return status::io_error(path + ": cannot open for writing");
-  const auto n = static_cast<std::uint32_t>(uv.level.size());
-  out.write("TSUV", 4);
-  const std::uint32_t header[2] = {1, n};
-  out.write(reinterpret_cast<const char*>(header), sizeof header);
-  for (std::size_t f = 0; f < uv.level.size(); ++f) {
-    out.write(reinterpret_cast<const char*>(uv.corner_uv[f].data()), 6 * sizeof(float));
-    out.write(reinterpret_cast<const char*>(&uv.level[f]), sizeof(std::int32_t));
-    out.write(reinterpret_cast<const char*>(&uv.scale[f]), sizeof(float));
-  }
-  return out ? status{} : status::io_error(path + ": write failed");
-}
+/// Largest --grid: 4096 x 4096 cells are 33.5 M triangles (about 3 GB through the pipeline).
+constexpr long long max_grid = 4096;
 
 int run_terrain(const cli::arguments& args) {
   auto fail = [&](const status& s) { return cli::fail(args, s); };
@@ -88,17 +76,22 @@ int run_terrain(const cli::arguments& args) {
   if (!out_path) return fail(out_path.error());
   if (!args.has("--exemplar")) return fail(status::invalid_argument("missing required option --exemplar"));
   if (args.has("--mesh") && args.has("--grid")) return fail(status::invalid_argument("give --mesh or --grid, not both"));
-  auto vp = args.has("--viewport") ? args.size("--viewport") : result<std::pair<index_t, index_t>>(std::pair<index_t, index_t>{960, 540});
+  auto vp = args.has("--viewport") ? args.size("--viewport", tessera::max_viewport_side, index_t{1} << 26)
+                                   : result<std::pair<index_t, index_t>>(std::pair<index_t, index_t>{960, 540});
   if (!vp) return fail(vp.error());
   auto min_scale = args.number("--min-scale", 0.5);
-  auto levels = args.integer("--levels", 0);
-  auto feather = args.number("--feather", 3.0);
-  auto grid = args.integer("--grid", 128);
-  auto relief = args.number("--height", 14.0);
+  auto levels = args.integer("--levels", 0, 0, 4096);
+  auto feather = args.number("--feather", 3.0, 0, 64);
+  auto grid = args.integer("--grid", 128, 1, max_grid);
+  auto relief = args.number("--height", 14.0, 0, 1e6);
   for (const status* s : {&min_scale.error(), &levels.error(), &feather.error(), &grid.error(), &relief.error()})
     if (!s->ok()) return fail(*s);
   const std::string mode = args.str("--mode", "stepped"), placement = args.str("--placement", "away");
-  const std::string continuation = args.str("--continuation", "oldest");
+  const std::string continuation = args.str("--continuation", "oldest"), restart = args.str("--restart", "wait");
+  if (restart != "wait" && restart != "immediate")
+    return fail(status::invalid_argument("--restart expects wait or immediate, got '" + restart + "'"));
+  const std::string keep_axis = args.str("--keep-axis", "yes");
+  if (keep_axis != "yes" && keep_axis != "no") return fail(status::invalid_argument("--keep-axis expects yes or no, got '" + keep_axis + "'"));
   if (continuation != "oldest" && continuation != "first")
     return fail(status::invalid_argument("--continuation expects oldest or first, got '" + continuation + "'"));
   if (mode != "stepped" && mode != "continuous") return fail(status::invalid_argument("--mode expects stepped or continuous, got '" + mode + "'"));
@@ -136,7 +129,9 @@ int run_terrain(const cli::arguments& args) {
   const tessera::triangle_synthesis_options syn_opts{
       .seed = args.seed(),
       .placement = placement == "uniform" ? tessera::placement_strategy::uniform : tessera::placement_strategy::away_from_neighbors,
-      .continuation = continuation == "first" ? tessera::continuation_rule::first_neighbor : tessera::continuation_rule::oldest_placement};
+      .continuation = continuation == "first" ? tessera::continuation_rule::first_neighbor : tessera::continuation_rule::oldest_placement,
+      .defer_restarts = restart == "wait",
+      .keep_fitting_axis = keep_axis == "yes"};
   const double syn_ms = cli::median_ms(args.repeat(), [&] {
     if (error.ok()) error = tessera::synthesize_triangles(*mesh, proj, field, exemplar->width(), exemplar->height(), syn_opts, syn);
   });
@@ -172,8 +167,11 @@ int run_terrain(const cli::arguments& args) {
     if (auto s = tessera::render_tiled_frame(*mesh, proj, *tex, frame, tiled_opts, pool); !s) return fail(s);
     if (auto s = tessera::write_png(args.str("--tiled-out"), frame); !s) return fail(s);
   }
-  if (args.has("--uv-out"))
-    if (auto s = write_uvs(args.str("--uv-out"), tessera::export_corner_uvs(*mesh, proj, field, syn)); !s) return fail(s);
+  if (args.has("--uv-out")) {
+    auto uv = tessera::export_corner_uvs(*mesh, proj, field, syn);
+    if (!uv) return fail(uv.error());
+    if (auto s = tessera::write_terrain_uv_file(args.str("--uv-out"), *uv); !s) return fail(s);
+  }
   if (args.stats())
     cli::json_line()
         .add("triangles", mesh->num_faces())
@@ -194,7 +192,7 @@ std::vector<cli::option_spec> terrain_options() {
       {"--exemplar", "E", "exemplar PNG, or a procedural kind: grass, sand, rock, bricks, cells, weave, dots (required)"},
       cli::exemplar_size_option(256),
       {"--mesh", "M.obj", "terrain mesh (.obj, .off or .ply; polygons are fan-triangulated); default: a procedural heightfield"},
-      {"--grid", "N", "procedural heightfield of N x N cells, 2 N^2 triangles (default 128; --seed picks the relief)"},
+      {"--grid", "N", "procedural heightfield of N x N cells, 2 N^2 triangles, N in 1..4096 (default 128; --seed picks the relief)"},
       {"--height", "H", "relief of the procedural heightfield on its 100 x 100 extent (default 14; 0 = a flat plane)"},
       {"--camera", "P", "view preset grazing, oblique or overview (default grazing); --eye/--target/--fov override it"},
       {"--eye", "x,y,z", "eye position (z is up)"},
@@ -208,14 +206,18 @@ std::vector<cli::option_spec> terrain_options() {
       {"--placement", "P", "restart placement: away (from synthesized neighbours) or uniform (the paper) (default away)"},
       {"--continuation", "R", "which synthesized neighbour's coordinates to continue: oldest (placement) or first (in side "
                               "order, the paper read literally) (default oldest)"},
+      {"--restart", "R", "a face that fits no neighbour's coordinates: wait (once, for neighbours synthesized later) or immediate "
+                         "(a new placement at once, the paper) (default wait)"},
+      {"--keep-axis", "yes|no", "a new placement keeps the offset along an axis where a neighbouring placement still fits (default "
+                                "yes; no: both axes at random, the paper)"},
       {"--feather", "PX", "seam blending width in pixels (default 3; 0 = none)"},
       {"--shading", "S", "frame shading: texture, scale or regions (default texture)"},
       {"--sun", "x,y,z", "direction towards a light: flat Lambert shading of the frames (default: unlit)"},
       {"--out", "F.png", "the synthesized frame (required)"},
       {"--scale-out", "F.png", "also write the colour-coded scale field (yellow: scale 1, purple: min-scale)"},
       {"--tiled-out", "F.png", "also write the same frame with plain tiled texture mapping"},
-      {"--uv-out", "F.bin", "per-triangle texture coordinates: 'TSUV', u32 version 1, u32 faces, then per face 6 f32 corner uv "
-                            "(level pixels from the level centre), i32 level (-1 culled), f32 scale"},
+      {"--uv-out", "F.bin", "per-triangle texture coordinates for an engine (TSUV version 2, little-endian: 36-byte header, then per "
+                            "face 6 f32 corner uv, 2 f32 offset, i32 level, f32 scale, u32 state; see docs/terrain.md)"},
   };
   for (auto& c : cli::common_options()) o.push_back(c);
   return o;

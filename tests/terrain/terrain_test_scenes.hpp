@@ -20,6 +20,12 @@ inline tessera::terrain_camera preset_camera(const tessera::terrain_mesh& m, tes
   return tessera::make_camera_preset(p, tessera::bounding_box(m), w, h).value();
 }
 
+/// A low eye over the 100 x 100 ground of a coarse terrain (make it with a few cells), looking
+/// ahead and slightly down: the large faces under the eye reach behind it and cross the near plane.
+inline tessera::terrain_camera low_camera(tessera::index_t w, tessera::index_t h) {
+  return tessera::make_camera({.eye = {3, -10, 9}, .target = {0, 40, 0}, .fov_y_degrees = 70, .near = 0.05, .far = 400}, w, h).value();
+}
+
 /// A random camera somewhere above the terrain looking at a random point of it.
 inline tessera::terrain_camera random_camera(const tessera::terrain_mesh& m, std::uint64_t seed, tessera::index_t w = 120,
                                              tessera::index_t h = 80) {

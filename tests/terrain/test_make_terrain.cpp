@@ -34,5 +34,16 @@ TEST_CASE("make_terrain: bad options", "[terrain][scene]") {
   REQUIRE(msg({.size_x = -1}).find("size") != std::string::npos);
   REQUIRE(msg({.height = -2}).find("height") != std::string::npos);
   REQUIRE(msg({.feature_size = 0}).find("feature_size") != std::string::npos);
+  // a tiny wavelength would make noise coordinates infinite (floor(inf) to int64 is undefined)
+  REQUIRE(msg({.feature_size = 1e-300}).find("feature_size must be in [1e-6, 1e6], got 1e-300") != std::string::npos);
+  REQUIRE(msg({.feature_size = 1e7}).find("feature_size") != std::string::npos);
+  REQUIRE(msg({.size_x = 1e300}).find("size must be in (0, 1e15]") != std::string::npos);
+  REQUIRE(msg({.height = 1e300}).find("height") != std::string::npos);
+  // the extreme accepted values give finite positions
+  for (const double fs : {1e-6, 1e6}) {
+    const auto m = tessera::make_terrain({.cells_x = 3, .cells_y = 3, .size_x = 1e15, .size_y = 1e15, .feature_size = fs, .octaves = 16});
+    REQUIRE(m);
+    for (const auto& p : m->positions) REQUIRE(tessera::is_finite(p));
+  }
   REQUIRE(msg({.octaves = 0}).find("octaves") != std::string::npos);
 }

@@ -1,6 +1,8 @@
 #include <tessera/terrain/prepare_terrain_mesh.hpp>
 
+#include <cmath>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include <catch2/catch.hpp>
@@ -8,7 +10,10 @@
 #include <tessera/core/mesh_topology.hpp>
 #include <tessera/core/mesh_view.hpp>
 #include <tessera/core/random.hpp>
+#include <tessera/terrain/assign_scale_field.hpp>
 #include <tessera/terrain/make_terrain.hpp>
+#include <tessera/terrain/project_mesh.hpp>
+#include <tessera/terrain/synthesize_triangles.hpp>
 
 using tessera::index_t;
 
@@ -84,4 +89,57 @@ TEST_CASE("prepare_terrain_mesh: invalid meshes return a status naming the probl
   m.faces[0] = {0, 1, 2};
   m.positions[1].x = std::nan("");
   REQUIRE(tessera::prepare_terrain_mesh(m).error().message().find("non-finite") != std::string::npos);
+}
+
+TEST_CASE("validate_terrain_mesh: a terrain_mesh filled by hand is checked before any stage indexes through it", "[terrain][prepare]") {
+  const tessera::terrain_mesh good = tessera::prepare_terrain_mesh(tessera::make_terrain({.cells_x = 3, .cells_y = 3}).value()).value();
+  REQUIRE(tessera::validate_terrain_mesh(good));
+  const auto cam = tessera::make_camera({.eye = {0, -80, 40}, .target = {0, 0, 0}}, 64, 48).value();
+  REQUIRE(tessera::project_mesh(good, cam));
+  auto expect = [&](const tessera::terrain_mesh& m, const char* text) {
+    const auto v = tessera::validate_terrain_mesh(m);
+    INFO(v.message());
+    REQUIRE_FALSE(v);
+    REQUIRE(v.message().find(text) != std::string::npos);
+    const auto p = tessera::project_mesh(m, cam);  // project_mesh makes the same checks in its own passes
+    REQUIRE_FALSE(p);
+    REQUIRE(p.error().message() == v.message());
+  };
+  tessera::terrain_mesh m = good;
+  m.neighbors.clear();  // positions and faces only, as a caller might fill it
+  expect(m, "0 neighbour triples");
+  m = good;
+  m.centroids.pop_back();
+  expect(m, "centroids");
+  m = good;
+  m.neighbors[5][1] = 18;  // 18 faces: 0..17
+  expect(m, "face 5 side 1 names neighbour 18 of 18");
+  m = good;
+  m.neighbors[7][2] = -2;
+  expect(m, "face 7 side 2 names neighbour -2");
+  m = good;
+  m.faces[3][0] = 16;  // 16 vertices
+  expect(m, "face 3 corner 0 names vertex 16 of 16");
+  m = good;
+  m.centroids[4].y = std::nan("");
+  expect(m, "face 4 has a non-finite centroid");
+  m = good;
+  m.positions[2].z = INFINITY;
+  expect(m, "vertex 2 is not finite");
+
+  // a mesh changed after projection: the later stages check sizes and never follow a bad neighbour
+  const auto proj = tessera::project_mesh(good, cam).value();
+  REQUIRE(proj.num_visible() == 18);
+  m = good;
+  m.neighbors.resize(3);
+  REQUIRE(tessera::assign_scale_field(m, proj).error().message().find("neighbour triples") != std::string::npos);
+  const auto field = tessera::assign_scale_field(good, proj).value();
+  REQUIRE(tessera::synthesize_triangles(m, proj, field, 64, 64).error().message().find("neighbour triples") != std::string::npos);
+  m = good;
+  for (auto& nb : m.neighbors) nb = {1000, 2000, 3000};  // out of range: ignored as "no neighbour", no read
+  const auto f2 = tessera::assign_scale_field(m, proj).value();
+  REQUIRE(f2.adjacent_pairs == 0);
+  const auto syn = tessera::synthesize_triangles(m, proj, f2, 64, 64).value();
+  REQUIRE(syn.shared_edges == 0);
+  REQUIRE(syn.components == 18);
 }

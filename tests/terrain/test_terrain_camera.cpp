@@ -68,6 +68,34 @@ TEST_CASE("validate_camera: non-finite or singular matrices", "[terrain][camera]
   REQUIRE(tessera::validate_camera(c).message().find("singular") != std::string::npos);
 }
 
+TEST_CASE("validate_camera: a projective view (eye at infinity) is rejected", "[terrain][camera]") {
+  const auto cam = tessera::make_camera({.eye = {0, 0, 5}, .target = {0, 10, 0}}, 64, 48).value();
+  REQUIRE(tessera::camera_eye(cam).z == Approx(5));
+  // an invertible view whose inverse maps the origin to w = 0: the eye would be a point at infinity
+  auto c = cam;
+  c.view = glm::dmat4(1.0);
+  // rows (1 0 0 0), (0 1 0 0), (0 0 0 1), (0 0 1 0): view * (0, 0, 1, 0) = (0, 0, 0, 1), so the
+  // inverse maps the origin to (0, 0, 1, 0), w = 0 (GLM: view[column][row])
+  c.view[2][2] = 0;
+  c.view[3][2] = 1;
+  c.view[2][3] = 1;
+  c.view[3][3] = 0;
+  REQUIRE(std::abs(glm::determinant(c.view)) > 0.5);
+  REQUIRE((glm::inverse(c.view) * glm::dvec4(0, 0, 0, 1)).w == 0);
+  const auto s = tessera::validate_camera(c);
+  REQUIRE(s.code() == tessera::status_code::invalid_argument);
+  REQUIRE(s.message().find("affine") != std::string::npos);
+  // and project_mesh, which takes the eye from it, refuses it instead of making NaN distances
+  const auto mesh = terrain_test::prepared_terrain(4);
+  REQUIRE(tessera::project_mesh(mesh, c).error().message().find("affine") != std::string::npos);
+  c = cam;
+  c.view[3][3] = -1;  // negative w mirrors the eye
+  REQUIRE_FALSE(tessera::validate_camera(c));
+  c = cam;
+  c.view[3][3] = 2;  // a uniformly scaled affine view is fine: the eye is still a point
+  REQUIRE(tessera::validate_camera(c));
+}
+
 TEST_CASE("camera presets look at the scene", "[terrain][camera]") {
   const auto mesh = terrain_test::prepared_terrain(16);
   for (auto p : {tessera::camera_preset::grazing, tessera::camera_preset::oblique, tessera::camera_preset::overview}) {

@@ -69,7 +69,8 @@ struct scale_field {
 /// Assigns distance, level and scale to every visible face of `projection` (paper 003, §2.2 steps
 /// 1-3, 5, 6; see the file comment for the edge cases) into `out`, reusing its storage. Errors:
 /// min_scale outside (0, 1], max_levels outside 1..65536, a projection that does not belong to
-/// `mesh` (sizes differ). Nothing visible is not an error: levels = 0. O(F), parallel through `exec`;
+/// `mesh` (sizes differ, a visible entry naming a culled or missing face), a mesh whose arrays do
+/// not agree (see validate_terrain_mesh), a non-finite view distance. Nothing visible is not an error: levels = 0. O(F), parallel through `exec`;
 /// deterministic (maxima are order-independent).
 template <Executor E = serial_executor>
 status assign_scale_field(const terrain_mesh& mesh, const screen_projection& projection, const scale_field_options& opts,
@@ -78,13 +79,20 @@ status assign_scale_field(const terrain_mesh& mesh, const screen_projection& pro
     return status::invalid_argument(detail::cat("min_scale must be in (0, 1], got ", opts.min_scale));
   if (opts.max_levels < 1 || opts.max_levels > 65536)
     return status::invalid_argument(detail::cat("max_levels must be 1 to 65536, got ", opts.max_levels));
+  if (auto s = detail::check_projection(mesh, projection, "assign_scale_field"); !s) return s;
   const index_t nf = mesh.num_faces();
-  if (static_cast<index_t>(projection.state.size()) != nf || static_cast<index_t>(projection.clip.size()) != mesh.num_vertices())
-    return status::invalid_argument(detail::cat("projection has ", projection.state.size(), " faces but the mesh has ", nf,
-                                                ": project this mesh first"));
-  out.distance.assign(static_cast<std::size_t>(nf), std::numeric_limits<double>::quiet_NaN());
-  out.level.assign(static_cast<std::size_t>(nf), -1);
-  out.scale.assign(static_cast<std::size_t>(nf), 0.0f);
+  constexpr index_t block = 16384;
+  // culled faces: distance NaN, level -1, scale 0 (filled in parallel; a 10^6-face mesh has 16 MB of them)
+  out.distance.resize(static_cast<std::size_t>(nf));
+  out.level.resize(static_cast<std::size_t>(nf));
+  out.scale.resize(static_cast<std::size_t>(nf));
+  exec.parallel_for(0, (nf + block - 1) / block, [&](index_t c) {
+    const auto a = static_cast<std::size_t>(c * block), b = static_cast<std::size_t>(std::min(nf, (c + 1) * block));
+    std::fill(out.distance.begin() + static_cast<std::ptrdiff_t>(a), out.distance.begin() + static_cast<std::ptrdiff_t>(b),
+              std::numeric_limits<double>::quiet_NaN());
+    std::fill(out.level.begin() + static_cast<std::ptrdiff_t>(a), out.level.begin() + static_cast<std::ptrdiff_t>(b), -1);
+    std::fill(out.scale.begin() + static_cast<std::ptrdiff_t>(a), out.scale.begin() + static_cast<std::ptrdiff_t>(b), 0.0f);
+  });
   out.min_scale = opts.min_scale;
   out.levels = 0;
   out.min_distance = out.max_distance = out.max_delta = out.level_width = 0;
@@ -93,12 +101,12 @@ status assign_scale_field(const terrain_mesh& mesh, const screen_projection& pro
   const index_t nvis = projection.num_visible();
   if (nvis == 0) return {};
   const std::int32_t* vis = projection.visible.data();
-  constexpr index_t block = 16384;
   const index_t chunks = (nvis + block - 1) / block;
   struct partial {
     double dmin = std::numeric_limits<double>::infinity(), dmax = -std::numeric_limits<double>::infinity(), delta = 0;
     index_t pairs = 0;
     int jump = 0;
+    index_t bad = -1;  ///< first visible entry naming no visible face, or with a non-finite distance
   };
   std::vector<partial> part(static_cast<std::size_t>(chunks));
   auto for_chunks = [&](auto&& body) {
@@ -106,17 +114,32 @@ status assign_scale_field(const terrain_mesh& mesh, const screen_projection& pro
       for (index_t i = c * block; i < std::min(nvis, (c + 1) * block); ++i) body(part[static_cast<std::size_t>(c)], vis[i]);
     });
   };
-  // step 1: view distances
-  for_chunks([&](partial& p, std::int32_t f) {
-    const double d = norm(mesh.centroids[static_cast<std::size_t>(f)] - projection.eye);
-    out.distance[static_cast<std::size_t>(f)] = d;
-    p.dmin = std::min(p.dmin, d);
-    p.dmax = std::max(p.dmax, d);
+  // step 1: view distances (and the check that every visible entry is a visible face)
+  exec.parallel_for(0, chunks, [&](index_t c) {
+    partial& p = part[static_cast<std::size_t>(c)];
+    for (index_t i = c * block; i < std::min(nvis, (c + 1) * block); ++i) {
+      const std::int32_t f = vis[i];
+      const double d = detail::is_visible_face(projection, f) ? norm(mesh.centroids[static_cast<std::size_t>(f)] - projection.eye)
+                                                               : std::numeric_limits<double>::quiet_NaN();
+      if (!std::isfinite(d)) {
+        if (p.bad < 0) p.bad = i;
+        continue;
+      }
+      out.distance[static_cast<std::size_t>(f)] = d;
+      p.dmin = std::min(p.dmin, d);
+      p.dmax = std::max(p.dmax, d);
+    }
   });
+  for (const partial& p : part)
+    if (p.bad >= 0) {
+      const std::int32_t f = vis[p.bad];
+      if (!detail::is_visible_face(projection, f)) return detail::bad_visible_entry("assign_scale_field", p.bad, f);
+      return status::invalid_argument(detail::cat("assign_scale_field: face ", f, " has a non-finite view distance"));
+    }
   // step 2: maxδ over adjacent visible pairs (each pair once: from its smaller face)
   for_chunks([&](partial& p, std::int32_t f) {
     for (std::int32_t n : mesh.neighbors[static_cast<std::size_t>(f)])
-      if (n > f && projection.state[static_cast<std::size_t>(n)] != 0) {
+      if (n > f && n < nf && !std::isnan(out.distance[static_cast<std::size_t>(n)])) {  // visible: has a distance
         p.delta = std::max(p.delta, std::abs(out.distance[static_cast<std::size_t>(f)] - out.distance[static_cast<std::size_t>(n)]));
         ++p.pairs;
       }
@@ -142,24 +165,26 @@ status assign_scale_field(const terrain_mesh& mesh, const screen_projection& pro
   out.levels = levels;
   // step 6: levels and scales
   const double span = 1 - opts.min_scale;
-  for_chunks([&](partial&, std::int32_t f) {
-    const double d = out.distance[static_cast<std::size_t>(f)];
-    index_t l = h > 0 ? std::min<index_t>(levels - 1, static_cast<index_t>(std::floor((d - dmin) / h))) : 0;
-    double s;
+  // a level is a pure function of the distance, so the jump check of each adjacent pair can
+  // recompute its neighbour's level instead of waiting for another pass over the faces
+  auto level_of = [&](double d) -> index_t {
     if (opts.mode == scale_mode::continuous) {
       const double t = range > 0 ? (d - dmin) / range : 0.0;
-      s = 1 - span * t;
-      l = std::min<index_t>(levels - 1, static_cast<index_t>(std::floor(t * static_cast<double>(levels - 1) + 0.5)));
-    } else {
-      s = out.level_scale(l);
+      return std::min<index_t>(levels - 1, static_cast<index_t>(std::floor(t * static_cast<double>(levels - 1) + 0.5)));
     }
+    return h > 0 ? std::min<index_t>(levels - 1, static_cast<index_t>(std::floor((d - dmin) / h))) : 0;
+  };
+  for_chunks([&](partial& p, std::int32_t f) {
+    const double d = out.distance[static_cast<std::size_t>(f)];
+    const index_t l = level_of(d);
+    const double s = opts.mode == scale_mode::continuous ? 1 - span * (range > 0 ? (d - dmin) / range : 0.0) : out.level_scale(l);
     out.level[static_cast<std::size_t>(f)] = static_cast<std::int32_t>(l);
     out.scale[static_cast<std::size_t>(f)] = static_cast<float>(std::clamp(s, opts.min_scale, 1.0));
-  });
-  for_chunks([&](partial& p, std::int32_t f) {
     for (std::int32_t n : mesh.neighbors[static_cast<std::size_t>(f)])
-      if (n > f && projection.state[static_cast<std::size_t>(n)] != 0)
-        p.jump = std::max(p.jump, std::abs(out.level[static_cast<std::size_t>(f)] - out.level[static_cast<std::size_t>(n)]));
+      if (n > f && n < nf) {
+        const double dn = out.distance[static_cast<std::size_t>(n)];
+        if (!std::isnan(dn)) p.jump = std::max(p.jump, static_cast<int>(std::abs(l - level_of(dn))));  // visible: has a distance
+      }
   });
   for (const partial& p : part) out.max_level_jump = std::max(out.max_level_jump, p.jump);
   TESSERA_ASSERT(out.max_level_jump <= 1);

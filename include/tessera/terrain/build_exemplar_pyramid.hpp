@@ -57,10 +57,10 @@ class exemplar_pyramid {
   }
   [[nodiscard]] const image_buffer<T, C>& level(index_t k) const noexcept { return levels_[static_cast<std::size_t>(k)]; }
 
-  /// Fractional level index of scale s (clamped to [0, K - 1]).
+  /// Fractional level index of scale s (clamped to [0, K - 1]; 0 for NaN).
   [[nodiscard]] double level_position(double s) const noexcept {
     const index_t n = num_levels();
-    if (n <= 1 || min_scale_ >= 1) return 0.0;
+    if (n <= 1 || min_scale_ >= 1 || std::isnan(s)) return 0.0;
     return std::clamp((1.0 - s) / (1.0 - min_scale_) * static_cast<double>(n - 1), 0.0, static_cast<double>(n - 1));
   }
 

@@ -21,10 +21,10 @@ TESSERA_NAMESPACE_BEGIN
 struct terrain_options {
   index_t cells_x = 128;      ///< grid cells along x (>= 1)
   index_t cells_y = 128;      ///< grid cells along y (>= 1)
-  double size_x = 100;        ///< extent along x, centred on 0
-  double size_y = 100;        ///< extent along y, centred on 0
-  double height = 14;         ///< relief: heights run from 0 to about this (0: a flat plane)
-  double feature_size = 0.4;  ///< wavelength of the largest hills, as a fraction of max(size_x, size_y)
+  double size_x = 100;        ///< extent along x, centred on 0, in (0, 1e15]
+  double size_y = 100;        ///< extent along y, centred on 0, in (0, 1e15]
+  double height = 14;         ///< relief: heights run from 0 to about this (0: a flat plane), in [0, 1e15]
+  double feature_size = 0.4;  ///< wavelength of the largest hills, as a fraction of max(size_x, size_y), in [1e-6, 1e6]
   int octaves = 6;            ///< noise octaves (1 to 16), each half the wavelength and amplitude
   std::uint64_t seed = 1;
 };
@@ -51,7 +51,8 @@ inline double gradient_noise(const counter_rng& rng, std::uint64_t octave, doubl
 /// Builds the heightfield mesh: vertex (i, j) at x = -size_x / 2 + i * size_x / cells_x (likewise y)
 /// and z = height * shape(fractal noise), with valleys flattened a little so low ground reads as
 /// plains. Errors (invalid_argument / size_overflow, naming the option): cells < 1, more than 2^28
-/// vertices, non-positive or non-finite sizes, negative or non-finite height, feature_size <= 0,
+/// vertices, sizes outside (0, 1e15], height outside [0, 1e15], feature_size outside [1e-6, 1e6]
+/// (a tinier wavelength would push noise coordinates past what floor() can turn into an integer),
 /// octaves outside 1..16. O(vertices * octaves), parallel over rows through `exec`; the mesh is a
 /// pure function of the options.
 template <Executor E = serial_executor>
@@ -60,12 +61,14 @@ result<tri_mesh> make_terrain(const terrain_options& o = {}, E&& exec = {}) {
     return status::invalid_argument(detail::cat("terrain cells must be >= 1, got ", o.cells_x, " x ", o.cells_y));
   if (o.cells_x > (index_t{1} << 14) || o.cells_y > (index_t{1} << 14) || (o.cells_x + 1) * (o.cells_y + 1) > (index_t{1} << 28))
     return status::size_overflow(detail::cat("terrain of ", o.cells_x, " x ", o.cells_y, " cells exceeds 2^28 vertices"));
-  if (!(o.size_x > 0 && o.size_y > 0 && std::isfinite(o.size_x) && std::isfinite(o.size_y)))
-    return status::invalid_argument(detail::cat("terrain size must be positive and finite, got ", o.size_x, " x ", o.size_y));
-  if (!(o.height >= 0 && std::isfinite(o.height)))
-    return status::invalid_argument(detail::cat("terrain height must be >= 0 and finite, got ", o.height));
-  if (!(o.feature_size > 0 && std::isfinite(o.feature_size)))
-    return status::invalid_argument(detail::cat("terrain feature_size must be positive, got ", o.feature_size));
+  // bounds that keep every noise coordinate x / wavelength * 2^15 far inside the int64 range of
+  // floor() in gradient_noise (at most 0.5e6 * 2^15 + 300), and every position finite
+  if (!(o.size_x > 0 && o.size_y > 0 && o.size_x <= 1e15 && o.size_y <= 1e15))
+    return status::invalid_argument(detail::cat("terrain size must be in (0, 1e15], got ", o.size_x, " x ", o.size_y));
+  if (!(o.height >= 0 && o.height <= 1e15))
+    return status::invalid_argument(detail::cat("terrain height must be in [0, 1e15], got ", o.height));
+  if (!(o.feature_size >= 1e-6 && o.feature_size <= 1e6))
+    return status::invalid_argument(detail::cat("terrain feature_size must be in [1e-6, 1e6], got ", o.feature_size));
   if (o.octaves < 1 || o.octaves > 16)
     return status::invalid_argument(detail::cat("terrain octaves must be 1 to 16, got ", o.octaves));
   const index_t nx = o.cells_x + 1, ny = o.cells_y + 1;

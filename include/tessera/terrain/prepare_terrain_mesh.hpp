@@ -83,6 +83,51 @@ inline void build_terrain_adjacency(terrain_mesh& m) {
 }
 }  // namespace detail
 
+namespace detail {
+/// O(1) part of validate_terrain_mesh: the per-face arrays have one entry per face.
+inline status check_terrain_mesh_sizes(const terrain_mesh& m) {
+  const std::size_t nf = m.faces.size();
+  if (m.centroids.size() != nf || m.neighbors.size() != nf)
+    return status::invalid_argument(detail::cat("terrain_mesh has ", nf, " faces but ", m.centroids.size(), " centroids and ",
+                                                m.neighbors.size(), " neighbour triples: build it with prepare_terrain_mesh"));
+  constexpr std::size_t limit = std::numeric_limits<std::int32_t>::max() / 3;
+  if (nf > limit || m.positions.size() > limit)
+    return status::size_overflow(detail::cat("terrain_mesh: ", m.positions.size(), " vertices / ", nf, " faces exceed ", limit));
+  return {};
+}
+/// Whether n names a face of a mesh of nf faces (neighbour entries are -1 or a face).
+inline bool is_face_index(std::int32_t n, index_t nf) noexcept { return n >= 0 && n < nf; }
+/// The structural problem of face f (vertex indices, neighbours, centroid), or ok.
+inline status terrain_face_problem(const terrain_mesh& m, index_t f) {
+  const auto i = static_cast<std::size_t>(f);
+  const index_t nv = m.num_vertices(), nf = m.num_faces();
+  for (std::size_t k = 0; k < 3; ++k) {
+    if (m.faces[i][k] < 0 || m.faces[i][k] >= nv)
+      return status::out_of_range(detail::cat("terrain_mesh face ", f, " corner ", k, " names vertex ", m.faces[i][k], " of ", nv));
+    if (m.neighbors[i][k] < -1 || m.neighbors[i][k] >= nf)
+      return status::out_of_range(detail::cat("terrain_mesh face ", f, " side ", k, " names neighbour ", m.neighbors[i][k], " of ", nf,
+                                              " faces (-1 for none)"));
+  }
+  if (!is_finite(m.centroids[i])) return status::invalid_argument(detail::cat("terrain_mesh face ", f, " has a non-finite centroid"));
+  return {};
+}
+}  // namespace detail
+
+/// Checks a terrain_mesh filled or changed by hand (prepare_terrain_mesh's output always passes):
+/// one centroid and one neighbour triple per face, vertex indices in range, neighbours -1 or a
+/// face, finite positions and centroids. project_mesh runs the same checks (folded into its own
+/// passes); the later stages check sizes and never index through an out-of-range neighbour.
+/// Errors: invalid_argument / out_of_range naming the array, the element and the value (the
+/// smallest bad index). O(V + F); thread-safe.
+inline status validate_terrain_mesh(const terrain_mesh& m) {
+  if (auto s = detail::check_terrain_mesh_sizes(m); !s) return s;
+  for (index_t v = 0; v < m.num_vertices(); ++v)
+    if (!is_finite(m.position(v))) return status::invalid_argument(detail::cat("terrain_mesh vertex ", v, " is not finite"));
+  for (index_t f = 0; f < m.num_faces(); ++f)
+    if (auto s = detail::terrain_face_problem(m, f); !s) return s;
+  return {};
+}
+
 /// Prepares any Mesh for terrain synthesis: validates it (finite positions, indices in range, no
 /// face repeating a vertex), copies it into flat arrays, computes face centroids and face adjacency.
 /// Errors: invalid_argument / out_of_range from validation, size_overflow beyond 2^31 - 1 vertices

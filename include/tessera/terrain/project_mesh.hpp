@@ -79,22 +79,46 @@ inline std::uint8_t clip_outcode(const std::array<double, 4>& c, bool zero_to_on
 }
 }  // namespace detail
 
+namespace detail {
+/// O(1) check that `proj` was made from `mesh` (array sizes agree, finite eye); the stages after
+/// projection also check each visible face id as they read it.
+inline status check_projection(const terrain_mesh& mesh, const screen_projection& proj, const char* stage) {
+  if (auto s = check_terrain_mesh_sizes(mesh); !s) return s;
+  const auto nf = static_cast<std::size_t>(mesh.num_faces()), nv = static_cast<std::size_t>(mesh.num_vertices());
+  if (proj.state.size() != nf || proj.bounds.size() != nf || proj.clip.size() != nv || proj.screen.size() != nv ||
+      proj.visible.size() > nf)
+    return status::invalid_argument(detail::cat(stage, ": the projection (", proj.state.size(), " faces, ", proj.clip.size(),
+                                                " vertices) does not belong to the mesh (", nf, " faces, ", nv,
+                                                " vertices): project this mesh first"));
+  if (!is_finite(proj.eye)) return status::invalid_argument(detail::cat(stage, ": the projection's eye is not finite"));
+  return {};
+}
+/// Whether visible entry f names a face the projection marks visible.
+inline bool is_visible_face(const screen_projection& proj, std::int32_t f) noexcept {
+  return f >= 0 && static_cast<std::size_t>(f) < proj.state.size() && proj.state[static_cast<std::size_t>(f)] != 0;
+}
+inline status bad_visible_entry(const char* stage, index_t i, std::int32_t f) {
+  return status::invalid_argument(detail::cat(stage, ": projection.visible[", i, "] = ", f, " is not a visible face of the mesh"));
+}
+}  // namespace detail
+
 /// Projects `mesh` for `camera` into `out` (its arrays are reused, so a caller that keeps `out`
-/// across frames does not reallocate). Errors: an invalid camera (see validate_camera). An empty
+/// across frames does not reallocate). Errors: an invalid camera (see validate_camera), a mesh
+/// failing validate_terrain_mesh (checked in the same passes; `out` is then not usable). An empty
 /// or fully culled mesh is not an error: `out.visible` is then empty. O(V + F), parallel over
 /// vertices and faces through `exec`; the result does not depend on the executor.
 template <Executor E = serial_executor>
 status project_mesh(const terrain_mesh& mesh, const terrain_camera& camera, screen_projection& out,
                     const project_options& opts = {}, E&& exec = {}) {
   if (auto s = validate_camera(camera); !s) return s;
+  if (auto s = detail::check_terrain_mesh_sizes(mesh); !s) return s;
   const index_t nv = mesh.num_vertices(), nf = mesh.num_faces();
   const bool zo = camera.depth == clip_depth::zero_to_one;
   const glm::dmat4 m = camera.projection * camera.view;
-  const glm::dvec4 eye = glm::inverse(camera.view) * glm::dvec4(0, 0, 0, 1);
   out.width = camera.width;
   out.height = camera.height;
   out.depth = camera.depth;
-  out.eye = {eye.x / eye.w, eye.y / eye.w, eye.z / eye.w};
+  out.eye = camera_eye(camera);
   out.clip.resize(static_cast<std::size_t>(nv));
   out.screen.resize(static_cast<std::size_t>(nv));
   out.state.resize(static_cast<std::size_t>(nf));
@@ -102,9 +126,14 @@ status project_mesh(const terrain_mesh& mesh, const terrain_camera& camera, scre
   const double W = static_cast<double>(camera.width), H = static_cast<double>(camera.height);
   constexpr index_t block = 16384;
   constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-  exec.parallel_for(0, (nv + block - 1) / block, [&](index_t b) {
+  // the structure of the mesh is checked in the same passes (validate_terrain_mesh's checks): the
+  // smallest bad vertex / face of each block, reported in block order
+  const index_t vblocks = (nv + block - 1) / block;
+  std::vector<index_t> bad_vertex(static_cast<std::size_t>(vblocks), -1);
+  exec.parallel_for(0, vblocks, [&](index_t b) {
     for (index_t v = b * block; v < std::min(nv, (b + 1) * block); ++v) {
       const vec3& p = mesh.positions[static_cast<std::size_t>(v)];
+      if (!is_finite(p) && bad_vertex[static_cast<std::size_t>(b)] < 0) bad_vertex[static_cast<std::size_t>(b)] = v;
       const glm::dvec4 c = m * glm::dvec4(p.x, p.y, p.z, 1.0);
       out.clip[static_cast<std::size_t>(v)] = {c.x, c.y, c.z, c.w};
       const bool front = (zo ? c.z >= 0 : c.z >= -c.w) && c.w > 0;
@@ -113,15 +142,22 @@ status project_mesh(const terrain_mesh& mesh, const terrain_camera& camera, scre
     }
   });
   const index_t chunks = (nf + block - 1) / block;
-  std::vector<index_t> count(static_cast<std::size_t>(chunks + 1), 0);
+  std::vector<index_t> count(static_cast<std::size_t>(chunks + 1), 0), bad_face(static_cast<std::size_t>(chunks), -1);
   exec.parallel_for(0, chunks, [&](index_t b) {
     index_t n = 0;
     for (index_t f = b * block; f < std::min(nf, (b + 1) * block); ++f) {
       const auto& face = mesh.faces[static_cast<std::size_t>(f)];
-      std::uint8_t oc[3];
-      for (int k = 0; k < 3; ++k) oc[k] = detail::clip_outcode(out.clip[static_cast<std::size_t>(face[static_cast<std::size_t>(k)])], zo);
       auto& st = out.state[static_cast<std::size_t>(f)];
       st = static_cast<std::uint8_t>(face_visibility::culled);
+      const auto& nb = mesh.neighbors[static_cast<std::size_t>(f)];
+      bool ok = is_finite(mesh.centroids[static_cast<std::size_t>(f)]);
+      for (std::size_t k = 0; k < 3; ++k) ok = ok && face[k] >= 0 && face[k] < nv && nb[k] >= -1 && nb[k] < nf;
+      if (!ok) {
+        if (bad_face[static_cast<std::size_t>(b)] < 0) bad_face[static_cast<std::size_t>(b)] = f;
+        continue;
+      }
+      std::uint8_t oc[3];
+      for (int k = 0; k < 3; ++k) oc[k] = detail::clip_outcode(out.clip[static_cast<std::size_t>(face[static_cast<std::size_t>(k)])], zo);
       if ((oc[0] & oc[1] & oc[2]) != 0) continue;
       if (opts.cull_back_faces) {
         const vec3 a = mesh.position(face[0]), n3 = cross(mesh.position(face[1]) - a, mesh.position(face[2]) - a);
@@ -155,6 +191,16 @@ status project_mesh(const terrain_mesh& mesh, const terrain_camera& camera, scre
     }
     count[static_cast<std::size_t>(b + 1)] = n;
   });
+  for (const index_t v : bad_vertex)
+    if (v >= 0) {
+      out.visible.clear();
+      return status::invalid_argument(detail::cat("terrain_mesh vertex ", v, " is not finite"));
+    }
+  for (const index_t f : bad_face)
+    if (f >= 0) {
+      out.visible.clear();
+      return detail::terrain_face_problem(mesh, f);
+    }
   for (index_t b = 0; b < chunks; ++b) count[static_cast<std::size_t>(b + 1)] += count[static_cast<std::size_t>(b)];
   out.visible.resize(static_cast<std::size_t>(count[static_cast<std::size_t>(chunks)]));
   std::vector<index_t> near_count(static_cast<std::size_t>(chunks), 0);

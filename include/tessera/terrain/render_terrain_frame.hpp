@@ -37,10 +37,10 @@ enum class terrain_shading {
 struct render_terrain_options {
   terrain_shading shading = terrain_shading::texture;
   double feather = 3.0;  ///< blend width in pixels on each side of a seam (0: none), 0 to 64
-  std::array<float, 4> background = {0.62f, 0.74f, 0.88f, 1.0f};
+  std::array<float, 4> background = {0.62f, 0.74f, 0.88f, 1.0f};  ///< unit RGBA where no triangle is
   std::array<double, 3> sun = {0, 0, 0};  ///< direction towards a light for flat Lambert shading; zero: unlit
-  double ambient = 0.35;                  ///< light on faces turned away from the sun, in [0, 1]  ///< unit RGBA where no triangle is
-  index_t tile_size = 64;                                         ///< rasterizer tile
+  double ambient = 0.35;                  ///< light on faces turned away from the sun, in [0, 1]
+  index_t tile_size = 64;                 ///< rasterizer tile
   tessera::progress progress = {};
 };
 
@@ -60,12 +60,60 @@ inline pixel<float, 3> region_colour(std::int32_t r) {
   return {static_cast<float>(0.25 + 0.7 * rng.uniform(r, 0)), static_cast<float>(0.25 + 0.7 * rng.uniform(r, 1)),
           static_cast<float>(0.25 + 0.7 * rng.uniform(r, 2))};
 }
+/// Checks that the field, the synthesis and the pyramid belong to this projection before any
+/// pixel is drawn: check_visible_geometry, then every visible face has a level
+/// in [0, levels), a finite scale in [field.min_scale, 1] and a placement with a finite offset;
+/// the field's min_scale is not below the pyramid's. O(visible faces), in parallel chunks whose
+/// first failure (in visible order) is reported.
+template <Channel T, int C, class E>
+status check_frame_inputs(const terrain_mesh& mesh, const screen_projection& proj, const scale_field& field,
+                          const triangle_synthesis& syn, const exemplar_pyramid<T, C>& pyramid, E& exec) {
+  if (auto s = check_visible_geometry(mesh, proj, "render_terrain_frame", exec); !s) return s;
+  const auto nf = static_cast<std::size_t>(mesh.num_faces());
+  if (field.level.size() != nf || field.scale.size() != nf || syn.region.size() != nf || syn.offset.size() != nf)
+    return status::invalid_argument(detail::cat("render_terrain_frame: the scale field (", field.level.size(), " faces) and synthesis (",
+                                                syn.region.size(), " faces) must belong to the mesh (", nf, " faces)"));
+  if (pyramid.num_levels() == 0) return status::invalid_argument("render_terrain_frame: the exemplar pyramid is empty");
+  if (!(field.min_scale > 0 && field.min_scale >= pyramid.min_scale() * (1 - 1e-9)))
+    return status::invalid_argument(detail::cat("render_terrain_frame: the scale field reaches scale ", field.min_scale,
+                                                " but the exemplar pyramid only ", pyramid.min_scale(),
+                                                ": build both with the same min_scale"));
+  const index_t nvis = proj.num_visible();
+  constexpr index_t block = 16384;
+  const index_t chunks = (nvis + block - 1) / block;
+  std::vector<index_t> bad(static_cast<std::size_t>(chunks), -1);
+  const float lo = static_cast<float>(field.min_scale) * (1 - 1e-6f);
+  exec.parallel_for(0, chunks, [&](index_t c) {
+    for (index_t i = c * block; i < std::min(nvis, (c + 1) * block); ++i) {
+      const auto fi = static_cast<std::size_t>(proj.visible[static_cast<std::size_t>(i)]);
+      const float s = field.scale[fi];
+      if (!(field.level[fi] >= 0 && field.level[fi] < field.levels && s >= lo && s <= 1 && syn.region[fi] >= 0 &&
+            is_finite(syn.offset[fi]))) {
+        bad[static_cast<std::size_t>(c)] = i;
+        return;
+      }
+    }
+  });
+  for (const index_t i : bad) {
+    if (i < 0) continue;
+    const std::int32_t f = proj.visible[static_cast<std::size_t>(i)];
+    const auto fi = static_cast<std::size_t>(f);
+    return status::invalid_argument(detail::cat("render_terrain_frame: visible face ", f, " has level ", field.level[fi], " of ",
+                                                field.levels, ", scale ", field.scale[fi], " (field min_scale ", field.min_scale,
+                                                "), region ", syn.region[fi], ", offset (", syn.offset[fi].x, ", ", syn.offset[fi].y,
+                                                "): the field and the synthesis must come from this projection and mesh"));
+  }
+  return {};
+}
 }  // namespace detail
 
 /// Renders the synthesized frame into `out` (any WritableImage of the viewport's size; pixels are
-/// converted with convert_pixel). Errors: `out` not projection.width x projection.height, a field or
-/// synthesis not belonging to `mesh`, an empty pyramid, feather outside [0, 64], bad tile_size,
-/// cancelled. Faces culled by the projection are not drawn; where nothing is drawn the background
+/// converted with convert_pixel). Errors: `out` not projection.width x projection.height, a
+/// projection, field or synthesis not belonging to `mesh` or to each other (a visible face without
+/// a level, scale or placement, e.g. a field computed from another projection: see
+/// detail::check_frame_inputs), a field reaching below the pyramid's min_scale, an empty pyramid,
+/// feather outside [0, 64], bad tile_size, cancelled. A field with more levels than the pyramid
+/// is accepted: its scales fall between pyramid levels, which sample() blends. Faces culled by the projection are not drawn; where nothing is drawn the background
 /// shows (an empty or fully culled mesh gives a background-only frame). O(visible faces + pixels);
 /// rasterization, feathering and shading run in parallel through `exec`, bit-identically for any
 /// executor.
@@ -76,14 +124,11 @@ status render_terrain_frame(const terrain_mesh& mesh, const screen_projection& p
   if (width_of(out) != proj.width || height_of(out) != proj.height)
     return status::invalid_argument(detail::cat("output is ", width_of(out), " x ", height_of(out), " but the viewport is ",
                                                 proj.width, " x ", proj.height));
-  const auto nf = static_cast<std::size_t>(mesh.num_faces());
-  if (proj.state.size() != nf || field.level.size() != nf || syn.region.size() != nf)
-    return status::invalid_argument("projection, scale field and synthesis must all belong to the mesh");
-  if (pyramid.num_levels() == 0) return status::invalid_argument("the exemplar pyramid is empty");
   if (!(opts.feather >= 0 && opts.feather <= 64))
     return status::invalid_argument(detail::cat("feather must be 0 to 64 pixels, got ", opts.feather));
   if (!(opts.ambient >= 0 && opts.ambient <= 1) || !is_finite(vec3{opts.sun[0], opts.sun[1], opts.sun[2]}))
     return status::invalid_argument(detail::cat("ambient must be in [0, 1] and sun finite, got ambient ", opts.ambient));
+  if (auto s = detail::check_frame_inputs(mesh, proj, field, syn, pyramid, exec); !s) return s;
   detail::visibility_buffer vb;
   if (auto s = detail::render_visibility(mesh, proj, vb, false, opts.tile_size, exec); !s) return s;
   if (!opts.progress.report(0.4, "render terrain frame")) return status::cancelled();

@@ -120,8 +120,8 @@ inline double auto_tiled_repeat(const terrain_mesh& mesh, const screen_projectio
 }
 
 /// Renders `mesh` as projected with the exemplar tiled over the ground plane into `out` (any
-/// WritableImage of the viewport's size). Errors: wrong output size, empty texture, repeat < 0 or
-/// not finite, bad tile_size. O(visible faces + pixels), parallel through `exec` (bit-identical for
+/// WritableImage of the viewport's size). Errors: wrong output size, a projection not belonging to
+/// `mesh` (detail::check_visible_geometry), empty texture, repeat < 0 or not finite, bad tile_size. O(visible faces + pixels), parallel through `exec` (bit-identical for
 /// any executor).
 template <Channel T, int C, WritableImage O, Executor E = serial_executor>
 status render_tiled_frame(const terrain_mesh& mesh, const screen_projection& proj, const tiled_texture<T, C>& tex, O& out,
@@ -129,13 +129,12 @@ status render_tiled_frame(const terrain_mesh& mesh, const screen_projection& pro
   if (width_of(out) != proj.width || height_of(out) != proj.height)
     return status::invalid_argument(detail::cat("output is ", width_of(out), " x ", height_of(out), " but the viewport is ",
                                                 proj.width, " x ", proj.height));
-  if (proj.state.size() != static_cast<std::size_t>(mesh.num_faces()))
-    return status::invalid_argument("the projection does not belong to the mesh");
   if (tex.num_levels() == 0) return status::invalid_argument("the tiled texture is empty");
   if (!(opts.repeat >= 0) || !std::isfinite(opts.repeat))
     return status::invalid_argument(detail::cat("repeat must be >= 0 and finite, got ", opts.repeat));
   if (!(opts.ambient >= 0 && opts.ambient <= 1) || !is_finite(vec3{opts.sun[0], opts.sun[1], opts.sun[2]}))
     return status::invalid_argument(detail::cat("ambient must be in [0, 1] and sun finite, got ambient ", opts.ambient));
+  if (auto s = detail::check_visible_geometry(mesh, proj, "render_tiled_frame", exec); !s) return s;
   double repeat = opts.repeat > 0 ? opts.repeat : auto_tiled_repeat(mesh, proj, tex.width());
   if (!(repeat > 0)) repeat = 1;
   detail::visibility_buffer vb;

@@ -15,13 +15,19 @@
 //            (adjacent triangles are at most one level apart) plus its own screen position (step
 //            2.2). Of several neighbours, the OLDEST placement that keeps the triangle inside its
 //            level image wins, so placements fill their level image as compact patches instead of
-//            following the stack's snake (95-99 % continuous edges on the default scenes, against
+//            following the stack's snake (96-99 % continuous edges on the default scenes, against
 //            85-90 % for continuation_rule::first_neighbor, the paper read literally)
-//   restart  if no neighbour's offset fits, a new random placement ("out of bounds: choose a
+//   wait     if no neighbour's offset fits, the triangle first waits (once, defer_restarts): it
+//            goes on a list taken up, oldest first, when the stack empties, because a neighbour
+//            synthesized meanwhile often brings coordinates that fit. Restarting at once left
+//            single-face placements wherever the stack reached a face from the wrong side (most
+//            placements of the grazing view were one face), about 1.5 % of all shared edges
+//   restart  if still no neighbour's offset fits, a new random placement ("out of bounds: choose a
 //            congruent triangle at random"); by default biased so the triangle sits at the side of
 //            the level image facing its synthesized neighbours, leaving the rest of the image for the
 //            unsynthesized side (placement_strategy::away_from_neighbors; the paper's uniform choice
-//            is placement_strategy::uniform)
+//            is placement_strategy::uniform), and keeping the offset along an axis where the
+//            oldest neighbouring placement still fits (keep_fitting_axis)
 //   seams    sides where a synthesized neighbour has other coordinates are marked for colour
 //            blending (step 3; render_terrain_frame feathers across them)
 //
@@ -70,6 +76,14 @@ struct triangle_synthesis_options {
   placement_strategy placement = placement_strategy::away_from_neighbors;
   continuation_rule continuation = continuation_rule::oldest_placement;
   double margin = 1.0;  ///< pixels kept free at the level image border (the bilinear footprint), >= 0
+  /// A face whose synthesized neighbours' coordinates all leave its level image waits (once) until
+  /// the stack empties, in case a neighbour synthesized later brings coordinates that fit; only
+  /// then is it given a new placement. False: the paper's immediate restart.
+  bool defer_restarts = true;
+  /// A new placement next to a synthesized placement that still fits the face along one axis keeps
+  /// that axis's offset and draws only the other: the seam becomes a one-dimensional shift, which
+  /// textures with a direction (grass blades) carry across almost unseen. False: both at random.
+  bool keep_fitting_axis = true;
   tessera::progress progress = {};
 };
 
@@ -83,12 +97,14 @@ struct triangle_synthesis {
   index_t regions = 0;     ///< placements made (components + restarts)
   index_t components = 0;  ///< connected regions of visible faces (each starts with a placement)
   index_t restarts = 0;    ///< placements because no neighbour's coordinates fitted (out of bounds)
+  index_t deferred = 0;    ///< faces that waited for more synthesized neighbours (defer_restarts)
   index_t oversized = 0;   ///< faces larger than their level image (texture clamps at its border)
   index_t shared_edges = 0;      ///< edges between two visible faces
   index_t continuous_edges = 0;  ///< of those, edges whose two faces have equal coordinates
   double continuous_fraction = 1;  ///< continuous_edges / shared_edges (1 when there are none)
   double min_area_ratio = std::numeric_limits<double>::infinity();  ///< min over faces of level-image area / screen area
   index_t min_area_face = -1;
+  index_t exemplar_width = 0, exemplar_height = 0;  ///< the exemplar size synthesized for (level 0 of the pyramid)
   status warning;  ///< ok, or out_of_range describing an exemplar too small for the triangles (§3 (1))
 };
 
@@ -99,6 +115,8 @@ inline double visible_screen_area(const terrain_mesh& mesh, const screen_project
   const double box = static_cast<double>(b[2] - b[0]) * static_cast<double>(b[3] - b[1]);
   if (proj.state[static_cast<std::size_t>(f)] != static_cast<std::uint8_t>(face_visibility::inside)) return box;
   const auto& face = mesh.faces[static_cast<std::size_t>(f)];
+  for (const std::int32_t v : face)
+    if (v < 0 || static_cast<std::size_t>(v) >= proj.screen.size()) return box;
   const vec2 a = proj.screen[static_cast<std::size_t>(face[0])], p = proj.screen[static_cast<std::size_t>(face[1])],
              q = proj.screen[static_cast<std::size_t>(face[2])];
   return std::min(box, 0.5 * std::abs(cross(p - a, q - a)));
@@ -120,9 +138,10 @@ status synthesize_triangles(const terrain_mesh& mesh, const screen_projection& p
     return status::invalid_argument(detail::cat("exemplar size must be positive, got ", exemplar_width, " x ", exemplar_height));
   if (!(opts.margin >= 0) || !std::isfinite(opts.margin))
     return status::invalid_argument(detail::cat("margin must be >= 0, got ", opts.margin));
+  if (auto s = detail::check_projection(mesh, proj, "synthesize_triangles"); !s) return s;
   const index_t nf = mesh.num_faces();
-  if (static_cast<index_t>(proj.state.size()) != nf || static_cast<index_t>(field.level.size()) != nf)
-    return status::invalid_argument(detail::cat("projection (", proj.state.size(), " faces) and scale field (", field.level.size(),
+  if (static_cast<index_t>(field.level.size()) != nf || static_cast<index_t>(field.scale.size()) != nf)
+    return status::invalid_argument(detail::cat("synthesize_triangles: the scale field (", field.level.size(),
                                                 " faces) must belong to the mesh (", nf, " faces)"));
   {
     triangle_synthesis fresh;  // statistics reset, storage reused
@@ -132,10 +151,19 @@ status synthesize_triangles(const terrain_mesh& mesh, const screen_projection& p
     fresh.order = std::move(out.order);
     out = std::move(fresh);
   }
-  out.offset.assign(static_cast<std::size_t>(nf), vec2{});
-  out.region.assign(static_cast<std::size_t>(nf), -1);
-  out.seam.assign(static_cast<std::size_t>(nf), 0);
+  constexpr index_t block = 16384;
+  out.offset.resize(static_cast<std::size_t>(nf));
+  out.region.resize(static_cast<std::size_t>(nf));
+  out.seam.resize(static_cast<std::size_t>(nf));
+  exec.parallel_for(0, (nf + block - 1) / block, [&](index_t c) {  // culled faces: offset 0, region -1, no seam
+    const auto a = static_cast<std::ptrdiff_t>(c * block), b = static_cast<std::ptrdiff_t>(std::min(nf, (c + 1) * block));
+    std::fill(out.offset.begin() + a, out.offset.begin() + b, vec2{});
+    std::fill(out.region.begin() + a, out.region.begin() + b, -1);
+    std::fill(out.seam.begin() + a, out.seam.begin() + b, std::uint8_t{0});
+  });
   out.order.clear();
+  out.exemplar_width = exemplar_width;
+  out.exemplar_height = exemplar_height;
   const index_t nvis = proj.num_visible();
   out.visible = nvis;
   if (nvis == 0) return {};
@@ -143,9 +171,7 @@ status synthesize_triangles(const terrain_mesh& mesh, const screen_projection& p
   const counter_rng rng(opts.seed, stream_id("terrain.synthesize_triangles"));
   const double W = static_cast<double>(exemplar_width), H = static_cast<double>(exemplar_height), m = opts.margin;
   auto box = [&](std::int32_t f) -> const std::array<float, 4>& { return proj.bounds[static_cast<std::size_t>(f)]; };
-  auto fits = [&](std::int32_t f, vec2 o) {
-    const auto& b = box(f);
-    const double hw = 0.5 * W * field.scale[static_cast<std::size_t>(f)] - m, hh = 0.5 * H * field.scale[static_cast<std::size_t>(f)] - m;
+  auto fits = [](const std::array<float, 4>& b, double hw, double hh, vec2 o) {
     return b[0] + o.x >= -hw && b[2] + o.x <= hw && b[1] + o.y >= -hh && b[3] + o.y <= hh;
   };
   // one axis of a new placement: [lo, hi] are the feasible offsets, `toward` in [0, 1] the preferred
@@ -158,86 +184,133 @@ status synthesize_triangles(const terrain_mesh& mesh, const screen_projection& p
     const double t = opts.placement == placement_strategy::uniform ? u : std::clamp(toward + (u - 0.5) * 1.0, 0.0, 1.0);
     return lo + t * (hi - lo);
   };
-  std::vector<std::int32_t> stack;
+  // the offset of each placement: faces of one region share it, so the serial loop below reads and
+  // writes 4-byte region ids (and this small table) instead of a 16-byte offset per face
+  std::vector<vec2> placements;
+  std::vector<std::int32_t> stack, deferred;
   stack.reserve(static_cast<std::size_t>(std::min<index_t>(3 * nvis + 1, 1 << 20)));
   const auto start = static_cast<index_t>(rng.below(static_cast<std::uint64_t>(nvis), 0));
   index_t done = 0;
   for (index_t idx = 0; idx < nvis; ++idx) {
-    const std::int32_t seed_face = proj.visible[static_cast<std::size_t>((start + idx) % nvis)];
+    const index_t at = (start + idx) % nvis;
+    const std::int32_t seed_face = proj.visible[static_cast<std::size_t>(at)];
+    if (!detail::is_visible_face(proj, seed_face)) return detail::bad_visible_entry("synthesize_triangles", at, seed_face);
     if (out.region[static_cast<std::size_t>(seed_face)] >= 0) continue;
     ++out.components;
     stack.push_back(seed_face);
-    while (!stack.empty()) {
-      const std::int32_t f = stack.back();
-      stack.pop_back();
-      if (out.region[static_cast<std::size_t>(f)] >= 0) continue;
-      const auto& nb = mesh.neighbors[static_cast<std::size_t>(f)];
+    deferred.clear();  // the previous region took up all of its list
+    std::size_t next_deferred = 0;
+    while (!stack.empty() || next_deferred < deferred.size()) {
+      bool forced = false;
+      std::int32_t f;
+      if (!stack.empty()) {
+        f = stack.back();
+        stack.pop_back();
+      } else {
+        f = deferred[next_deferred++];
+        forced = true;
+      }
+      const auto fi = static_cast<std::size_t>(f);
+      if (out.region[fi] >= 0) continue;
+      const double s = field.scale[fi];
+      if (!(s > 0 && s <= 1))  // e.g. 0 for a face the field's projection culled
+        return status::invalid_argument(detail::cat("synthesize_triangles: visible face ", f, " has scale ", s, " and level ",
+                                                    field.level[fi], " in the scale field: compute the field from this projection"));
+      const auto& nb = mesh.neighbors[fi];
+      const auto& b = box(f);
+      const double hw = 0.5 * W * s - m, hh = 0.5 * H * s - m;  // half the level image, less the margin
       // candidates: offsets of synthesized neighbours; the oldest placement that fits wins
       int best = -1, synthesized = 0;
-      vec2 away{};
+      std::int32_t best_region = 0;
       for (int k = 0; k < 3; ++k) {
         const std::int32_t n = nb[static_cast<std::size_t>(k)];
-        if (n < 0 || out.region[static_cast<std::size_t>(n)] < 0) continue;
+        if (!detail::is_face_index(n, nf)) continue;
+        const std::int32_t r = out.region[static_cast<std::size_t>(n)];
+        if (r < 0) continue;
         ++synthesized;
-        const auto& bn = box(n);
-        away += vec2{static_cast<double>(bn[0] + bn[2]), static_cast<double>(bn[1] + bn[3])} * 0.5;
-        const bool older = best < 0 || (opts.continuation == continuation_rule::oldest_placement &&
-                                        out.region[static_cast<std::size_t>(n)] <
-                                            out.region[static_cast<std::size_t>(nb[static_cast<std::size_t>(best)])]);
-        if (older && fits(f, out.offset[static_cast<std::size_t>(n)])) best = k;
+        const bool older = best < 0 || (opts.continuation == continuation_rule::oldest_placement && r < best_region);
+        if (older && fits(b, hw, hh, placements[static_cast<std::size_t>(r)])) best = k, best_region = r;
       }
       if (best >= 0) {
-        const std::int32_t n = nb[static_cast<std::size_t>(best)];
-        out.offset[static_cast<std::size_t>(f)] = out.offset[static_cast<std::size_t>(n)];
-        out.region[static_cast<std::size_t>(f)] = out.region[static_cast<std::size_t>(n)];
+        out.region[fi] = best_region;
+      } else if (opts.defer_restarts && synthesized > 0 && !forced) {
+        // wait: region -2 marks a face on the deferred list (still unsynthesized)
+        if (out.region[fi] == -1) out.region[fi] = -2, deferred.push_back(f), ++out.deferred;
+        continue;
       } else {
-        // a new congruent placement inside the level image
-        const auto& b = box(f);
-        const double s = field.scale[static_cast<std::size_t>(f)];
+        // a new congruent placement inside the level image, biased away from the synthesized neighbours
         vec2 toward{0.5, 0.5};
         if (synthesized > 0) {
+          vec2 away{};
+          for (int k = 0; k < 3; ++k) {
+            const std::int32_t n = nb[static_cast<std::size_t>(k)];
+            if (!detail::is_face_index(n, nf) || out.region[static_cast<std::size_t>(n)] < 0) continue;
+            const auto& bn = box(n);
+            away += vec2{static_cast<double>(bn[0] + bn[2]), static_cast<double>(bn[1] + bn[3])} * 0.5;
+          }
           const vec2 d = vec2{static_cast<double>(b[0] + b[2]), static_cast<double>(b[1] + b[3])} * 0.5 - away / synthesized;
           const double len = norm(d);
           if (len > 0) toward = vec2{0.5 - 0.5 * d.x / len, 0.5 - 0.5 * d.y / len};
         }
+        // keep the coordinate of the oldest neighbouring placement that still fits along one axis:
+        // the seam is then a shift along the other axis only (blades of grass run on across it)
+        int keep = -1;
+        vec2 kept{};
+        if (opts.keep_fitting_axis) {
+          std::int32_t oldest = std::numeric_limits<std::int32_t>::max();
+          for (int k = 0; k < 3; ++k) {
+            const std::int32_t n = nb[static_cast<std::size_t>(k)];
+            if (!detail::is_face_index(n, nf)) continue;
+            const std::int32_t r = out.region[static_cast<std::size_t>(n)];
+            if (r < 0 || r >= oldest) continue;
+            const vec2 p = placements[static_cast<std::size_t>(r)];
+            const bool fx = b[0] + p.x >= -hw && b[2] + p.x <= hw, fy = b[1] + p.y >= -hh && b[3] + p.y <= hh;
+            if (fx || fy) oldest = r, keep = fx ? 0 : 1, kept = p;
+          }
+        }
         bool big = false;
-        const double hw = 0.5 * W * s - m, hh = 0.5 * H * s - m;
-        const vec2 o{place_axis(-hw - b[0], hw - b[2], rng.uniform(f, 1), toward.x, big),
-                     place_axis(-hh - b[1], hh - b[3], rng.uniform(f, 2), toward.y, big)};
-        out.offset[static_cast<std::size_t>(f)] = o;
-        out.region[static_cast<std::size_t>(f)] = static_cast<std::int32_t>(out.regions++);
+        const vec2 o{keep == 0 ? kept.x : place_axis(-hw - b[0], hw - b[2], rng.uniform(f, 1), toward.x, big),
+                     keep == 1 ? kept.y : place_axis(-hh - b[1], hh - b[3], rng.uniform(f, 2), toward.y, big)};
+        placements.push_back(o);
+        out.region[fi] = static_cast<std::int32_t>(out.regions++);
         out.oversized += big ? 1 : 0;
         out.restarts += synthesized > 0 ? 1 : 0;
       }
       out.order.push_back(f);
       for (int k = 0; k < 3; ++k) {
         const std::int32_t n = nb[static_cast<std::size_t>(k)];
-        if (n >= 0 && proj.state[static_cast<std::size_t>(n)] != 0 && out.region[static_cast<std::size_t>(n)] < 0) stack.push_back(n);
+        if (detail::is_face_index(n, nf) && proj.state[static_cast<std::size_t>(n)] != 0 && out.region[static_cast<std::size_t>(n)] < 0)
+          stack.push_back(n);
       }
       if ((++done & 0xffff) == 0 && !opts.progress.report(static_cast<double>(done) / static_cast<double>(nvis), "synthesize triangles"))
         return status::cancelled();
     }
   }
-  // seams, continuity and the exemplar-size check: independent per face, in chunks whose partial
+  if (static_cast<index_t>(out.order.size()) != nvis)  // a face marked visible but missing from proj.visible was reached
+    return status::invalid_argument(detail::cat("synthesize_triangles: the projection marks ", out.order.size(),
+                                                " reachable faces visible but lists ", nvis, ": project this mesh first"));
+  // offsets from the placement table, seams, continuity and the exemplar-size check: independent per
+  // face, in chunks whose partial
   // results combine in chunk order (so ties resolve to the smallest face, for any executor)
   struct partial {
     index_t shared = 0, same = 0;
     double ratio = std::numeric_limits<double>::infinity();
     std::int32_t face = -1;
   };
-  constexpr index_t block = 16384;
   const index_t chunks = (nvis + block - 1) / block;
   std::vector<partial> part(static_cast<std::size_t>(chunks));
   exec.parallel_for(0, chunks, [&](index_t c) {
     partial& p = part[static_cast<std::size_t>(c)];
     for (index_t i = c * block; i < std::min(nvis, (c + 1) * block); ++i) {
       const std::int32_t f = proj.visible[static_cast<std::size_t>(i)];
+      const vec2 own = placements[static_cast<std::size_t>(out.region[static_cast<std::size_t>(f)])];
+      out.offset[static_cast<std::size_t>(f)] = own;
       const auto& nb = mesh.neighbors[static_cast<std::size_t>(f)];
       std::uint8_t bits = 0;
       for (int k = 0; k < 3; ++k) {
         const std::int32_t n = nb[static_cast<std::size_t>(k)];
-        if (n < 0 || proj.state[static_cast<std::size_t>(n)] == 0) continue;
-        const bool same = out.offset[static_cast<std::size_t>(n)] == out.offset[static_cast<std::size_t>(f)];
+        if (!detail::is_face_index(n, nf) || out.region[static_cast<std::size_t>(n)] < 0) continue;
+        const bool same = placements[static_cast<std::size_t>(out.region[static_cast<std::size_t>(n)])] == own;
         bits = static_cast<std::uint8_t>(bits | (same ? 0 : 1 << k));
         if (n > f) p.shared += 1, p.same += same ? 1 : 0;
       }
@@ -271,44 +344,6 @@ result<triangle_synthesis> synthesize_triangles(const terrain_mesh& mesh, const 
   triangle_synthesis out;
   if (auto s = synthesize_triangles(mesh, proj, field, exemplar_width, exemplar_height, opts, out, exec); !s) return s;
   return out;
-}
-
-/// What a shader needs, per face: corner texture coordinates (level-image pixels from the level
-/// image's centre: the exemplar, shrunk by the face's scale, is sampled at normalized coordinates
-/// 0.5 + uv / (width * scale, height * scale)), the level and the scale. Interpolate uv linearly in
-/// SCREEN space (GLSL `noperspective`), or compute uv = gl_FragCoord.xy (flipped to y down) + offset
-/// per pixel. Culled faces have level -1; corners behind the eye of near-clipped faces have NaN
-/// coordinates (use the offset form there).
-struct terrain_uv_buffer {
-  std::vector<std::array<float, 6>> corner_uv;  ///< u0 v0 u1 v1 u2 v2
-  std::vector<std::array<float, 2>> offset;
-  std::vector<std::int32_t> level;
-  std::vector<float> scale;
-};
-
-/// Collects the engine-facing outputs of a synthesis. O(F).
-inline terrain_uv_buffer export_corner_uvs(const terrain_mesh& mesh, const screen_projection& proj, const scale_field& field,
-                                           const triangle_synthesis& syn) {
-  terrain_uv_buffer b;
-  const auto nf = static_cast<std::size_t>(mesh.num_faces());
-  const float nan = std::numeric_limits<float>::quiet_NaN();
-  b.corner_uv.assign(nf, {nan, nan, nan, nan, nan, nan});
-  b.offset.assign(nf, {nan, nan});
-  b.level.assign(nf, -1);
-  b.scale.assign(nf, 0.0f);
-  for (const std::int32_t f : proj.visible) {
-    const auto i = static_cast<std::size_t>(f);
-    const vec2 o = syn.offset[i];
-    for (std::size_t k = 0; k < 3; ++k) {
-      const vec2 p = proj.screen[static_cast<std::size_t>(mesh.faces[i][k])] + o;
-      b.corner_uv[i][2 * k] = static_cast<float>(p.x);
-      b.corner_uv[i][2 * k + 1] = static_cast<float>(p.y);
-    }
-    b.offset[i] = {static_cast<float>(o.x), static_cast<float>(o.y)};
-    b.level[i] = field.level[i];
-    b.scale[i] = field.scale[i];
-  }
-  return b;
 }
 
 TESSERA_NAMESPACE_END

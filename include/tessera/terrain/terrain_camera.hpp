@@ -42,7 +42,9 @@ struct terrain_camera {
 };
 
 /// Checks a camera: viewport 1 to 16384 pixels per side, finite matrices, invertible view and
-/// projection. Errors name the field and the value.
+/// projection, and an affine view (bottom row 0, 0, 0, w with w > 0), so the eye is a finite point:
+/// a projective view would put the eye at infinity (w = 0) or mirror it, and every view distance
+/// of §2.2 would be undefined. Errors name the field and the value.
 inline status validate_camera(const terrain_camera& c) {
   if (c.width < 1 || c.height < 1 || c.width > max_viewport_side || c.height > max_viewport_side)
     return status::invalid_argument(
@@ -55,7 +57,25 @@ inline status validate_camera(const terrain_camera& c) {
   if (!(std::abs(dv) > 1e-300)) return status::invalid_argument(detail::cat("camera view matrix is singular (determinant ", dv, ")"));
   if (!(std::abs(dp) > 1e-300))
     return status::invalid_argument(detail::cat("camera projection matrix is singular (determinant ", dp, ")"));
+  // GLM is column-major: view[col][3] is the bottom row
+  double largest = 0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 3; ++j) largest = std::max(largest, std::abs(c.view[i][j]));
+  const double tol = 1e-9 * std::max(largest, std::abs(c.view[3][3]));
+  if (std::abs(c.view[0][3]) > tol || std::abs(c.view[1][3]) > tol || std::abs(c.view[2][3]) > tol || !(c.view[3][3] > tol))
+    return status::invalid_argument(detail::cat("camera view matrix must be affine (bottom row 0, 0, 0, w with w > 0), got ",
+                                                c.view[0][3], ", ", c.view[1][3], ", ", c.view[2][3], ", ", c.view[3][3]));
+  const glm::dvec4 eye = glm::inverse(c.view) * glm::dvec4(0, 0, 0, 1);
+  if (!(eye.w > 0) || !std::isfinite(eye.x / eye.w) || !std::isfinite(eye.y / eye.w) || !std::isfinite(eye.z / eye.w))
+    return status::invalid_argument(detail::cat("camera view matrix puts the eye at (", eye.x, ", ", eye.y, ", ", eye.z, ", w = ", eye.w,
+                                                "): not a finite point"));
   return {};
+}
+
+/// The eye of a camera that passed validate_camera: the world point the view maps to the origin.
+inline vec3 camera_eye(const terrain_camera& c) {
+  const glm::dvec4 e = glm::inverse(c.view) * glm::dvec4(0, 0, 0, 1);
+  return {e.x / e.w, e.y / e.w, e.z / e.w};
 }
 
 /// A perspective camera described by where it is and where it looks (z is up in tessera's terrain

@@ -113,15 +113,16 @@ std::array<float, Img::channels> bilinear_sample(const Img& img, double x, doubl
 }
 
 /// Index maps for bilinear_sample (function objects, so the calls inline): clamp to the border, or
-/// wrap around.
+/// wrap around. Both map NaN and infinities into range (to 0 or the border) instead of casting them.
 struct clamp_index {
   index_t operator()(double i, index_t n) const noexcept {
-    return i <= 0 ? index_t{0} : i >= static_cast<double>(n - 1) ? n - 1 : static_cast<index_t>(i);
+    return !(i > 0) ? index_t{0} : i >= static_cast<double>(n - 1) ? n - 1 : static_cast<index_t>(i);
   }
 };
 struct wrap_index {
   index_t operator()(double i, index_t n) const noexcept {
-    const double m = std::fmod(i, static_cast<double>(n));
+    const double m = std::fmod(i, static_cast<double>(n));  // NaN for NaN or infinite i
+    if (!std::isfinite(m)) return 0;
     return static_cast<index_t>(m < 0 ? m + static_cast<double>(n) : m) % n;
   }
 };

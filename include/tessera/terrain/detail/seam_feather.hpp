@@ -49,7 +49,7 @@ class seam_feather {
     if (feather <= 0) return;
     for (const std::int32_t f : proj.visible)
       for (const std::int32_t n : mesh.neighbors[static_cast<std::size_t>(f)])
-        if (n > f && proj.state[static_cast<std::size_t>(n)] != 0 && label_of(n) != label_of(f))
+        if (n > f && is_face_index(n, mesh.num_faces()) && proj.state[static_cast<std::size_t>(n)] != 0 && label_of(n) != label_of(f))
           pairs_.push_back(key(label_of(f), label_of(n)));
     if (pairs_.empty()) return;
     std::sort(pairs_.begin(), pairs_.end());

@@ -27,6 +27,37 @@ struct visibility_buffer {
   std::vector<std::array<float, 3>> world;  ///< world position (only when requested)
 };
 
+/// Checks, before a frame is drawn, that `proj` belongs to `mesh` (check_projection) and that every
+/// visible entry names a visible face whose corners are vertices of the mesh. O(visible faces), in
+/// parallel chunks; the first failure in visible order is reported.
+template <class E>
+status check_visible_geometry(const terrain_mesh& mesh, const screen_projection& proj, const char* stage, E& exec) {
+  if (auto s = check_projection(mesh, proj, stage); !s) return s;
+  const index_t nvis = proj.num_visible(), nv = mesh.num_vertices();
+  constexpr index_t block = 16384;
+  const index_t chunks = (nvis + block - 1) / block;
+  std::vector<index_t> bad(static_cast<std::size_t>(chunks), -1);
+  exec.parallel_for(0, chunks, [&](index_t c) {
+    for (index_t i = c * block; i < std::min(nvis, (c + 1) * block); ++i) {
+      const std::int32_t f = proj.visible[static_cast<std::size_t>(i)];
+      bool ok = is_visible_face(proj, f);
+      if (ok)
+        for (const std::int32_t v : mesh.faces[static_cast<std::size_t>(f)]) ok = ok && v >= 0 && v < nv;
+      if (!ok) {
+        bad[static_cast<std::size_t>(c)] = i;
+        return;
+      }
+    }
+  });
+  for (const index_t i : bad) {
+    if (i < 0) continue;
+    const std::int32_t f = proj.visible[static_cast<std::size_t>(i)];
+    if (!is_visible_face(proj, f)) return bad_visible_entry(stage, i, f);
+    return status::out_of_range(detail::cat(stage, ": face ", f, " names a vertex outside the mesh's ", nv, " vertices"));
+  }
+  return {};
+}
+
 template <class E>
 status render_visibility(const terrain_mesh& mesh, const screen_projection& proj, visibility_buffer& vb, bool want_world,
                          index_t tile_size, E& exec) {

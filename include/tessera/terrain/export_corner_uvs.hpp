@@ -1,0 +1,223 @@
+// tessera/terrain/export_corner_uvs.hpp: what an engine needs from a synthesized terrain frame
+// (paper 003, §2.3): per face the texture offset, corner coordinates, level and scale
+// (export_corner_uvs), and the same as a small binary file an engine or a script can read
+// (`tessera terrain --uv-out`; write_terrain_uv_file / read_terrain_uv_file). The file's layout,
+// all numbers little-endian, no padding:
+//
+//   offset  size  header
+//        0     4  magic "TSUV"
+//        4     4  u32 version = 2
+//        8     4  u32 F: faces (the mesh's, culled ones included)
+//       12     8  u32 viewport width, u32 viewport height (pixels)
+//       20     8  u32 exemplar width, u32 exemplar height (level 0 of the pyramid)
+//       28     4  u32 levels of the scale field
+//       32     4  f32 min_scale of the scale field
+//
+//   then F records of 44 bytes, face f at 36 + 44 f:
+//        0    24  f32 u0 v0 u1 v1 u2 v2: corner uv (NaN where a corner is behind the eye, or culled)
+//       24     8  f32 offset x, y: uv = pixel position (y down, centres at +0.5) + offset
+//       32     4  i32 level (-1: culled)
+//       36     4  f32 scale (0: culled)
+//       40     4  u32 state: 0 culled, 1 visible, 2 visible and crossing the near plane
+//
+// uv is in pixels of the exemplar shrunk by `scale`, from its centre: sample it at normalized
+// coordinates 0.5 + uv / (exemplar width * scale, exemplar height * scale). Version 1 (written
+// before) had 32-byte records without offset and state and a 12-byte header.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "../core/config.hpp"
+#include "../core/status.hpp"
+#include "../core/vec.hpp"
+#include "assign_scale_field.hpp"
+#include "prepare_terrain_mesh.hpp"
+#include "project_mesh.hpp"
+#include "synthesize_triangles.hpp"
+
+TESSERA_NAMESPACE_BEGIN
+
+/// What a shader needs to texture every visible face. Per face (indexed like the mesh):
+///   - `offset`: uv = pixel position (x right, y DOWN, pixel centres at +0.5) + offset, in pixels of
+///     the face's level image measured from that image's centre. This form works for every visible
+///     face, including faces crossing the near plane: compute it per fragment from gl_FragCoord
+///     (flip y: y_down = height - y_up).
+///   - `corner_uv`: the same at the three corners (u0 v0 u1 v1 u2 v2), to interpolate linearly in
+///     SCREEN space (GLSL `noperspective`). NaN at corners behind the eye (state near_clipped):
+///     such a corner has no screen position; use the offset form for those faces.
+///   - `level`, `scale`: the pyramid level and the scale; the exemplar shrunk by `scale` is sampled
+///     at normalized coordinates 0.5 + uv / (exemplar_width * scale, exemplar_height * scale).
+///   - `state`: a face_visibility (0 culled: level -1, scale 0, NaN coordinates).
+struct terrain_uv_buffer {
+  index_t viewport_width = 0, viewport_height = 0;
+  index_t exemplar_width = 0, exemplar_height = 0;
+  index_t levels = 0;     ///< of the scale field
+  double min_scale = 1;   ///< of the scale field
+  std::vector<std::array<float, 6>> corner_uv;  ///< u0 v0 u1 v1 u2 v2
+  std::vector<std::array<float, 2>> offset;
+  std::vector<std::int32_t> level;
+  std::vector<float> scale;
+  std::vector<std::uint8_t> state;
+};
+
+/// Collects the engine-facing outputs of a synthesis (see terrain_uv_buffer). Errors
+/// (invalid_argument): a projection, field or synthesis that does not belong to `mesh`, or a
+/// visible face the field or the synthesis did not cover (made from another projection). O(F).
+inline result<terrain_uv_buffer> export_corner_uvs(const terrain_mesh& mesh, const screen_projection& proj, const scale_field& field,
+                                                   const triangle_synthesis& syn) {
+  if (auto s = detail::check_projection(mesh, proj, "export_corner_uvs"); !s) return s;
+  const auto nf = static_cast<std::size_t>(mesh.num_faces());
+  if (field.level.size() != nf || field.scale.size() != nf || syn.offset.size() != nf || syn.region.size() != nf)
+    return status::invalid_argument(detail::cat("export_corner_uvs: the scale field (", field.level.size(), " faces) and synthesis (",
+                                                syn.region.size(), " faces) must belong to the mesh (", nf, " faces)"));
+  terrain_uv_buffer b;
+  b.viewport_width = proj.width;
+  b.viewport_height = proj.height;
+  b.exemplar_width = syn.exemplar_width;
+  b.exemplar_height = syn.exemplar_height;
+  b.levels = field.levels;
+  b.min_scale = field.min_scale;
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  b.corner_uv.assign(nf, {nan, nan, nan, nan, nan, nan});
+  b.offset.assign(nf, {nan, nan});
+  b.level.assign(nf, -1);
+  b.scale.assign(nf, 0.0f);
+  b.state.assign(nf, 0);
+  for (std::size_t i = 0; i < proj.visible.size(); ++i) {
+    const std::int32_t f = proj.visible[i];
+    if (!detail::is_visible_face(proj, f)) return detail::bad_visible_entry("export_corner_uvs", static_cast<index_t>(i), f);
+    const auto fi = static_cast<std::size_t>(f);
+    if (field.level[fi] < 0 || syn.region[fi] < 0)
+      return status::invalid_argument(detail::cat("export_corner_uvs: visible face ", f, " has level ", field.level[fi], " and region ",
+                                                  syn.region[fi], ": the field and synthesis must come from this projection"));
+    const vec2 o = syn.offset[fi];
+    for (std::size_t k = 0; k < 3; ++k) {
+      const std::int32_t v = mesh.faces[fi][k];
+      if (v < 0 || static_cast<std::size_t>(v) >= proj.screen.size())
+        return status::out_of_range(detail::cat("export_corner_uvs: face ", f, " corner ", k, " names vertex ", v));
+      const vec2 p = proj.screen[static_cast<std::size_t>(v)] + o;
+      b.corner_uv[fi][2 * k] = static_cast<float>(p.x);
+      b.corner_uv[fi][2 * k + 1] = static_cast<float>(p.y);
+    }
+    b.offset[fi] = {static_cast<float>(o.x), static_cast<float>(o.y)};
+    b.level[fi] = field.level[fi];
+    b.scale[fi] = field.scale[fi];
+    b.state[fi] = proj.state[fi];
+  }
+  return b;
+}
+
+
+inline constexpr std::uint32_t terrain_uv_file_version = 2;
+inline constexpr std::size_t terrain_uv_header_bytes = 36, terrain_uv_record_bytes = 44;
+
+namespace detail {
+inline void put_u32(std::vector<unsigned char>& out, std::uint32_t v) {
+  for (int i = 0; i < 4; ++i) out.push_back(static_cast<unsigned char>(v >> (8 * i)));
+}
+inline void put_f32(std::vector<unsigned char>& out, float f) {
+  std::uint32_t v;
+  std::memcpy(&v, &f, 4);
+  put_u32(out, v);
+}
+inline std::uint32_t get_u32(const unsigned char* p) {
+  return static_cast<std::uint32_t>(p[0]) | static_cast<std::uint32_t>(p[1]) << 8 | static_cast<std::uint32_t>(p[2]) << 16 |
+         static_cast<std::uint32_t>(p[3]) << 24;
+}
+inline float get_f32(const unsigned char* p) {
+  const std::uint32_t v = get_u32(p);
+  float f;
+  std::memcpy(&f, &v, 4);
+  return f;
+}
+}  // namespace detail
+
+/// Encodes a terrain_uv_buffer in the layout above. Errors (invalid_argument): arrays of different
+/// lengths, more than 2^32 - 1 faces or sizes that do not fit a u32. O(F).
+inline result<std::vector<unsigned char>> encode_terrain_uvs(const terrain_uv_buffer& uv) {
+  const std::size_t n = uv.level.size();
+  if (uv.corner_uv.size() != n || uv.offset.size() != n || uv.scale.size() != n || uv.state.size() != n)
+    return status::invalid_argument(detail::cat("terrain uv buffer: arrays of different lengths (", uv.corner_uv.size(), ", ",
+                                                uv.offset.size(), ", ", n, ", ", uv.scale.size(), ", ", uv.state.size(), ")"));
+  constexpr index_t u32max = 0xffffffff;
+  for (const index_t v : {static_cast<index_t>(n), uv.viewport_width, uv.viewport_height, uv.exemplar_width, uv.exemplar_height, uv.levels})
+    if (v < 0 || v > u32max) return status::invalid_argument(detail::cat("terrain uv buffer: ", v, " does not fit the file's u32 fields"));
+  std::vector<unsigned char> out;
+  out.reserve(terrain_uv_header_bytes + terrain_uv_record_bytes * n);
+  for (const char c : {'T', 'S', 'U', 'V'}) out.push_back(static_cast<unsigned char>(c));
+  detail::put_u32(out, terrain_uv_file_version);
+  for (const index_t v : {static_cast<index_t>(n), uv.viewport_width, uv.viewport_height, uv.exemplar_width, uv.exemplar_height, uv.levels})
+    detail::put_u32(out, static_cast<std::uint32_t>(v));
+  detail::put_f32(out, static_cast<float>(uv.min_scale));
+  for (std::size_t f = 0; f < n; ++f) {
+    for (const float c : uv.corner_uv[f]) detail::put_f32(out, c);
+    for (const float c : uv.offset[f]) detail::put_f32(out, c);
+    detail::put_u32(out, static_cast<std::uint32_t>(uv.level[f]));
+    detail::put_f32(out, uv.scale[f]);
+    detail::put_u32(out, uv.state[f]);
+  }
+  return out;
+}
+
+/// Decodes the layout above (version 2). Errors (invalid_argument): wrong magic or version, a size
+/// that does not match the face count. O(F).
+inline result<terrain_uv_buffer> decode_terrain_uvs(const unsigned char* data, std::size_t size) {
+  if (size < terrain_uv_header_bytes || std::memcmp(data, "TSUV", 4) != 0)
+    return status::invalid_argument(detail::cat("terrain uv file: no 'TSUV' header (", size, " bytes)"));
+  if (const std::uint32_t v = detail::get_u32(data + 4); v != terrain_uv_file_version)
+    return status::invalid_argument(detail::cat("terrain uv file: version ", v, ", expected ", terrain_uv_file_version));
+  const std::size_t n = detail::get_u32(data + 8);
+  if ((size - terrain_uv_header_bytes) / terrain_uv_record_bytes != n || (size - terrain_uv_header_bytes) % terrain_uv_record_bytes != 0)
+    return status::invalid_argument(detail::cat("terrain uv file: ", size, " bytes do not hold ", n, " faces"));
+  terrain_uv_buffer uv;
+  uv.viewport_width = detail::get_u32(data + 12);
+  uv.viewport_height = detail::get_u32(data + 16);
+  uv.exemplar_width = detail::get_u32(data + 20);
+  uv.exemplar_height = detail::get_u32(data + 24);
+  uv.levels = detail::get_u32(data + 28);
+  uv.min_scale = detail::get_f32(data + 32);
+  uv.corner_uv.resize(n);
+  uv.offset.resize(n);
+  uv.level.resize(n);
+  uv.scale.resize(n);
+  uv.state.resize(n);
+  for (std::size_t f = 0; f < n; ++f) {
+    const unsigned char* r = data + terrain_uv_header_bytes + terrain_uv_record_bytes * f;
+    for (std::size_t k = 0; k < 6; ++k) uv.corner_uv[f][k] = detail::get_f32(r + 4 * k);
+    uv.offset[f] = {detail::get_f32(r + 24), detail::get_f32(r + 28)};
+    uv.level[f] = static_cast<std::int32_t>(detail::get_u32(r + 32));
+    uv.scale[f] = detail::get_f32(r + 36);
+    uv.state[f] = static_cast<std::uint8_t>(detail::get_u32(r + 40));
+  }
+  return uv;
+}
+
+/// Writes `uv` to `path` in the layout above. Errors: as encode_terrain_uvs, io_error naming the
+/// path. Thread-safe for distinct paths.
+inline status write_terrain_uv_file(const std::string& path, const terrain_uv_buffer& uv) {
+  auto bytes = encode_terrain_uvs(uv);
+  if (!bytes) return bytes.error();
+  std::ofstream out(path, std::ios::binary);
+  if (!out) return status::io_error(path + ": cannot open for writing");
+  out.write(reinterpret_cast<const char*>(bytes->data()), static_cast<std::streamsize>(bytes->size()));
+  return out ? status{} : status::io_error(path + ": write failed");
+}
+
+/// Reads a file written by write_terrain_uv_file. Errors: io_error naming the path, or as
+/// decode_terrain_uvs.
+inline result<terrain_uv_buffer> read_terrain_uv_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return status::io_error(path + ": cannot open for reading");
+  std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) return status::io_error(path + ": read failed");
+  return decode_terrain_uvs(bytes.data(), bytes.size());
+}
+
+TESSERA_NAMESPACE_END
