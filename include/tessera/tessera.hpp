@@ -1,5 +1,7 @@
 // tessera/tessera.hpp: umbrella header. Includes the core vocabulary and every algorithm; optional
-// parts (io/, adapters/) are included separately since they need extra libraries.
+// parts (io/, adapters/) are included separately since they need extra libraries, and so is
+// geometry/geometric_tile_files.hpp (files on disk, like io/). A structural test checks that every
+// other public header is listed here.
 // Docs and examples include the specific header instead, which compiles faster.
 #pragma once
 
@@ -59,6 +61,7 @@
 // terrain (paper 003)
 #include "terrain/assign_scale_field.hpp"
 #include "terrain/build_exemplar_pyramid.hpp"
+#include "terrain/export_corner_uvs.hpp"
 #include "terrain/make_terrain.hpp"
 #include "terrain/prepare_terrain_mesh.hpp"
 #include "terrain/project_mesh.hpp"
