@@ -196,6 +196,13 @@ status life_views(image_view<const T, C> src, image_view<T, C> dst, const life_p
     if (src.data() != dst.data()) copy_view<T, C>(src, dst);
     return {};
   }
+  // in place (the same rows) is handled below; views that overlap otherwise read from a copy
+  if (views_overlap(src, dst) && (src.data() != dst.data() || src.stride() != dst.stride())) {
+    auto copy = image_buffer<T, C>::create(w, h);
+    if (!copy) return copy.error();
+    copy_view<T, C>(src, copy->view());
+    return life_views<T, C>(copy->cview(), dst, o, exec);
+  }
   const life_rule rule{o.live_count, o.live_exact, o.dead_count, o.crowding_count,
                        o.live_test == life_test::above_threshold, o.threshold};
   const counter_rng rng(o.seed, stream_id("fabric.life"));
