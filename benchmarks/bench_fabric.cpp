@@ -1,15 +1,22 @@
 // Benchmarks of the fabric family (paper 001). Figures read as ratios to same-run baselines:
 //   BM_Memcpy            memcpy of the image (the floor for any pass over it)
 //   BM_CatMapStep        one step of the paper's iteration (cat_map_step)
-//   BM_CatMapJump        cat_map(image, n): n steps in one pass; goal <= 2x one step at 4096^2
+//   BM_CatMapJump        cat_map(image, n): n steps in one pass; goal <= 2x one step at 4096^2.
+//                        Counter jump/step: its time over one cat_map_step timed in the same
+//                        iterations (interleaved, so load on a shared machine hits both alike)
 //   BM_CatMapSteps       n single steps, what the paper pays
 //   BM_CatMapPeriod      cat_map_period(N) from the factorization; goal < 1 ms for N <= 10^12
-//   BM_LifePerturbation  one generation on RGBA8; goal <= 10x memcpy at 4096^2
-// Arguments: image side N, step count n, threads.
+//   BM_LifePerturbation  one generation on RGBA8; goal <= 10x memcpy at 4096^2. Counter
+//                        x_memcpy: its time over a memcpy of the image timed in the same iterations
+// Arguments: image side N, step count n, threads. Each ratio comes twice: of wall-clock times, and
+// (suffix _cpu) of CPU times summed over all threads, the one to read on a loaded machine.
 #include <benchmark/benchmark.h>
 
+#include <chrono>
 #include <cstring>
+#include <ctime>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include <tessera/core/random.hpp>
@@ -47,6 +54,40 @@ void set_pixels(benchmark::State& state, index_t n) {
   state.counters["Mpix/s"] = benchmark::Counter(static_cast<double>(n * n) * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
 }
 
+// Wall-clock and process CPU seconds (all threads) of one call.
+struct elapsed {
+  double wall = 0, cpu = 0;
+  elapsed& operator+=(const elapsed& e) {
+    wall += e.wall, cpu += e.cpu;
+    return *this;
+  }
+};
+template <class F>
+elapsed seconds(F&& f) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::clock_t c0 = std::clock();
+  f();
+  const std::clock_t c1 = std::clock();
+  return {std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(),
+          static_cast<double>(c1 - c0) / CLOCKS_PER_SEC};
+}
+
+// Runs `baseline` with the benchmark's timer paused, so a benchmark can report its own time as a
+// ratio to a baseline measured in the same iterations (interleaved: load hits both alike).
+template <class F>
+elapsed paused_seconds(benchmark::State& state, F&& baseline) {
+  state.PauseTiming();
+  const elapsed e = seconds(baseline);
+  state.ResumeTiming();
+  return e;
+}
+
+// Counters `name` (wall-clock ratio) and `name`_cpu (ratio of CPU time summed over all threads).
+void set_ratio(benchmark::State& state, const char* name, const elapsed& a, const elapsed& b) {
+  state.counters[name] = a.wall / b.wall;
+  state.counters[std::string(name) + "_cpu"] = a.cpu / b.cpu;
+}
+
 void BM_Memcpy(benchmark::State& state) {
   const index_t n = state.range(0);
   const rgba8& in = fabric_image(n);
@@ -75,12 +116,19 @@ void BM_CatMapJump(benchmark::State& state) {
   const index_t n = state.range(0);
   const std::int64_t steps = state.range(1);
   const rgba8& in = fabric_image(n);
-  rgba8 out(n, n);
+  rgba8 out(n, n), stepped(n, n);
   auto& exec = pool(static_cast<int>(state.range(2)));
+  elapsed jump, step;
   for (auto _ : state) {
-    if (!tessera::cat_map(in, out, steps, {}, exec)) state.SkipWithError("cat_map failed");
-    benchmark::ClobberMemory();
+    step += paused_seconds(state, [&] {
+      if (!tessera::cat_map_step(in, stepped, {}, exec)) state.SkipWithError("cat_map_step failed");
+    });
+    jump += seconds([&] {
+      if (!tessera::cat_map(in, out, steps, {}, exec)) state.SkipWithError("cat_map failed");
+      benchmark::ClobberMemory();
+    });
   }
+  set_ratio(state, "jump/step", jump, step);
   set_pixels(state, n);
 }
 
@@ -119,12 +167,20 @@ void BM_CatMapPeriodRandom(benchmark::State& state) {
 void BM_LifePerturbation(benchmark::State& state) {
   const index_t n = state.range(0);
   const rgba8& in = fabric_image(n);
-  rgba8 out(n, n);
+  rgba8 out(n, n), copy(n, n);
   auto& exec = pool(static_cast<int>(state.range(1)));
+  elapsed life, copied;
   for (auto _ : state) {
-    if (!tessera::life_perturbation(in, out, {.generations = 1}, exec)) state.SkipWithError("life_perturbation failed");
-    benchmark::ClobberMemory();
+    copied += paused_seconds(state, [&] {
+      std::memcpy(copy.data(), in.data(), in.size_bytes());
+      benchmark::ClobberMemory();
+    });
+    life += seconds([&] {
+      if (!tessera::life_perturbation(in, out, {.generations = 1}, exec)) state.SkipWithError("life_perturbation failed");
+      benchmark::ClobberMemory();
+    });
   }
+  set_ratio(state, "x_memcpy", life, copied);
   set_pixels(state, n);
 }
 

@@ -172,6 +172,33 @@ TEST_CASE("cat map over views, a user type, other formats and in place", "[cat_m
   REQUIRE(u8 == *to_buffer<std::uint8_t, 3>(*cat_map(f, 5)));
 }
 
+TEST_CASE("cat_map_step and cat_map work in place and on overlapping views", "[cat_map]") {
+  const index_t n = 23;
+  const auto img = random_image<std::uint8_t, 3>(n, n, 5);
+  for (const cat_map_family f : {cat_map_family{1, 1}, cat_map_family{2, 3}}) {
+    INFO("a = " << f.a << ", b = " << f.b);
+    const auto once = steps(img, 1, {.family = f});
+    auto same = img;  // input and output are the same image
+    REQUIRE(cat_map_step(same, same, {.family = f}).ok());
+    REQUIRE(same == once);
+    for (cat_map_strategy s : strategies) {
+      auto jumped = img;
+      REQUIRE(cat_map(jumped, jumped, 17, {.family = f, .strategy = s}).ok());
+      REQUIRE(jumped == steps(img, 17, {.family = f}));
+    }
+  }
+  // two views of one buffer, the output three rows below the input: they overlap in n - 3 rows
+  std::vector<std::uint8_t> raw(static_cast<std::size_t>((n + 3) * n * 3));
+  for (std::size_t i = 0; i < raw.size(); ++i) raw[i] = static_cast<std::uint8_t>(i * 53 + 11);
+  image_view<std::uint8_t, 3> in(raw.data(), n, n, n * 3), out(raw.data() + 3 * n * 3, n, n, n * 3);
+  const auto before = *to_buffer(in);
+  REQUIRE(cat_map_step(image_view<const std::uint8_t, 3>(in), out).ok());
+  REQUIRE(*to_buffer(out) == steps(before, 1));
+  for (std::size_t i = 0; i < raw.size(); ++i) raw[i] = static_cast<std::uint8_t>(i * 53 + 11);
+  REQUIRE(cat_map(image_view<const std::uint8_t, 3>(in), out, -40).ok());
+  REQUIRE(*to_buffer(out) == *cat_map(before, -40));
+}
+
 TEST_CASE("non-square images: rejected by default, centred square or square tiles on request", "[cat_map]") {
   const auto img = random_image<std::uint8_t, 3>(60, 36, 4);
   image_buffer<std::uint8_t, 3> out(60, 36);

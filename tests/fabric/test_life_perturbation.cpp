@@ -1,6 +1,10 @@
 #include <tessera/fabric/life_perturbation.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
+#include <utility>
 #include <vector>
 
 #include <catch2/catch.hpp>
@@ -14,10 +18,24 @@ using namespace tessera;
 using fabric_test::random_image;
 
 namespace {
+// r of pixel (x, y) in generation g, restated from the documentation of detail::life_random: a row
+// key from SplitMix64, then the 32-bit hash lowbias32 of key + x, top 24 bits.
+double oracle_r(std::uint64_t seed, int g, index_t x, index_t y) {
+  const counter_rng rng(seed, stream_id("fabric.life"));
+  const auto key = static_cast<std::uint32_t>(mix64(rng.bits(static_cast<std::uint64_t>(g)) +
+                                                    static_cast<std::uint64_t>(y + 1) * 0x9e3779b97f4a7c15ULL));
+  std::uint32_t v = key + static_cast<std::uint32_t>(x);
+  v ^= v >> 16;
+  v *= 0x7feb352dU;
+  v ^= v >> 15;
+  v *= 0x846ca68bU;
+  v ^= v >> 16;
+  return static_cast<double>(v >> 8) / 16777216.0;
+}
+
 // Straightforward oracle of the rule (paper 001 §1.3 as documented in life_perturbation.hpp), in
 // double, on a lightness field: returns the field after `generations` synchronous generations.
 std::vector<double> oracle(std::vector<double> l, index_t w, index_t h, const life_perturbation_options& o) {
-  const counter_rng rng(o.seed, stream_id("fabric.life"));
   for (int g = 0; g < o.generations; ++g) {
     std::vector<double> next(l.size());
     for (index_t y = 0; y < h; ++y)
@@ -35,8 +53,7 @@ std::vector<double> oracle(std::vector<double> l, index_t w, index_t h, const li
           }
         const bool by_threshold = o.live_test == life_test::above_threshold;
         const int live = by_threshold ? above : nb, dead = by_threshold ? 8 - above : nd;
-        const std::uint64_t key = rng.bits(g), i = static_cast<std::uint64_t>(y * w + x);
-        const double r = static_cast<double>(mix64(key + (i + 1) * 0x9e3779b97f4a7c15ULL) >> 40) / 16777216.0;
+        const double r = oracle_r(o.seed, g, x, y);
         double out = c;
         if (dead >= o.dead_count || (o.crowding_count > 0 && live >= o.crowding_count)) {
           if (nd > 0) out = sd / nd + (c - sd / nd) * r;
@@ -48,6 +65,45 @@ std::vector<double> oracle(std::vector<double> l, index_t w, index_t h, const li
     l = next;
   }
   return l;
+}
+
+// The same rule on an 8- or 16-bit image: each output channel is the input pixel relit to the
+// oracle's lightness (c' = L' + (c - L) k, k = (1 - |2L' - 1|) / (1 - |2L - 1|)), within one step of
+// the channel's rounding; pixels whose lightness the oracle keeps are unchanged bit for bit.
+template <class T, int C>
+void check_integer_oracle(const image_buffer<T, C>& img, const life_perturbation_options& o) {
+  constexpr double top = std::numeric_limits<T>::max();
+  const index_t w = img.width(), h = img.height();
+  std::vector<double> l;
+  for (index_t y = 0; y < h; ++y)
+    for (index_t x = 0; x < w; ++x) {
+      const auto p = img.read(x, y);
+      const double mx = C <= 2 ? p[0] : std::max({p[0], p[1], p[2]}), mn = C <= 2 ? p[0] : std::min({p[0], p[1], p[2]});
+      l.push_back((mx + mn) / (2 * top));
+    }
+  const auto expected = oracle(l, w, h, o);
+  image_buffer<T, C> out(w, h);
+  REQUIRE(life_perturbation(img, out, o).ok());
+  int changed = 0;
+  for (index_t y = 0; y < h; ++y)
+    for (index_t x = 0; x < w; ++x) {
+      const auto i = static_cast<std::size_t>(y * w + x);
+      const auto a = img.read(x, y), b = out.read(x, y);
+      INFO("pixel (" << x << ", " << y << "), L " << l[i] << " -> " << expected[i]);
+      if (std::abs(expected[i] - l[i]) < 1e-9) {
+        REQUIRE(a == b);
+        continue;
+      }
+      ++changed;
+      const double span = 1 - std::abs(2 * l[i] - 1), span_new = 1 - std::abs(2 * expected[i] - 1);
+      const double k = span > 0 ? span_new / span : 0;
+      for (int c = 0; c < std::min(C, 3); ++c) {
+        const double v = C <= 2 ? expected[i] * top : expected[i] * top + (a[static_cast<std::size_t>(c)] - l[i] * top) * k;
+        REQUIRE(std::abs(b[static_cast<std::size_t>(c)] - std::clamp(v, 0.0, top)) <= 0.5 + 1e-3 * top / 255);
+      }
+      if constexpr (C == 2 || C == 4) REQUIRE(a[C - 1] == b[C - 1]);  // alpha
+    }
+  CHECK(changed > 0);  // the rule did fire
 }
 
 std::vector<double> lightness_of(const image_buffer<float, 3>& img) {
@@ -98,6 +154,96 @@ TEST_CASE("the perturbation follows the paper's brighten / darken rule (oracle)"
       }
       CHECK(changed > 0);  // the rule did fire
     }
+  // 8- and 16-bit images take the integer first generation (exact neighbour sums): same rule
+  const auto rgba = random_image<std::uint8_t, 4>(37, 19, 5);
+  const auto cloth8 = *to_buffer<std::uint8_t, 3>(cloth);
+  const auto grey16 = random_image<std::uint16_t, 1>(21, 13, 6);
+  for (const auto& o : cases) {
+    INFO("generations " << o.generations << ", K " << o.live_count << ", N " << o.dead_count);
+    check_integer_oracle(rgba, o);
+    check_integer_oracle(cloth8, o);
+    check_integer_oracle(grey16, o);
+  }
+}
+
+TEST_CASE("a single row or column wraps around: neighbours across the edge count", "[life_perturbation]") {
+  // The line 0.9, 0.1 x 7, 0.5. Its rows above and below are the line itself, so pixel 0 sees 0.5
+  // (across the edge) and 0.1 three times each, and itself twice: 6 dimmer neighbours, so it darkens
+  // towards L_dim = 0.3 (N = 6). Pixel 8 sees 0.9 (across the edge) three times: exactly K = 3
+  // brighter, so it brightens towards L_bright = 0.9.
+  for (const bool column : {false, true}) {
+    INFO((column ? "column" : "row"));
+    const index_t w = column ? 1 : 9, h = column ? 9 : 1;
+    auto at = [&](index_t i) { return std::pair{column ? 0 : i, column ? i : 0}; };
+    image_buffer<float, 1> line(w, h, {0.1f});
+    image_buffer<std::uint8_t, 1> line8(w, h, {26});
+    line.write(at(0).first, at(0).second, {0.9f}), line8.write(at(0).first, at(0).second, {230});
+    line.write(at(8).first, at(8).second, {0.5f}), line8.write(at(8).first, at(8).second, {128});
+    image_buffer<float, 1> out(w, h);
+    image_buffer<std::uint8_t, 1> out8(w, h);
+    REQUIRE(life_perturbation(line, out).ok());
+    REQUIRE(life_perturbation(line8, out8).ok());
+    const double r0 = oracle_r(1, 0, at(0).first, at(0).second), r8 = oracle_r(1, 0, at(8).first, at(8).second);
+    CHECK(out.read(at(0).first, at(0).second)[0] == Approx(0.3 + (0.9 - 0.3) * r0).epsilon(1e-6));
+    CHECK(out.read(at(8).first, at(8).second)[0] == Approx(0.5 + (0.9 - 0.5) * r8).epsilon(1e-6));
+    // 8-bit: L_dim = (3 128 + 3 26) / 6 = 77, L_bright = 230, in channel units
+    CHECK(std::abs(out8.read(at(0).first, at(0).second)[0] - (77 + (230 - 77) * r0)) <= 0.5 + 1e-4);
+    CHECK(std::abs(out8.read(at(8).first, at(8).second)[0] - (128 + (230 - 128) * r8)) <= 0.5 + 1e-4);
+  }
+}
+
+TEST_CASE("the SIMD paths of the integer generation equal the portable loops", "[life_perturbation]") {
+  using namespace tessera::detail;
+  const index_t w = 61;  // not a multiple of 4 or 8: the tails run too
+  const auto img = random_image<std::uint8_t, 4>(w, 3, 12);
+  std::vector<std::int16_t> rows(static_cast<std::size_t>(3 * (w + 2))), plain(static_cast<std::size_t>(w + 2));
+  for (index_t y = 0; y < 3; ++y) {  // lightness rows
+    life_q_row<std::uint8_t, 4, true>(img.row(y), w, rows.data() + y * (w + 2));
+    life_q_row<std::uint8_t, 4, false>(img.row(y), w, plain.data());
+    REQUIRE(std::equal(plain.begin(), plain.end(), rows.begin() + y * (w + 2)));
+  }
+  // classification and fired-pixel arithmetic: the AVX2 build of the loops (when this machine has
+  // it) against the default one, for every rule shape
+  using default_loops = life_int_loops<std::uint8_t, false>;
+  using avx2_loops = life_int_loops<std::uint8_t, true>;
+  const life_int_rule<std::int16_t> rule{3, 6, 7, 300, true, false};
+  std::vector<std::uint16_t> toward(static_cast<std::size_t>(w)), kind(toward.size()), toward2(toward.size()), kind2(toward.size());
+  const std::int16_t* r = rows.data();
+  const index_t p = w + 2;
+  default_loops::classify<false, true>(r, r + p, r + 2 * p, w, rule, toward.data(), kind.data());
+  if (life_has_avx2()) {
+    avx2_loops::classify<false, true>(r, r + p, r + 2 * p, w, rule, toward2.data(), kind2.data());
+    REQUIRE(toward == toward2);
+    REQUIRE(kind == kind2);
+    avx2_loops::classify<true, false>(r, r + p, r + 2 * p, w, rule, toward2.data(), kind2.data());
+    default_loops::classify<true, false>(r, r + p, r + 2 * p, w, rule, toward.data(), kind.data());
+    REQUIRE(toward == toward2);
+    REQUIRE(kind == kind2);
+  }
+  // compaction of the fired columns
+  life_int_scratch<std::uint8_t> a(w), b(w);
+  for (std::size_t x = 0; x < kind.size(); ++x) kind[x] = static_cast<std::uint16_t>(x % 3 == 0 ? 0 : 1 + x % 2);
+  const std::size_t n = life_compact<std::uint16_t, true>(kind.data(), w, a.fired.data());
+  REQUIRE(n == life_compact<std::uint16_t, false>(kind.data(), w, b.fired.data()));
+  REQUIRE(std::equal(a.fired.begin(), a.fired.begin() + static_cast<std::ptrdiff_t>(n), b.fired.begin()));
+  REQUIRE(n == 40);
+  // fired arithmetic and relighting
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t x = a.fired[i];
+    a.up[i] = b.up[i] = kind[x] == 1 ? ~0u : 0u;
+    a.sum[i] = b.sum[i] = static_cast<std::uint32_t>((1 + i % 8) << 12 | ((1 + i % 8) * (i * 37 % 511)));
+    a.q[i] = b.q[i] = static_cast<std::uint32_t>(rows[x + 1 + static_cast<std::size_t>(p)] & 0xfff);
+  }
+  default_loops::fired(n, 0x12345678u, a);
+  avx2_loops::fired(n, 0x12345678u, b);  // the default build when this machine lacks AVX2
+  REQUIRE(a.lq == b.lq);
+  REQUIRE(a.k == b.k);
+  REQUIRE(a.base == b.base);
+  auto simd = img, portable = img;
+  life_int_relight_row<std::uint8_t, 4, true>(img.row(1), simd.row(1), a, n);
+  life_int_relight_row<std::uint8_t, 4, false>(img.row(1), portable.row(1), a, n);
+  REQUIRE(simd == portable);
+  CHECK_FALSE(simd == img);
 }
 
 TEST_CASE("the perturbation keeps hue and saturation (float and 8-bit)", "[life_perturbation]") {
@@ -154,6 +300,18 @@ TEST_CASE("perturbation output does not depend on the executor; in place works",
       REQUIRE(inplace == serial);
     }
   }
+  // views of one buffer that overlap without being the same rows: the input is read as it was
+  const index_t w = 31, h = 17;
+  std::vector<std::uint8_t> raw(static_cast<std::size_t>((h + 2) * w * 3));
+  for (int gens : {1, 2}) {
+    for (std::size_t i = 0; i < raw.size(); ++i) raw[i] = static_cast<std::uint8_t>(i * 89 + 3);
+    image_view<std::uint8_t, 3> in(raw.data(), w, h, w * 3), out(raw.data() + 2 * w * 3, w, h, w * 3);
+    const auto before = *to_buffer(in);
+    image_buffer<std::uint8_t, 3> expected(w, h);
+    REQUIRE(life_perturbation(before, expected, {.generations = gens}).ok());
+    REQUIRE(life_perturbation(image_view<const std::uint8_t, 3>(in), out, {.generations = gens}).ok());
+    REQUIRE(*to_buffer(out) == expected);
+  }
   // a member-style user type and other formats
   const auto tex = fabric_test::random_user_texture(30, 20, 2);
   fabric_test::user_texture out(30, 20);
@@ -181,10 +339,6 @@ TEST_CASE("perturbation special cases: flat images, zero generations, grey and a
       changed += o2.read(x, y)[0] != img.read(x, y)[0];
     }
   CHECK(changed > 0);
-  // a single row or column still wraps around
-  const auto line = random_image<float, 1>(9, 1, 3);
-  image_buffer<float, 1> lo(9, 1);
-  REQUIRE(life_perturbation(line, lo, {.live_count = 1, .live_exact = false}).ok());
 }
 
 TEST_CASE("perturbation rejects bad options and images, and can be cancelled", "[life_perturbation]") {

@@ -25,17 +25,46 @@ TEST_CASE("make_fabric = source square, cat map, perturbation, tiling", "[make_f
   const auto tile = *cat_map(src, 31);
   for (index_t y = 0; y < 70; ++y)
     for (index_t x = 0; x < 130; ++x) REQUIRE(wide.read(x, y) == tile.read(x % 48, y % 48));
-  // generated at the output size (N = max side, cropped); the source is centred or repeated
-  REQUIRE(make_fabric(src, wide, {.iterations = 5}).ok());
+}
+
+TEST_CASE("make_fabric: a source that is not N x N is rejected unless options.fit says how to read it", "[make_fabric]") {
+  const auto src = fabric_test::random_image<std::uint8_t, 3>(48, 48, 2);
+  image_buffer<std::uint8_t, 3> wide(130, 70), small(20, 20);
+  // default: reject, naming both sizes and the options that would accept it
+  auto s = make_fabric(src, wide, {.iterations = 5});
+  REQUIRE(s.code() == status_code::invalid_argument);
+  CHECK(s.message().find("48 x 48") != std::string::npos);
+  CHECK(s.message().find("130 x 130") != std::string::npos);
+  CHECK(s.message().find("options.fit") != std::string::npos);
+  CHECK(make_fabric(src, small).code() == status_code::invalid_argument);
+  const auto tall = fabric_test::random_image<std::uint8_t, 3>(30, 44, 3);
+  CHECK(make_fabric(tall, small, {.tile_size = 30}).code() == status_code::invalid_argument);
+
+  // crop_or_repeat: generated at the output size (N = max side); the source repeated when smaller
+  REQUIRE(make_fabric(src, wide, {.iterations = 5, .fit = source_fit::crop_or_repeat}).ok());
   image_buffer<std::uint8_t, 3> square(130, 130), src130(130, 130);
   for (index_t y = 0; y < 130; ++y)
     for (index_t x = 0; x < 130; ++x) src130.write(x, y, src.read(x % 48, y % 48));
   REQUIRE(cat_map(src130, square, 5).ok());
   for (index_t y = 0; y < 70; ++y)
     for (index_t x = 0; x < 130; ++x) REQUIRE(wide.read(x, y) == square.read(x, y));
-  image_buffer<std::uint8_t, 3> small(20, 20);
-  REQUIRE(make_fabric(src, small, {.iterations = 0}).ok());
-  CHECK(small.read(0, 0) == src.read(14, 14));  // centred crop of the larger source
+  // ... and a centred window when larger
+  REQUIRE(make_fabric(src, small, {.iterations = 0, .fit = source_fit::crop_or_repeat}).ok());
+  CHECK(small.read(0, 0) == src.read(14, 14));
+
+  // centered_square: the largest centred square of the source at its own side, tiled (no seams)
+  REQUIRE(make_fabric(tall, wide, {.iterations = 9, .fit = source_fit::centered_square}).ok());
+  image_buffer<std::uint8_t, 3> centre(30, 30);
+  for (index_t y = 0; y < 30; ++y)
+    for (index_t x = 0; x < 30; ++x) centre.write(x, y, tall.read(x, y + 7));
+  const auto tile = *cat_map(centre, 9);
+  for (index_t y = 0; y < 70; ++y)
+    for (index_t x = 0; x < 130; ++x) REQUIRE(wide.read(x, y) == tile.read(x % 30, y % 30));
+  REQUIRE(make_fabric(tall, wide, {.iterations = 9, .tile_size = 30, .fit = source_fit::centered_square}).ok());
+  auto e = make_fabric(tall, wide, {.tile_size = 20, .fit = source_fit::centered_square});
+  CHECK(e.code() == status_code::invalid_argument);
+  CHECK(e.message().find("tile_size must be 0 or 30") != std::string::npos);
+  CHECK(make_fabric(tall, wide, {.fit = static_cast<source_fit>(9)}).code() == status_code::invalid_argument);
 }
 
 TEST_CASE("make_fabric from a palette keeps its tone proportions", "[make_fabric]") {
@@ -67,6 +96,13 @@ TEST_CASE("presets: the paper's fabrics, deterministic, any size", "[make_fabric
   REQUIRE(make_fabric(fabric_preset::flannel, f).ok());
   CHECK((*tone_proportions(f, flannel.tones))[0] == Approx(0.75));
   CHECK_FALSE(parse_fabric_preset("velvet").ok());
+  // a value outside the enum has no name and makes no fabric (no read past the name table)
+  const auto bogus = static_cast<fabric_preset>(7), negative = static_cast<fabric_preset>(-1);
+  CHECK(to_string(bogus) == "unknown");
+  CHECK(to_string(negative) == "unknown");
+  auto s = make_fabric(bogus, f);
+  CHECK(s.code() == status_code::invalid_argument);
+  CHECK(s.message().find("7") != std::string::npos);
 }
 
 TEST_CASE("make_fabric rejects bad input and can be cancelled", "[make_fabric]") {

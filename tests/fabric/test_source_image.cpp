@@ -50,6 +50,12 @@ TEST_CASE("palettes: proportions are normalized; invalid tones rejected", "[sour
   CHECK(normalized_proportions({{{0, 0, 0}, 0}}).error().message().find("sum to 0") != std::string::npos);
   CHECK_FALSE(normalized_proportions({{{1.5f, 0, 0}, 1}}).ok());
   CHECK_FALSE(normalized_proportions({{{0, 0, 0}, std::nan("")}}).ok());
+  // finite weights whose sum overflows are rejected, not normalized to 0 / inf = 0 each
+  auto big = normalized_proportions({{{0, 0, 0}, 1e308}, {{1, 1, 1}, 1e308}});
+  REQUIRE_FALSE(big.ok());
+  CHECK(big.error().code() == status_code::invalid_argument);
+  CHECK(big.error().message().find("inf") != std::string::npos);
+  CHECK_FALSE(parse_palette("#000000:1e308,#ffffff:1e308").ok());
 }
 
 TEST_CASE("source images reproduce the palette proportions", "[source_image]") {

@@ -2,6 +2,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <limits>
+
 #include <tessera/core/image_buffer.hpp>
 #include <tessera/fabric/cat_map.hpp>
 #include <tessera/image/exemplars.hpp>
@@ -70,4 +72,24 @@ TEST_CASE("tone measurements reject bad input", "[tone_proportions]") {
   CHECK(dominant_tones(img, 0).error().message().find("k must be >= 1, got 0") != std::string::npos);
   CHECK_FALSE(dominant_tones(empty, 2).ok());
   CHECK_FALSE(dominant_tones(img, 2, {.max_iterations = -1}).ok());
+  // a NaN or infinite channel is rejected, naming the pixel (never binned out of bounds or
+  // counted as the first tone)
+  for (const float bad : {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity(),
+                          -std::numeric_limits<float>::infinity()}) {
+    image_buffer<float, 3> hdr(5, 4, {0.2f, 0.3f, 0.4f});
+    hdr.write(3, 2, {0.5f, bad, 0.5f});
+    auto p = tone_proportions(hdr, {{{0, 0, 0}, 1}, {{1, 1, 1}, 1}});
+    REQUIRE_FALSE(p.ok());
+    CHECK(p.error().code() == status_code::invalid_argument);
+    CHECK(p.error().message().find("(3, 2)") != std::string::npos);
+    auto d = dominant_tones(hdr, 2);
+    REQUIRE_FALSE(d.ok());
+    CHECK(d.error().message().find("(3, 2)") != std::string::npos);
+  }
+  // finite HDR values are fine: measured as they are, binned clamped
+  image_buffer<float, 3> bright(4, 4, {4.0f, 4.0f, 4.0f});
+  CHECK((*tone_proportions(bright, {{{0, 0, 0}, 1}, {{1, 1, 1}, 1}}))[1] == 1.0);
+  const auto d = *dominant_tones(bright, 2);
+  REQUIRE(d.size() == 1);
+  CHECK(d[0].color == pixel<float, 3>{1.0f, 1.0f, 1.0f});
 }

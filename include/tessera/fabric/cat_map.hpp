@@ -114,10 +114,11 @@ status run_cat_regions(const I& in, O& out, const cat_map_options& o, const char
   if constexpr (raw_image_v<I> && raw_image_v<O> && std::is_same_v<channel_t<I>, T> && channels_v<I> == C) {
     image_view<const T, C> src = const_view_of(in);
     const image_view<T, C> dst = mutable_view_of(out);
-    if (views_overlap(src, dst)) {  // in place: read from a copy
-      image_buffer<T, C> copy(src.width(), src.height());
-      copy_view<T, C>(src, copy.view());
-      run(copy.cview(), dst);
+    if (views_overlap(src, dst)) {  // in place (or any overlap): read from a copy
+      auto copy = image_buffer<T, C>::create(src.width(), src.height());
+      if (!copy) return status(copy.error().code(), cat(what, ": ", copy.error().message()));
+      copy_view<T, C>(src, copy->view());
+      run(copy->cview(), dst);
     } else {
       run(src, dst);
     }
@@ -125,9 +126,10 @@ status run_cat_regions(const I& in, O& out, const cat_map_options& o, const char
   } else {
     auto src = to_buffer<T, C>(in, "input");
     if (!src) return src.error();
-    image_buffer<T, C> dst(src->width(), src->height());
-    run(src->cview(), dst.view());
-    return copy_image(dst, out);
+    auto dst = image_buffer<T, C>::create(src->width(), src->height());
+    if (!dst) return status(dst.error().code(), cat(what, ": ", dst.error().message()));
+    run(src->cview(), dst->view());
+    return copy_image(*dst, out);
   }
 }
 
@@ -170,8 +172,9 @@ template <Image I, Executor E = serial_executor>
                                                                          const cat_map_options& options = {},
                                                                          E&& exec = {}) {
   if (auto s = validate_image(in, "input"); !s) return status(s.code(), detail::cat("cat_map: ", s.message()));
-  image_buffer<channel_t<I>, channels_v<I>> out(width_of(in), height_of(in));
-  if (auto s = cat_map(in, out, steps, options, exec); !s) return s;
+  auto out = image_buffer<channel_t<I>, channels_v<I>>::create(width_of(in), height_of(in));
+  if (!out) return status(out.error().code(), detail::cat("cat_map: ", out.error().message()));
+  if (auto s = cat_map(in, *out, steps, options, exec); !s) return s;
   return out;
 }
 

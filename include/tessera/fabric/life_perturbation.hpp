@@ -9,12 +9,13 @@
 //
 // counts its live and dead neighbours, and then
 //
-//   lives (brightens):  L' = L + (L_bright - L) r
-//   dies  (darkens):    L' = L_dim + (L - L_dim) r          r uniform in [0, 1]
+//   lives (brightens):  L' = L + (L_bright - L) r          (the two equations of §1.3)
+//   dies  (darkens):    L' = L_dim + (L - L_dim) r
 //
-// with r from counter_rng keyed by (seed, generation, pixel): the generation's key rng.bits(g)
-// drives SplitMix64 indexed by the pixel (detail/life_kernels.hpp, life_random). Generations are
-// synchronous.
+// with r uniform in [0, 1) (the paper: "a random number in [0, 1]"; 24-bit steps, 1 excluded),
+// counter-based and keyed by (seed, generation, pixel): a SplitMix64 key per row of a generation,
+// then a 32-bit hash of the column (detail/life_kernels.hpp, life_random), so it never depends on
+// evaluation order or thread count. Generations are synchronous.
 //
 // Reading of the thresholds. §1.2 states the general rules with three numbers: a cell lives when
 // exactly M neighbours are alive (M = 3), dies when K neighbours are dead (K = 6), and dies of
@@ -33,6 +34,12 @@
 // Hue and saturation are kept exactly: lightness evolves in float, and each output pixel is the
 // input pixel relit from its own L to the final L' (hls.hpp, `relight`), so rounding never
 // accumulates over generations. Alpha is untouched; grey images perturb their single value.
+//
+// 8- and 16-bit images run their first generation in integers (detail/life_int_kernels.hpp): the
+// lightness of a pixel is (max + min) / 2M exactly, neighbour sums and counts are exact integers
+// (SIMD: SSE2, and AVX2 when the machine has it; the output is the same on every machine), and
+// only the pixels whose rule fires draw r and are relit. Later generations and float images use
+// the float kernel (detail/life_kernels.hpp).
 #pragma once
 
 #include <algorithm>
@@ -51,6 +58,7 @@
 #include "../core/progress.hpp"
 #include "../core/random.hpp"
 #include "../core/status.hpp"
+#include "detail/life_int_kernels.hpp"
 #include "detail/life_kernels.hpp"
 #include "detail/square_regions.hpp"
 #include "hls.hpp"
@@ -131,6 +139,55 @@ inline void relight_pixel(const T* in, T* out, float l_old, float l_new) noexcep
   if constexpr (C == 2 || C == 4) out[C - 1] = in[C - 1];
 }
 
+/// Runs the first generation of an 8- or 16-bit image in integers (detail/life_int_kernels.hpp).
+/// With one generation it writes `dst`; with more it writes the lightness after it to `field`.
+template <class T, int C, class E>
+void life_first_generation(image_view<const T, C> src, image_view<T, C> dst, std::vector<float>& field,
+                           const life_perturbation_options& o, const counter_rng& rng, E& exec) {
+  using V = typename life_lane<T>::value;
+  constexpr V low = (V{1} << life_lane<T>::shift) - 1;
+  constexpr float to_unit = 0.5f / static_cast<float>(std::numeric_limits<T>::max());
+  const index_t w = src.width(), h = src.height();
+  const life_int_rule<V> rule{static_cast<V>(o.live_count), static_cast<V>(o.dead_count),
+                              static_cast<V>(o.crowding_count > 0 ? o.crowding_count : 9),
+                              static_cast<V>(std::floor(static_cast<double>(o.threshold) * 2.0 *
+                                                        static_cast<double>(std::numeric_limits<T>::max()))),
+                              o.live_exact, o.live_test == life_test::above_threshold};
+  const life_random random(rng, 0);
+  const bool last = o.generations == 1;
+  // neighbours' rows are read from the image unless one generation is written over it: then from a
+  // plane of q taken first
+  std::vector<V> plane;
+  if (last && views_overlap(src, dst)) {
+    plane.resize(static_cast<std::size_t>((w + 2) * h));
+    exec.parallel_for(0, h, [&](index_t y) { life_q_row<T, C>(src.row(y), w, plane.data() + y * (w + 2)); });
+  }
+  auto emit = [&](index_t y, const V* q, const life_int_scratch<T>& s, std::size_t n) {
+    if (!last) {  // the field after the generation: unchanged pixels keep pixel_lightness exactly
+      float* l = field.data() + y * w;
+      for (index_t x = 0; x < w; ++x) l[x] = static_cast<float>(q[x + 1] & low) * to_unit;
+      for (std::size_t i = 0; i < n; ++i) l[s.fired[i]] = s.lq[i] * to_unit;
+      return;
+    }
+    const T* in = src.row(y);
+    T* out = dst.row(y);
+    if (in != out) std::memcpy(out, in, sizeof(T) * static_cast<std::size_t>(w * C));
+    life_int_relight_row<T, C>(in, out, s, n);
+  };
+  constexpr index_t band = 32;
+  exec.parallel_for(0, (h + band - 1) / band, [&](index_t b) {
+    life_int_scratch<T> scratch(w);
+    const index_t y0 = b * band, y1 = std::min(h, (b + 1) * band);
+    if (plane.empty()) {
+      life_int_band<T>(w, h, y0, y1, rule, random, scratch, [&](index_t y, V* row) { life_q_row<T, C>(src.row(y), w, row); }, emit);
+    } else {
+      life_int_band<T>(w, h, y0, y1, rule, random, scratch, [&](index_t y, V* row) {
+        std::memcpy(row, plane.data() + y * (w + 2), sizeof(V) * static_cast<std::size_t>(w + 2));
+      }, emit);
+    }
+  });
+}
+
 /// The perturbation on packed views of one format. `src` and `dst` may be the same memory.
 template <class T, int C, class E>
 status life_views(image_view<const T, C> src, image_view<T, C> dst, const life_perturbation_options& o, E& exec) {
@@ -139,10 +196,32 @@ status life_views(image_view<const T, C> src, image_view<T, C> dst, const life_p
     if (src.data() != dst.data()) copy_view<T, C>(src, dst);
     return {};
   }
+  // in place (the same rows) is handled below; views that overlap otherwise read from a copy
+  if (views_overlap(src, dst) && (src.data() != dst.data() || src.stride() != dst.stride())) {
+    auto copy = image_buffer<T, C>::create(w, h);
+    if (!copy) return copy.error();
+    copy_view<T, C>(src, copy->view());
+    return life_views<T, C>(copy->cview(), dst, o, exec);
+  }
   const life_rule rule{o.live_count, o.live_exact, o.dead_count, o.crowding_count,
                        o.live_test == life_test::above_threshold, o.threshold};
   const counter_rng rng(o.seed, stream_id("fabric.life"));
-  // lightness of the input: computed on the fly for one generation into a separate output (bands
+  std::vector<float> cur, next;
+  int first = 0;  // the first generation done in float
+  if constexpr (std::is_integral_v<T>) {
+    if (w < (index_t{1} << 31)) {  // (column indices are 32-bit there; wider rows take the float path)
+      if (!o.progress.report(0.0, "life_perturbation")) return status::cancelled();
+      if (o.generations > 1) cur.resize(static_cast<std::size_t>(w * h));
+      life_first_generation<T, C>(src, dst, cur, o, rng, exec);
+      if (o.generations == 1) {
+        o.progress.report(1.0, "life_perturbation");
+        return {};
+      }
+      first = 1;
+      next.resize(cur.size());
+    }
+  }
+  // float images: lightness computed on the fly for one generation into a separate output (bands
   // read their neighbours' rows), else kept in a float field
   auto fill_from_image = [&](index_t y, float* padded) {
     const T* p = src.row(y);
@@ -151,8 +230,7 @@ status life_views(image_view<const T, C> src, image_view<T, C> dst, const life_p
     padded[w + 1] = padded[1];
   };
   const bool on_the_fly = o.generations == 1 && !views_overlap(src, dst);
-  std::vector<float> cur, next;
-  if (!on_the_fly) {
+  if (!on_the_fly && cur.empty()) {
     cur.resize(static_cast<std::size_t>(w * h));
     if (o.generations > 1) next.resize(cur.size());
     exec.parallel_for(0, h, [&](index_t y) {
@@ -164,7 +242,7 @@ status life_views(image_view<const T, C> src, image_view<T, C> dst, const life_p
   auto fill_from_field = [&](index_t y, float* padded) { pad_row(cur.data() + y * w, w, padded); };
   constexpr index_t band = 16;
   const index_t bands = (h + band - 1) / band;
-  for (int g = 0; g < o.generations; ++g) {
+  for (int g = first; g < o.generations; ++g) {
     if (!o.progress.report(static_cast<double>(g) / o.generations, "life_perturbation")) return status::cancelled();
     const life_random random(rng, static_cast<std::uint64_t>(g));
     const bool last = g + 1 == o.generations;

@@ -35,11 +35,22 @@
 
 TESSERA_NAMESPACE_BEGIN
 
+/// How make_fabric(source, out) reads a source image that is not already the N x N square it maps
+/// (the counterpart of cat_map_options::non_square).
+enum class source_fit {
+  reject,           ///< invalid_argument unless the source is N x N (default: nothing is cut or repeated silently)
+  centered_square,  ///< map the source's largest centred square at its own side S = min(width, height)
+                    ///< (tile_size must be 0 or S); the periodic result tiles the output without seams
+  crop_or_repeat    ///< an N x N window: centred where the source is larger, the source repeated from its
+                    ///< top-left corner where it is smaller (seams where the source does not tile)
+};
+
 struct fabric_options {
   std::int64_t iterations = 60;  ///< cat-map steps n (negative: inverse map)
   cat_map_family family = {};    ///< [1 a; b ab+1]; a = b = 1 is the paper's map
   life_perturbation_options perturbation = {.generations = 0};  ///< generations > 0 perturbs (tweed)
   index_t tile_size = 0;  ///< side N of the periodic square; 0 = max(width, height) of the output
+  source_fit fit = source_fit::reject;  ///< a source image that is not N x N (make_fabric(source, ...) only)
   tessera::progress progress = {};  ///< stages "source", "cat_map", "perturbation"; may cancel
 };
 
@@ -55,7 +66,9 @@ inline status check_fabric_size(index_t w, index_t h, int channels, const fabric
 template <class T, int C, WritableImage O, class E>
 status finish_fabric(image_buffer<T, C>& square, O& out, const fabric_options& o, E& exec) {
   if (!o.progress.report(0.1, "cat_map")) return status::cancelled();
-  image_buffer<T, C> mapped(square.width(), square.height());
+  auto made = image_buffer<T, C>::create(square.width(), square.height());
+  if (!made) return made.error();
+  image_buffer<T, C>& mapped = *made;
   if (auto s = cat_map(square, mapped, o.iterations, {.family = o.family}, exec); !s) return s;
   if (o.perturbation.generations > 0) {
     life_perturbation_options p = o.perturbation;
@@ -75,26 +88,52 @@ status finish_fabric(image_buffer<T, C>& square, O& out, const fabric_options& o
 }
 }  // namespace detail
 
-/// Makes a fabric from any source image (paper 001 §1.3, "existing image material"): an N x N square
-/// is read from the source (centred when the source is larger, repeated when smaller), mapped by
-/// options.iterations cat-map steps, optionally perturbed, and tiled over `out`.
+/// Makes a fabric from any source image (paper 001 §1.3, "existing image material"): the N x N
+/// square it maps is read from the source as options.fit says (by default the source must be
+/// N x N already), mapped by options.iterations cat-map steps, optionally perturbed, and tiled over
+/// `out`. N is options.tile_size, else the larger side of `out`; with fit = centered_square it is
+/// the smaller side of the source.
 /// Parameters: source (any Image), out (any WritableImage, any size), options, exec (parallel rows).
-/// Errors: invalid_argument for empty images or options out of range (see cat_map and
-/// life_perturbation); cancelled when options.progress asks. Complexity O(N^2 (1 + generations) +
-/// W H). Output is a pure function of (source, options), identical for every executor.
+/// Errors: invalid_argument for empty images, a source that does not fit (naming both sizes and
+/// the options that would accept it), or options out of range (see cat_map and life_perturbation);
+/// size_overflow when the square cannot be allocated; cancelled when options.progress asks.
+/// Complexity O(N^2 (1 + generations) + W H). Output is a pure function of (source, options),
+/// identical for every executor.
 template <Image S, WritableImage O, Executor E = serial_executor>
 [[nodiscard]] status make_fabric(const S& source, O& out, const fabric_options& options = {}, E&& exec = {}) {
   if (auto s = validate_image(source, "make_fabric: source"); !s) return s;
   if (auto s = validate_image(out, "make_fabric: output"); !s) return s;
   if (auto s = detail::check_life_options(options.perturbation); !s) return s;
+  const index_t sw = width_of(source), sh = height_of(source);
   index_t n = 0;
-  if (auto s = detail::check_fabric_size(width_of(out), height_of(out), channels_v<O>, options, n); !s) return s;
+  switch (options.fit) {
+    case source_fit::reject:
+    case source_fit::crop_or_repeat:
+      if (auto s = detail::check_fabric_size(width_of(out), height_of(out), channels_v<O>, options, n); !s) return s;
+      if (options.fit == source_fit::reject && (sw != n || sh != n))
+        return status::invalid_argument(detail::cat(
+            "make_fabric: the source is ", sw, " x ", sh, " but the fabric square is ", n, " x ", n,
+            " (options.tile_size, or the larger side of the output); give a square source of that size, or set "
+            "options.fit to centered_square (map the source's largest centred square and tile it) or crop_or_repeat"));
+      break;
+    case source_fit::centered_square: {
+      n = std::min(sw, sh);
+      if (options.tile_size != 0 && options.tile_size != n)
+        return status::invalid_argument(detail::cat("make_fabric: options.fit = centered_square maps the source's largest "
+                                                    "centred square at its own side ", n, "; options.tile_size must be 0 or ",
+                                                    n, ", got ", options.tile_size));
+      break;
+    }
+    default:
+      return status::invalid_argument(detail::cat("make_fabric: options.fit has an unknown value ", static_cast<int>(options.fit)));
+  }
   if (!options.progress.report(0.0, "source")) return status::cancelled();
   using T = channel_t<O>;
   constexpr int C = channels_v<O>;
-  const index_t sw = width_of(source), sh = height_of(source);
   const index_t ox = std::max<index_t>(0, (sw - n) / 2), oy = std::max<index_t>(0, (sh - n) / 2);
-  image_buffer<T, C> square(n, n);
+  auto made = image_buffer<T, C>::create(n, n);
+  if (!made) return made.error();
+  image_buffer<T, C>& square = *made;
   for (index_t y = 0; y < n; ++y)
     for (index_t x = 0; x < n; ++x)
       square.write(x, y, convert_pixel<pixel<T, C>>(image_traits<S>::read(source, (x + ox) % sw, (y + oy) % sh)));
@@ -112,8 +151,10 @@ template <WritableImage O, Executor E = serial_executor>
   index_t n = 0;
   if (auto s = detail::check_fabric_size(width_of(out), height_of(out), channels_v<O>, options, n); !s) return s;
   if (!options.progress.report(0.0, "source")) return status::cancelled();
-  image_buffer<channel_t<O>, channels_v<O>> square(n, n);
-  if (auto s = make_source_image(square, tones, source); !s) return s;
+  auto made = image_buffer<channel_t<O>, channels_v<O>>::create(n, n);
+  if (!made) return made.error();
+  if (auto s = make_source_image(*made, tones, source); !s) return s;
+  auto& square = *made;
   return detail::finish_fabric(square, out, options, exec);
 }
 
@@ -123,9 +164,11 @@ enum class fabric_preset { flannel, twill, linen, tweed };
 inline constexpr std::array<fabric_preset, 4> all_fabric_presets = {fabric_preset::flannel, fabric_preset::twill,
                                                                     fabric_preset::linen, fabric_preset::tweed};
 
+/// The preset's name ("flannel", "twill", "linen", "tweed"); "unknown" for a value outside the enum.
 constexpr std::string_view to_string(fabric_preset p) noexcept {
   constexpr std::array<std::string_view, 4> names = {"flannel", "twill", "linen", "tweed"};
-  return names[static_cast<std::size_t>(p)];
+  const auto i = static_cast<std::size_t>(p);  // a negative value wraps to a huge index
+  return i < names.size() ? names[i] : std::string_view("unknown");
 }
 
 /// Parses a preset name; invalid_argument lists the valid ones.
@@ -187,6 +230,8 @@ struct fabric_preset_options {
 template <WritableImage O, Executor E = serial_executor>
 [[nodiscard]] status make_fabric(fabric_preset preset, O& out, const fabric_preset_options& options = {}, E&& exec = {}) {
   if (auto s = validate_image(out, "make_fabric: output"); !s) return s;
+  if (to_string(preset) == "unknown")
+    return status::invalid_argument(detail::cat("make_fabric: unknown preset value ", static_cast<int>(preset)));
   fabric_recipe r = fabric_preset_recipe(preset, options.seed);
   r.options.tile_size = options.tile_size;
   r.options.progress = options.progress;

@@ -60,7 +60,7 @@ struct source_image_options {
 
 /// Checks a palette and returns its proportions normalized to sum to 1. Errors (invalid_argument,
 /// naming the entry): an empty palette, a colour channel outside [0, 1] or NaN, a negative or
-/// non-finite proportion, or proportions summing to 0. Thread-safe.
+/// non-finite proportion, or proportions summing to 0 or overflowing to infinity. Thread-safe.
 inline result<std::vector<double>> normalized_proportions(const palette& tones) {
   if (tones.empty()) return status::invalid_argument("palette: it is empty; give at least one tone");
   double sum = 0;
@@ -74,6 +74,9 @@ inline result<std::vector<double>> normalized_proportions(const palette& tones) 
     sum += p;
   }
   if (!(sum > 0.0)) return status::invalid_argument("palette: the proportions sum to 0");
+  if (!std::isfinite(sum))
+    return status::invalid_argument(detail::cat("palette: the proportions sum to ", sum,
+                                                " (overflow); give relative weights of a sane size"));
   std::vector<double> out;
   for (const tone& t : tones) out.push_back(t.proportion / sum);
   return out;

@@ -9,13 +9,18 @@
 //   dominant_tones(img, k)          k-means in RGB: the k dominant colours and their shares, found
 //                                   without a palette (for example from a scanned fabric).
 //
-// Since the cat map only permutes pixels, both are invariant under it.
+// Since the cat map only permutes pixels, both are invariant under it. Float images may hold HDR
+// values: tone_proportions measures distances to them as they are, dominant_tones bins them clamped
+// to [0, 1]. A pixel with a NaN or infinite channel is rejected (invalid_argument naming it), never
+// counted as some tone.
 #pragma once
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 #include "../core/config.hpp"
@@ -27,11 +32,27 @@
 
 TESSERA_NAMESPACE_BEGIN
 
+namespace detail {
+/// Pixel (x, y) as RGB in [0, 1] (HDR float values kept), or a status naming it when a channel the
+/// tone measurements read is NaN or infinite.
+template <Image I>
+result<unit_rgba> tone_pixel(const I& img, index_t x, index_t y, const char* what) {
+  const unit_rgba q = to_unit_rgba(image_traits<I>::read(img, x, y));
+  if constexpr (std::is_floating_point_v<channel_t<I>>) {
+    for (const float v : {q.r, q.g, q.b})
+      if (!std::isfinite(v))
+        return status::invalid_argument(cat(what, ": image pixel (", x, ", ", y, ") has a non-finite channel ", v,
+                                            "; tones are measured on finite colours only"));
+  }
+  return q;
+}
+}  // namespace detail
+
 /// For each palette tone, the fraction of the image's pixels nearest to it (Euclidean distance in
 /// RGB [0, 1]; grey images are compared as grey RGB; alpha is ignored; ties go to the smaller index).
 /// The fractions sum to 1. The palette's own proportions are not used, only validated.
-/// Errors: invalid_argument for an empty image or an invalid palette. Complexity O(W H k).
-/// Thread-safe.
+/// Errors: invalid_argument for an empty image, an invalid palette, or a pixel with a NaN or
+/// infinite channel (named with its coordinates). Complexity O(W H k). Thread-safe.
 template <Image I>
 [[nodiscard]] result<std::vector<double>> tone_proportions(const I& img, const palette& tones) {
   if (auto s = validate_image(img, "tone_proportions: image"); !s) return s;
@@ -40,7 +61,9 @@ template <Image I>
   const index_t w = width_of(img), h = height_of(img);
   for (index_t y = 0; y < h; ++y)
     for (index_t x = 0; x < w; ++x) {
-      const detail::unit_rgba q = detail::to_unit_rgba(image_traits<I>::read(img, x, y));
+      const auto px = detail::tone_pixel(img, x, y, "tone_proportions");
+      if (!px) return px.error();
+      const detail::unit_rgba q = *px;
       std::size_t best = 0;
       float best_d = std::numeric_limits<float>::max();
       for (std::size_t t = 0; t < tones.size(); ++t) {
@@ -63,8 +86,10 @@ struct dominant_tones_options {
 /// sorted by decreasing share. Pixels are first binned on a 32^3 colour grid (keeping each bin's
 /// exact mean colour), so the cost does not grow with the image beyond one pass; centres start by
 /// seeded k-means++ and follow Lloyd's iterations. Fewer than k tones are returned when the image
-/// has fewer distinct colour bins. Deterministic for a given seed.
-/// Errors: invalid_argument for an empty image, k < 1 or max_iterations < 0.
+/// has fewer distinct colour bins. Deterministic for a given seed. HDR float values are binned
+/// clamped to [0, 1] (the reported colours are means of the clamped values).
+/// Errors: invalid_argument for an empty image, k < 1, max_iterations < 0, or a pixel with a NaN or
+/// infinite channel (named with its coordinates).
 /// Complexity O(W H + B k iterations), B <= 32768 bins. Thread-safe.
 template <Image I>
 [[nodiscard]] result<palette> dominant_tones(const I& img, int k, const dominant_tones_options& options = {}) {
@@ -79,11 +104,13 @@ template <Image I>
   const index_t w = width_of(img), h = height_of(img);
   for (index_t y = 0; y < h; ++y)
     for (index_t x = 0; x < w; ++x) {
-      const detail::unit_rgba q = detail::to_unit_rgba(image_traits<I>::read(img, x, y));
-      auto b5 = [](float v) { return std::min(31, static_cast<int>(std::clamp(v, 0.0f, 1.0f) * 32.0f)); };
-      const auto bin = static_cast<std::size_t>((b5(q.r) << 10) | (b5(q.g) << 5) | b5(q.b));
+      const auto px = detail::tone_pixel(img, x, y, "dominant_tones");
+      if (!px) return px.error();
+      const float r = std::clamp(px->r, 0.0f, 1.0f), g = std::clamp(px->g, 0.0f, 1.0f), b = std::clamp(px->b, 0.0f, 1.0f);
+      auto b5 = [](float v) { return std::min(31, static_cast<int>(v * 32.0f)); };
+      const auto bin = static_cast<std::size_t>((b5(r) << 10) | (b5(g) << 5) | b5(b));
       bin_w[bin] += 1;
-      bin_sum[bin][0] += q.r, bin_sum[bin][1] += q.g, bin_sum[bin][2] += q.b;
+      bin_sum[bin][0] += r, bin_sum[bin][1] += g, bin_sum[bin][2] += b;
     }
   std::vector<vec> pts;
   std::vector<double> wt;
