@@ -288,10 +288,14 @@ struct patch_model_builder {
       }
     }
 
-    // step 4 (optional): a minimum-error seam per compatible pair
-    for (int si = 0; si < 4 && opts.seams; ++si) {
-      m.seams_[si] = seam_table(m.exemplar_, g, k, si, m.compat_[si], exec);
-      if (!opts.progress.report(0.85 + 0.15 * (si + 1) / 4.0, "patch model: seams")) return status::cancelled();
+    // step 4 (optional): a minimum-error seam per compatible pair; east and south first, so that west
+    // and north copy the seams of mirrored pairs
+    constexpr int seam_order[4] = {1, 2, 3, 0};
+    for (int i = 0; i < 4 && opts.seams; ++i) {
+      const int si = seam_order[i], mirror = i < 2 ? -1 : seam_order[i - 2];
+      m.seams_[si] = mirror < 0 ? seam_table(m.exemplar_, g, k, si, m.compat_[si], exec)
+                                : seam_table(m.exemplar_, g, k, si, m.compat_[si], exec, &m.compat_[mirror], &m.seams_[mirror]);
+      if (!opts.progress.report(0.85 + 0.15 * (i + 1) / 4.0, "patch model: seams")) return status::cancelled();
     }
     if (!opts.progress.report(1.0, "patch model")) return status::cancelled();
     return m;

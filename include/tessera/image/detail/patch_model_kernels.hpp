@@ -179,7 +179,7 @@ void propagate_sets(index_t nx, index_t ny, index_t k, std::vector<std::uint32_t
 /// Scratch buffers of min_error_seam, reused between calls.
 struct seam_scratch {
   std::vector<double> err;   ///< len x v squared differences
-  std::vector<double> cost;  ///< len x v cumulative path costs
+  std::vector<double> cost;  ///< len x (v + 2) cumulative path costs
 };
 
 /// Squared difference of n consecutive pixels of two rows, pixel by pixel, into out[i * step]: exact
@@ -217,34 +217,35 @@ template <class T, int C>
 void min_error_seam(const image_buffer<T, C>& img, index_t lx, index_t ly, index_t rx, index_t ry, index_t offset, index_t v,
                     index_t len, bool transpose, std::uint8_t* cut, seam_scratch& scratch) {
   scratch.err.resize(static_cast<std::size_t>(len * v));
-  scratch.cost.resize(static_cast<std::size_t>(len * v));
   double* e = scratch.err.data();
   if (!transpose) {
     for (index_t r = 0; r < len; ++r) pixel_errors<T, C>(img.pixel_ptr(lx + offset, ly + r), img.pixel_ptr(rx, ry + r), v, e + r * v, 1);
   } else {  // overlap row c of the upper patch against row c of the lower one, along `len` columns
     for (index_t c = 0; c < v; ++c) pixel_errors<T, C>(img.pixel_ptr(lx, ly + offset + c), img.pixel_ptr(rx, ry + c), len, e + c, v);
   }
+  // cumulative costs in rows of v + 2 with +infinity at both ends, so the three-way minimum has no
+  // branches and vectorizes
+  const index_t stride = v + 2;
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  scratch.cost.resize(static_cast<std::size_t>(len * stride));
   double* m = scratch.cost.data();
-  for (index_t c = 0; c < v; ++c) m[c] = e[c];
+  for (index_t r = 0; r < len; ++r) m[r * stride] = m[r * stride + v + 1] = inf;
+  for (index_t c = 0; c < v; ++c) m[c + 1] = e[c];
   for (index_t r = 1; r < len; ++r) {
-    const double* up = m + (r - 1) * v;
-    double* row = m + r * v;
+    const double* up = m + (r - 1) * stride + 1;
+    double* row = m + r * stride + 1;
     const double* er = e + r * v;
-    for (index_t c = 0; c < v; ++c) {
-      double best = up[c];
-      if (c > 0) best = std::min(best, up[c - 1]);
-      if (c + 1 < v) best = std::min(best, up[c + 1]);
-      row[c] = er[c] + best;
-    }
+    for (index_t c = 0; c < v; ++c) row[c] = er[c] + std::min(std::min(up[c - 1], up[c]), up[c + 1]);
   }
+  auto at = [&](index_t r, index_t c) { return m[r * stride + c + 1]; };
   index_t c = 0;
   for (index_t k = 1; k < v; ++k)
-    if (m[(len - 1) * v + k] < m[(len - 1) * v + c]) c = k;
+    if (at(len - 1, k) < at(len - 1, c)) c = k;
   cut[len - 1] = static_cast<std::uint8_t>(c);
   for (index_t r = len - 1; r > 0; --r) {
     index_t next = c;
     for (index_t k = std::max<index_t>(0, c - 1); k <= std::min(v - 1, c + 1); ++k)
-      if (m[(r - 1) * v + k] < m[(r - 1) * v + next] || (m[(r - 1) * v + k] == m[(r - 1) * v + next] && k < next)) next = k;
+      if (at(r - 1, k) < at(r - 1, next) || (at(r - 1, k) == at(r - 1, next) && k < next)) next = k;
     c = next;
     cut[r - 1] = static_cast<std::uint8_t>(c);
   }

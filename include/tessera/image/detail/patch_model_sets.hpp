@@ -168,10 +168,14 @@ std::vector<side_sets> compatible_sets(const image_buffer<T, C>& ex, const patch
 }
 
 /// The minimum-error seam of every compatible pair of one side (`ids`: k per patch), oriented from the
-/// left (top) patch to the right (bottom) one; `len` bytes per seam (min_error_seam).
+/// left (top) patch to the right (bottom) one; `len` bytes per seam (min_error_seam). For the west and
+/// north sides, `mirror_ids` and `mirror_seams` may give the finished east (south) table: a pair whose
+/// mirror is in it (b west of a, with a in b's east set) has the same seam, copied instead of computed.
 template <class T, int C, class Ex>
 std::vector<std::uint8_t> seam_table(const image_buffer<T, C>& ex, const patch_geometry& g, index_t k, int side,
-                                     const std::vector<std::uint32_t>& ids, Ex&& exec) {
+                                     const std::vector<std::uint32_t>& ids, Ex&& exec,
+                                     const std::vector<std::uint32_t>* mirror_ids = nullptr,
+                                     const std::vector<std::uint8_t>* mirror_seams = nullptr) {
   const bool vert = side == 1 || side == 3, a_first = side == 1 || side == 2;
   const index_t len = vert ? g.ph + g.v : g.pw + g.v;
   std::vector<std::uint8_t> seams(static_cast<std::size_t>(g.nx * g.ny * k * len), 0);
@@ -181,9 +185,18 @@ std::vector<std::uint8_t> seam_table(const image_buffer<T, C>& ex, const patch_g
       const index_t a = y * g.nx + x;
       for (index_t r = 0; r < k; ++r) {
         const index_t b = ids[static_cast<std::size_t>(a * k + r)];
+        std::uint8_t* out = seams.data() + (a * k + r) * len;
+        if (mirror_ids != nullptr && !a_first) {
+          const std::uint32_t* set = mirror_ids->data() + b * k;
+          const std::uint32_t* hit = std::find(set, set + k, static_cast<std::uint32_t>(a));
+          if (hit != set + k) {
+            const std::uint8_t* from = mirror_seams->data() + (b * k + (hit - set)) * len;
+            std::copy(from, from + len, out);
+            continue;
+          }
+        }
         const index_t first = a_first ? a : b, second = a_first ? b : a;
-        min_error_seam(ex, g.x(first), g.y(first), g.x(second), g.y(second), vert ? g.pw : g.ph, g.v, len, !vert,
-                       seams.data() + (a * k + r) * len, scratch);
+        min_error_seam(ex, g.x(first), g.y(first), g.x(second), g.y(second), vert ? g.pw : g.ph, g.v, len, !vert, out, scratch);
       }
     }
   });
