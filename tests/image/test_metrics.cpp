@@ -223,7 +223,7 @@ TEST_CASE("histogram_distance: identities and bounds", "[metrics]") {
   CHECK(!tessera::histogram_distance(empty, a));
 }
 
-TEST_CASE("repetition_score: tiled images repeat, noise does not; matches brute force", "[metrics]") {
+TEST_CASE("repetition_score: tiled images repeat, noise does not, and the score matches brute force", "[metrics]") {
   const auto tile = exemplar(tessera::exemplar_kind::rock, 24);
   tessera::image_buffer<std::uint8_t, 3> tiled(48, 48);
   for (index_t y = 0; y < 48; ++y)

@@ -80,7 +80,7 @@ TEST_CASE("synthesize: windows of the infinite texture are bit-identical to one 
   }
 }
 
-TEST_CASE("synthesize: bit-identical for any executor and thread count; seeded", "[patch_synthesis]") {
+TEST_CASE("synthesize: bit-identical for any executor and thread count, and seeded", "[patch_synthesis]") {
   const auto& m = bricks_model();
   for (seam_mode mode : {seam_mode::feather, seam_mode::cut}) {
     tessera::image_buffer<std::uint8_t, 3> a(150, 97), b(150, 97), c(150, 97), d(150, 97);
