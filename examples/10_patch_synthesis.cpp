@@ -4,7 +4,8 @@
 // Writes into the output directory (default: the current directory):
 //   10_<kind>.png              exemplar (left) and a 320 x 256 synthesized texture (right), per kind
 //   10_bricks_feather_cut.png  bricks: the paper's feathering (left) and seam cuts (right), enlarged 2x
-//   10_<kind>_measures.png     the patch-size measures over candidate shapes (heat maps, see docs)
+//   10_{bricks,grass}_{containment,periodicity,alignment}.png
+//                              the patch-size measures over candidate shapes (heat maps, see docs)
 // and prints the chosen sizes, the quality figures and the measures as a table.
 #include <algorithm>
 #include <cmath>

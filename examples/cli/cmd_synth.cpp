@@ -3,6 +3,7 @@
 //                 [--overlap V] [--seams feather|cut] [--window X,Y,W,H] [--source-map M.png]
 //                 [--repeat N] [--stats]
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -22,6 +23,8 @@ using tessera::index_t;
 using tessera::status;
 
 inline constexpr index_t max_side = 32768;
+inline constexpr index_t max_pixels = index_t{1} << 28;
+inline constexpr double max_origin = 4503599627370496.0;  // 2^52, tessera::max_texture_coordinate
 
 struct synth_request {
   std::string exemplar, out, source_map;
@@ -45,33 +48,36 @@ tessera::result<synth_request> parse(const cli::arguments& args) {
     auto w = args.numbers("--window", 4);
     if (!w) return w.error();
     const auto& v = *w;
+    // range first, then integrality, then the cast (a double outside index_t's range must never be
+    // cast): the origin within the texture plane's +-2^52, the size within the output limit
+    const auto window_error = [&](const char* why) {
+      return status::invalid_argument(std::string("--window expects integers X,Y,W,H with ") + why + ", got '" +
+                                      args.str("--window") + "'");
+    };
     for (double d : v)
-      if (d != static_cast<double>(static_cast<index_t>(d)) || std::abs(d) > 9.0e15)
-        return status::invalid_argument("--window expects integers X,Y,W,H, got '" + args.str("--window") + "'");
+      if (d != std::floor(d)) return window_error("no fractions");
+    if (std::abs(v[0]) > max_origin || std::abs(v[1]) > max_origin)
+      return window_error("|X| and |Y| at most 2^52 (the texture plane)");
+    if (!(v[2] >= 1 && v[3] >= 1) || v[2] > double(max_side) || v[3] > double(max_side) || v[2] * v[3] > double(max_pixels))
+      return window_error(("W and H in [1, " + std::to_string(max_side) + "] and W x H at most 2^28").c_str());
     r.origin = {static_cast<index_t>(v[0]), static_cast<index_t>(v[1])};
     r.width = static_cast<index_t>(v[2]);
     r.height = static_cast<index_t>(v[3]);
-    if (r.width <= 0 || r.height <= 0)
-      return status::invalid_argument("--window needs a positive width and height, got '" + args.str("--window") + "'");
   } else {
-    auto size = args.size("--size");
+    auto size = args.size("--size", max_side, max_pixels);
     if (!args.has("--size")) return status::invalid_argument("missing required option --size (or --window)");
     if (!size) return size.error();
     r.width = size->first;
     r.height = size->second;
   }
-  if (r.width > max_side || r.height > max_side)
-    return status::invalid_argument("output is limited to " + std::to_string(max_side) + " pixels a side, got " +
-                                    std::to_string(r.width) + " x " + std::to_string(r.height));
   if (args.has("--patch")) {
     auto p = args.size("--patch");
     if (!p) return p.error();
     r.patch_w = p->first;
     r.patch_h = p->second;
   }
-  auto overlap = args.integer("--overlap", 0);
+  auto overlap = args.integer("--overlap", 0, 0, max_side);  // 0: automatic; the model checks the fit
   if (!overlap) return overlap.error();
-  if (*overlap < 0) return status::invalid_argument("--overlap must be >= 0 (0: automatic), got " + args.str("--overlap"));
   r.overlap = static_cast<index_t>(*overlap);
   const std::string seams = args.str("--seams", "feather");
   if (seams == "cut") r.seams = tessera::seam_mode::cut;
@@ -79,9 +85,7 @@ tessera::result<synth_request> parse(const cli::arguments& args) {
   r.seed = args.seed();  // --seed, --threads and --repeat were checked by main (check_common)
   r.threads = args.threads();
   r.repeat = args.repeat();
-  auto es = args.integer("--exemplar-size", 128);
-  if (!es || *es < 8 || *es > 4096)
-    return status::invalid_argument("--exemplar-size expects 8 to 4096, got '" + args.str("--exemplar-size") + "'");
+  if (auto es = args.integer("--exemplar-size", 128, 8, 4096); !es) return es.error();
   r.source_map = args.str("--source-map");
   r.stats = args.stats();
   return r;

@@ -1,43 +1,65 @@
 # tessera synth: outputs, --stats keys, windows, source maps, seam cuts and the documented bad inputs.
-set(_t $<TARGET_FILE:tessera_cli>)
+# Every test checks the exit code and the output (tessera_cli_test, tests/CMakeLists.txt).
 set(_o ${TESSERA_CLI_OUT}/synth)
 file(MAKE_DIRECTORY ${_o})
 set(_num "[0-9.e+-]+")
 
-# tessera_synth_cli_bad(NAME EXPECT ARGS...): the command exits with 1 and prints EXPECT
-function(tessera_synth_cli_bad name expect)
-  add_test(NAME "cli: ${name} fails" COMMAND ${_t} ${ARGN})
-  set_tests_properties("cli: ${name} fails" PROPERTIES WILL_FAIL TRUE)
-  add_test(NAME "cli: ${name} explains" COMMAND ${_t} ${ARGN})
-  set_tests_properties("cli: ${name} explains" PROPERTIES PASS_REGULAR_EXPRESSION "${expect}")
-endfunction()
+tessera_cli_test(NAME "cli: synth with stats"
+  REGEX "^\\{\"command\":\"synth\",\"width\":96,\"height\":80,[^\n]*\"patch\":[0-9]+,[^\n]*\"overlap\":[0-9]+,[^\n]*\"preprocess_ms\":${_num},\"synthesis_ms\":${_num},[^\n]*\"empty_intersections\":[0-9]+,[^\n]*\"neighborhood_energy\":${_num}[^\n]*\\}\n$"
+  COMMAND synth --exemplar sand --exemplar-size 64 --size 96x80 --out ${_o}/sand.png --stats --repeat 3 --threads 2)
+tessera_cli_test(NAME "cli: synth a window with a source map and seam cuts"
+  REGEX "wrote .*bricks_window.png \\(90 x 60, patch 16 x 16, overlap 4"
+  COMMAND synth --exemplar bricks --exemplar-size 64 --window -70,1000000,90,60 --patch 16 --overlap 4 --seams cut
+          --source-map ${_o}/bricks_source.png --out ${_o}/bricks_window.png --seed 9)
+set_tests_properties("cli: synth a window with a source map and seam cuts" PROPERTIES FIXTURES_SETUP synth_window)
+tessera_cli_test(NAME "cli: synth reads its own PNG output as an exemplar"
+  REGEX "\"exemplar_width\":90,\"exemplar_height\":60,\"patch\":12,\"patch_height\":10,\"overlap\":3"
+  COMMAND synth --exemplar ${_o}/bricks_window.png --size 40x30 --patch 12x10 --overlap 3 --out ${_o}/again.png --stats)
+set_tests_properties("cli: synth reads its own PNG output as an exemplar" PROPERTIES FIXTURES_REQUIRED synth_window)
+tessera_cli_test(NAME "cli: synth a window at the edge of the texture plane"
+  REGEX "wrote .*edge.png \\(8 x 8,"
+  COMMAND synth --exemplar sand --exemplar-size 48 --window 4503599627370488,-4503599627370496,8,8 --out ${_o}/edge.png)
+tessera_cli_test(NAME "cli: synth help" REGEX "--window X,Y,W,H" COMMAND synth --help)
 
-add_test(NAME "cli: synth with stats"
-         COMMAND ${_t} synth --exemplar sand --exemplar-size 64 --size 96x80 --out ${_o}/sand.png --stats --repeat 3 --threads 2)
-set_tests_properties("cli: synth with stats" PROPERTIES PASS_REGULAR_EXPRESSION
-  "^\\{\"command\":\"synth\",\"width\":96,\"height\":80,.*\"patch\":[0-9]+,.*\"overlap\":[0-9]+,.*\"preprocess_ms\":${_num},\"synthesis_ms\":${_num},.*\"empty_intersections\":[0-9]+,.*\"neighborhood_energy\":${_num}")
-add_test(NAME "cli: synth a window with a source map and seam cuts"
-         COMMAND ${_t} synth --exemplar bricks --exemplar-size 64 --window -70,1000000,90,60 --patch 16 --overlap 4 --seams cut
-                 --source-map ${_o}/bricks_source.png --out ${_o}/bricks_window.png --seed 9)
-set_tests_properties("cli: synth a window with a source map and seam cuts" PROPERTIES FIXTURES_SETUP synth_window
-  PASS_REGULAR_EXPRESSION "wrote .*bricks_window.png \\(90 x 60, patch 16 x 16, overlap 4")
-add_test(NAME "cli: synth reads its own PNG output as an exemplar"
-         COMMAND ${_t} synth --exemplar ${_o}/bricks_window.png --size 40x30 --patch 12x10 --overlap 3 --out ${_o}/again.png --stats)
-set_tests_properties("cli: synth reads its own PNG output as an exemplar" PROPERTIES FIXTURES_REQUIRED synth_window
-  PASS_REGULAR_EXPRESSION "\"exemplar_width\":90,\"exemplar_height\":60,\"patch\":12,\"patch_height\":10,\"overlap\":3")
-add_test(NAME "cli: synth help" COMMAND ${_t} synth --help)
-set_tests_properties("cli: synth help" PROPERTIES PASS_REGULAR_EXPRESSION "--window X,Y,W,H")
-
-tessera_synth_cli_bad("synth without --size" "missing required option --size" synth --exemplar sand --out ${_o}/bad.png)
-tessera_synth_cli_bad("synth with an empty size" "--size expects" synth --exemplar sand --size 0x10 --out ${_o}/bad.png)
-tessera_synth_cli_bad("synth with an unknown exemplar" "neither a readable file" synth --exemplar nosuch --size 8x8 --out ${_o}/bad.png)
-tessera_synth_cli_bad("synth with patches too large for the exemplar" "do not fit the 48 x 48 exemplar"
-                      synth --exemplar sand --exemplar-size 48 --patch 40 --overlap 10 --size 8x8 --out ${_o}/bad.png)
-tessera_synth_cli_bad("synth with an overlap wider than the patch" "1 <= overlap <= patch side"
-                      synth --exemplar sand --exemplar-size 48 --patch 8 --overlap 9 --size 8x8 --out ${_o}/bad.png)
-tessera_synth_cli_bad("synth with a window off the texture plane" "leaves the supported texture plane"
-                      synth --exemplar sand --exemplar-size 48 --window 4503599627370490,0,8,8 --out ${_o}/bad.png)
-tessera_synth_cli_bad("synth with an unknown seam mode" "--seams expects feather or cut" synth --exemplar sand --size 8x8 --seams zigzag
-                      --out ${_o}/bad.png)
-tessera_synth_cli_bad("synth with a bad window" "--window expects 4 comma-separated numbers" synth --exemplar sand --window 1,2,3
-                      --out ${_o}/bad.png)
+# bad input: exit code 1 and a message naming the option or parameter and the value
+tessera_cli_test(NAME "cli: synth without --size fails" CODE 1 REGEX "tessera synth: .*missing required option --size"
+  COMMAND synth --exemplar sand --out ${_o}/bad.png)
+tessera_cli_test(NAME "cli: synth with an empty size fails" CODE 1 REGEX "--size expects positive integers WxH, got '0x10'"
+  COMMAND synth --exemplar sand --size 0x10 --out ${_o}/bad.png)
+tessera_cli_test(NAME "cli: synth with an oversized output fails" CODE 1 REGEX "--size expects at most 32768 per side"
+  COMMAND synth --exemplar sand --size 40000x8 --out ${_o}/bad.png)
+tessera_cli_test(NAME "cli: synth with an unknown exemplar fails" CODE 1 REGEX "neither a readable file"
+  COMMAND synth --exemplar nosuch --size 8x8 --out ${_o}/bad.png)
+tessera_cli_test(NAME "cli: synth with patches too large for the exemplar fails" CODE 1 REGEX "do not fit the 48 x 48 exemplar"
+  COMMAND synth --exemplar sand --exemplar-size 48 --patch 40 --overlap 10 --size 8x8 --out ${_o}/bad.png)
+tessera_cli_test(NAME "cli: synth with an overlap wider than the patch fails" CODE 1 REGEX "overlap 9 is invalid \\(patch sides >= 2, 1 <= overlap <= patch side\\)"
+  COMMAND synth --exemplar sand --exemplar-size 48 --patch 8 --overlap 9 --size 8x8 --out ${_o}/bad.png)
+tessera_cli_test(NAME "cli: synth with a negative overlap fails" CODE 1 REGEX "--overlap expects an integer in \\[0, 32768\\], got '-2'"
+  COMMAND synth --exemplar sand --exemplar-size 48 --overlap -2 --size 8x8 --out ${_o}/bad.png)
+tessera_cli_test(NAME "cli: synth with a bad exemplar size fails" CODE 1 REGEX "--exemplar-size expects an integer in \\[8, 4096\\], got '5'"
+  COMMAND synth --exemplar sand --exemplar-size 5 --size 8x8 --out ${_o}/bad.png)
+tessera_cli_test(NAME "cli: synth with a window off the texture plane fails" CODE 1
+  REGEX "window at origin \\(4503599627370490, 0\\) of 8 x 8 leaves the supported texture plane"
+  COMMAND synth --exemplar sand --exemplar-size 48 --window 4503599627370490,0,8,8 --out ${_o}/bad.png)
+tessera_cli_test(NAME "cli: synth with a window beyond the index range fails" CODE 1
+  REGEX "--window expects integers X,Y,W,H with \\|X\\| and \\|Y\\| at most 2\\^52 \\(the texture plane\\), got '1e300,0,8,8'"
+  COMMAND synth --exemplar sand --window 1e300,0,8,8 --out ${_o}/bad.png)
+tessera_cli_test(NAME "cli: synth with a window origin past 2^63 fails" CODE 1 REGEX "--window expects integers X,Y,W,H with \\|X\\| and \\|Y\\|"
+  COMMAND synth --exemplar sand --window 0,-9300000000000000000,8,8 --out ${_o}/bad.png)
+tessera_cli_test(NAME "cli: synth with a huge window size fails" CODE 1
+  REGEX "--window expects integers X,Y,W,H with W and H in \\[1, 32768\\] and W x H at most 2\\^28, got '0,0,1e12,8'"
+  COMMAND synth --exemplar sand --window 0,0,1e12,8 --out ${_o}/bad.png)
+tessera_cli_test(NAME "cli: synth with a window too many pixels fails" CODE 1 REGEX "W x H at most 2\\^28, got '0,0,32768,32768'"
+  COMMAND synth --exemplar sand --window 0,0,32768,32768 --out ${_o}/bad.png)
+tessera_cli_test(NAME "cli: synth with a fractional window fails" CODE 1 REGEX "--window expects integers X,Y,W,H with no fractions, got '0.5,0,8,8'"
+  COMMAND synth --exemplar sand --window 0.5,0,8,8 --out ${_o}/bad.png)
+tessera_cli_test(NAME "cli: synth with an empty window fails" CODE 1 REGEX "W and H in \\[1, 32768\\]"
+  COMMAND synth --exemplar sand --window 3,4,0,8 --out ${_o}/bad.png)
+tessera_cli_test(NAME "cli: synth with a non-finite window fails" CODE 1 REGEX "--window expects 4 comma-separated numbers, got 'nan,0,8,8'"
+  COMMAND synth --exemplar sand --window nan,0,8,8 --out ${_o}/bad.png)
+tessera_cli_test(NAME "cli: synth with a bad window fails" CODE 1 REGEX "--window expects 4 comma-separated numbers, got '1,2,3'"
+  COMMAND synth --exemplar sand --window 1,2,3 --out ${_o}/bad.png)
+tessera_cli_test(NAME "cli: synth with an unknown seam mode fails" CODE 1 REGEX "--seams expects feather or cut, got 'zigzag'"
+  COMMAND synth --exemplar sand --size 8x8 --seams zigzag --out ${_o}/bad.png)
+tessera_cli_test(NAME "cli: synth with a bad seed fails" CODE 2 REGEX "--seed expects an integer in \\[0, 2\\^64 - 1\\], got '-3'"
+  COMMAND synth --exemplar sand --size 8x8 --seed -3 --out ${_o}/bad.png)

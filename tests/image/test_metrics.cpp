@@ -109,10 +109,17 @@ TEST_CASE("neighborhood_energy: pixel types and channel conversion", "[metrics]"
   const double e8 = tessera::neighborhood_energy(out8, ex8).value();
   CHECK(tessera::neighborhood_energy(out16, exf).value() == Approx(e8).epsilon(1e-5));
   CHECK(tessera::neighborhood_energy(out8.cview(), exf).value() == Approx(e8).epsilon(1e-5));
-  // a grey output against a colour exemplar: the exemplar is converted to grey
+  // a grey output against a colour exemplar: the exemplar is converted to grey (convert_pixel), so the
+  // energy equals the one against a grey copy of the exemplar, and is 0 against its own source
   tessera::image_buffer<std::uint8_t, 1> grey(24, 24);
+  tessera::image_buffer<float, 1> grey_ex(32, 32);
   REQUIRE(tessera::copy_image(out8, grey).ok());
-  CHECK(tessera::neighborhood_energy(grey, ex8).value() >= 0);
+  REQUIRE(tessera::copy_image(ex8, grey_ex).ok());
+  const double e_grey = tessera::neighborhood_energy(grey, ex8).value();
+  CHECK(e_grey == Approx(tessera::neighborhood_energy(grey, grey_ex).value()).epsilon(1e-6));
+  CHECK(e_grey > 0.01);
+  const auto grey_crop = crop(grey_ex, 4, 3, 20, 20);
+  CHECK(tessera::neighborhood_energy(grey_crop, ex8).value() == Approx(0).margin(1e-6));
 }
 
 TEST_CASE("neighborhood_energy: bad input", "[metrics]") {
@@ -216,7 +223,7 @@ TEST_CASE("histogram_distance: identities and bounds", "[metrics]") {
   CHECK(!tessera::histogram_distance(empty, a));
 }
 
-TEST_CASE("repetition_score: tiled images repeat, noise does not; matches brute force", "[metrics]") {
+TEST_CASE("repetition_score: tiled images repeat, noise does not, and the score matches brute force", "[metrics]") {
   const auto tile = exemplar(tessera::exemplar_kind::rock, 24);
   tessera::image_buffer<std::uint8_t, 3> tiled(48, 48);
   for (index_t y = 0; y < 48; ++y)

@@ -178,11 +178,16 @@ TEST_CASE("patch_model: precomputed seams are minimum-error cuts", "[patch_model
           if (t > 0) CHECK(std::abs(int(seam[t]) - int(seam[t - 1])) <= 1);
           cost += err(static_cast<index_t>(t), seam[t]);
         }
-        for (index_t c = 0; c < 4; ++c) {  // no straight cut is better
-          double straight = 0;
-          for (std::size_t t = 0; t < seam.size(); ++t) straight += err(static_cast<index_t>(t), c);
-          CHECK(cost <= straight + 1e-9);
+        // the cheapest 8-connected path through the overlap, by a dynamic programme of our own
+        std::vector<double> best(4);
+        for (index_t c = 0; c < 4; ++c) best[c] = err(0, c);
+        for (std::size_t t = 1; t < seam.size(); ++t) {
+          std::vector<double> next(4);
+          for (index_t c = 0; c < 4; ++c)
+            next[c] = err(static_cast<index_t>(t), c) + std::min({best[c], best[std::max<index_t>(c - 1, 0)], best[std::min<index_t>(c + 1, 3)]});
+          best = next;
         }
+        CHECK(cost == *std::min_element(best.begin(), best.end()));
       }
   const auto plain = tessera::build_patch_model(ex, {.patch_width = 12, .patch_height = 10, .overlap = 4}).value();
   CHECK(!plain.has_seams());
@@ -258,4 +263,38 @@ TEST_CASE("patch_model: bad input and cancellation", "[patch_model]") {
   tessera::patch_model_options p{.patch_width = 8, .patch_height = 8, .overlap = 2};
   p.progress.callback = [&](double, std::string_view) { return ++calls < 4; };
   CHECK(tessera::build_patch_model(ex, p).error().code() == tessera::status_code::cancelled);
+}
+
+TEST_CASE("patch_model: exact overlap errors on rows longer than 65536 channel values", "[patch_model]") {
+  // 17000 RGBA pixels a row: 68000 squared differences of 255, 4.4e9 in all, more than 32 bits hold
+  tessera::image_buffer<std::uint8_t, 4> wide(17000, 2);
+  for (index_t x = 0; x < 17000; ++x) wide.write(x, 1, {255, 255, 255, 255});
+  const double expected = 68000.0 * 255.0 * 255.0;
+  CHECK(tessera::detail::window_ssd(wide, 0, 0, 0, 1, 17000, 1) == expected);
+  CHECK(tessera::detail::window_ssd(wide, 0, 1, 0, 0, 17000, 1) == expected);
+  CHECK(tessera::detail::window_ssd(wide, 5, 0, 9, 0, 16990, 2) == 0.0);
+  // other channel types agree (16 bits: 257 x the difference)
+  tessera::image_buffer<std::uint16_t, 4> wide16(17000, 2);
+  REQUIRE(tessera::copy_image(wide, wide16).ok());
+  CHECK(tessera::detail::window_ssd(wide16, 0, 0, 0, 1, 17000, 1) == 68000.0 * 65535.0 * 65535.0);
+  // a mixed row against brute force
+  tessera::image_buffer<std::uint8_t, 4> mixed(17000, 2);
+  double brute = 0;
+  for (index_t x = 0; x < 17000; ++x) {
+    const auto a = static_cast<std::uint8_t>((x * 37) % 256), b = static_cast<std::uint8_t>(255 - (x * 11) % 256);
+    mixed.write(x, 0, {a, b, a, b});
+    mixed.write(x, 1, {b, a, 0, 255});
+    brute += 2.0 * (double(a) - b) * (double(a) - b) + double(a) * a + (double(b) - 255) * (double(b) - 255);
+  }
+  CHECK(tessera::detail::window_ssd(mixed, 0, 0, 0, 1, 17000, 1) == brute);
+}
+
+TEST_CASE("patch_model: elongated exemplars", "[patch_model]") {
+  // automatic size on a 256 x 12 strip (the periodicity analysis keeps 8 pixels across)
+  const auto strip = tessera::make_exemplar<std::uint8_t, 3>(tessera::exemplar_kind::bricks, {.width = 256, .height = 12}).value();
+  const auto m = tessera::build_patch_model(strip).value();
+  CHECK(m.patch_height() >= 3);
+  CHECK(m.patch_height() <= 6);
+  CHECK(m.patch_width() <= 6);
+  CHECK(m.num_patches() == (256 - m.patch_width() - m.overlap() + 1) * (12 - m.patch_height() - m.overlap() + 1));
 }

@@ -8,7 +8,6 @@
 #pragma once
 
 #include <algorithm>
-#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -23,9 +22,7 @@
 #include "../core/image_checks.hpp"
 #include "../core/progress.hpp"
 #include "../core/status.hpp"
-#include "detail/fft.hpp"
-#include "detail/nearest.hpp"
-#include "detail/patch_model_kernels.hpp"
+#include "detail/patch_model_sets.hpp"
 #include "patch_size.hpp"
 
 TESSERA_NAMESPACE_BEGIN
@@ -188,14 +185,7 @@ class patch_model {
 
   /// overlap_error, or a partial sum above `bound` once it exceeds `bound`.
   [[nodiscard]] double bounded_error(index_t a, index_t b, patch_side side, double bound) const {
-    const patch_origin A = origin(a), B = origin(b);
-    switch (side) {
-      case patch_side::east: return detail::window_ssd(exemplar_, A.x + pw_, A.y, B.x, B.y, v_, ph_ + v_, bound);
-      case patch_side::west: return detail::window_ssd(exemplar_, B.x + pw_, B.y, A.x, A.y, v_, ph_ + v_, bound);
-      case patch_side::south: return detail::window_ssd(exemplar_, A.x, A.y + ph_, B.x, B.y, pw_ + v_, v_, bound);
-      case patch_side::north: return detail::window_ssd(exemplar_, B.x, B.y + ph_, A.x, A.y, pw_ + v_, v_, bound);
-    }
-    return 0;
+    return detail::strip_error(exemplar_, {pw_, ph_, v_, nx_, ny_}, a, b, static_cast<int>(side), bound);
   }
 
   image_buffer<T, C> exemplar_;
@@ -212,7 +202,8 @@ class patch_model {
 };
 
 namespace detail {
-/// Builds patch models per (channel type, count); friend of patch_model.
+/// Builds patch models per (channel type, count); friend of patch_model. The heavy steps live in
+/// detail/patch_model_sets.hpp.
 struct patch_model_builder {
   template <Channel T, int C, Executor E>
   static result<patch_model<T, C>> build(image_buffer<T, C> ex, const patch_model_options& opts, E&& exec) {
@@ -222,7 +213,7 @@ struct patch_model_builder {
     m.pw_ = opts.patch_width;
     m.ph_ = opts.patch_height;
     m.v_ = opts.overlap;
-    if (m.pw_ == 0 || m.ph_ == 0 || m.v_ == 0) {
+    if (m.pw_ == 0 || m.ph_ == 0 || m.v_ == 0) {  // step 1: the size analysis (§2.1)
       patch_size_options a = opts.analysis;
       if (!a.progress.callback && a.progress.token == nullptr) a.progress.token = opts.progress.token;
       auto analysis = (m.pw_ == 0 || m.ph_ == 0) ? analyze_patch_size(m.exemplar_, a, exec)
@@ -236,39 +227,26 @@ struct patch_model_builder {
       m.analysis_ = std::move(*analysis);
     }
     const index_t pw = m.pw_, ph = m.ph_, v = m.v_;
-
     if (pw < 2 || ph < 2 || v < 1 || v > pw || v > ph)
-      return status::invalid_argument(detail::cat("build_patch_model: patch ", pw, " x ", ph, " with overlap ", v,
-                                                  " is invalid (patch sides >= 2, 1 <= overlap <= patch side)"));
+      return status::invalid_argument(cat("build_patch_model: patch ", pw, " x ", ph, " with overlap ", v,
+                                          " is invalid (patch sides >= 2, 1 <= overlap <= patch side)"));
     if (pw + v > W || ph + v > H)
-      return status::invalid_argument(detail::cat("build_patch_model: patches of ", pw + v, " x ", ph + v, " (patch ", pw, " x ",
-                                                  ph, " + overlap ", v, ") do not fit the ", W, " x ", H, " exemplar"));
+      return status::invalid_argument(cat("build_patch_model: patches of ", pw + v, " x ", ph + v, " (patch ", pw, " x ", ph,
+                                          " + overlap ", v, ") do not fit the ", W, " x ", H, " exemplar"));
     m.nx_ = W - pw - v + 1;
     m.ny_ = H - ph - v + 1;
     const index_t n = m.nx_ * m.ny_;
     if (n < 2)
-      return status::invalid_argument(detail::cat("build_patch_model: the ", W, " x ", H, " exemplar holds fewer than two patches of ",
-                                                  pw + v, " x ", ph + v));
-    if (n > index_t{1} << 31)
-      return status::size_overflow(detail::cat("build_patch_model: ", n, " patches exceed the supported 2^31"));
-    if (opts.seams && v > 255)
-      return status::invalid_argument(detail::cat("build_patch_model: seams need overlap <= 255, got ", v));
+      return status::invalid_argument(cat("build_patch_model: the ", W, " x ", H, " exemplar holds fewer than two patches of ",
+                                          pw + v, " x ", ph + v));
+    if (n > index_t{1} << 31) return status::size_overflow(cat("build_patch_model: ", n, " patches exceed the supported 2^31"));
+    if (opts.seams && v > 255) return status::invalid_argument(cat("build_patch_model: seams need overlap <= 255, got ", v));
     m.k_ = std::min<index_t>(opts.candidates, n);
+    const index_t k = m.k_;
+
     {  // the exemplar's autocorrelation at the patch pitch and at every phase offset
-      const index_t mx = std::min(pw, W - 1), my = std::min(ph, H - 1);
-      std::vector<double> grey(static_cast<std::size_t>(W * H));
-      for (index_t i = 0; i < W * H; ++i) {
-        pixel<T, C> px;
-        for (int c = 0; c < C; ++c) px[static_cast<std::size_t>(c)] = m.exemplar_.data()[i * C + c];
-        grey[static_cast<std::size_t>(i)] = convert_pixel<float>(px);
-      }
-      const std::vector<double> corr = detail::correlation_field(grey.data(), W, H, 1, mx, my);
-      auto at = [&](index_t dx, index_t dy) {
-        if (dy < 0) dx = -dx, dy = -dy;
-        const double r = corr[static_cast<std::size_t>(dy * (2 * mx + 1) + dx + mx)];
-        return std::isnan(r) ? -1.0 : r;
-      };
-      m.alignment_ = 0.5 * (at(mx, 0) + at(0, my));
+      const pitch_correlation at(m.exemplar_, pw, ph);
+      m.alignment_ = 0.5 * (at(at.mx, 0) + at(0, at.my));
       for (index_t dy = 0; dy < ph; ++dy)
         for (index_t dx = 0; dx < pw; ++dx) {
           // the shift between the phases, taken as its smallest representative modulo the pitch
@@ -278,134 +256,46 @@ struct patch_model_builder {
       std::stable_sort(m.phase_order_.begin(), m.phase_order_.end(),
                        [](const phase_offset& a, const phase_offset& b) { return a.similarity > b.similarity; });
     }
-    const index_t k = m.k_;
     if (!opts.progress.report(0.05, "patch model: phases")) return status::cancelled();
 
-    // patches grouped by phase (counting sort, so each phase lists its patches ascending)
+    // step 2: patches grouped by phase (counting sort, so each phase lists its patches ascending)
     m.phase_start_.assign(static_cast<std::size_t>(pw * ph + 1), 0);
     for (index_t p = 0; p < n; ++p) ++m.phase_start_[static_cast<std::size_t>(m.phase_of(p) + 1)];
     for (std::size_t i = 1; i < m.phase_start_.size(); ++i) m.phase_start_[i] += m.phase_start_[i - 1];
     m.phase_members_.resize(static_cast<std::size_t>(n));
-    {
-      std::vector<index_t> fill(m.phase_start_.begin(), m.phase_start_.end() - 1);
-      for (index_t p = 0; p < n; ++p) m.phase_members_[static_cast<std::size_t>(fill[static_cast<std::size_t>(m.phase_of(p))]++)] = static_cast<std::uint32_t>(p);
-    }
+    std::vector<index_t> fill(m.phase_start_.begin(), m.phase_start_.end() - 1);
+    for (index_t p = 0; p < n; ++p)
+      m.phase_members_[static_cast<std::size_t>(fill[static_cast<std::size_t>(m.phase_of(p))]++)] = static_cast<std::uint32_t>(p);
 
-    // strip families with PCA projections: vertical strips (v x (ph + v)) at x in [0, W - v], horizontal
-    // strips ((pw + v) x v) at y in [0, H - v]
-    detail::strip_family<T, C> vertical, horizontal;
-    vertical.build(m.exemplar_, v, ph + v, W - v + 1, m.ny_, opts.pca_dims, opts.pca_samples, exec);
-    if (!opts.progress.report(0.15, "patch model: projections")) return status::cancelled();
-    horizontal.build(m.exemplar_, pw + v, v, m.nx_, H - v + 1, opts.pca_dims, opts.pca_samples, exec);
-    if (!opts.progress.report(0.25, "patch model: compatible sets")) return status::cancelled();
-    double max_value = 0;
-    for (index_t i = 0; i < W * H * C; ++i) max_value = std::max(max_value, std::abs(static_cast<double>(m.exemplar_.data()[i])));
-    auto make_points = [&](const detail::strip_family<T, C>& f, index_t dx, index_t dy) {
-      // one point per patch: the strip at (patch x + dx, patch y + dy)
-      std::vector<double> pts(static_cast<std::size_t>(n * f.d));
-      for (index_t p = 0; p < n; ++p) {
-        const double* src = f.projection(p % m.nx_ + dx, p / m.nx_ + dy);
-        std::copy(src, src + f.d, pts.data() + p * f.d);
-      }
-      return pts;
-    };
-
-    constexpr patch_side sides[4] = {patch_side::north, patch_side::east, patch_side::south, patch_side::west};
+    // step 3: compatible sets, stored by error and by patch index (for the intersections)
+    const patch_geometry g{pw, ph, v, m.nx_, m.ny_};
+    const compatible_set_options so{k, opts.exact_sets, opts.pca_dims, opts.pca_samples, opts.search_pool, opts.refine_iterations};
+    auto sets = compatible_sets(m.exemplar_, g, so, exec,
+                                [&](double f) { return opts.progress.report(0.05 + 0.8 * f, "patch model: compatible sets"); });
+    if (sets.empty()) return status::cancelled();
+    m.worst_.resize(static_cast<std::size_t>(n * 4));
     for (int si = 0; si < 4; ++si) {
-      const patch_side side = sides[si];
-      // the data points are the strips of candidate patches b facing a; the query is a's own strip
-      const bool vert = side == patch_side::east || side == patch_side::west;
-      const detail::strip_family<T, C>& f = vert ? vertical : horizontal;
-      const index_t data_dx = side == patch_side::west ? pw : 0, data_dy = side == patch_side::north ? ph : 0;
-      const index_t query_dx = side == patch_side::east ? pw : 0, query_dy = side == patch_side::south ? ph : 0;
-      const double scale = max_value * max_value * static_cast<double>(f.cols * f.rows * C);
-      // the kd-tree with a compile-time dimension for the default PCA size (faster distance loops)
-      const bool fixed = f.d == 8;
-      const detail::lower_bound_knn<8> index8 = fixed ? detail::lower_bound_knn<8>(make_points(f, data_dx, data_dy), n, 8, scale)
-                                                      : detail::lower_bound_knn<8>();
-      const detail::lower_bound_knn<> index = fixed ? detail::lower_bound_knn<>() : detail::lower_bound_knn<>(make_points(f, data_dx, data_dy), n, f.d, scale);
-      auto& out = m.compat_[si];
-      out.assign(static_cast<std::size_t>(n * k), 0);
-      std::vector<double> dist(static_cast<std::size_t>(n * k), 0.0);
-      auto exact = [&](index_t a, index_t b, double bound) { return m.bounded_error(a, b, side, bound); };
-      bool stop = false;
-      const auto kk = static_cast<std::size_t>(k), pool = static_cast<std::size_t>(opts.search_pool);
-      // the kd-tree search for one patch: exact (branch and bound) or approximate (re-ranked pool)
-      auto search = [&](index_t a, std::vector<detail::neighbor>& best, std::vector<std::uint32_t>& ids, std::vector<double>& ds) {
-        const double* q = f.projection(a % m.nx_ + query_dx, a / m.nx_ + query_dy);
-        auto exact_a = [&](std::uint32_t b, double bound) { return exact(a, b, bound); };
-        if (opts.exact_sets) fixed ? index8.search(q, kk, exact_a, best) : index.search(q, kk, exact_a, best);
-        else if (fixed) index8.search_approximate(q, kk, pool, 1.0f, exact_a, best, ids, ds);
-        else index.search_approximate(q, kk, pool, 1.0f, exact_a, best, ids, ds);
-      };
-      // approximate sets: the kd-tree seeds every other patch (a checkerboard); the first coherence
-      // round fills the others from their seeded neighbours, the following rounds improve all
-      const index_t chunks = std::min<index_t>(opts.exact_sets ? 8 : 2, m.ny_);
-      for (index_t chunk = 0; chunk < chunks && !stop; ++chunk) {
-        const index_t y0 = chunk * m.ny_ / chunks, y1 = (chunk + 1) * m.ny_ / chunks;
-        exec.parallel_for(y0, y1, [&](index_t y) {
-          std::vector<detail::neighbor> best;
-          std::vector<std::uint32_t> ids;
-          std::vector<double> ds;
-          for (index_t x = 0; x < m.nx_; ++x) {
-            const index_t a = y * m.nx_ + x;
-            const bool seeded = opts.exact_sets || opts.refine_iterations == 0 || ((x + y) & 1) == 0;
-            if (seeded) search(a, best, ids, ds);
-            else best.clear();
-            for (index_t r = 0; r < k; ++r) {
-              const bool has = r < static_cast<index_t>(best.size());
-              out[static_cast<std::size_t>(a * k + r)] = has ? best[static_cast<std::size_t>(r)].index : 0;
-              dist[static_cast<std::size_t>(a * k + r)] = has ? best[static_cast<std::size_t>(r)].dist : std::numeric_limits<double>::quiet_NaN();
-            }
-          }
-        });
-        stop = !opts.progress.report(0.25 + 0.6 * (si + 0.5 * static_cast<double>(chunk + 1) / static_cast<double>(chunks)) / 4.0,
-                                     "patch model: compatible sets");
-      }
-      auto refill = [&](index_t a, std::vector<detail::neighbor>& best) {
-        std::vector<std::uint32_t> ids;
-        std::vector<double> ds;
-        search(a, best, ids, ds);
-      };
-      for (int it = 0; it < opts.refine_iterations && !opts.exact_sets && !stop; ++it) {
-        detail::propagate_sets(m.nx_, m.ny_, k, out, dist, exact, refill, exec);
-        stop = !opts.progress.report(0.25 + 0.6 * (si + 0.5 + 0.5 * (it + 1) / opts.refine_iterations) / 4.0,
-                                     "patch model: compatible sets");
-      }
-      if (stop) return status::cancelled();
-      m.worst_.resize(static_cast<std::size_t>(n * 4));
-      for (index_t a = 0; a < n; ++a) m.worst_[static_cast<std::size_t>(a * 4 + si)] = static_cast<float>(dist[static_cast<std::size_t>(a * k + k - 1)]);
-      // the same sets ordered by patch index, for the merges of synthesis (set intersection)
+      const auto& set = sets[static_cast<std::size_t>(si)];
+      m.compat_[si] = set.ids;
       auto& by_id = m.by_index_[si];
       by_id.resize(static_cast<std::size_t>(n * k));
       for (index_t a = 0; a < n; ++a) {
+        m.worst_[static_cast<std::size_t>(a * 4 + si)] = static_cast<float>(set.dist[static_cast<std::size_t>(a * k + k - 1)]);
         auto* e = by_id.data() + a * k;
-        for (index_t r = 0; r < k; ++r) e[r] = {out[static_cast<std::size_t>(a * k + r)], static_cast<float>(dist[static_cast<std::size_t>(a * k + r)])};
+        for (index_t r = 0; r < k; ++r)
+          e[r] = {set.ids[static_cast<std::size_t>(a * k + r)], static_cast<float>(set.dist[static_cast<std::size_t>(a * k + r)])};
         std::sort(e, e + k, [](const indexed_candidate& x, const indexed_candidate& y) { return x.patch < y.patch; });
       }
     }
 
-    if (opts.seams) {
-      for (int si = 0; si < 4; ++si) {
-        const patch_side side = sides[si];
-        const index_t len = m.seam_length(side);
-        m.seams_[si].assign(static_cast<std::size_t>(n * k * len), 0);
-        exec.parallel_for(0, m.ny_, [&](index_t y) {
-          std::vector<double> scratch;
-          for (index_t x = 0; x < m.nx_; ++x) {
-            const index_t a = y * m.nx_ + x;
-            for (index_t r = 0; r < k; ++r) {
-              const index_t b = m.compat_[si][static_cast<std::size_t>(a * k + r)];
-              const bool a_first = side == patch_side::east || side == patch_side::south;
-              const patch_origin first = m.origin(a_first ? a : b), second = m.origin(a_first ? b : a);
-              const bool vert = side == patch_side::east || side == patch_side::west;
-              detail::min_error_seam(m.exemplar_, first.x, first.y, second.x, second.y, vert ? pw : ph, v, len, !vert,
-                                     m.seams_[si].data() + (a * k + r) * len, scratch);
-            }
-          }
-        });
-        if (!opts.progress.report(0.85 + 0.15 * (si + 1) / 4.0, "patch model: seams")) return status::cancelled();
-      }
+    // step 4 (optional): a minimum-error seam per compatible pair; east and south first, so that west
+    // and north copy the seams of mirrored pairs
+    constexpr int seam_order[4] = {1, 2, 3, 0};
+    for (int i = 0; i < 4 && opts.seams; ++i) {
+      const int si = seam_order[i], mirror = i < 2 ? -1 : seam_order[i - 2];
+      m.seams_[si] = mirror < 0 ? seam_table(m.exemplar_, g, k, si, m.compat_[si], exec)
+                                : seam_table(m.exemplar_, g, k, si, m.compat_[si], exec, &m.compat_[mirror], &m.seams_[mirror]);
+      if (!opts.progress.report(0.85 + 0.15 * (i + 1) / 4.0, "patch model: seams")) return status::cancelled();
     }
     if (!opts.progress.report(1.0, "patch model")) return status::cancelled();
     return m;

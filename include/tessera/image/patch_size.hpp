@@ -35,9 +35,10 @@ struct patch_size_options {
   double containment_fraction = 0.9;    ///< share of patches that must contain it (§2.1.1: 90 %)
   index_t reference_grid = 4;           ///< one reference block per cell of a grid x grid partition (§2.1.2)
   double similarity = 0.35;             ///< blocks are similar when mean squared grey difference < similarity x 2 variance
-  double periodicity_hits = 0.75;       ///< share of reference blocks that must find a similar block (§2.1.2)
+  double periodicity_hits = 1.0;        ///< share of reference blocks that must find a similar block (§2.1.2: all)
   double min_alignment = 0.3;           ///< alignment below this counts as none (stochastic textures)
   index_t analysis_size = 64;           ///< the periodicity count runs on a copy downsampled to at most this side
+                                        ///< (elongated exemplars: at most this side squared pixels)
   index_t min_overlap = 0;              ///< smallest overlap width tried; 0: a sixth of the patch side (at least 2)
   index_t max_overlap = 0;              ///< largest; 0: a third of the patch side, within the exemplar
   double overlap_efficiency = 0.9;      ///< pick the smallest width reaching this share of the best discrimination
@@ -58,7 +59,8 @@ struct patch_size_measure {
   double alignment = 0;         ///< mean autocorrelation at offsets (width, 0) and (0, height): patches of one
                                 ///< phase line up when the size is a period of the texture (ours, see docs)
   bool qualified = false;       ///< both paper measures good (containment and periodicity hits reached)
-  double score = 0;             ///< the ranking score (higher is better; see analyze_patch_size)
+  double score = 0;             ///< the ranking score (higher is better; see analyze_patch_size and
+                                ///< detail::patch_size_score); the first shape with the highest score is chosen
 };
 
 /// How well overlaps of one width discriminate patches.
@@ -101,6 +103,16 @@ inline result<std::pair<std::vector<overlap_measure>, index_t>> choose_overlap(c
   return std::pair{std::move(measures), chosen};
 }
 
+/// The ranking score of analyze_patch_size: 100 per paper measure passed (containment, periodicity),
+/// plus the alignment level floor(20 alignment) in [0, 20] (0 below `min_alignment`), plus
+/// 1 - area / (max_area + 1) in (0, 1) for the smaller area. Comparing scores compares these keys in
+/// order; equal scores mean equal keys.
+inline double patch_size_score(bool contains, bool periodic, double alignment, double min_alignment, index_t area, index_t max_area) {
+  const double level = alignment >= min_alignment ? std::clamp(std::floor(alignment * 20.0), 0.0, 20.0) : 0.0;
+  return 100.0 * ((contains ? 1 : 0) + (periodic ? 1 : 0)) + level +
+         (1.0 - static_cast<double>(area) / static_cast<double>(max_area + 1));
+}
+
 inline status validate_patch_size_options(const patch_size_options& opts) {
   if (opts.candidates_per_axis < 1)
     return status::invalid_argument(cat("analyze_patch_size: candidates_per_axis must be >= 1, got ", opts.candidates_per_axis));
@@ -129,23 +141,31 @@ inline status validate_patch_size_options(const patch_size_options& opts) {
 
 /// Analyzes an exemplar to choose the patch size and the overlap width of patch synthesis, as paper
 /// 002 §2.1 describes. For every candidate shape between a quarter and a half of the exemplar (§2.1:
-/// "1/4 to 1/2 of the exemplar size"), computes
-///  - the information-containment measure (§2.1.1): the grey histogram of every patch of that shape,
-///    normalized, against the exemplar's by Euclidean distance; the shape contains the exemplar's
-///    information when `containment_fraction` (90 %) of the patches are within `containment_tolerance`;
+/// "1/4 to 1/2 of the exemplar size"; of its smaller side, for both axes), computes
+///  - the information-containment measure (§2.1.1): the grey histogram of every patch of that shape
+///    (patches every max(1, min(w, h) / 8) pixels in x and y), normalized, against the exemplar's by
+///    Euclidean distance; the shape contains the exemplar's information when `containment_fraction`
+///    (90 %) of the patches are within `containment_tolerance`;
 ///  - the periodicity measure (§2.1.2): one random reference block per cell of a coarse grid, the number
-///    of blocks of the exemplar similar to it (mean squared grey difference under `similarity` times
+///    of blocks of the exemplar similar to it (mean squared grey difference at most `similarity` times
 ///    twice the grey variance, the expected difference of unrelated blocks; blocks overlapping the
-///    reference by more than half are not counted), averaged over the references;
+///    reference by more than half are not counted), averaged over the references. It runs on a box-
+///    filtered copy whose larger side is at most `analysis_size` (shapes scaled alike); for elongated
+///    exemplars the copy is shrunk less, keeping its smaller side at 8 pixels or more (the default
+///    smallest candidate at 2 or more), and then cut to its first analysis_size^2 pixels along the
+///    longer axis, which bounds the work;
 ///  - the alignment measure (ours): the exemplar's autocorrelation at a shift of one patch width and one
 ///    patch height. Synthesis places patches on a grid of that pitch, so a high value means patches of one
 ///    phase continue each other (bricks, weaves, dots).
-/// A shape qualifies when both paper measures are good (containment reached, every reference matched);
-/// among qualified shapes (all shapes if none qualify) the highest score wins: alignment, then the
-/// periodicity count, then the larger area. The overlap width is then the smallest width whose
-/// discrimination (the correlation, over random patch pairs, between the distance of their overlap
-/// strips and the distance of the rest of the patches) reaches `overlap_efficiency` of the best width's
-/// (§2.1: "one width for all sides").
+/// A shape qualifies when both paper measures are good (containment reached and at least
+/// `periodicity_hits` of the references matched: all of them by default, as §2.1.2 asks). Shapes are
+/// ranked by how many of the two paper measures they pass (qualified shapes first), then by alignment
+/// (so alignment only decides among shapes the paper measures rank equal), then by the smaller area
+/// (see `score`; the mean periodicity count is reported, not ranked: within the 1/4-1/2 range it mostly
+/// falls as shapes grow, so it would repeat the area preference). The overlap width is then the smallest
+/// width whose discrimination (the correlation, over random patch pairs, between the distance of their
+/// overlap strips and the distance of the rest of the patches) reaches `overlap_efficiency` (90 %) of
+/// the best width's (§2.1: "one width for all sides").
 ///
 /// Errors: invalid_argument for an empty exemplar, one smaller than 8 x 8, option values outside their
 /// domain (each named); cancelled when `progress` says so. Complexity about O(S N) for S shapes and N
@@ -184,19 +204,18 @@ result<patch_size_analysis> analyze_patch_size(const I& exemplar, const patch_si
   if (!opts.progress.report(0.7, "patch size: alignment")) return status::cancelled();
   detail::alignment_measures(grey, out.sizes);
 
-  // Rank: alignment (in steps of 0.05, ignored below min_alignment), then qualified, then how many of the
-  // two paper measures are good, then the smaller area: the smallest patch that still contains the
-  // exemplar's information keeps the most patches, hence variety (paper 002 §2.1: "too large a size
-  // reduces the number of patches and the richness of the result").
+  // Rank (paper 002 §2.1: "a size for which both measures are good"): first by how many of the two
+  // paper measures a shape passes (qualified shapes, passing both, first); among equals by alignment
+  // (in steps of 0.05, none below min_alignment); then by the smaller area: the smallest patch that
+  // still contains the exemplar's information keeps the most patches, hence variety (§2.1: "too large
+  // a size reduces the number of patches and the richness of the result"); then the first in `sizes`.
   index_t max_area = 1;
   for (const auto& m : out.sizes) max_area = std::max(max_area, m.width * m.height);
   const patch_size_measure* best = nullptr;
   for (auto& m : out.sizes) {
     const bool contains = m.containment >= opts.containment_fraction, periodic = m.periodicity_hits >= opts.periodicity_hits;
     m.qualified = contains && periodic;
-    const double aligned = m.alignment >= opts.min_alignment ? std::floor(m.alignment * 20.0) : 0.0;
-    m.score = 10.0 * aligned + 4.0 * (m.qualified ? 1 : 0) + (contains ? 1 : 0) + (periodic ? 1 : 0) +
-              0.5 * (1.0 - static_cast<double>(m.width * m.height) / static_cast<double>(max_area));
+    m.score = detail::patch_size_score(contains, periodic, m.alignment, opts.min_alignment, m.width * m.height, max_area);
     if (best == nullptr || m.score > best->score) best = &m;
   }
   out.patch_width = best->width;

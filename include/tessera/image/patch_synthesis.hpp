@@ -51,7 +51,8 @@ struct patch_synthesis_options {
   std::uint64_t seed = 0;               ///< the texture: same seed, same infinite texture
   seam_mode seams = seam_mode::feather;
   index_t phase_radius = -1;            ///< distributed patches come from phases within this distance of one
-                                        ///< phase; -1: the phases most similar to it (see phase_group below)
+                                        ///< phase (any value >= max(patch_width, patch_height) means every
+                                        ///< phase); -1: the phases most similar to it (detail::phase_group)
   index_t min_phase_group = 16;         ///< with phase_radius -1: at least this many patches to draw from
   tessera::progress progress = {};           ///< fraction done; return false (or raise the token) to cancel
 };
@@ -143,7 +144,8 @@ status render_window(const patch_plan& plan, const image_buffer<T, C>& ex, O& ou
 /// seed, so they continue each other: "phase-consistent" distribution, §2 and Fig. 2), so every row and
 /// column alternates distributed and vacant cells; each vacant cell gets a random patch of the
 /// intersection of its four neighbours' compatible sets, or when that is empty the patch present in
-/// the most sets (fewest rank sum, then smallest index); overlaps are feathered with the paper's linear
+/// the most sets (ties: the smallest estimated overlap error - its errors in the sets holding it plus
+/// the k-th error of each other set - then the smallest index); overlaps are feathered with the paper's linear
 /// weights (or cut along minimum-error seams with `seams = cut`). Random choices are keyed by (seed,
 /// cell coordinates), so any window is consistent with any other and with any executor.
 ///

@@ -20,23 +20,29 @@ TESSERA_NAMESPACE_BEGIN
 namespace detail {
 
 /// Sum of squared differences between two windows of `cols` x `rows` pixels of `img`, exact: integer
-/// arithmetic for uint8 and uint16 channels, double accumulation in a fixed order for float. Stops
-/// early (returning a partial sum above `bound`) once the sum exceeds `bound`.
+/// arithmetic for uint8 and uint16 channels (64-bit totals; uint8 rows in 32-bit chunks of at most
+/// 65536 values, which cannot overflow), double accumulation in a fixed order for float. Stops early
+/// (returning a partial sum above `bound`) once the sum exceeds `bound`.
 template <class T, int C>
 double window_ssd(const image_buffer<T, C>& img, index_t ax, index_t ay, index_t bx, index_t by, index_t cols, index_t rows,
                   double bound = std::numeric_limits<double>::infinity()) {
   const index_t n = cols * C;
   if constexpr (std::is_same_v<T, std::uint8_t>) {
+    // 32-bit sums over at most 65536 values (65536 x 255^2 < 2^32), flushed into a 64-bit total
+    constexpr index_t chunk = 65536;
     std::uint64_t total = 0;
     for (index_t r = 0; r < rows; ++r) {
       const std::uint8_t* a = img.pixel_ptr(ax, ay + r);
       const std::uint8_t* b = img.pixel_ptr(bx, by + r);
-      std::uint32_t s = 0;  // n <= 65536 elements per row keeps this below 2^32
-      for (index_t i = 0; i < n; ++i) {
-        const int d = static_cast<int>(a[i]) - static_cast<int>(b[i]);
-        s += static_cast<std::uint32_t>(d * d);
+      for (index_t i0 = 0; i0 < n; i0 += chunk) {
+        const index_t i1 = std::min(n, i0 + chunk);
+        std::uint32_t s = 0;
+        for (index_t i = i0; i < i1; ++i) {
+          const int d = static_cast<int>(a[i]) - static_cast<int>(b[i]);
+          s += static_cast<std::uint32_t>(d * d);
+        }
+        total += s;
       }
-      total += s;
       if (static_cast<double>(total) > bound) break;
     }
     return static_cast<double>(total);
@@ -170,43 +176,76 @@ void propagate_sets(index_t nx, index_t ny, index_t k, std::vector<std::uint32_t
   dists.swap(new_dists);
 }
 
+/// Scratch buffers of min_error_seam, reused between calls.
+struct seam_scratch {
+  std::vector<double> err;   ///< len x v squared differences
+  std::vector<double> cost;  ///< len x (v + 2) cumulative path costs
+};
+
+/// Squared difference of n consecutive pixels of two rows, pixel by pixel, into out[i * step]: exact
+/// integers for uint8 and uint16 channels, double for float (channels summed in order).
+template <class T, int C>
+inline void pixel_errors(const T* a, const T* b, index_t n, double* out, index_t step) noexcept {
+  for (index_t i = 0; i < n; ++i, a += C, b += C) {
+    if constexpr (std::is_same_v<T, std::uint8_t>) {
+      std::int32_t s = 0;  // at most 4 x 255^2
+      for (int c = 0; c < C; ++c) s += (static_cast<std::int32_t>(a[c]) - b[c]) * (static_cast<std::int32_t>(a[c]) - b[c]);
+      out[i * step] = static_cast<double>(s);
+    } else if constexpr (std::is_same_v<T, std::uint16_t>) {
+      std::int64_t s = 0;
+      for (int c = 0; c < C; ++c) s += (static_cast<std::int64_t>(a[c]) - b[c]) * (static_cast<std::int64_t>(a[c]) - b[c]);
+      out[i * step] = static_cast<double>(s);
+    } else {
+      double s = 0;
+      for (int c = 0; c < C; ++c) {
+        const double d = static_cast<double>(a[c]) - static_cast<double>(b[c]);
+        s += d * d;
+      }
+      out[i * step] = s;
+    }
+  }
+}
+
 /// Minimum-error boundary cut (Efros and Freeman's dynamic programming, the improvement paper 002 §2
 /// names) through the overlap of a left patch at exemplar origin (lx, ly) and a right patch at (rx,
-/// ry): the overlap is the columns [pw, pw + v) of the left patch and [0, v) of the right one, over
-/// `len` rows. For each row, writes the cut c in [0, v): columns < c come from the left patch, >= c
-/// from the right. A horizontal seam is the same problem with x and y exchanged (`transpose`). Ties go
-/// to the smaller column. `scratch` is reused between calls.
+/// ry): the overlap is the columns [offset, offset + v) of the left patch and [0, v) of the right one,
+/// over `len` rows. For each row, writes the cut c in [0, v): columns < c come from the left patch,
+/// >= c from the right. A horizontal seam is the same problem with x and y exchanged (`transpose`).
+/// Ties go to the smaller column. The squared differences are gathered row by row of the exemplar
+/// (contiguous pixels) before the dynamic programme; integer channels give exact path costs.
 template <class T, int C>
 void min_error_seam(const image_buffer<T, C>& img, index_t lx, index_t ly, index_t rx, index_t ry, index_t offset, index_t v,
-                    index_t len, bool transpose, std::uint8_t* cut, std::vector<double>& scratch) {
-  scratch.resize(static_cast<std::size_t>(len * v));
-  auto err = [&](index_t r, index_t c) {
-    const T* a = transpose ? img.pixel_ptr(lx + r, ly + offset + c) : img.pixel_ptr(lx + offset + c, ly + r);
-    const T* b = transpose ? img.pixel_ptr(rx + r, ry + c) : img.pixel_ptr(rx + c, ry + r);
-    double s = 0;
-    for (int k = 0; k < C; ++k) {
-      const double d = static_cast<double>(a[k]) - static_cast<double>(b[k]);
-      s += d * d;
-    }
-    return s;
-  };
-  double* m = scratch.data();
-  for (index_t c = 0; c < v; ++c) m[c] = err(0, c);
-  for (index_t r = 1; r < len; ++r)
-    for (index_t c = 0; c < v; ++c) {
-      double best = m[(r - 1) * v + c];
-      if (c > 0) best = std::min(best, m[(r - 1) * v + c - 1]);
-      if (c + 1 < v) best = std::min(best, m[(r - 1) * v + c + 1]);
-      m[r * v + c] = err(r, c) + best;
-    }
+                    index_t len, bool transpose, std::uint8_t* cut, seam_scratch& scratch) {
+  scratch.err.resize(static_cast<std::size_t>(len * v));
+  double* e = scratch.err.data();
+  if (!transpose) {
+    for (index_t r = 0; r < len; ++r) pixel_errors<T, C>(img.pixel_ptr(lx + offset, ly + r), img.pixel_ptr(rx, ry + r), v, e + r * v, 1);
+  } else {  // overlap row c of the upper patch against row c of the lower one, along `len` columns
+    for (index_t c = 0; c < v; ++c) pixel_errors<T, C>(img.pixel_ptr(lx, ly + offset + c), img.pixel_ptr(rx, ry + c), len, e + c, v);
+  }
+  // cumulative costs in rows of v + 2 with +infinity at both ends, so the three-way minimum has no
+  // branches and vectorizes
+  const index_t stride = v + 2;
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  scratch.cost.resize(static_cast<std::size_t>(len * stride));
+  double* m = scratch.cost.data();
+  for (index_t r = 0; r < len; ++r) m[r * stride] = m[r * stride + v + 1] = inf;
+  for (index_t c = 0; c < v; ++c) m[c + 1] = e[c];
+  for (index_t r = 1; r < len; ++r) {
+    const double* up = m + (r - 1) * stride + 1;
+    double* row = m + r * stride + 1;
+    const double* er = e + r * v;
+    for (index_t c = 0; c < v; ++c) row[c] = er[c] + std::min(std::min(up[c - 1], up[c]), up[c + 1]);
+  }
+  auto at = [&](index_t r, index_t c) { return m[r * stride + c + 1]; };
   index_t c = 0;
   for (index_t k = 1; k < v; ++k)
-    if (m[(len - 1) * v + k] < m[(len - 1) * v + c]) c = k;
+    if (at(len - 1, k) < at(len - 1, c)) c = k;
   cut[len - 1] = static_cast<std::uint8_t>(c);
   for (index_t r = len - 1; r > 0; --r) {
     index_t next = c;
     for (index_t k = std::max<index_t>(0, c - 1); k <= std::min(v - 1, c + 1); ++k)
-      if (m[(r - 1) * v + k] < m[(r - 1) * v + next] || (m[(r - 1) * v + k] == m[(r - 1) * v + next] && k < next)) next = k;
+      if (at(r - 1, k) < at(r - 1, next) || (at(r - 1, k) == at(r - 1, next) && k < next)) next = k;
     c = next;
     cut[r - 1] = static_cast<std::uint8_t>(c);
   }

@@ -45,10 +45,12 @@ struct patch_plan {
 };
 
 /// The patches placed on the checkerboard, the phase group (paper §2 and Fig. 2: "only patches of near
-/// phases"): around a phase drawn from the seed, either the phases within Chebyshev distance `radius`
-/// (modulo the pitch), or (radius < 0) the phases in order of appearance similarity to it (the model's
-/// phase_similarity(): for a texture that repeats, phases a period apart look alike) - all phases at
-/// least `equivalent` similar, then more until the group holds `min_size` patches.
+/// phases"): around a phase drawn from the seed (among the phases holding patches), either the phases
+/// within Chebyshev distance `radius` (modulo the pitch; a radius of max(pw, ph) or more takes every
+/// phase, so larger radii are clamped to it), or (radius < 0) the phases in order of appearance
+/// similarity to it (the model's phase_similarity(): for a texture that repeats, phases a period apart
+/// look alike) - all phases at least `equivalent` similar, then more until the group holds `min_size`
+/// patches. Never empty: the centre phase holds a patch.
 template <Channel T, int C>
 std::vector<std::uint32_t> phase_group(const patch_model<T, C>& m, std::uint64_t seed, index_t radius, index_t min_size,
                                        double equivalent = 0.9) {
@@ -65,6 +67,7 @@ std::vector<std::uint32_t> phase_group(const patch_model<T, C>& m, std::uint64_t
     for (std::uint32_t p : m.phase_patches(py * pw + px)) group.push_back(p);
   };
   if (radius >= 0) {
+    radius = std::min(radius, std::max(pw, ph));  // no overflow in 2 radius + 1 below
     const index_t nxp = std::min(2 * radius + 1, pw), nyp = std::min(2 * radius + 1, ph);
     for (index_t dy = 0; dy < nyp; ++dy)
       for (index_t dx = 0; dx < nxp; ++dx) add(dx - radius, dy - radius);
@@ -80,9 +83,9 @@ std::vector<std::uint32_t> phase_group(const patch_model<T, C>& m, std::uint64_t
 /// Fills a vacant cell from its four placed neighbours (paper §2): a random member of the intersection
 /// of their compatible sets facing the cell (sorted small vectors), keyed by (seed, i, j). When the
 /// intersection is empty, the patch appearing in the most sets (the paper's rule); ties go to the
-/// smallest estimated overlap error (its errors in the sets holding it, plus each other set's k-th
-/// error, a lower bound of its error there), then the smallest index. Returns the patch and whether
-/// the intersection was empty.
+/// smallest estimated overlap error (the sum of its errors in the sets holding it plus, for each set
+/// not holding it, that set's k-th error, a lower bound of its error there), then the smallest index.
+/// Returns the patch and whether the intersection was empty.
 template <Channel T, int C>
 std::pair<std::uint32_t, bool> fill_cell(const patch_model<T, C>& m, std::uint32_t west, std::uint32_t east, std::uint32_t north,
                                          std::uint32_t south, const counter_rng& rng, index_t i, index_t j) {
@@ -94,7 +97,6 @@ std::pair<std::uint32_t, bool> fill_cell(const patch_model<T, C>& m, std::uint32
   std::uint32_t ids[4][65];
   float errs[4][65];
   float worst[4];
-  double worst_sum = 0;
   for (int s = 0; s < 4; ++s) {
     const auto set = m.compatible_by_index(owners[s], facing[s]);
     for (index_t r = 0; r < k; ++r) {
@@ -104,7 +106,6 @@ std::pair<std::uint32_t, bool> fill_cell(const patch_model<T, C>& m, std::uint32
     ids[s][k] = none;
     errs[s][k] = 0;
     worst[s] = m.kth_error(owners[s], facing[s]);
-    worst_sum += worst[s];
   }
   std::uint32_t inter[64];
   index_t ni = 0, head[4] = {0, 0, 0, 0};
@@ -115,10 +116,10 @@ std::pair<std::uint32_t, bool> fill_cell(const patch_model<T, C>& m, std::uint32
     const std::uint32_t p = std::min(std::min(ids[0][head[0]], ids[1][head[1]]), std::min(ids[2][head[2]], ids[3][head[3]]));
     if (p == none) break;
     int count = 0;
-    double error = worst_sum;
+    double error = 0;  // summed over the sets in order west, east, north, south
     for (int s = 0; s < 4; ++s) {
       const bool hit = ids[s][head[s]] == p;
-      error += hit ? static_cast<double>(errs[s][head[s]]) - static_cast<double>(worst[s]) : 0.0;
+      error += static_cast<double>(hit ? errs[s][head[s]] : worst[s]);
       count += hit;
       head[s] += hit;
     }
@@ -154,6 +155,7 @@ patch_plan make_plan(const patch_model<T, C>& m, index_t ox, index_t oy, index_t
   p.cut = cut;
   const index_t ncells = p.ncx * p.ncy;
   const std::vector<std::uint32_t> group = phase_group(m, seed, radius, min_group);
+  TESSERA_ASSERT(!group.empty());
   const counter_rng place_rng(seed, stream_id("patch.place")), fill_rng(seed, stream_id("patch.fill"));
   // distributed cells first, on a grid one cell wider on every side (the vacant cells' neighbours)
   const index_t gx = p.ncx + 2, gy = p.ncy + 2;
@@ -229,7 +231,7 @@ patch_plan make_plan(const patch_model<T, C>& m, index_t ox, index_t oy, index_t
     }
   p.own_seams.assign(static_cast<std::size_t>(storage), 0);
   exec.parallel_for(0, p.ncy, [&](index_t cj) {
-    std::vector<double> scratch;
+    seam_scratch scratch;
     for (index_t ci = 0; ci < p.ncx; ++ci) {
       const auto c = static_cast<std::size_t>(p.cell(ci, cj));
       if (voff[c] >= 0) {

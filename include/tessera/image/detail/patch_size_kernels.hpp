@@ -73,11 +73,16 @@ void containment_measures(const grey_image& g, std::vector<Measure>& shapes, int
   });
 }
 
-/// Box-filtered copy whose larger side is at most `max_side` (factor returned in `factor`).
-inline grey_image downsample(const grey_image& g, index_t max_side, index_t& factor) {
-  factor = std::max<index_t>(1, (std::max(g.w, g.h) + max_side - 1) / max_side);
-  if (factor == 1) return g;
+/// Box-filtered copy shrunk by an integer factor (returned in `factor`) so that its larger side is at
+/// most `max_side`, but never below 8 pixels on its smaller side (elongated exemplars keep a usable
+/// width); a copy that still holds more than max_side^2 pixels is cut to its first max_side^2 pixels
+/// along the longer axis, which bounds the periodicity count's O(pixels^2) work.
+inline grey_image analysis_copy(const grey_image& g, index_t max_side, index_t& factor) {
+  const index_t small = std::min(g.w, g.h);
+  factor = std::max<index_t>(1, std::min((std::max(g.w, g.h) + max_side - 1) / max_side, small / 8));
   grey_image out{{}, g.w / factor, g.h / factor};
+  const index_t budget = max_side * max_side;
+  if (out.w * out.h > budget) (out.w > out.h ? out.w : out.h) = std::max<index_t>(budget / std::min(out.w, out.h), 1);
   out.v.resize(static_cast<std::size_t>(out.w * out.h));
   for (index_t y = 0; y < out.h; ++y)
     for (index_t x = 0; x < out.w; ++x) {
@@ -93,13 +98,15 @@ inline grey_image downsample(const grey_image& g, index_t max_side, index_t& fac
 /// (seed, shape, cell)); for each, the number of block positions whose mean squared grey difference
 /// to it is below similarity x 2 variance, not counting blocks overlapping the reference by more than
 /// half in both directions. `periodicity` is the mean count, `periodicity_hits` the share of references
-/// with a count > 0. Runs on a copy downsampled to `analysis_size`: for every displacement, the
-/// integral image of squared differences answers every (shape, reference) in O(1).
+/// with a count > 0. Runs on analysis_copy(full, analysis_size) (at least 8 x 8 for an exemplar of at
+/// least 8 x 8; shapes are scaled by its factor and kept in [2, side - 1]): for every displacement,
+/// the integral image of squared differences answers every (shape, reference) in O(1). A flat exemplar
+/// (zero variance) counts every block as similar (difference 0 <= limit 0).
 template <class Measure, class Ex>
 void periodicity_measures(const grey_image& full, std::vector<Measure>& shapes, index_t grid, double similarity,
                           index_t analysis_size, std::uint64_t seed, Ex&& exec) {
   index_t f = 1;
-  const grey_image g = downsample(full, analysis_size, f);
+  const grey_image g = analysis_copy(full, analysis_size, f);
   const index_t W = g.w, H = g.h, S = static_cast<index_t>(shapes.size()), R = grid * grid;
   double mean = 0, var = 0;
   for (double v : g.v) mean += v;
@@ -163,7 +170,7 @@ void periodicity_measures(const grey_image& full, std::vector<Measure>& shapes, 
         if (2 * std::abs(dx) < r.w && 2 * std::abs(dy) < r.h) continue;  // overlaps the reference itself
         if (r.x + dx < 0 || r.y + dy < 0 || r.x + dx + r.w > W || r.y + dy + r.h > H) continue;
         const double ssd = at(r.x + r.w, r.y + r.h) - at(r.x, r.y + r.h) - at(r.x + r.w, r.y) + at(r.x, r.y);
-        if (ssd < r.limit) ++cnt[i];
+        if (ssd <= r.limit) ++cnt[i];
       }
     }
   });
