@@ -111,7 +111,7 @@ TEST_CASE("eigen: an image of Eigen pixels goes through to_buffer and copy_image
   CHECK(tessera::to_buffer(empty).error().code() == tessera::status_code::invalid_argument);
 }
 
-TEST_CASE("eigen: vectors are points; 2D vectors read z = 0") {
+TEST_CASE("eigen: vectors are points, 2D vectors read z = 0") {
   CHECK(tessera::to_vec3(Eigen::Vector3d(1, 2, 3)) == tessera::vec3{1, 2, 3});
   CHECK(tessera::to_vec3(Eigen::Vector2f(1, 2)) == tessera::vec3{1, 2, 0});
   CHECK(tessera::to_vec3(Eigen::RowVector3f(4, 5, 6)) == tessera::vec3{4, 5, 6});

@@ -93,7 +93,7 @@ TEST_CASE("glm: an engine texture of glm::u8vec4 goes through copy_image and to_
   CHECK(tessera::copy_image(tex, other).code() == tessera::status_code::invalid_argument);
 }
 
-TEST_CASE("glm: vectors are positions and uvs; a glm mesh runs the core mesh functions") {
+TEST_CASE("glm: vectors are positions and uvs, a glm mesh runs the core mesh functions") {
   CHECK(tessera::to_vec3(glm::dvec3(1, 2, 3)) == tessera::vec3{1, 2, 3});
   CHECK(tessera::to_vec3(glm::vec2(1, 2)) == tessera::vec3{1, 2, 0});  // no read past the vector
   CHECK(tessera::to_vec2(glm::vec4(5, 6, 7, 8)) == tessera::vec2{5, 6});

@@ -12,7 +12,7 @@ using tessera::result;
 using tessera::status;
 using tessera::status_code;
 
-TEST_CASE("status: default is ok; factories carry code and message", "[status]") {
+TEST_CASE("status: default is ok, factories carry code and message", "[status]") {
   const status ok;
   REQUIRE(ok.ok());
   REQUIRE(static_cast<bool>(ok));

@@ -35,7 +35,7 @@ image_buffer<float, 1> unique_image(index_t n) {
 }
 }  // namespace
 
-TEST_CASE("cat_map_step moves (x, y) to [1 1; 1 2] (x, y) mod N", "[cat_map]") {
+TEST_CASE("cat_map_step moves (x, y) to [1 1, 1 2] (x, y) mod N", "[cat_map]") {
   const index_t n = 7;
   const auto img = unique_image(n);
   image_buffer<float, 1> out(n, n);

@@ -43,7 +43,7 @@ TEST_CASE("cat_map_period equals the brute-force order for every N <= 2000", "[c
   }
 }
 
-TEST_CASE("cat_map_period of the generalized family [1 a; b ab+1] equals brute force", "[cat_map_period]") {
+TEST_CASE("cat_map_period of the generalized family [1 a, b ab+1] equals brute force", "[cat_map_period]") {
   for (std::int64_t a : {-3, 0, 2, 3, 7})
     for (std::int64_t b : {-1, 1, 2, 5})
       for (std::int64_t n = 1; n <= 300; ++n) {

@@ -285,7 +285,7 @@ TEST_CASE("the perturbation keeps hue and saturation (float and 8-bit)", "[life_
   CHECK(changed > 100);
 }
 
-TEST_CASE("perturbation output does not depend on the executor; in place works", "[life_perturbation]") {
+TEST_CASE("perturbation output does not depend on the executor, in place works", "[life_perturbation]") {
   const auto img = random_image<std::uint8_t, 4>(70, 53, 6);
   for (int gens : {1, 2}) {
     image_buffer<std::uint8_t, 4> serial(70, 53);

@@ -40,7 +40,7 @@ TEST_CASE("parse_palette reads #rrggbb:weight lists", "[source_image]") {
   }
 }
 
-TEST_CASE("palettes: proportions are normalized; invalid tones rejected", "[source_image]") {
+TEST_CASE("palettes: proportions are normalized, invalid tones rejected", "[source_image]") {
   auto n = normalized_proportions({{{0, 0, 0}, 3}, {{1, 1, 1}, 1}});
   REQUIRE(n.ok());
   CHECK((*n)[0] == Approx(0.75));
@@ -85,7 +85,7 @@ TEST_CASE("source images reproduce the palette proportions", "[source_image]") {
   CHECK(s[{0, 255, 0}] == Approx(0.25));
 }
 
-TEST_CASE("source images are seeded and deterministic; the cat map keeps their proportions", "[source_image]") {
+TEST_CASE("source images are seeded and deterministic, the cat map keeps their proportions", "[source_image]") {
   for (source_layout l : {source_layout::blocks, source_layout::cells}) {
     image_buffer<std::uint8_t, 3> a(64, 64), b(64, 64), c(64, 64);
     REQUIRE(make_source_image(a, black_white, {.layout = l, .seed = 1}).ok());

@@ -136,7 +136,7 @@ TEST_CASE("merge_pair joins two overlapping pebbles along one seam into one clos
   }
 }
 
-TEST_CASE("merge_pair against a tile border keeps the fixed border bit-identical; the paper's SINK rule conflicts there", "[element_merge]") {
+TEST_CASE("merge_pair against a tile border keeps the fixed border bit-identical, the paper's SINK rule conflicts there", "[element_merge]") {
   // C_T: the half of a pebble inside a tile [0, 2]^2, cut by the west side x = 0 (a frame element:
   // border set {west}, the vertices of its triangles on the side fixed). C_in: a whole pebble
   // close to it, crossing the west side (an exemplar element placed by the quilting).

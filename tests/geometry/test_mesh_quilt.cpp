@@ -73,7 +73,7 @@ std::vector<texture_element> moved_elements(const quilt_exemplar& ex, vec3 t) {
 }
 }  // namespace
 
-TEST_CASE("translation search (eq. 1-4) recovers a known grid offset; ICP (eq. 5) recovers the rest", "[mesh_quilt]") {
+TEST_CASE("translation search (eq. 1-4) recovers a known grid offset, ICP (eq. 5) recovers the rest", "[mesh_quilt]") {
   const auto& ex = small_rings();
   const double cell = ex.cell_size();
   const aabb& eb = ex.bounds();

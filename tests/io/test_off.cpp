@@ -15,7 +15,7 @@ using tessera::status_code;
 using tessera::tri_mesh;
 using tessera::vec3;
 
-TEST_CASE("off: round trips are exact; uvs are dropped", "[off]") {
+TEST_CASE("off: round trips are exact, uvs are dropped", "[off]") {
   const tri_mesh m = samples::grid(3, 2, false);
   const std::string path = samples::out_path("grid.off");
   REQUIRE(tessera::write_off(path, m).ok());

@@ -103,7 +103,7 @@ TEMPLATE_TEST_CASE("ply: every scalar type for positions, counts and indices", "
     }
 }
 
-TEST_CASE("ply: texture coordinates per face corner or per vertex; other elements skipped", "[ply]") {
+TEST_CASE("ply: texture coordinates per face corner or per vertex, other elements skipped", "[ply]") {
   for (const encoding& e : encodings) {
     INFO(e.name);
     std::string header = "ply\n" + format_line(e.binary, e.big) +

@@ -29,7 +29,7 @@ TEST_CASE("periodic colouring: repeats, is toroidal-consistent, uses the set", "
   }
 }
 
-TEST_CASE("periodic colouring: period 1 needs a self-matching tile; impossible periods are reported", "[tiling]") {
+TEST_CASE("periodic colouring: period 1 needs a self-matching tile, impossible periods are reported", "[tiling]") {
   auto complete = tile_set_edges::complete(2, 2);
   auto one = periodic_coloring::create(*complete, 1, 1, 4, 4);
   REQUIRE(one.ok());
