@@ -337,6 +337,23 @@ TEST_CASE("quilt: bad input", "[quilt]") {
   tessera::image_view<std::uint8_t, 3> empty;
   REQUIRE(tessera::quilt(ex, empty).code() == tessera::status_code::invalid_argument);
   REQUIRE(tessera::quilt(empty, out).code() == tessera::status_code::invalid_argument);
+  // NaN or infinite exemplar values would make every overlap error NaN: refused, naming the pixel
+  auto nan = quilt_test::exemplar<float, 3>(tessera::exemplar_kind::sand, 32);
+  nan.write(3, 4, {std::numeric_limits<float>::quiet_NaN(), 0.5f, 0.5f});
+  tessera::image_buffer<float, 3> outf(40, 40);
+  auto s = tessera::quilt(nan, outf, {.patch_size = 8});
+  REQUIRE(s.code() == tessera::status_code::invalid_argument);
+  REQUIRE_THAT(s.message(), Catch::Contains("exemplar: pixel (3, 4) channel 0 is nan"));
+  nan.write(3, 4, {0.5f, -std::numeric_limits<float>::infinity(), 0.5f});
+  REQUIRE_THAT(tessera::quilt(nan, outf, {.patch_size = 8}).message(), Catch::Contains("channel 1 is -inf"));
+  // outputs beyond max_quilt_pixels (2^28) and exemplars beyond max_quilt_exemplar_pixels (2^26):
+  // size_overflow before anything is allocated
+  quilt_test::huge_rgb8 huge_out{1 << 15, (1 << 13) + 1};
+  auto big = tessera::quilt(ex, huge_out);
+  REQUIRE(big.code() == tessera::status_code::size_overflow);
+  REQUIRE_THAT(big.message(), Catch::Contains("output: 32768 x 8193 pixels exceed max_quilt_pixels"));
+  const quilt_test::huge_rgb8 huge_ex{1 << 13, (1 << 13) + 1};
+  REQUIRE_THAT(tessera::quilt(huge_ex, out).message(), Catch::Contains("exemplar: 8192 x 8193 pixels exceed max_quilt_exemplar_pixels"));
   tessera::cancellation_token stop;
   stop.cancel();
   quilt_options cancelled{.patch_size = 8};

@@ -55,8 +55,8 @@ struct quilt_source {
     allowed_patch = p;
     allowed.assign(static_cast<std::size_t>(std::max<index_t>(U, 0) * std::max<index_t>(V, 0)), 1);
     if (U <= 0 || V <= 0) return;
-    // summed-area table of the bad flags
-    std::vector<index_t> sat(static_cast<std::size_t>((w + 1) * (h + 1)), 0);
+    // summed-area table of the bad flags (counts fit 32 bits: exemplars are capped at 2^26 pixels)
+    std::vector<std::uint32_t> sat(static_cast<std::size_t>((w + 1) * (h + 1)), 0);
     for (index_t y = 0; y < h; ++y)
       for (index_t x = 0; x < w; ++x)
         sat[static_cast<std::size_t>((y + 1) * (w + 1) + x + 1)] = bad[static_cast<std::size_t>(y * w + x)] +
