@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <utility>
+#include <vector>
 
 #include <catch2/catch.hpp>
 
@@ -54,6 +56,25 @@ TEMPLATE_TEST_CASE("constrained quilt: pixels outside the mask are untouched bit
           REQUIRE(std::memcmp(a.data(), b.data(), sizeof a) == 0);  // bit for bit
         }
       }
+  }
+}
+
+TEST_CASE("constrained quilt: holes in the corner of the first window are filled", "[quilt]") {
+  // isolated hole pixels at (0, 0) and within `overlap` of both the top and the left edge fall in
+  // the corner region an L-shaped cut keeps old; they must still be filled
+  const auto ex = quilt_test::exemplar(tessera::exemplar_kind::sand, 32, 3);
+  const std::array<std::uint8_t, 3> sentinel{0, 255, 0};
+  for (const auto& holes : std::vector<std::vector<std::pair<index_t, index_t>>>{
+           {{0, 0}}, {{1, 1}, {2, 0}}, {{0, 0}, {3, 2}, {20, 20}}, {{0, 2}, {2, 0}, {1, 3}}}) {
+    auto image = quilt_test::exemplar(tessera::exemplar_kind::sand, 40, 4);
+    tessera::image_buffer<std::uint8_t, 1> mask(40, 40);
+    for (const auto& [x, y] : holes) {
+      mask.write(x, y, {255});
+      image.write(x, y, sentinel);
+    }
+    tessera::image_buffer<std::uint8_t, 3> out(40, 40);
+    REQUIRE(tessera::constrained_quilt(ex, image, mask, out, {.patch_size = 12, .overlap = 4}).ok());
+    for (const auto& [x, y] : holes) REQUIRE(out.read(x, y) != sentinel);
   }
 }
 

@@ -166,7 +166,9 @@ class wang_tile_set {
     return s;
   }
 
+  /// Side of every tile in pixels (0 for an empty set).
   [[nodiscard]] index_t tile_size() const noexcept { return tile_size_; }
+  /// Number of tiles.
   [[nodiscard]] index_t size() const noexcept { return edges_.size(); }
   /// Depth d (measured on the pixels, at most tile_size / 2) within which every tile's pixels near
   /// a side depend only on that side's colour and its corner squares are the same in all tiles:
@@ -181,6 +183,7 @@ class wang_tile_set {
     while (levels < 62 && (index_t{1} << levels) <= shared_border_ && tile_size_ % (index_t{1} << levels) == 0) ++levels;
     return levels;
   }
+  /// The tiles' edge colours (tile i has edges()[i]) with their lookups.
   [[nodiscard]] const tile_set_edges& edges() const noexcept { return edges_; }
   /// Tile i as a read-only view (tile_size × tile_size). Precondition: 0 <= i < size().
   [[nodiscard]] image_view<const T, C> tile(index_t i) const noexcept {
