@@ -92,14 +92,16 @@ int main(int argc, char** argv) {
               quality->max_ratio);
 
   // [snippet:wang_atlas]
-  // Wei's edge-ordered atlas: neighbouring atlas tiles match along their shared edge (wrapping), so
-  // bilinear filtering across tile borders reads valid texels. A shader maps plane -> atlas texels.
+  // Wei's edge-ordered atlas. Tiles of 64 built with default options share an 8-texel border and
+  // the same corners, so bilinear samples of mip levels 0-3 read the tiled plane's own texels across
+  // tile borders and corners (atlas->mip_levels == 4). A shader maps plane -> atlas texels.
   auto atlas = tessera::build_wang_atlas(*set);
   if (!atlas) return fail(atlas.error());
   auto plane_coloring = tessera::hash_coloring::for_set(set->edges(), /*seed=*/5);  // O(1) per cell
   const tessera::vec2 texel = tessera::atlas_coordinates(*atlas, *plane_coloring, 1000.25, -77.5);
   // [/snippet]
-  std::printf("plane texel (1000.25, -77.5) -> atlas texel (%.2f, %.2f)\n", texel.x, texel.y);
+  std::printf("plane texel (1000.25, -77.5) -> atlas texel (%.2f, %.2f); exact mip levels: %d\n", texel.x, texel.y,
+              atlas->mip_levels);
   if (!save(dir + "/wang_atlas.png", atlas->image)) return 1;
 
   // Cohen's 8 tiles (two per (north, west) pair) tiled by the hash colouring of the plane.

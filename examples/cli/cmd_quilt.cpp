@@ -23,9 +23,9 @@ int run_quilt(const cli::arguments& args) {
   if (inpaint && !(args.has("--mask") && args.has("--in")))
     return cli::fail(args, tessera::status::invalid_argument("--mask and --in go together (fill the masked pixels of --in)"));
   if (!inpaint && !args.has("--exemplar")) return cli::fail(args, tessera::status::invalid_argument("missing required option --exemplar"));
-  auto patch = args.integer("--patch", 0);
-  auto overlap = args.integer("--overlap", 0);
-  auto tolerance = args.number("--tolerance", 0.1);
+  auto patch = args.integer("--patch", 0, 0, 65536);
+  auto overlap = args.integer("--overlap", 0, 0, 65536);
+  auto tolerance = args.number("--tolerance", 0.1, 0, 1e30);
   for (const auto* r : {&patch.error(), &overlap.error(), &tolerance.error()})
     if (!r->ok()) return cli::fail(args, *r);
   tessera::quilt_options options{.patch_size = static_cast<index_t>(*patch),
@@ -55,7 +55,7 @@ int run_quilt(const cli::arguments& args) {
       if (!result) return result;
     } else {
       if (!args.has("--size")) return tessera::status::invalid_argument("missing required option --size");
-      auto size = args.size("--size");
+      auto size = args.size("--size", 65536, tessera::max_quilt_pixels);
       if (!size) return size.error();
       auto ex = cli::load_image_source<T, C>(args, "--exemplar");
       if (!ex) return ex.error();

@@ -1,6 +1,7 @@
 // tessera wang build / wang tile: Wang tile sets from an exemplar and tiled images from a tile directory.
-//   tessera wang build --exemplar E.png --colors NH,NV --tile T --out DIR [--subset]
+//   tessera wang build --exemplar E.png --colors NH,NV --tile T --out DIR [--subset] [--mip-levels L]
 //   tessera wang tile --tiles DIR --grid COLSxROWS --out O.png [--coloring scanline|hash|periodic] [--outline]
+#include <cmath>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -32,19 +33,25 @@ int run_build(const cli::arguments& args) {
   if (!dir) return cli::fail(args, dir.error());
   auto colors = args.has("--colors") ? args.numbers("--colors", 2) : tessera::result<std::vector<double>>(std::vector<double>{2, 2});
   if (!colors) return cli::fail(args, colors.error());
-  auto tile = args.integer("--tile", 64);
-  auto overlap = args.integer("--overlap", 0);
-  auto patch = args.integer("--patch", 0);
-  auto border = args.integer("--border", 0);
-  auto tolerance = args.number("--tolerance", 0.1);
-  for (const auto* r : {&tile.error(), &overlap.error(), &patch.error(), &border.error(), &tolerance.error()})
+  // range-checked before any conversion to int (1e10 must not wrap)
+  for (double c : *colors)
+    if (!(c >= 1 && c <= tessera::max_wang_colors) || c != std::floor(c))
+      return cli::fail(args, tessera::status::invalid_argument("--colors expects two integers NH,NV in [1, " +
+                                                               std::to_string(tessera::max_wang_colors) + "], got '" +
+                                                               args.str("--colors") + "'"));
+  auto tile = args.integer("--tile", 64, 4, 65536);
+  auto overlap = args.integer("--overlap", 0, 0, 65536);
+  auto patch = args.integer("--patch", 0, 0, 65536);
+  auto border = args.integer("--border", 0, 0, 65536);
+  auto mip_levels = args.integer("--mip-levels", 0, 0, 16);
+  auto tolerance = args.number("--tolerance", 0.1, 0, 1e30);
+  for (const auto* r : {&tile.error(), &overlap.error(), &patch.error(), &border.error(), &mip_levels.error(), &tolerance.error()})
     if (!r->ok()) return cli::fail(args, *r);
   const int nh = static_cast<int>((*colors)[0]), nv = static_cast<int>((*colors)[1]);
-  if (nh != (*colors)[0] || nv != (*colors)[1])
-    return cli::fail(args, tessera::status::invalid_argument("--colors expects two integers NH,NV, got '" + args.str("--colors") + "'"));
   tessera::wang_tile_options options{.tile_size = static_cast<index_t>(*tile),
                                      .horizontal_colors = nh,
                                      .vertical_colors = nv,
+                                     .mip_levels = static_cast<int>(*mip_levels),
                                      .overlap = static_cast<index_t>(*overlap),
                                      .patch_size = static_cast<index_t>(*patch),
                                      .border = static_cast<index_t>(*border),
@@ -79,6 +86,8 @@ int run_build(const cli::arguments& args) {
           .add("seam_ratio_mean", quality->mean_ratio)
           .add("seam_ratio_max", quality->max_ratio)
           .add("atlas", layout == tessera::atlas_layout::edge_ordered ? "edge_ordered" : "padded")
+          .add("atlas_mip_levels", atlas->mip_levels)
+          .add("shared_border", set->shared_border())
           .print();
     }
     return {};
@@ -89,7 +98,7 @@ int run_build(const cli::arguments& args) {
 
 template <class T, int C>
 tessera::status tile_with(const cli::arguments& args, const std::string& dir, const std::string& kind, index_t cols, index_t rows) {
-  auto period = args.integer("--period", 4);
+  auto period = args.integer("--period", 4, 1, 8192);
   if (!period) return period.error();
   auto set = tessera::load_wang_tiles<T, C>(dir);
   if (!set) return set.error();
@@ -165,7 +174,7 @@ std::vector<cli::option_spec> with_common(std::vector<cli::option_spec> o) {
 const cli::registrar build_command({
     .name = "wang build",
     .summary = "build a Wang tile set from an exemplar (tiles, tiles.json, atlas.png)",
-    .usage = "tessera wang build --exemplar E.png --colors NH,NV --tile T --out DIR [--subset]",
+    .usage = "tessera wang build --exemplar E.png --colors NH,NV --tile T --out DIR [--subset] [--mip-levels L]",
     .options = with_common({
         {"--exemplar", "E.png", "exemplar PNG or procedural kind (grass, sand, rock, bricks, cells, weave, dots)"},
         cli::exemplar_size_option(),
@@ -173,9 +182,11 @@ const cli::registrar build_command({
         {"--tile", "T", "tile size in pixels (default 64; at most the exemplar's smaller side)"},
         {"--out", "DIR", "output directory: tile_<index>.png, tiles.json, atlas.png"},
         {"--subset", "", "build the modular subset (Cohen's 8 tiles for 2,2) instead of all NH^2 NV^2"},
-        {"--overlap", "V", "quilting overlap = depth of each edge sample in a tile (default tile / 10)"},
+        {"--overlap", "V", "quilting overlap = depth of each edge sample in a tile (default max(tile / 10, border + 2))"},
         {"--patch", "P", "quilting patch size (default about tile / 3)"},
-        {"--border", "B", "outer pixels copied from the edge samples and never cut (default overlap / 4)"},
+        {"--mip-levels", "L", "mip levels of atlas.png that sample exactly across tile borders and corners "
+                              "(border 2^(L-1); default: up to 4 as the tile size allows)"},
+        {"--border", "B", "outer pixels copied from the edge samples and never cut (default 2^(L-1))"},
         {"--tolerance", "T", "candidate tolerance (default 0.1)"},
     }),
     .run = run_build,

@@ -23,6 +23,16 @@ struct user_rgb16 {
   void write(index_t x, index_t y, const std::array<std::uint16_t, 3>& p) { px[static_cast<std::size_t>(y * w + x)] = p; }
 };
 
+/// A user image of any claimed size holding no pixels (reads are constant, writes ignored): lets
+/// tests ask for sizes beyond the library's caps without allocating them.
+struct huge_rgb8 {
+  index_t w = 0, h = 0;
+  index_t width() const { return w; }
+  index_t height() const { return h; }
+  std::array<std::uint8_t, 3> read(index_t, index_t) const { return {1, 2, 3}; }
+  void write(index_t, index_t, const std::array<std::uint8_t, 3>&) {}
+};
+
 template <class T = std::uint8_t, int C = 3>
 tessera::image_buffer<T, C> exemplar(tessera::exemplar_kind kind, index_t size, std::uint64_t seed = 1) {
   return tessera::make_exemplar<T, C>(kind, {.width = size, .height = size, .seed = seed}).value();

@@ -3,6 +3,7 @@
 #include <tessera/core/executor.hpp>
 #include <tessera/core/image_view.hpp>
 #include <tessera/image/metrics.hpp>
+#include <tessera/image/wang_atlas.hpp>
 #include <tessera/image/wang_seam_quality.hpp>
 #include <tessera/tiling/hash_coloring.hpp>
 #include <tessera/tiling/periodic_coloring.hpp>
@@ -140,4 +141,24 @@ TEST_CASE("compose tiles: bad input", "[wang]") {
   REQUIRE(tessera::compose_tiles(set, *scan, empty).code() == tessera::status_code::invalid_argument);
   const tessera::stored_tile_coloring stored = tessera::store_coloring(*scan);
   REQUIRE(tessera::compose_tiles(set, stored, 3, out).code() == tessera::status_code::invalid_argument);
+  // a user grid colouring whose cols() x rows() disagrees with its face count: refused before any
+  // face beyond the stored ones is read
+  struct lying_grid {
+    const tessera::stored_tile_coloring* cells;
+    index_t c, r;
+    index_t cols() const { return c; }
+    index_t rows() const { return r; }
+    index_t num_faces() const { return cells->num_faces(); }
+    int num_colors(int side) const { return cells->num_colors(side); }
+    int edge_color(index_t f, int side) const { return cells->edge_color(f, side); }
+  };
+  static_assert(tessera::GridTileColoring<lying_grid>);
+  tessera::image_buffer<std::uint16_t, 3> big(40, 40);
+  for (const lying_grid g : {lying_grid{&stored, 8, 4}, lying_grid{&stored, 4, 8}, lying_grid{&stored, 0, 16}, lying_grid{&stored, -4, -4}}) {
+    auto s = tessera::compose_tiles(set, g, big);
+    REQUIRE(s.code() == tessera::status_code::invalid_argument);
+    REQUIRE_THAT(s.message(), Catch::Contains("does not match num_faces() = 16"));
+    REQUIRE(tessera::atlas_coordinates(tessera::build_wang_atlas(set).value(), g, 1.5, 1.5).x == -1);
+  }
+  REQUIRE(tessera::compose_tiles(set, lying_grid{&stored, 4, 4}, out).ok());
 }

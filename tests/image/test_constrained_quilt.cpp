@@ -6,6 +6,9 @@
 
 #include <cmath>
 #include <cstring>
+#include <limits>
+#include <utility>
+#include <vector>
 
 #include <catch2/catch.hpp>
 
@@ -53,6 +56,25 @@ TEMPLATE_TEST_CASE("constrained quilt: pixels outside the mask are untouched bit
           REQUIRE(std::memcmp(a.data(), b.data(), sizeof a) == 0);  // bit for bit
         }
       }
+  }
+}
+
+TEST_CASE("constrained quilt: holes in the corner of the first window are filled", "[quilt]") {
+  // isolated hole pixels at (0, 0) and within `overlap` of both the top and the left edge fall in
+  // the corner region an L-shaped cut keeps old; they must still be filled
+  const auto ex = quilt_test::exemplar(tessera::exemplar_kind::sand, 32, 3);
+  const std::array<std::uint8_t, 3> sentinel{0, 255, 0};
+  for (const auto& holes : std::vector<std::vector<std::pair<index_t, index_t>>>{
+           {{0, 0}}, {{1, 1}, {2, 0}}, {{0, 0}, {3, 2}, {20, 20}}, {{0, 2}, {2, 0}, {1, 3}}}) {
+    auto image = quilt_test::exemplar(tessera::exemplar_kind::sand, 40, 4);
+    tessera::image_buffer<std::uint8_t, 1> mask(40, 40);
+    for (const auto& [x, y] : holes) {
+      mask.write(x, y, {255});
+      image.write(x, y, sentinel);
+    }
+    tessera::image_buffer<std::uint8_t, 3> out(40, 40);
+    REQUIRE(tessera::constrained_quilt(ex, image, mask, out, {.patch_size = 12, .overlap = 4}).ok());
+    for (const auto& [x, y] : holes) REQUIRE(out.read(x, y) != sentinel);
   }
 }
 
@@ -118,6 +140,24 @@ TEST_CASE("constrained quilt: bad input", "[quilt]") {
   auto none = tessera::constrained_quilt(image, everything, out, {.patch_size = 8});
   REQUIRE(none.code() == tessera::status_code::invalid_argument);
   REQUIRE_THAT(none.message(), Catch::Contains("free of masked pixels"));
+  // non-finite values in a float image or exemplar; images beyond the caps
+  auto fex = quilt_test::exemplar<float, 3>(tessera::exemplar_kind::sand, 32);
+  auto fimg = quilt_test::exemplar<float, 3>(tessera::exemplar_kind::sand, 40);
+  tessera::image_buffer<float, 3> fout(40, 40);
+  fimg.write(39, 0, {0.5f, 0.5f, std::numeric_limits<float>::infinity()});
+  REQUIRE_THAT(tessera::constrained_quilt(fex, fimg, mask, fout).message(), Catch::Contains("image: pixel (39, 0) channel 2 is inf"));
+  REQUIRE_THAT(tessera::constrained_quilt(fimg, mask, fout).message(), Catch::Contains("image: pixel (39, 0) channel 2 is inf"));
+  fimg.write(39, 0, {0.5f, 0.5f, 0.5f});
+  fex.write(0, 31, {std::numeric_limits<float>::quiet_NaN(), 0.5f, 0.5f});
+  REQUIRE_THAT(tessera::constrained_quilt(fex, fimg, mask, fout).message(), Catch::Contains("exemplar: pixel (0, 31) channel 0 is nan"));
+  const quilt_test::huge_rgb8 huge{1 << 15, (1 << 13) + 1};
+  quilt_test::huge_rgb8 huge_out = huge;
+  auto big = tessera::constrained_quilt(ex, huge, huge, huge_out);
+  REQUIRE(big.code() == tessera::status_code::size_overflow);
+  REQUIRE_THAT(big.message(), Catch::Contains("image: 32768 x 8193 pixels exceed max_quilt_pixels"));
+  const quilt_test::huge_rgb8 self{1 << 13, (1 << 13) + 1};  // inpainting from itself: the exemplar cap applies
+  quilt_test::huge_rgb8 self_out = self;
+  REQUIRE_THAT(tessera::constrained_quilt(self, self, self_out).message(), Catch::Contains("exceed max_quilt_exemplar_pixels"));
   // an empty mask copies the image
   tessera::image_buffer<std::uint8_t, 1> nothing(40, 40);
   REQUIRE(tessera::constrained_quilt(ex, image, nothing, out).ok());

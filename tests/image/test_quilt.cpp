@@ -104,51 +104,187 @@ TEST_CASE("quilt: overlap errors equal a brute-force SSD, selection stays within
   REQUIRE(drawn.size() == 5u);
 }
 
-TEST_CASE("quilt: the boundary cut is the minimum-error path (brute force)", "[quilt]") {
-  // a 6 x 6 window whose west band (3 columns) is filled: every |dx| <= 1 path is enumerated
-  const tessera::counter_rng rng(11);
-  for (int trial = 0; trial < 20; ++trial) {
-    dt::site_window win;
-    win.p = 6;
-    win.state.assign(36, dt::pixel_state::empty);
-    win.outside.assign(36, 0);
-    win.error.assign(36, 0.0);
-    for (index_t j = 0; j < 6; ++j)
-      for (index_t i = 0; i < 3; ++i) {
-        win.state[win.idx(i, j)] = trial % 2 && i == 0 && j == 2 ? dt::pixel_state::fixed : dt::pixel_state::filled;
-        win.error[win.idx(i, j)] = rng.uniform(trial, i, j);
-      }
-    const index_t band[4] = {0, 0, 0, 3};
-    std::vector<std::uint8_t> is_new;
-    dt::cut_labels(win, band, is_new);
-    // recover the path: first new column of each row
-    double cut_cost = 0;
-    std::vector<index_t> path;
-    for (index_t j = 0; j < 6; ++j) {
-      index_t x = 0;
-      while (!is_new[win.idx(x, j)]) ++x;
-      for (index_t i = x; i < 6; ++i) REQUIRE(is_new[win.idx(i, j)]);  // one boundary per row
-      path.push_back(x);
-      cut_cost += win.error[win.idx(x, j)] + (trial % 2 && j == 2 && x == 0 ? dt::fixed_pixel_penalty : 0);
-    }
-    for (std::size_t j = 1; j < path.size(); ++j) REQUIRE(std::abs(path[j] - path[j - 1]) <= 1);
-    double best = std::numeric_limits<double>::infinity();
-    for (int code = 0; code < 729; ++code) {  // 3^6 paths
-      int c = code;
-      double cost = 0;
-      bool ok = true;
-      index_t prev = -1;
-      for (index_t j = 0; j < 6; ++j, c /= 3) {
-        const index_t x = c % 3;
-        ok = ok && (prev < 0 || std::abs(x - prev) <= 1);
-        prev = x;
-        cost += win.error[win.idx(x, j)] + (trial % 2 && j == 2 && x == 0 ? dt::fixed_pixel_penalty : 0);
-      }
-      if (ok) best = std::min(best, cost);
-    }
-    REQUIRE(cut_cost == Approx(best));
-    if (trial % 2) REQUIRE_FALSE(is_new[win.idx(0, 2)]);  // the fixed pixel stays on the old side
+namespace {
+// Brute force for the cuts: every path of a side's band is enumerated (3 choices per line) and
+// costed with the same per-pixel rule the DP uses (the error of the first new pixel, plus a penalty
+// per fixed pixel that would become new, infinite when an empty pixel would stay old).
+// (written independently of the kernel's cut_pixel_cost; depth a, line b of a side -> window (i, j))
+double oracle_cost(const dt::site_window& win, int side, index_t width, index_t x, index_t b) {
+  const index_t p = win.p;
+  auto ij = [&](index_t a) -> std::pair<index_t, index_t> {
+    if (side == tessera::side_west) return {a, b};
+    if (side == tessera::side_east) return {p - 1 - a, b};
+    if (side == tessera::side_north) return {b, a};
+    return {b, p - 1 - a};
+  };
+  double c = win.error[win.idx(ij(x).first, ij(x).second)];
+  for (index_t a = 0; a < width; ++a) {
+    const dt::pixel_state st = win.state[win.idx(ij(a).first, ij(a).second)];
+    if (a < x && st == dt::pixel_state::empty) return std::numeric_limits<double>::infinity();
+    if (a >= x && st == dt::pixel_state::fixed) c += dt::fixed_pixel_penalty;
   }
+  return c;
+}
+double path_cost(const dt::site_window& win, int side, index_t width, const std::vector<index_t>& pos, index_t from) {
+  double c = 0;
+  for (index_t b = from; b < win.p; ++b) c += oracle_cost(win, side, width, pos[static_cast<std::size_t>(b)], b);
+  return c;
+}
+// cheapest path of `side` over lines [from, p) whose first position is x0 (x0 < 0: any start)
+double brute_path(const dt::site_window& win, int side, index_t width, index_t from, index_t x0) {
+  double best = std::numeric_limits<double>::infinity();
+  const index_t lines = win.p - from;
+  index_t codes = 1;
+  for (index_t k = 0; k < lines; ++k) codes *= width;
+  std::vector<index_t> pos(static_cast<std::size_t>(win.p), 0);
+  for (index_t code = 0; code < codes; ++code) {
+    index_t c = code;
+    bool ok = true;
+    for (index_t b = from; b < win.p; ++b, c /= width) {
+      pos[static_cast<std::size_t>(b)] = c % width;
+      if (b > from && std::abs(pos[static_cast<std::size_t>(b)] - pos[static_cast<std::size_t>(b - 1)]) > 1) ok = false;
+    }
+    if (!ok || (x0 >= 0 && pos[static_cast<std::size_t>(from)] != x0)) continue;
+    best = std::min(best, path_cost(win, side, width, pos, from));
+  }
+  return best;
+}
+// a p x p window: pixels within the given bands are known (filled, some fixed), a few band pixels
+// and everything else empty; random errors on known pixels
+dt::site_window random_window(index_t p, const index_t band[4], const tessera::counter_rng& rng, int trial) {
+  dt::site_window win;
+  win.p = p;
+  win.state.assign(static_cast<std::size_t>(p * p), dt::pixel_state::empty);
+  win.outside.assign(static_cast<std::size_t>(p * p), 0);
+  win.error.assign(static_cast<std::size_t>(p * p), 0.0);
+  for (index_t j = 0; j < p; ++j)
+    for (index_t i = 0; i < p; ++i) {
+      const bool known = i < band[tessera::side_west] || j < band[tessera::side_north] || p - 1 - i < band[tessera::side_east] ||
+                         p - 1 - j < band[tessera::side_south];
+      if (!known) continue;
+      const double u = rng.uniform(trial, i, j, 1);
+      const std::size_t k = win.idx(i, j);
+      win.state[k] = u < 0.08 ? dt::pixel_state::fixed : u < 0.12 ? dt::pixel_state::empty : dt::pixel_state::filled;
+      if (win.state[k] != dt::pixel_state::empty) win.error[k] = rng.uniform(trial, i, j, 2);
+    }
+  return win;
+}
+void check_path_shape(const std::vector<index_t>& path, index_t p, index_t width, index_t from) {
+  REQUIRE(path.size() == static_cast<std::size_t>(p));
+  for (index_t b = from; b < p; ++b) {
+    REQUIRE(path[static_cast<std::size_t>(b)] >= 0);
+    REQUIRE(path[static_cast<std::size_t>(b)] < width);
+    if (b > from) REQUIRE(std::abs(path[static_cast<std::size_t>(b)] - path[static_cast<std::size_t>(b - 1)]) <= 1);
+  }
+}
+}  // namespace
+
+TEST_CASE("quilt: every single-side cut is the minimum-error path (brute force: west, north, east, south)", "[quilt]") {
+  const tessera::counter_rng rng(11);
+  const index_t p = 7;
+  for (int side = 0; side < 4; ++side)
+    for (int trial = 0; trial < 12; ++trial) {
+      index_t band[4] = {0, 0, 0, 0};
+      band[side] = 2 + trial % 2;  // widths 2 and 3
+      const dt::site_window win = random_window(p, band, rng, side * 100 + trial);
+      dt::cut_plan plan;
+      dt::plan_cuts(win, band, plan);
+      for (int s = 0; s < 4; ++s) REQUIRE(plan.active[s] == (s == side));
+      REQUIRE_FALSE(plan.meet);
+      const std::vector<index_t>& path = plan.path[side];
+      check_path_shape(path, p, band[side], 0);
+      CAPTURE(side, trial);
+      REQUIRE(path_cost(win, side, band[side], path, 0) == Approx(brute_path(win, side, band[side], 0, -1)));
+      // labels: new exactly at and past the path on each line; empty pixels are always new
+      std::vector<std::uint8_t> is_new;
+      dt::labels_from_plan(win, plan, is_new);
+      for (index_t b = 0; b < p; ++b)
+        for (index_t a = 0; a < p; ++a) {
+          const dt::window_xy q = dt::side_pixel(side, p, a, b);
+          const std::size_t k = win.idx(q.i, q.j);
+          REQUIRE(bool(is_new[k]) == (a >= path[static_cast<std::size_t>(b)] || win.state[k] == dt::pixel_state::empty));
+        }
+    }
+}
+
+TEST_CASE("quilt: the L-shaped cut meets at the cheapest point (brute force), east and south cuts with it", "[quilt]") {
+  const tessera::counter_rng rng(12);
+  const index_t p = 6;
+  for (int trial = 0; trial < 16; ++trial) {
+    // west + north always (the L), east and/or south in some trials (a patch closing a ring)
+    index_t band[4] = {2 + trial % 2, trial & 4 ? 2 : 0, trial & 8 ? 2 : 0, 3 - trial % 2};
+    const dt::site_window win = random_window(p, band, rng, 1000 + trial);
+    dt::cut_plan plan;
+    dt::plan_cuts(win, band, plan);
+    REQUIRE(plan.meet);
+    CAPTURE(trial, plan.mx, plan.my);
+    const index_t Sw = band[tessera::side_west], Sn = band[tessera::side_north];
+    REQUIRE(plan.mx >= 0);
+    REQUIRE(plan.mx < Sw);
+    REQUIRE(plan.my >= 0);
+    REQUIRE(plan.my < Sn);
+    check_path_shape(plan.path[tessera::side_west], p, Sw, plan.my);
+    check_path_shape(plan.path[tessera::side_north], p, Sn, plan.mx);
+    REQUIRE(plan.path[tessera::side_west][static_cast<std::size_t>(plan.my)] == plan.mx);
+    REQUIRE(plan.path[tessera::side_north][static_cast<std::size_t>(plan.mx)] == plan.my);
+    // cost of the L: west path from row my down, north path from column mx right, meeting pixel once
+    const double chosen = path_cost(win, tessera::side_west, Sw, plan.path[tessera::side_west], plan.my) +
+                          path_cost(win, tessera::side_north, Sn, plan.path[tessera::side_north], plan.mx) -
+                          win.error[win.idx(plan.mx, plan.my)];
+    double best = std::numeric_limits<double>::infinity();
+    for (index_t y = 0; y < Sn; ++y)
+      for (index_t x = 0; x < Sw; ++x)
+        best = std::min(best, brute_path(win, tessera::side_west, Sw, y, x) + brute_path(win, tessera::side_north, Sn, x, y) -
+                                  win.error[win.idx(x, y)]);
+    REQUIRE(chosen == Approx(best));
+    for (int s : {tessera::side_east, tessera::side_south}) {
+      REQUIRE(plan.active[s] == (band[s] > 0));
+      if (!plan.active[s]) continue;
+      check_path_shape(plan.path[s], p, band[s], 0);
+      REQUIRE(path_cost(win, s, band[s], plan.path[s], 0) == Approx(brute_path(win, s, band[s], 0, -1)));
+    }
+    // labels: old in the corner region before the meeting point and before each path, new elsewhere;
+    // an empty pixel is new wherever it lies (also inside the corner region)
+    std::vector<std::uint8_t> is_new;
+    dt::labels_from_plan(win, plan, is_new);
+    for (index_t j = 0; j < p; ++j)
+      for (index_t i = 0; i < p; ++i) {
+        bool expect = !(i < plan.mx && j < plan.my);
+        if (j >= plan.my) expect = expect && i >= plan.path[tessera::side_west][static_cast<std::size_t>(j)];
+        if (i >= plan.mx) expect = expect && j >= plan.path[tessera::side_north][static_cast<std::size_t>(i)];
+        if (band[tessera::side_east]) expect = expect && p - 1 - i >= plan.path[tessera::side_east][static_cast<std::size_t>(j)];
+        if (band[tessera::side_south]) expect = expect && p - 1 - j >= plan.path[tessera::side_south][static_cast<std::size_t>(i)];
+        const std::size_t k = win.idx(i, j);
+        REQUIRE(bool(is_new[k]) == (expect || win.state[k] == dt::pixel_state::empty));
+      }
+  }
+}
+
+TEST_CASE("quilt: an empty pixel in the L-cut's corner region is labelled new", "[quilt]") {
+  // the west and north bands are known except one hole at (0, 0), inside the region the L-cut
+  // keeps old whenever the meeting point is not (0, 0): make the meeting point (2, 2) cheapest
+  dt::site_window win;
+  win.p = 8;
+  win.state.assign(64, dt::pixel_state::empty);
+  win.outside.assign(64, 0);
+  win.error.assign(64, 5.0);
+  for (index_t j = 0; j < 8; ++j)
+    for (index_t i = 0; i < 8; ++i)
+      if (i < 3 || j < 3) win.state[win.idx(i, j)] = dt::pixel_state::filled;
+  win.state[win.idx(0, 0)] = dt::pixel_state::empty;
+  win.error[win.idx(0, 0)] = 0;
+  for (index_t k = 2; k < 8; ++k) win.error[win.idx(2, k)] = win.error[win.idx(k, 2)] = 0.0;  // the cheap L through (2, 2)
+  const index_t band[4] = {3, 0, 0, 3};
+  dt::cut_plan plan;
+  dt::plan_cuts(win, band, plan);
+  REQUIRE(plan.meet);
+  REQUIRE(plan.mx == 2);
+  REQUIRE(plan.my == 2);
+  std::vector<std::uint8_t> is_new;
+  dt::labels_from_plan(win, plan, is_new);
+  REQUIRE(is_new[win.idx(0, 0)] == 1);   // the hole is filled by this patch
+  REQUIRE(is_new[win.idx(1, 1)] == 0);   // its known neighbours in the corner region stay old
+  REQUIRE(is_new[win.idx(1, 0)] == 0);
 }
 
 TEST_CASE("quilt: overlap search and cuts beat random patches (neighbourhood energy)", "[quilt]") {
@@ -201,6 +337,23 @@ TEST_CASE("quilt: bad input", "[quilt]") {
   tessera::image_view<std::uint8_t, 3> empty;
   REQUIRE(tessera::quilt(ex, empty).code() == tessera::status_code::invalid_argument);
   REQUIRE(tessera::quilt(empty, out).code() == tessera::status_code::invalid_argument);
+  // NaN or infinite exemplar values would make every overlap error NaN: refused, naming the pixel
+  auto nan = quilt_test::exemplar<float, 3>(tessera::exemplar_kind::sand, 32);
+  nan.write(3, 4, {std::numeric_limits<float>::quiet_NaN(), 0.5f, 0.5f});
+  tessera::image_buffer<float, 3> outf(40, 40);
+  auto s = tessera::quilt(nan, outf, {.patch_size = 8});
+  REQUIRE(s.code() == tessera::status_code::invalid_argument);
+  REQUIRE_THAT(s.message(), Catch::Contains("exemplar: pixel (3, 4) channel 0 is nan"));
+  nan.write(3, 4, {0.5f, -std::numeric_limits<float>::infinity(), 0.5f});
+  REQUIRE_THAT(tessera::quilt(nan, outf, {.patch_size = 8}).message(), Catch::Contains("channel 1 is -inf"));
+  // outputs beyond max_quilt_pixels (2^28) and exemplars beyond max_quilt_exemplar_pixels (2^26):
+  // size_overflow before anything is allocated
+  quilt_test::huge_rgb8 huge_out{1 << 15, (1 << 13) + 1};
+  auto big = tessera::quilt(ex, huge_out);
+  REQUIRE(big.code() == tessera::status_code::size_overflow);
+  REQUIRE_THAT(big.message(), Catch::Contains("output: 32768 x 8193 pixels exceed max_quilt_pixels"));
+  const quilt_test::huge_rgb8 huge_ex{1 << 13, (1 << 13) + 1};
+  REQUIRE_THAT(tessera::quilt(huge_ex, out).message(), Catch::Contains("exemplar: 8192 x 8193 pixels exceed max_quilt_exemplar_pixels"));
   tessera::cancellation_token stop;
   stop.cancel();
   quilt_options cancelled{.patch_size = 8};

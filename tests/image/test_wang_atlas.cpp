@@ -102,26 +102,29 @@ TEST_CASE("wang atlas: edge-ordered neighbours match across every border, wrappi
     }
 }
 
-TEST_CASE("wang atlas: bilinear samples across tile borders match the tiled plane at every mip level", "[wang]") {
-  // Tiles with the same edge colour share their outer `border` texels (copied from the edge strip),
-  // so sampling across a border reads the same texels in the atlas as in the plane as long as the
-  // filter footprint (2^level texels deep) stays within the border and away from tile corners.
-  const auto ex = quilt_test::exemplar(tessera::exemplar_kind::cells, 96, 5);
-  const index_t ts = 48, ov = 10, border = 8;
-  auto set = tessera::build_wang_tiles(ex, {.tile_size = ts, .overlap = ov, .border = border, .seed = 3});
+TEST_CASE("wang atlas: default options sample exactly across tile borders and corners at every promised mip level", "[wang]") {
+  // A model of GPU texturing (box-filtered mips, bilinear, REPEAT) applied to the composed plane is
+  // the ground truth. Both layouts, built with default options from a set built with default
+  // options, promise 3 levels for tiles of 32 (shared border 4): every sample of the tiles' area,
+  // borders and corners included, must match there.
+  const auto ex = quilt_test::exemplar(tessera::exemplar_kind::cells, 64, 5);
+  const index_t ts = 32;
+  auto set = tessera::build_wang_tiles(ex, {.tile_size = ts, .seed = 3});
   REQUIRE(set.ok());
+  REQUIRE(set->exact_mip_levels() == 3);
   auto plane = tessera::hash_coloring::create(2, 2, 6);
   const index_t cells = 6;
   tessera::image_buffer<std::uint8_t, 3> ground_truth(cells * ts, cells * ts);
   REQUIRE(tessera::compose_tiles(*set, *plane, ground_truth).ok());
-  constexpr int levels = 4;  // footprints of 1, 2, 4 and 8 texels
-  const mip_texture truth(ground_truth, levels);
-
   auto ordered = tessera::build_wang_atlas(*set);
-  auto padded = tessera::build_wang_atlas(*set, {.layout = tessera::atlas_layout::padded, .padding = 4});
+  auto padded = tessera::build_wang_atlas(*set, {.layout = tessera::atlas_layout::padded});
   REQUIRE(ordered.ok());
   REQUIRE(padded.ok());
-  const mip_texture ordered_tex(ordered->image, levels), padded_tex(padded->image, levels);
+  REQUIRE(ordered->mip_levels == 3);
+  REQUIRE(padded->mip_levels == 3);
+  REQUIRE(padded->padding == 4);
+  constexpr int levels = 3;
+  const mip_texture truth(ground_truth, levels), ordered_tex(ordered->image, levels), padded_tex(padded->image, levels);
   // a naive atlas: tiles in index order without padding (what the layouts exist to avoid)
   tessera::image_buffer<std::uint8_t, 3> naive(4 * ts, 4 * ts);
   for (index_t t = 0; t < 16; ++t)
@@ -130,33 +133,27 @@ TEST_CASE("wang atlas: bilinear samples across tile borders match the tiled plan
   const mip_texture naive_tex(naive, levels);
 
   double worst_ordered[levels] = {}, worst_padded[levels] = {}, worst_naive = 0;
-  int samples = 0;
+  int corner_samples = 0;
   for (int level = 0; level < levels; ++level) {
     const double texel = std::ldexp(1.0, level);
-    for (index_t cell = 1; cell < cells - 1; ++cell)
-      for (double along = ov; along < ts - ov; along += 0.75) {
-        const double first = texel * std::floor(along / texel - 0.5);  // texels the filter reads along the edge
-        if (first < ov || first + 2 * texel > ts - ov) continue;
-        for (double offset : {-0.75 * texel, -0.25 * texel, 0.0, 0.3 * texel, 0.7 * texel})
-          for (int vertical = 0; vertical < 2; ++vertical) {
-            const double px = vertical ? double(cell * ts) + offset : double(2 * ts) + along;
-            const double py = vertical ? double(3 * ts) + along : double(cell * ts) + offset;
-            const auto expect = truth.sample(px, py, level);
-            const tessera::vec2 a = tessera::atlas_coordinates(*ordered, *plane, px, py);
-            worst_ordered[level] = std::max(worst_ordered[level], max_difference(ordered_tex.sample(a.x, a.y, level), expect));
-            if (level <= 2) {  // padding 4 covers footprints up to 4 texels
-              const tessera::vec2 b = tessera::atlas_coordinates(*padded, *plane, px, py);
-              worst_padded[level] = std::max(worst_padded[level], max_difference(padded_tex.sample(b.x, b.y, level), expect));
-            }
-            const index_t col = tessera::floor_div(index_t(std::floor(px)), ts), row = tessera::floor_div(index_t(std::floor(py)), ts);
-            const index_t t = set->edges().find(tessera::cell_edges(*plane, col, row));
-            const double fx = px - double(col * ts), fy = py - double(row * ts);
-            worst_naive = std::max(worst_naive, max_difference(naive_tex.sample(double((t % 4) * ts) + fx, double((t / 4) * ts) + fy, level), expect));
-            ++samples;
-          }
+    // every point of cells [1, 4)² on a 0.7-texel grid: the footprint of those within a texel of a
+    // border reads the neighbour, within a texel of a corner all four tiles
+    for (double py = ts + 0.1; py < 4 * ts; py += 0.7)
+      for (double px = ts + 0.35; px < 4 * ts; px += 0.7) {
+        const auto expect = truth.sample(px, py, level);
+        const tessera::vec2 a = tessera::atlas_coordinates(*ordered, *plane, px, py);
+        const tessera::vec2 b = tessera::atlas_coordinates(*padded, *plane, px, py);
+        worst_ordered[level] = std::max(worst_ordered[level], max_difference(ordered_tex.sample(a.x, a.y, level), expect));
+        worst_padded[level] = std::max(worst_padded[level], max_difference(padded_tex.sample(b.x, b.y, level), expect));
+        const index_t col = tessera::floor_div(index_t(std::floor(px)), ts), row = tessera::floor_div(index_t(std::floor(py)), ts);
+        const index_t t = set->edges().find(tessera::cell_edges(*plane, col, row));
+        const double fx = px - double(col * ts), fy = py - double(row * ts);
+        worst_naive = std::max(worst_naive, max_difference(naive_tex.sample(double((t % 4) * ts) + fx, double((t / 4) * ts) + fy, level), expect));
+        const bool near_x = std::min(fx, ts - fx) < texel, near_y = std::min(fy, ts - fy) < texel;
+        corner_samples += near_x && near_y;
       }
   }
-  REQUIRE(samples > 500);
+  REQUIRE(corner_samples > 1000);
   for (int level = 0; level < levels; ++level) {
     CAPTURE(level, worst_ordered[level], worst_padded[level]);
     REQUIRE(worst_ordered[level] < 1e-5);
@@ -164,6 +161,44 @@ TEST_CASE("wang atlas: bilinear samples across tile borders match the tiled plan
   }
   CAPTURE(worst_naive);
   REQUIRE(worst_naive > 0.05);  // the test can fail: unordered tiles bleed wrong neighbours in
+}
+
+TEST_CASE("wang atlas: a set built for more mip levels gives an atlas exact for them", "[wang]") {
+  // tiles of 32 built with mip_levels = 4 (border 8): levels 0-3, sampled across the corner point
+  // of four tiles and along the borders, match the plane in both layouts
+  const auto ex = quilt_test::exemplar(tessera::exemplar_kind::weave, 64, 2);
+  const index_t ts = 32;
+  auto set = tessera::build_wang_tiles(ex, {.tile_size = ts, .mip_levels = 4, .seed = 5});
+  REQUIRE(set.ok());
+  auto plane = tessera::hash_coloring::create(2, 2, 2);
+  tessera::image_buffer<std::uint8_t, 3> ground_truth(4 * ts, 4 * ts);
+  REQUIRE(tessera::compose_tiles(*set, *plane, ground_truth).ok());
+  auto ordered = tessera::build_wang_atlas(*set, {.mip_levels = 4});
+  auto padded = tessera::build_wang_atlas(*set, {.layout = tessera::atlas_layout::padded, .mip_levels = 4});
+  REQUIRE(ordered.ok());
+  REQUIRE(padded.ok());
+  REQUIRE(padded->padding == 8);
+  const mip_texture truth(ground_truth, 4), ordered_tex(ordered->image, 4), padded_tex(padded->image, 4);
+  for (int level = 0; level < 4; ++level) {
+    const double reach = std::ldexp(1.0, level);
+    double worst = 0;
+    for (index_t c = 1; c < 4; ++c)
+      for (index_t r = 1; r < 4; ++r)
+        for (double dy = -reach; dy <= reach; dy += 0.3 * reach)
+          for (double dx = -reach; dx <= reach; dx += 0.3 * reach)
+            for (double along : {0.0, 0.37 * double(ts)}) {  // at the corner point and half-way along the borders
+              for (int dir = 0; dir < 2; ++dir) {
+                const double px = double(c * ts) + dx + (dir ? along : 0), py = double(r * ts) + dy + (dir ? 0 : along);
+                const auto expect = truth.sample(px, py, level);
+                const tessera::vec2 a = tessera::atlas_coordinates(*ordered, *plane, px, py);
+                const tessera::vec2 b = tessera::atlas_coordinates(*padded, *plane, px, py);
+                worst = std::max({worst, max_difference(ordered_tex.sample(a.x, a.y, level), expect),
+                                  max_difference(padded_tex.sample(b.x, b.y, level), expect)});
+              }
+            }
+    CAPTURE(level, worst);
+    REQUIRE(worst < 1e-5);
+  }
 }
 
 TEST_CASE("wang atlas: atlas coordinates point at the composed plane's texels", "[wang]") {
@@ -195,6 +230,16 @@ TEST_CASE("wang atlas: bad input", "[wang]") {
   REQUIRE_THAT(ordered.error().message(), Catch::Contains("complete set") && Catch::Contains("padded"));
   REQUIRE_FALSE(tessera::build_wang_atlas(*set, {.layout = tessera::atlas_layout::padded, .padding = 16}).ok());
   REQUIRE_FALSE(tessera::build_wang_atlas(*set, {.layout = tessera::atlas_layout::padded, .padding = -1}).ok());
+  // mip levels: the set (tiles of 16, border 2) promises 2; asking for more names the fix
+  REQUIRE(set->exact_mip_levels() == 2);
+  auto deep = tessera::build_wang_atlas(*set, {.layout = tessera::atlas_layout::padded, .mip_levels = 3});
+  REQUIRE(deep.error().code() == tessera::status_code::invalid_argument);
+  REQUIRE_THAT(deep.error().message(), Catch::Contains("shared border is 2") && Catch::Contains("wang_tile_options::mip_levels = 3"));
+  auto odd = tessera::build_wang_atlas(*set, {.layout = tessera::atlas_layout::padded, .mip_levels = 2, .padding = 3});
+  REQUIRE_THAT(odd.error().message(), Catch::Contains("padding 3 serves 1 exact mip levels"));
+  REQUIRE(tessera::build_wang_atlas(*set, {.layout = tessera::atlas_layout::padded, .padding = 3})->mip_levels == 1);
+  REQUIRE_FALSE(tessera::build_wang_atlas(*set, {.layout = tessera::atlas_layout::padded, .mip_levels = -1}).ok());
+  REQUIRE_FALSE(tessera::build_wang_atlas(*set, {.layout = tessera::atlas_layout::padded, .mip_levels = 17}).ok());
   // a colouring asking for a missing tile maps to (-1, -1)
   auto atlas = tessera::build_wang_atlas(*set, {.layout = tessera::atlas_layout::padded});
   auto complete_plane = tessera::hash_coloring::create(2, 2, 1);

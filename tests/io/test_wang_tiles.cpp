@@ -36,6 +36,10 @@ TEST_CASE("wang tile io: save then load is bit-exact", "[wang]") {
       for (index_t x = 0; x < 16; ++x) REQUIRE(back->tile(t).read(x, y) == set->tile(t).read(x, y));
   }
   REQUIRE(tessera::read_tile_manifest(dir)->extra_value("exemplar_seed") == 1);
+  // the loaded set measures the same shared border, so its atlas promises the same mip levels
+  REQUIRE(back->shared_border() == set->shared_border());
+  REQUIRE(back->exact_mip_levels() == set->exact_mip_levels());
+  REQUIRE(back->exact_mip_levels() == 2);  // tiles of 16: border 2
 }
 
 TEST_CASE("wang tile io: missing and mismatched files are named", "[wang]") {

@@ -31,9 +31,22 @@ TEST_CASE("hash colouring: neighbours agree everywhere, windows are views of the
         for (int s = 0; s < 4; ++s) REQUIRE(far->edge_color_at(c, r, s) == plane->edge_color_at(1'000'000'000 + c, -2'000'000'000 + r, s));
     for (index_t r = 0; r < 4; ++r)
       for (index_t c = 0; c < 4; ++c) REQUIRE(overlap->edges_at(c, r) == w->edges_at(c + 2, r + 1));
-    // the extreme cells of the index range are defined too (coordinates wrap as hash keys)
-    const index_t top = std::numeric_limits<index_t>::max();
-    REQUIRE(plane->edge_color_at(top, top, tessera::side_east) == plane->edge_color_at(std::numeric_limits<index_t>::min(), top, tessera::side_west));
+    // the extreme cells of the index range are defined too (coordinates wrap as hash keys): a window
+    // straddling both ends of the index range is a consistent grid colouring of the set, agrees cell
+    // by cell with the plane at the wrapped coordinates, and is not degenerate
+    const index_t top = std::numeric_limits<index_t>::max(), bottom = std::numeric_limits<index_t>::min();
+    auto edge = plane->window(top - 3, top - 2, 8, 6);  // columns top-3 .. bottom+4, rows top-2 .. bottom+3
+    REQUIRE(edge.ok());
+    REQUIRE(tessera::check_grid_coloring(*edge, 8, 6).ok());
+    REQUIRE(tessera::check_coloring_against_set(*edge, *subset).ok());
+    std::map<index_t, int> seen;
+    for (index_t r = 0; r < 6; ++r)
+      for (index_t c = 0; c < 8; ++c) {
+        const index_t pc = c <= 3 ? top - 3 + c : bottom + (c - 4), pr = r <= 2 ? top - 2 + r : bottom + (r - 3);
+        REQUIRE(edge->edges_at(c, r) == plane->edges_at(pc, pr));
+        ++seen[tessera::complete_tile_index(edge->edges_at(c, r), nh, nv)];
+      }
+    REQUIRE(seen.size() > 4u);
   }
 }
 
@@ -77,4 +90,5 @@ TEST_CASE("hash colouring: bad input", "[tiling]") {
   auto plane = hash_coloring::create(2, 2);
   REQUIRE_FALSE(plane->window(0, 0, 0, 3).ok());
   REQUIRE_FALSE(plane->with_period(0, 3).ok());
+  REQUIRE(plane->window(0, 0, index_t{1} << 20, index_t{1} << 13).error().code() == tessera::status_code::size_overflow);
 }

@@ -51,6 +51,12 @@ TEST_CASE("periodic colouring: bad input", "[tiling]") {
   auto set = tile_set_edges::complete(2, 2);
   REQUIRE_FALSE(periodic_coloring::create(*set, 0, 2, 4, 4).ok());
   REQUIRE_FALSE(periodic_coloring::create(*set, 2, 2, 4, 0).ok());
+  // periods and grids beyond max_coloring_cells (2^26): size_overflow, nothing allocated
+  REQUIRE(periodic_coloring::create(*set, index_t{1} << 16, index_t{1} << 16, 4, 4).error().code() ==
+          tessera::status_code::size_overflow);
+  auto grid = periodic_coloring::create(*set, 2, 2, index_t{1} << 16, index_t{1} << 16);
+  REQUIRE(grid.error().code() == tessera::status_code::size_overflow);
+  REQUIRE_THAT(grid.error().message(), Catch::Contains("max_coloring_cells"));
   // a search budget too small reports not_converged
   auto arbitrary = tile_set_edges::create(2, 2, {{0, 0, 1, 0}, {1, 0, 0, 0}, {0, 1, 1, 1}, {1, 1, 0, 1}});
   REQUIRE(periodic_coloring::create(*arbitrary, 4, 4, 4, 4, 1, 3).error().code() == tessera::status_code::not_converged);

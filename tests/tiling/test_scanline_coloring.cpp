@@ -55,6 +55,11 @@ TEST_CASE("scanline colouring: bad input", "[tiling]") {
   REQUIRE(scanline_coloring::create(*set, 4, -1).error().code() == tessera::status_code::invalid_argument);
   REQUIRE(scanline_coloring::create(*set, index_t{1} << 20, index_t{1} << 20).error().code() ==
           tessera::status_code::size_overflow);
+  // the cap is 2^26 cells (1 GiB of cells), checked before anything is allocated
+  auto over = scanline_coloring::create(*set, index_t{1} << 16, (index_t{1} << 10) + 1);
+  REQUIRE(over.error().code() == tessera::status_code::size_overflow);
+  REQUIRE_THAT(over.error().message(), Catch::Contains("65536 x 1025 cells exceed max_coloring_cells"));
+  REQUIRE(tessera::max_coloring_cells == index_t{1} << 26);
   REQUIRE_FALSE(scanline_coloring::create(0, 2, 4, 4).ok());
   auto gappy = tile_set_edges::create(2, 2, {{0, 0, 0, 0}, {1, 1, 1, 1}});
   auto s = scanline_coloring::create(*gappy, 4, 4);

@@ -50,3 +50,43 @@ TEST_CASE("tile lookup: variants are drawn per cell, missing tiles are -1", "[ti
   REQUIRE(tessera::floor_div(-5, 4) == -2);
   REQUIRE(tessera::floor_div(7, 4) == 1);
 }
+
+// explain_grid_tile_coloring / explain_plane_tile_coloring: the diagnosis is a constexpr value, so
+// positive and negative cases are checked here; tests/structural/compile_fail checks a message.
+namespace {
+struct no_members {};
+struct tile_coloring_only {  // a TileColoring without a grid size
+  tessera::index_t num_faces() const { return 4; }
+  int num_colors(int) const { return 2; }
+  int edge_color(tessera::index_t, int) const { return 0; }
+};
+struct plane_without_edge_color_at {
+  int num_colors(int) const { return 2; }
+};
+struct plane_ok {
+  int num_colors(int) const { return 2; }
+  int edge_color_at(tessera::index_t, tessera::index_t, int) const { return 0; }
+};
+using problem = tessera::detail::tiling_coloring_problem;
+static_assert(tessera::detail::grid_coloring_problem_of<tessera::scanline_coloring>() == problem::none);
+static_assert(tessera::detail::grid_coloring_problem_of<tessera::hash_coloring_window>() == problem::none);
+static_assert(tessera::detail::grid_coloring_problem_of<no_members>() == problem::not_tile_coloring);
+static_assert(tessera::detail::grid_coloring_problem_of<tile_coloring_only>() == problem::no_grid_size);
+static_assert(tessera::detail::grid_coloring_problem_of<tessera::stored_tile_coloring>() == problem::no_grid_size);
+static_assert(tessera::detail::plane_coloring_problem_of<tessera::hash_coloring>() == problem::none);
+static_assert(tessera::detail::plane_coloring_problem_of<plane_ok>() == problem::none);
+static_assert(tessera::detail::plane_coloring_problem_of<plane_without_edge_color_at>() == problem::no_edge_color_at);
+static_assert(tessera::detail::plane_coloring_problem_of<no_members>() == problem::no_num_colors);
+static_assert(tessera::detail::plane_coloring_problem_of<tessera::scanline_coloring>() == problem::is_grid);
+static_assert(tessera::PlaneTileColoring<plane_ok> && !tessera::PlaneTileColoring<plane_without_edge_color_at>);
+
+// the explain helpers compile to nothing (no static_assert fires) for types that fit
+constexpr bool explain_fitting_types() {
+  tessera::explain_grid_tile_coloring<tessera::scanline_coloring>();
+  tessera::explain_grid_tile_coloring<tessera::grid_coloring_view<tessera::stored_tile_coloring>>();
+  tessera::explain_plane_tile_coloring<tessera::hash_coloring>();
+  tessera::explain_plane_tile_coloring<plane_ok>();
+  return true;
+}
+static_assert(explain_fitting_types());
+}  // namespace

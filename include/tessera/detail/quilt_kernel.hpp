@@ -7,7 +7,7 @@
 // site, vectorized over candidate columns), one candidate is drawn among those within a tolerance of
 // the best, and it is joined by minimum-error boundary cuts: one dynamic-programming path per side
 // whose band holds known pixels, with Efros–Freeman's L-shaped meeting point where the west and north
-// paths meet. Fixed pixels are never written, whatever the cut.
+// paths meet (detail/quilt_cut.hpp). Fixed pixels are never written, whatever the cut.
 #pragma once
 
 #include <algorithm>
@@ -24,11 +24,10 @@
 #include "../core/random.hpp"
 #include "../core/status.hpp"
 #include "../core/tile_coloring.hpp"
+#include "quilt_cut.hpp"
 
 TESSERA_NAMESPACE_BEGIN
 namespace detail {
-
-enum class pixel_state : std::uint8_t { empty = 0, filled = 1, fixed = 2 };
 
 /// The exemplar prepared for the overlap search: channel planes of unit floats, plus an optional
 /// mask of allowed candidate origins (used when the exemplar is the image being inpainted).
@@ -56,8 +55,8 @@ struct quilt_source {
     allowed_patch = p;
     allowed.assign(static_cast<std::size_t>(std::max<index_t>(U, 0) * std::max<index_t>(V, 0)), 1);
     if (U <= 0 || V <= 0) return;
-    // summed-area table of the bad flags
-    std::vector<index_t> sat(static_cast<std::size_t>((w + 1) * (h + 1)), 0);
+    // summed-area table of the bad flags (counts fit 32 bits: exemplars are capped at 2^26 pixels)
+    std::vector<std::uint32_t> sat(static_cast<std::size_t>((w + 1) * (h + 1)), 0);
     for (index_t y = 0; y < h; ++y)
       for (index_t x = 0; x < w; ++x)
         sat[static_cast<std::size_t>((y + 1) * (w + 1) + x + 1)] = bad[static_cast<std::size_t>(y * w + x)] +
@@ -268,164 +267,6 @@ inline index_t pick_candidate(const std::vector<float>& err, double tolerance, c
   for (std::size_t i = 0; i < err.size(); ++i)
     if (static_cast<double>(err[i]) <= limit && pick-- == 0) return static_cast<index_t>(i);
   return 0;
-}
-
-// ---------------------------------------------------------------------------------------------
-// Minimum-error boundary cuts (Efros & Freeman §2.1, dynamic programming on the error surface).
-
-/// A p × p window of the site: error surface and states (empty for pixels outside the canvas,
-/// marked `outside`).
-struct site_window {
-  index_t p = 0;
-  std::vector<double> error;         // (old − new)² summed over channels; 0 where not known
-  std::vector<pixel_state> state;
-  std::vector<std::uint8_t> outside;  // 1 where the window leaves a non-wrapping canvas
-  [[nodiscard]] std::size_t idx(index_t i, index_t j) const noexcept { return static_cast<std::size_t>(j * p + i); }
-};
-
-inline constexpr double fixed_pixel_penalty = 1e9;
-
-/// DP of one side's cut. The band is seen as depth a ∈ [0, width) into the patch from that side and
-/// position b ∈ [0, p) along it; `pixel(a, b)` maps to window coordinates. The path pixel pos[b] ∈
-/// [0, width) is the first new pixel of line b, and its cost is the error there (the path runs
-/// through the overlap, as in Efros & Freeman). Empty pixels must be new (pos ≤ first empty depth);
-/// fixed pixels at depth ≥ pos are heavily penalized (and never written anyway). `cum` receives, for
-/// each b and position, the cheapest cost of a path from b to the far end (b = p − 1).
-template <class Map>
-void side_cut(const site_window& win, index_t width, Map&& pixel, std::vector<double>& cum) {
-  const index_t p = win.p, S = width;
-  TESSERA_ASSERT(width >= 1 && width < p);
-  cum.assign(static_cast<std::size_t>(p * S), std::numeric_limits<double>::infinity());
-  std::vector<double> cost(static_cast<std::size_t>(S));
-  for (index_t b = p - 1; b >= 0; --b) {
-    index_t first_empty = width;
-    for (index_t a = 0; a < width; ++a) {
-      const auto [i, j] = pixel(a, b);
-      if (!win.outside[win.idx(i, j)] && win.state[win.idx(i, j)] == pixel_state::empty) {
-        first_empty = a;
-        break;
-      }
-    }
-    double fixed_after = 0;  // penalty for the fixed pixels at depth >= x
-    for (index_t x = width - 1; x >= 0; --x) {
-      const auto [i, j] = pixel(x, b);
-      if (!win.outside[win.idx(i, j)] && win.state[win.idx(i, j)] == pixel_state::fixed) fixed_after += fixed_pixel_penalty;
-      cost[static_cast<std::size_t>(x)] =
-          x > first_empty ? std::numeric_limits<double>::infinity() : win.error[win.idx(i, j)] + fixed_after;
-    }
-    for (index_t x = 0; x < S; ++x) {
-      double next = 0;
-      if (b + 1 < p) {
-        next = std::numeric_limits<double>::infinity();
-        for (index_t d = -1; d <= 1; ++d)
-          if (x + d >= 0 && x + d < S) next = std::min(next, cum[static_cast<std::size_t>((b + 1) * S + x + d)]);
-      }
-      cum[static_cast<std::size_t>(b * S + x)] = cost[static_cast<std::size_t>(x)] + next;
-    }
-  }
-}
-
-/// Traces the cheapest path through `cum` starting at (b0, x0), towards b = p − 1.
-inline void trace_cut(const std::vector<double>& cum, index_t p, index_t width, index_t b0, index_t x0, std::vector<index_t>& pos) {
-  const index_t S = width;
-  pos.assign(static_cast<std::size_t>(p), 0);
-  index_t x = x0;
-  pos[static_cast<std::size_t>(b0)] = x;
-  for (index_t b = b0 + 1; b < p; ++b) {
-    index_t best = x;
-    double best_cost = std::numeric_limits<double>::infinity();
-    for (index_t d = -1; d <= 1; ++d)  // smallest position on ties
-      if (x + d >= 0 && x + d < S && cum[static_cast<std::size_t>(b * S + x + d)] < best_cost) {
-        best_cost = cum[static_cast<std::size_t>(b * S + x + d)];
-        best = x + d;
-      }
-    x = best;
-    pos[static_cast<std::size_t>(b)] = x;
-  }
-}
-
-/// Labels window pixels new (1) or old (0) from the per-side cuts. `band` as in quilt_site.
-inline void cut_labels(const site_window& win, const index_t band_in[4], std::vector<std::uint8_t>& is_new) {
-  const index_t p = win.p;
-  is_new.assign(static_cast<std::size_t>(p * p), 1);
-  bool active[4];
-  index_t band[4];
-  for (int s = 0; s < 4; ++s) {
-    band[s] = std::clamp<index_t>(band_in[s], 0, p - 1);
-    active[s] = false;
-    for (index_t a = 0; a < band[s] && !active[s]; ++a)
-      for (index_t b = 0; b < p && !active[s]; ++b) {
-        const index_t i = s == side_west ? a : s == side_east ? p - 1 - a : b;
-        const index_t j = s == side_north ? a : s == side_south ? p - 1 - a : b;
-        active[s] = !win.outside[win.idx(i, j)] && win.state[win.idx(i, j)] != pixel_state::empty;
-      }
-  }
-  struct ij {
-    index_t i, j;
-  };
-  auto west = [&](index_t a, index_t b) { return ij{a, b}; };
-  auto north = [&](index_t a, index_t b) { return ij{b, a}; };
-  auto east = [&](index_t a, index_t b) { return ij{p - 1 - a, b}; };
-  auto south = [&](index_t a, index_t b) { return ij{b, p - 1 - a}; };
-  std::vector<double> cum;
-  std::vector<index_t> path[4];
-  auto cheapest_start = [&](index_t width) {
-    index_t best = 0;
-    for (index_t x = 1; x < width; ++x)
-      if (cum[static_cast<std::size_t>(x)] < cum[static_cast<std::size_t>(best)]) best = x;
-    return best;
-  };
-  index_t mx = 0, my = 0;
-  const bool meet = active[side_west] && active[side_north];
-  if (meet) {
-    // L-shaped overlap: the west path runs from the bottom and the north path from the right; they
-    // meet at the point (mx, my) of the corner square minimizing their summed cost.
-    std::vector<double> cum_w, cum_n;
-    side_cut(win, band[side_west], west, cum_w);
-    side_cut(win, band[side_north], north, cum_n);
-    const index_t Sw = band[side_west], Sn = band[side_north];
-    double best = std::numeric_limits<double>::infinity();
-    for (index_t y = 0; y < Sn; ++y)
-      for (index_t x = 0; x < Sw; ++x) {
-        const double c = cum_w[static_cast<std::size_t>(y * Sw + x)] + cum_n[static_cast<std::size_t>(x * Sn + y)] -
-                         win.error[win.idx(x, y)];
-        if (c < best) best = c, mx = x, my = y;
-      }
-    trace_cut(cum_w, p, band[side_west], my, mx, path[side_west]);
-    trace_cut(cum_n, p, band[side_north], mx, my, path[side_north]);
-  } else {
-    if (active[side_west]) {
-      side_cut(win, band[side_west], west, cum);
-      trace_cut(cum, p, band[side_west], 0, cheapest_start(band[side_west]), path[side_west]);
-    }
-    if (active[side_north]) {
-      side_cut(win, band[side_north], north, cum);
-      trace_cut(cum, p, band[side_north], 0, cheapest_start(band[side_north]), path[side_north]);
-    }
-  }
-  if (active[side_east]) {
-    side_cut(win, band[side_east], east, cum);
-    trace_cut(cum, p, band[side_east], 0, cheapest_start(band[side_east]), path[side_east]);
-  }
-  if (active[side_south]) {
-    side_cut(win, band[side_south], south, cum);
-    trace_cut(cum, p, band[side_south], 0, cheapest_start(band[side_south]), path[side_south]);
-  }
-  for (index_t j = 0; j < p; ++j)
-    for (index_t i = 0; i < p; ++i) {
-      bool ok = true;
-      if (meet) {
-        if (j < my && i < mx) ok = false;
-        if (j >= my) ok = ok && i >= path[side_west][static_cast<std::size_t>(j)];
-        if (i >= mx) ok = ok && j >= path[side_north][static_cast<std::size_t>(i)];
-      } else {
-        if (active[side_west]) ok = ok && i >= path[side_west][static_cast<std::size_t>(j)];
-        if (active[side_north]) ok = ok && j >= path[side_north][static_cast<std::size_t>(i)];
-      }
-      if (active[side_east]) ok = ok && p - 1 - i >= path[side_east][static_cast<std::size_t>(j)];
-      if (active[side_south]) ok = ok && p - 1 - j >= path[side_south][static_cast<std::size_t>(i)];
-      is_new[win.idx(i, j)] = ok;
-    }
 }
 
 // ---------------------------------------------------------------------------------------------

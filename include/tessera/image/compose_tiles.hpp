@@ -53,9 +53,10 @@ inline constexpr bool is_raw_output = std::is_same_v<O, image_view<T, C>> || std
 /// - out: any WritableImage; fastest as image_view / image_buffer of the set's pixel type.
 /// - options: window origin, tile-border outline, variant seed.
 /// - exec: parallel over bands of output rows; output bit-identical for any executor.
-/// Errors (nothing is written): empty set or output; colour counts differing from the set's; a
-/// window leaving a grid colouring (out_of_range, with the window and the grid in pixels); a cell
-/// whose edge combination has no tile in the set (the colouring violates the set; names the cell).
+/// Errors (nothing is written): empty set or output; colour counts differing from the set's; a grid
+/// colouring whose cols() · rows() is not its num_faces(); a window leaving a grid colouring
+/// (out_of_range, with the window and the grid in pixels); a cell whose edge combination has no tile
+/// in the set (the colouring violates the set; names the cell).
 /// Complexity: O(cells in the window · log n + output pixels), the latter as row memcpys.
 /// Thread safety: reads set and coloring, writes `out` only.
 template <Channel T, int C, class Coloring, WritableImage O, Executor X = serial_executor>
@@ -76,6 +77,7 @@ template <Channel T, int C, class Coloring, WritableImage O, Executor X = serial
   const index_t c0 = floor_div(options.x, ts), c1 = floor_div(options.x + w - 1, ts);
   const index_t r0 = floor_div(options.y, ts), r1 = floor_div(options.y + h - 1, ts);
   if constexpr (GridTileColoring<Coloring>) {
+    if (auto s = validate_grid_coloring(coloring); !s) return status(s.code(), detail::cat("compose_tiles: ", s.message()));
     const index_t cols = static_cast<index_t>(coloring.cols()), rows = static_cast<index_t>(coloring.rows());
     if (c0 < 0 || r0 < 0 || c1 >= cols || r1 >= rows)
       return status::out_of_range(detail::cat("compose_tiles: window [", options.x, ", ", options.x + w, ") x [", options.y, ", ",

@@ -19,6 +19,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string_view>
 #include <vector>
 
 #include "../core/config.hpp"
@@ -47,10 +48,11 @@ std::vector<std::uint8_t> read_hole_mask(const M& mask) {
 }
 
 template <Image I, Image M, Image O>
-status validate_inpaint_inputs(const I& image, const M& mask, const O& out) {
-  if (auto s = validate_image(image, "image"); !s) return s;
+status validate_inpaint_inputs(const I& image, const M& mask, const O& out, index_t cap, std::string_view cap_name) {
+  if (auto s = validate_quilt_extent(image, "image", cap, cap_name); !s) return s;
   if (auto s = validate_same_size(image, "image", mask, "mask"); !s) return s;
-  return validate_same_size(image, "image", out, "output");
+  if (auto s = validate_same_size(image, "image", out, "output"); !s) return s;
+  return validate_finite_pixels(image, "image");
 }
 
 template <Channel T, int C, WritableImage O, class X>
@@ -84,14 +86,18 @@ status constrained_quilt_run(detail::quilt_source<T, C>& src, image_buffer<T, C>
 /// - options: patch_size / overlap / tolerance / seed / progress as for quilt(); `seamless` is ignored.
 /// - exec: parallelizes the overlap search; output bit-identical for any executor.
 /// Errors: empty images; mask or out of another size than the image (the message gives both
-/// sizes); patch not fitting the exemplar or the image; bad overlap or tolerance; cancelled.
+/// sizes); an image larger than max_quilt_pixels or an exemplar larger than
+/// max_quilt_exemplar_pixels (size_overflow); a NaN or infinite value in a float image or exemplar
+/// (names the pixel); patch not fitting the exemplar or the image; bad overlap or tolerance; cancelled.
 /// Complexity: O(patches over the hole's bounding box · candidates · window pixels).
 /// Thread safety: reads the inputs, writes `out` only.
 template <Image E, Image I, Image M, WritableImage O, Executor X = serial_executor>
 [[nodiscard]] status constrained_quilt(const E& exemplar, const I& image, const M& mask, O& out, const quilt_options& options = {},
                                        X&& exec = {}) {
-  if (auto s = validate_image(exemplar, "exemplar"); !s) return s;
-  if (auto s = detail::validate_inpaint_inputs(image, mask, out); !s) return s;
+  if (auto s = detail::validate_quilt_extent(exemplar, "exemplar", max_quilt_exemplar_pixels, "max_quilt_exemplar_pixels"); !s)
+    return s;
+  if (auto s = detail::validate_finite_pixels(exemplar, "exemplar"); !s) return s;
+  if (auto s = detail::validate_inpaint_inputs(image, mask, out, max_quilt_pixels, "max_quilt_pixels"); !s) return s;
   index_t patch = 0, overlap = 0;
   if (auto s = detail::resolve_quilt_sizes(options, width_of(exemplar), height_of(exemplar), patch, overlap); !s) return s;
   using T = channel_t<I>;
@@ -105,11 +111,13 @@ template <Image E, Image I, Image M, WritableImage O, Executor X = serial_execut
 }
 
 /// Inpainting from the image itself: as above with the image as exemplar, but only exemplar windows
-/// that contain no masked pixel are candidates. Errors as above, plus invalid_argument when the hole
-/// leaves no hole-free window of the patch size.
+/// that contain no masked pixel are candidates. Errors as above (the image, being the exemplar, is
+/// limited to max_quilt_exemplar_pixels), plus invalid_argument when the hole leaves no hole-free
+/// window of the patch size.
 template <Image I, Image M, WritableImage O, Executor X = serial_executor>
 [[nodiscard]] status constrained_quilt(const I& image, const M& mask, O& out, const quilt_options& options = {}, X&& exec = {}) {
-  if (auto s = detail::validate_inpaint_inputs(image, mask, out); !s) return s;
+  if (auto s = detail::validate_inpaint_inputs(image, mask, out, max_quilt_exemplar_pixels, "max_quilt_exemplar_pixels"); !s)
+    return s;
   index_t patch = 0, overlap = 0;
   if (auto s = detail::resolve_quilt_sizes(options, width_of(image), height_of(image), patch, overlap); !s) return s;
   using T = channel_t<I>;

@@ -19,6 +19,7 @@
 #include <cmath>
 #include <cstdint>
 #include <string_view>
+#include <type_traits>
 
 #include "../core/config.hpp"
 #include "../core/executor.hpp"
@@ -44,7 +45,48 @@ struct quilt_options {
   tessera::progress progress = {};
 };
 
+/// Largest image quilt() synthesizes and constrained_quilt() fills, in pixels (2^28, e.g. 16384²):
+/// the working canvas holds the pixels plus one state byte each, and the time grows with the area
+/// (about 1 s per 512² from a 128² exemplar). Larger sizes return size_overflow.
+inline constexpr index_t max_quilt_pixels = index_t{1} << 28;
+/// Largest exemplar quilting searches, in pixels (2^26, e.g. 8192²): every patch compares against
+/// every exemplar window, and the search keeps the exemplar as float planes (4 bytes per channel,
+/// at most 1 GiB). Also the limit of an image inpainted from itself. Larger sizes return size_overflow.
+inline constexpr index_t max_quilt_exemplar_pixels = index_t{1} << 26;
+
 namespace detail {
+/// Checks `img` against a pixel cap (width · height <= cap), naming it and the cap.
+template <Image I>
+status validate_quilt_extent(const I& img, std::string_view what, index_t cap, std::string_view cap_name) {
+  if (auto s = validate_image(img, what); !s) return s;
+  const index_t w = width_of(img), h = height_of(img);
+  if (w > cap / h)
+    return status::size_overflow(detail::cat(what, ": ", w, " x ", h, " pixels exceed ", cap_name, " = ", cap,
+                                             " (split the work into windows or use a smaller image)"));
+  return {};
+}
+
+/// Checks that every channel of a float image is finite (NaN or infinite values would make every
+/// overlap error NaN); other channel types always pass. Names the first bad pixel. O(pixels).
+template <Image I>
+status validate_finite_pixels(const I& img, std::string_view what) {
+  if constexpr (std::is_floating_point_v<channel_t<I>>) {
+    using P = pixel_t<I>;
+    const index_t w = width_of(img), h = height_of(img);
+    for (index_t y = 0; y < h; ++y)
+      for (index_t x = 0; x < w; ++x) {
+        const P px = image_traits<I>::read(img, x, y);
+        for (int c = 0; c < channels_v<I>; ++c) {
+          const auto v = pixel_traits<P>::get(px, c);
+          if (!std::isfinite(v))
+            return status::invalid_argument(detail::cat(what, ": pixel (", x, ", ", y, ") channel ", c, " is ", v,
+                                                        "; quilting needs finite values"));
+        }
+      }
+  }
+  return {};
+}
+
 /// Resolves automatic patch size and overlap and validates them against an exemplar of ew × eh.
 inline status resolve_quilt_sizes(const quilt_options& o, index_t ew, index_t eh, index_t& patch, index_t& overlap) {
   const index_t smaller = std::min(ew, eh);
@@ -74,14 +116,18 @@ inline status resolve_quilt_sizes(const quilt_options& o, index_t ew, index_t eh
 /// - options: patch size, overlap, tolerance, `seamless` (toroidal output), seed, progress.
 /// - exec: parallelizes the overlap search over candidate rows; output is bit-identical for any
 ///   executor and thread count.
-/// Errors: empty or overflowing images; patch size not fitting the exemplar; overlap outside
-/// [1, patch/2]; negative or non-finite tolerance; seamless output smaller than a patch; cancelled.
+/// Errors: empty or overflowing images; an output larger than max_quilt_pixels or an exemplar
+/// larger than max_quilt_exemplar_pixels (size_overflow); a float exemplar with a NaN or infinite
+/// value (names the pixel); patch size not fitting the exemplar; overlap outside [1, patch/2];
+/// negative or non-finite tolerance; seamless output smaller than a patch; cancelled.
 /// Complexity: O(sites · candidates · overlap pixels · channels), sites ≈ (W·H) / (patch − overlap)²,
 /// candidates = (ew − patch + 1)(eh − patch + 1). Thread safety: reads `exemplar`, writes `out` only.
 template <Image E, WritableImage O, Executor X = serial_executor>
 [[nodiscard]] status quilt(const E& exemplar, O& out, const quilt_options& options = {}, X&& exec = {}) {
-  if (auto s = validate_image(exemplar, "exemplar"); !s) return s;
-  if (auto s = validate_image(out, "output"); !s) return s;
+  if (auto s = detail::validate_quilt_extent(exemplar, "exemplar", max_quilt_exemplar_pixels, "max_quilt_exemplar_pixels"); !s)
+    return s;
+  if (auto s = detail::validate_quilt_extent(out, "output", max_quilt_pixels, "max_quilt_pixels"); !s) return s;
+  if (auto s = detail::validate_finite_pixels(exemplar, "exemplar"); !s) return s;
   index_t patch = 0, overlap = 0;
   if (auto s = detail::resolve_quilt_sizes(options, width_of(exemplar), height_of(exemplar), patch, overlap); !s) return s;
   const index_t w = width_of(out), h = height_of(out);

@@ -8,15 +8,19 @@
 // The tile with edges (n, e, s, w) goes to atlas column edge_order_index(w, e) and row
 // edge_order_index(n, s), so the atlas is nv² × nh² tiles and every two neighbouring tiles of the
 // atlas, wrapping around, match along their shared edge: the atlas is itself a valid toroidal
-// tiling. Bilinear filtering across a tile border therefore reads texels of a tile with the right
-// edge colour, and since pixels near an edge come from that edge's sample, they are the texels the
-// tiled plane has there; box-filtered mip levels stay correct for the same reason as long as a mip
-// texel (2^k texels) does not reach past the edge strip. Sample the atlas with REPEAT addressing and
-// take the mip level from the derivatives of the plane coordinate (textureGrad), not of the atlas one.
+// tiling. Its neighbours of a tile are not the plane's, though (in the plane the tile east of A has
+// any north and south colour); sampling across a border or corner reads the same texels only as
+// deep as every tile with a given edge colour agrees with every other near that edge, and every
+// tile agrees with every other near its corners: wang_tile_set::shared_border(), which
+// build_wang_tiles makes 2^(mip_levels − 1). So levels 0 .. L − 1 of box-filtered mip maps, sampled
+// bilinearly with REPEAT addressing anywhere in a tile, equal the tiled plane's own mip maps, for
+// L = wang_atlas::mip_levels (tested with a model of GPU filtering). Take the mip level from the
+// derivatives of the plane coordinate (textureGrad), not of the atlas one, and clamp it to L − 1
+// (GL_TEXTURE_MAX_LEVEL).
 //
 // Padded layout, for any set (subsets, variants): each tile gets `padding` texels on each side
-// copied from neighbouring tiles that match its edges. Bilinear filtering is as correct as with the
-// edge-ordered layout; mip levels only up to log2(padding), and the atlas is larger.
+// copied from neighbouring tiles that match its edges; exact for the levels 2^k <= padding allows
+// (padding a multiple of 2^k) and the set's shared border allows. The atlas is larger.
 #pragma once
 
 #include <cmath>
@@ -51,7 +55,9 @@ enum class atlas_layout { edge_ordered, padded };
 /// Options of build_wang_atlas().
 struct wang_atlas_options {
   atlas_layout layout = atlas_layout::edge_ordered;
-  index_t padding = 0;  ///< padded layout: texels on each side; 0 = tile_size / 8 (at least 1)
+  int mip_levels = 0;   ///< mip levels (level 0 included) that must sample exactly; 0 = all the set allows
+                        ///< (wang_tile_set::exact_mip_levels()); more than the set allows is an error
+  index_t padding = 0;  ///< padded layout: texels on each side; 0 = 2^(mip_levels − 1) (at least 1)
 };
 
 /// A tile set packed into one texture plus where each tile is.
@@ -62,6 +68,7 @@ struct wang_atlas {
   index_t tile_size = 0;
   index_t padding = 0;             ///< 0 for the edge-ordered layout
   index_t slot_size = 0;           ///< tile_size + 2 · padding
+  int mip_levels = 0;              ///< box-filtered levels 0 .. mip_levels − 1 sample exactly across tile borders and corners
   tile_set_edges edges;            ///< the set's edges (for tile lookups)
   std::vector<index_t> slot_col;   ///< atlas slot of each tile (edge-ordered: of each tile's edges)
   std::vector<index_t> slot_row;
@@ -73,15 +80,28 @@ struct wang_atlas {
   }
 };
 
-/// Packs `set` into an atlas (Wei 2004 edge-ordered layout, or padded).
+/// Packs `set` into an atlas (Wei 2004 edge-ordered layout, or padded) whose first
+/// `wang_atlas::mip_levels` box-filtered mip levels sample exactly across tile borders and corners.
 /// Errors: edge_ordered with a set that is not complete (names the first missing combination and
-/// suggests the padded layout); padding < 0 or >= tile_size; an atlas too large.
+/// suggests the padded layout); mip_levels outside [0, 16] or more than the set allows (names the
+/// set's shared border and the build option that gives more); padding < 0, >= tile_size, or not a
+/// multiple of 2^(mip_levels − 1); an atlas too large.
 /// Complexity: O(atlas texels). Thread safety: reads `set` only.
 template <Channel T, int C>
 [[nodiscard]] result<wang_atlas<T, C>> build_wang_atlas(const wang_tile_set<T, C>& set, const wang_atlas_options& options = {}) {
   const tile_set_edges& edges = set.edges();
   const index_t ts = set.tile_size();
   if (set.size() == 0) return status::invalid_argument("wang atlas: the tile set is empty");
+  if (options.mip_levels < 0 || options.mip_levels > 16)
+    return status::invalid_argument(detail::cat("wang atlas: mip_levels must be in [0, 16] (0 = all the set allows), got ",
+                                                options.mip_levels));
+  if (options.mip_levels > set.exact_mip_levels())
+    return status::invalid_argument(detail::cat("wang atlas: mip_levels ", options.mip_levels, " needs tiles that agree within ",
+                                                index_t{1} << (options.mip_levels - 1),
+                                                " texels of their edges and corners, but this set's shared border is ",
+                                                set.shared_border(), " (exact for ", set.exact_mip_levels(),
+                                                " levels); build it with wang_tile_options::mip_levels = ", options.mip_levels));
+  int levels = options.mip_levels > 0 ? options.mip_levels : set.exact_mip_levels();
   wang_atlas<T, C> a;
   a.layout = options.layout;
   a.tile_size = ts;
@@ -109,9 +129,16 @@ template <Channel T, int C>
       a.slot_row[static_cast<std::size_t>(t)] = edge_order_index(e.north, e.south);
     }
   } else {
-    a.padding = options.padding > 0 ? options.padding : std::max<index_t>(1, ts / 8);
+    a.padding = options.padding > 0 ? options.padding : levels > 0 ? index_t{1} << (levels - 1) : 1;
     if (options.padding < 0 || a.padding >= ts)
       return status::invalid_argument(detail::cat("wang atlas: padding must be in [0, tile_size = ", ts, "), got ", options.padding));
+    int allowed = 0;  // levels the padding serves: 2^k <= padding and 2^k dividing it
+    while (allowed < 62 && (index_t{1} << allowed) <= a.padding && a.padding % (index_t{1} << allowed) == 0) ++allowed;
+    if (options.mip_levels > allowed)
+      return status::invalid_argument(detail::cat("wang atlas: padding ", a.padding, " serves ", allowed,
+                                                  " exact mip levels, mip_levels asks for ", options.mip_levels,
+                                                  "; use a multiple of ", index_t{1} << (options.mip_levels - 1)));
+    levels = std::min(levels, allowed);
     cols = static_cast<index_t>(std::ceil(std::sqrt(static_cast<double>(set.size()))));
     rows = (set.size() + cols - 1) / cols;
     for (index_t t = 0; t < set.size(); ++t) {
@@ -120,6 +147,7 @@ template <Channel T, int C>
     }
   }
   a.slot_size = ts + 2 * a.padding;
+  a.mip_levels = levels;
   auto img = image_buffer<T, C>::create(cols * a.slot_size, rows * a.slot_size);
   if (!img) return img.error();
   a.image = std::move(*img);
@@ -170,7 +198,8 @@ template <Channel T, int C>
 /// to atlas texel coordinates: the cell's tile (tile_at_cell with `seed`, as compose_tiles picks it)
 /// at the same offset. With the edge-ordered layout a tile's slot depends on its edges only (Wei
 /// 2004 §4). Returns (−1, −1) when the colouring asks for a tile the set lacks, for a cell outside a
-/// grid colouring, and for a NaN point or one beyond ±2^62 cells. O(1) for plane colourings
+/// grid colouring (or a grid colouring whose cols · rows is not its face count), and for a NaN point
+/// or one beyond ±2^62 cells. O(1) for plane colourings
 /// (hash_coloring), plus an O(log n) lookup for the padded layout; thread-safe.
 template <Channel T, int C, class Coloring>
   requires GridTileColoring<Coloring> || PlaneTileColoring<Coloring>
@@ -181,7 +210,8 @@ template <Channel T, int C, class Coloring>
   if (!(std::fabs(cf) < 0x1p62) || !(std::fabs(rf) < 0x1p62)) return {-1, -1};  // NaN or beyond the index range
   const auto col = static_cast<index_t>(cf), row = static_cast<index_t>(rf);
   if constexpr (GridTileColoring<Coloring>)
-    if (col < 0 || row < 0 || col >= static_cast<index_t>(coloring.cols()) || row >= static_cast<index_t>(coloring.rows()))
+    if (!grid_coloring_consistent(coloring) || col < 0 || row < 0 || col >= static_cast<index_t>(coloring.cols()) ||
+        row >= static_cast<index_t>(coloring.rows()))
       return {-1, -1};
   const wang_edges e = cell_edges(coloring, col, row);
   if (atlas.layout == atlas_layout::edge_ordered) {

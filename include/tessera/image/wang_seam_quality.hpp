@@ -36,14 +36,29 @@ struct wang_seam_report {
   wang_pair_seam worst;               ///< the pair with the largest ratio
 };
 
+/// Largest number of touching pairs wang_seam_quality() measures (2^20; a complete set of 7 x 7
+/// colours has 1.6 million). Larger sets return size_overflow.
+inline constexpr index_t max_wang_seam_pairs = index_t{1} << 20;
+
 /// Measures every pair of tiles of `set` that can touch (see the header comment) with
 /// seam_gradient_ratio against `exemplar`.
-/// Errors: empty set or exemplar; an exemplar without gradients (flat). Complexity
-/// O(pairs · (tile pixels + exemplar pixels)); pairs ≤ 2 n² for n tiles. Thread safety: pure.
+/// Errors: empty set or exemplar; more than max_wang_seam_pairs pairs (size_overflow); a NaN or
+/// infinite value in a float exemplar (names the pixel); an exemplar without gradients (flat).
+/// Complexity O(pairs · (tile pixels + exemplar pixels)); pairs ≤ 2 n² for n tiles. Thread safety: pure.
 template <Channel T, int C, Image E>
 [[nodiscard]] result<wang_seam_report> wang_seam_quality(const wang_tile_set<T, C>& set, const E& exemplar) {
   if (set.size() == 0) return status::invalid_argument("wang_seam_quality: the tile set is empty");
   if (auto s = validate_image(exemplar, "exemplar"); !s) return s;
+  if (auto s = detail::validate_finite_pixels(exemplar, "exemplar"); !s) return s;
+  {
+    index_t pairs = 0;
+    for (index_t a = 0; a < set.size(); ++a)
+      pairs += static_cast<index_t>(set.edges().with_west(set.edges()[a].east).size() +
+                                    set.edges().with_north(set.edges()[a].south).size());
+    if (pairs > max_wang_seam_pairs)
+      return status::size_overflow(detail::cat("wang_seam_quality: the set's ", set.size(), " tiles form ", pairs,
+                                               " touching pairs, more than max_wang_seam_pairs = ", max_wang_seam_pairs));
+  }
   auto reference = to_buffer<float, C>(exemplar, "exemplar");
   if (!reference) return reference.error();
   const index_t ts = set.tile_size();

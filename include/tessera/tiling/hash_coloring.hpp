@@ -136,7 +136,8 @@ class hash_coloring {
 };
 
 /// A finite window of a hash_coloring: face = row · cols + col, cell (col, row) of the window is
-/// plane cell (origin_col + col, origin_row + row). Models TileColoring; O(1) queries.
+/// plane cell (origin_col + col, origin_row + row), the sum wrapping at the ends of the index range
+/// (a window may straddle them). Models TileColoring; O(1) queries.
 class hash_coloring_window {
  public:
   hash_coloring_window(const hash_coloring& plane, index_t origin_col, index_t origin_row, index_t cols, index_t rows) noexcept
@@ -152,14 +153,18 @@ class hash_coloring_window {
     return edge_color_at(face % cols_, face / cols_, side);
   }
   [[nodiscard]] int edge_color_at(index_t col, index_t row, int side) const noexcept {
-    return plane_.edge_color_at(origin_col_ + col, origin_row_ + row, side);
+    return plane_.edge_color_at(add(origin_col_, col), add(origin_row_, row), side);
   }
   [[nodiscard]] wang_edges edges_at(index_t col, index_t row) const noexcept {
-    return plane_.edges_at(origin_col_ + col, origin_row_ + row);
+    return plane_.edges_at(add(origin_col_, col), add(origin_row_, row));
   }
   [[nodiscard]] const hash_coloring& plane() const noexcept { return plane_; }
 
  private:
+  // origin + offset, wrapping at the ends of the index range like the plane's own coordinates
+  [[nodiscard]] static index_t add(index_t a, index_t b) noexcept {
+    return static_cast<index_t>(static_cast<std::uint64_t>(a) + static_cast<std::uint64_t>(b));
+  }
   hash_coloring plane_;
   index_t origin_col_, origin_row_, cols_, rows_;
 };

@@ -31,8 +31,9 @@ class periodic_coloring {
 
   /// A periodic colouring of a cols × rows grid with a random period pattern of
   /// period_cols × period_rows cells whose edges all name tiles of `set`.
-  /// Errors: non-positive or overflowing sizes; no toroidal pattern of that period for this set
-  /// (invalid_argument), or the search budget of `max_search_steps` exhausted (not_converged).
+  /// Errors: non-positive sizes; a period or a grid of more than max_coloring_cells cells
+  /// (size_overflow); no toroidal pattern of that period for this set (invalid_argument), or the
+  /// search budget of `max_search_steps` exhausted (not_converged).
   /// Complexity: O(cols · rows) for hashable sets; the search is exponential in the worst case but
   /// bounded by max_search_steps.
   static result<periodic_coloring> create(const tile_set_edges& set, index_t period_cols, index_t period_rows, index_t cols,

@@ -22,15 +22,18 @@
 
 TESSERA_NAMESPACE_BEGIN
 
-/// Largest number of cells a stored grid colouring accepts (2^32).
-inline constexpr index_t max_coloring_cells = index_t{1} << 32;
+/// Largest number of cells a stored grid colouring (scanline_coloring, periodic_coloring's period
+/// pattern) accepts: 2^26, i.e. 1 GiB of cells at 16 bytes each (8192 x 8192 tiles, far beyond any
+/// image tessera composes). Larger grids return size_overflow.
+inline constexpr index_t max_coloring_cells = index_t{1} << 26;
 
 namespace detail {
 inline status validate_grid(index_t cols, index_t rows, const char* what) {
   if (cols <= 0 || rows <= 0)
     return status::invalid_argument(detail::cat(what, ": grid must be at least 1 x 1 cells, got ", cols, " x ", rows));
   if (cols > max_coloring_cells / rows)
-    return status::size_overflow(detail::cat(what, ": ", cols, " x ", rows, " cells exceed the supported 2^32"));
+    return status::size_overflow(detail::cat(what, ": ", cols, " x ", rows, " cells exceed max_coloring_cells = 2^26 (",
+                                             max_coloring_cells, ")"));
   return {};
 }
 }  // namespace detail
@@ -42,8 +45,9 @@ class scanline_coloring {
   scanline_coloring() = default;
 
   /// Colours a cols × rows grid so that every cell's edges name a tile of `set`.
-  /// Cohen et al. 2003 §3 (scanline tiling). Errors: non-positive or overflowing grid; a set lacking
-  /// a tile for some (north, west) pair (check_scanline_fillable names it). O(cols · rows · log n).
+  /// Cohen et al. 2003 §3 (scanline tiling). Errors: non-positive grid; more than
+  /// max_coloring_cells cells (size_overflow); a set lacking a tile for some (north, west) pair
+  /// (check_scanline_fillable names it). O(cols · rows · log n).
   static result<scanline_coloring> create(const tile_set_edges& set, index_t cols, index_t rows, std::uint64_t seed = 1) {
     if (auto s = detail::validate_grid(cols, rows, "scanline colouring"); !s) return s;
     if (auto s = set.check_scanline_fillable(); !s) return s;
