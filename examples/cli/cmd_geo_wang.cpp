@@ -100,7 +100,7 @@ int tile(const cli::arguments& args) {
   if (!args.has("--grid")) return cli::fail(args, status::invalid_argument("missing required option --grid"));
   auto grid = args.size("--grid");
   if (!grid) return cli::fail(args, grid.error());
-  const auto [cols, rows] = *grid;
+  const index_t cols = grid->first, rows = grid->second;  // not a structured binding: a lambda captures them
   auto set = load_geometric_tile_set(*dir);
   if (!set) return cli::fail(args, set.error());
   const std::string kind = args.str("--coloring", "hash");

@@ -208,4 +208,11 @@ class eigen_image_view {
   detail::eigen_holder<M> m_;
 };
 
+// Deduction guides: a named matrix is referenced, an expression (Map, Ref, Block) is held by value.
+// Spelled out because Clang 14 finds the two constrained rvalue constructors ambiguous.
+template <class M>
+eigen_image_view(M&) -> eigen_image_view<M>;
+template <class M>
+eigen_image_view(M&&) -> eigen_image_view<std::remove_cvref_t<M>>;
+
 TESSERA_NAMESPACE_END

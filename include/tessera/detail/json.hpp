@@ -21,6 +21,8 @@
 TESSERA_NAMESPACE_BEGIN
 namespace detail {
 
+struct json_member;
+
 /// A JSON value: null, bool, number, string, array or object (members keep file order).
 struct json_value {
   enum class kind { null, boolean, number, string, array, object };
@@ -29,31 +31,41 @@ struct json_value {
   double number = 0;
   std::string string;
   std::vector<json_value> array;
-  std::vector<std::pair<std::string, json_value>> object;
+  std::vector<json_member> object;  // json_member, not std::pair: a pair may not hold an incomplete type
 
   [[nodiscard]] bool is_number() const noexcept { return type == kind::number; }
   [[nodiscard]] bool is_string() const noexcept { return type == kind::string; }
   [[nodiscard]] bool is_array() const noexcept { return type == kind::array; }
   [[nodiscard]] bool is_object() const noexcept { return type == kind::object; }
   /// The member named `key` of an object, or nullptr.
-  [[nodiscard]] const json_value* find(std::string_view key) const noexcept {
-    for (const auto& [k, v] : object)
-      if (k == key) return &v;
-    return nullptr;
-  }
-  static json_value make_number(double v) {
-    json_value j;
-    j.type = kind::number;
-    j.number = v;
-    return j;
-  }
-  static json_value make_string(std::string v) {
-    json_value j;
-    j.type = kind::string;
-    j.string = std::move(v);
-    return j;
-  }
+  [[nodiscard]] const json_value* find(std::string_view key) const noexcept;
+  static json_value make_number(double v);
+  static json_value make_string(std::string v);
 };
+
+/// One member of a JSON object. Like std::pair, it destructures as `auto& [key, value]`.
+struct json_member {
+  std::string first;
+  json_value second;
+};
+
+inline const json_value* json_value::find(std::string_view key) const noexcept {
+  for (const auto& member : object)
+    if (member.first == key) return &member.second;
+  return nullptr;
+}
+inline json_value json_value::make_number(double v) {
+  json_value j;
+  j.type = kind::number;
+  j.number = v;
+  return j;
+}
+inline json_value json_value::make_string(std::string v) {
+  json_value j;
+  j.type = kind::string;
+  j.string = std::move(v);
+  return j;
+}
 
 class json_parser {
  public:
@@ -229,7 +241,7 @@ class json_parser {
       ++pos_;
       json_value v;
       if (auto s = value(v, depth + 1); !s) return s;
-      out.object.emplace_back(std::move(key), std::move(v));
+      out.object.push_back({std::move(key), std::move(v)});
       skip();
       if (pos_ >= text_.size()) return fail("unexpected end of file inside an object");
       if (text_[pos_] == ',') { ++pos_; continue; }

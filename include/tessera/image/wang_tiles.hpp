@@ -314,7 +314,8 @@ template <Image E, Executor X = serial_executor>
   const index_t ew = width_of(exemplar), eh = height_of(exemplar);
   auto sizes = detail::resolve_wang_sizes(options, ew, eh);
   if (!sizes) return sizes.error();
-  const auto [ts, ov, patch, border] = *sizes;
+  // named locals, not a structured binding: lambdas below capture them (Clang 14 cannot capture bindings)
+  const index_t ts = sizes->tile, ov = sizes->overlap, patch = sizes->patch, border = sizes->border;
   const index_t count = options.tiles.empty() ? complete_tile_count(nh, nv) : static_cast<index_t>(options.tiles.size());
   if (auto s = detail::validate_tile_set_extent(count, ts, sizeof(T) * C); !s) return s;
   auto edges = options.tiles.empty() ? tile_set_edges::complete(nh, nv) : tile_set_edges::create(nh, nv, options.tiles);
