@@ -20,6 +20,7 @@
 #include <tessera/terrain/synthesize_triangles.hpp>
 #include <tessera/terrain/terrain_camera.hpp>
 #include <tessera/terrain/export_corner_uvs.hpp>
+#include <tessera/io/terrain_uv_file.hpp>
 
 #include "cli.hpp"
 #include "image_source.hpp"

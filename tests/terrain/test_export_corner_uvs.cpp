@@ -12,6 +12,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <tessera/io/terrain_uv_file.hpp>
 #include <tessera/image/exemplars.hpp>
 #include <tessera/terrain/build_exemplar_pyramid.hpp>
 #include <tessera/terrain/render_terrain_frame.hpp>

@@ -4,6 +4,7 @@
 #include <fstream>
 
 #include <catch2/catch.hpp>
+#include <tessera/io/tile_manifest_file.hpp>
 
 using tessera::index_t;
 using tessera::tile_manifest;

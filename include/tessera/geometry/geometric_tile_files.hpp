@@ -16,7 +16,7 @@
 #include "../core/status.hpp"
 #include "../detail/json.hpp"
 #include "../io/obj.hpp"
-#include "../tiling/tile_manifest.hpp"
+#include "../io/tile_manifest_file.hpp"
 #include "geometric_wang_tiles.hpp"
 #include "tile_geometric_plane.hpp"
 

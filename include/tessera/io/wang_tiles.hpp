@@ -11,7 +11,7 @@
 #include "../core/image_buffer.hpp"
 #include "../core/status.hpp"
 #include "../image/wang_tiles.hpp"
-#include "../tiling/tile_manifest.hpp"
+#include "tile_manifest_file.hpp"
 #include "png.hpp"
 
 TESSERA_NAMESPACE_BEGIN
