@@ -17,17 +17,19 @@ median_seconds() {
   local times=() i start end
   for i in 1 2 3; do
     start=$(date +%s%N)
-    "$cxx" "${flags[@]}" -c "$tmp/tu.cpp" -o "$tmp/tu.o"
+    "$cxx" "${flags[@]}" -c "$tmp/tu.cpp" -o "$tmp/tu.o" || { echo "compile-time: $1 does not compile" >&2; exit 1; }
     end=$(date +%s%N)
     times+=("$(((end - start) / 1000000))")
   done
   printf '%s\n' "${times[@]}" | sort -n | sed -n 2p | awk '{printf "%.2f", $1 / 1000}'
 }
 
-echo "umbrella tessera/tessera.hpp: $(median_seconds tessera/tessera.hpp) s at -O2 ($("$cxx" --version | head -1); goal < 3 s)"
+umbrella=$(median_seconds tessera/tessera.hpp)
+echo "umbrella tessera/tessera.hpp: $umbrella s at -O2 ($("$cxx" --version | head -1); goal < 3 s)"
 if [[ ${1:-} == --headers ]]; then
   cd "$TESSERA_ROOT/include"
   for h in $(find tessera -name '*.hpp' ! -path '*/adapters/openmesh.hpp' | sort); do
-    echo "$(median_seconds "$h") s  $h"
+    t=$(median_seconds "$h")
+    echo "$t s  $h"
   done | sort -rn
 fi

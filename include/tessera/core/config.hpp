@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <type_traits>
 
 #define TESSERA_NAMESPACE_BEGIN \
   namespace tessera {           \
@@ -34,6 +35,13 @@ namespace detail {
   std::fprintf(stderr, "tessera: internal assertion failed: %s (%s:%d)\n", expr, file, line);
   std::abort();
 }
+
+/// `T`, spelled so that it depends on `Dependent`. Heavy library code (Eigen, glm) written with
+/// `dependent_t<double, X>` inside a template over X is compiled only when the template is
+/// instantiated; with plain `double` compilers analyse and instantiate it in every translation unit
+/// that includes the header (the umbrella header's compile-time goal).
+template <class T, class Dependent>
+using dependent_t = std::conditional_t<sizeof(Dependent*) != 0, T, T>;
 }  // namespace detail
 
 TESSERA_NAMESPACE_END

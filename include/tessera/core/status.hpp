@@ -6,7 +6,7 @@
 #include <charconv>
 #include <concepts>
 #include <cstdio>
-#include <optional>
+#include <new>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -87,22 +87,43 @@ template <class T>
 class [[nodiscard]] result {
  public:
   using value_type = T;
-  result(T value) : value_(std::move(value)) {}  // NOLINT(google-explicit-constructor)
+  result(T value) : has_value_(true) { ::new (static_cast<void*>(&value_)) T(std::move(value)); }  // NOLINT(google-explicit-constructor)
   /// Holds a failure. An ok status carries no value, so it is turned into an internal_error rather
   /// than producing a result that is neither a value nor an error.
   result(status error) : error_(std::move(error)) {  // NOLINT(google-explicit-constructor)
     if (error_.ok()) error_ = status::internal_error("result<T> was constructed from an ok status without a value");
   }
+  // (a union rather than std::optional: result<T> is instantiated for many T, and this keeps the
+  // umbrella header's compile time down)
+  result(const result& o) requires std::copy_constructible<T> : has_value_(o.has_value_), error_(o.error_) {
+    if (has_value_) ::new (static_cast<void*>(&value_)) T(o.value_);
+  }
+  result(result&& o) noexcept(std::is_nothrow_move_constructible_v<T>) : has_value_(o.has_value_), error_(std::move(o.error_)) {
+    if (has_value_) ::new (static_cast<void*>(&value_)) T(std::move(o.value_));
+  }
+  result& operator=(const result& o) requires std::copy_constructible<T> {
+    if (this != &o) *this = result(o);
+    return *this;
+  }
+  result& operator=(result&& o) noexcept(std::is_nothrow_move_constructible_v<T>) {
+    if (this == &o) return *this;
+    reset();
+    if (o.has_value_) ::new (static_cast<void*>(&value_)) T(std::move(o.value_));
+    has_value_ = o.has_value_;
+    error_ = std::move(o.error_);
+    return *this;
+  }
+  ~result() { reset(); }
 
-  [[nodiscard]] bool ok() const noexcept { return value_.has_value(); }
+  [[nodiscard]] bool ok() const noexcept { return has_value_; }
   explicit operator bool() const noexcept { return ok(); }
   /// The failure; an ok status when a value is held.
   [[nodiscard]] const status& error() const noexcept { return error_; }
 
   /// The value. Precondition: ok() (checked by TESSERA_ASSERT; test first, or use value_or).
-  [[nodiscard]] T& value() & { TESSERA_ASSERT(ok()); return *value_; }
-  [[nodiscard]] const T& value() const& { TESSERA_ASSERT(ok()); return *value_; }
-  [[nodiscard]] T&& value() && { TESSERA_ASSERT(ok()); return std::move(*value_); }
+  [[nodiscard]] T& value() & { TESSERA_ASSERT(ok()); return value_; }
+  [[nodiscard]] const T& value() const& { TESSERA_ASSERT(ok()); return value_; }
+  [[nodiscard]] T&& value() && { TESSERA_ASSERT(ok()); return std::move(value_); }
   T& operator*() & { return value(); }
   const T& operator*() const& { return value(); }
   T&& operator*() && { return std::move(*this).value(); }
@@ -111,15 +132,22 @@ class [[nodiscard]] result {
   /// The value, or `fallback` when there is none.
   template <class U>
   [[nodiscard]] T value_or(U&& fallback) const& {
-    return ok() ? *value_ : static_cast<T>(std::forward<U>(fallback));
+    return ok() ? value_ : static_cast<T>(std::forward<U>(fallback));
   }
   template <class U>
   [[nodiscard]] T value_or(U&& fallback) && {
-    return ok() ? std::move(*value_) : static_cast<T>(std::forward<U>(fallback));
+    return ok() ? std::move(value_) : static_cast<T>(std::forward<U>(fallback));
   }
 
  private:
-  std::optional<T> value_;
+  void reset() noexcept {
+    if (has_value_) value_.~T();
+    has_value_ = false;
+  }
+  union {
+    T value_;
+  };
+  bool has_value_ = false;
   status error_;
 };
 

@@ -31,9 +31,10 @@ enum class laplacian_weighting {
 /// The Laplacian matrix L (V x V) with (L x)_i = sum_j w_ij (x_i - x_j), so rows sum to zero.
 /// Input must be valid (validate_mesh); O(F) time.
 template <Mesh M>
-Eigen::SparseMatrix<double> laplacian_matrix(const M& m, laplacian_weighting weighting = laplacian_weighting::cotangent) {
+Eigen::SparseMatrix<detail::dependent_t<double, M>> laplacian_matrix(const M& m, laplacian_weighting weighting = laplacian_weighting::cotangent) {
+  using sparse = Eigen::SparseMatrix<detail::dependent_t<double, M>>;  // see laplacian_deform
   const index_t nv = num_vertices(m);
-  std::vector<Eigen::Triplet<double>> t;
+  std::vector<Eigen::Triplet<typename sparse::Scalar>> t;
   t.reserve(static_cast<std::size_t>(num_faces(m)) * 12);
   for (index_t f = 0; f < num_faces(m); ++f) {
     index_t v[3];
@@ -57,7 +58,7 @@ Eigen::SparseMatrix<double> laplacian_matrix(const M& m, laplacian_weighting wei
       t.emplace_back(static_cast<int>(v[j]), static_cast<int>(v[j]), w);
     }
   }
-  Eigen::SparseMatrix<double> L(static_cast<int>(nv), static_cast<int>(nv));
+  sparse L(static_cast<int>(nv), static_cast<int>(nv));
   L.setFromTriplets(t.begin(), t.end());
   return L;
 }
@@ -110,6 +111,12 @@ result<std::vector<vec3>> laplacian_deform(const M& mesh, std::span<const unsign
         return status::invalid_argument(detail::cat("laplacian_deform: constraint ", c, " has a non-finite weight"));
     }
   }
+  // Eigen types through dependent_t: this solve is compiled only by the code that calls it.
+  using real = detail::dependent_t<double, M>;
+  using sparse = Eigen::SparseMatrix<real>;
+  using dense3 = Eigen::Matrix<real, Eigen::Dynamic, 3>;
+  using row3 = Eigen::Matrix<real, 1, 3>;
+  using triplet = Eigen::Triplet<real>;
   std::vector<vec3> x(static_cast<std::size_t>(nv));
   for (index_t v = 0; v < nv; ++v) x[static_cast<std::size_t>(v)] = vertex_position(mesh, v);
   // free-variable numbering
@@ -119,29 +126,29 @@ result<std::vector<vec3>> laplacian_deform(const M& mesh, std::span<const unsign
     if (fixed.empty() || !fixed[static_cast<std::size_t>(v)]) col[static_cast<std::size_t>(v)] = nfree++;
   if (nfree == 0) return x;
 
-  const Eigen::SparseMatrix<double> L = laplacian_matrix(mesh, options.weighting);
-  Eigen::MatrixX3d X(static_cast<int>(nv), 3);
+  const sparse L = laplacian_matrix(mesh, options.weighting);
+  dense3 X(static_cast<int>(nv), 3);
   for (index_t v = 0; v < nv; ++v)
     for (int d = 0; d < 3; ++d) X(static_cast<int>(v), d) = x[static_cast<std::size_t>(v)][d];
-  const Eigen::MatrixX3d delta = L * X;  // L(v): the rest Laplacian coordinates
+  const dense3 delta = L * X;  // L(v): the rest Laplacian coordinates
 
   // Split L = [L_f | L_c]; move the fixed part to the right-hand side.
-  std::vector<Eigen::Triplet<double>> lf;
-  Eigen::MatrixX3d rhs_l = delta;
+  std::vector<triplet> lf;
+  dense3 rhs_l = delta;
   for (int k = 0; k < L.outerSize(); ++k)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(L, k); it; ++it) {
+    for (typename sparse::InnerIterator it(L, k); it; ++it) {
       const int c = col[static_cast<std::size_t>(it.col())];
       if (c >= 0) lf.emplace_back(static_cast<int>(it.row()), c, it.value());
       else rhs_l.row(static_cast<int>(it.row())) -= it.value() * X.row(static_cast<int>(it.col()));
     }
-  Eigen::SparseMatrix<double> Lf(static_cast<int>(nv), nfree);
+  sparse Lf(static_cast<int>(nv), nfree);
   Lf.setFromTriplets(lf.begin(), lf.end());
 
-  std::vector<Eigen::Triplet<double>> cf;
-  Eigen::MatrixX3d rhs_c(static_cast<int>(constraints.size()), 3);
+  std::vector<triplet> cf;
+  dense3 rhs_c(static_cast<int>(constraints.size()), 3);
   for (std::size_t c = 0; c < constraints.size(); ++c) {
     const auto& k = constraints[c];
-    Eigen::RowVector3d r(k.target.x, k.target.y, k.target.z);
+    row3 r(k.target.x, k.target.y, k.target.z);
     for (int j = 0; j < 3; ++j) {
       const index_t v = k.vertices[static_cast<std::size_t>(j)];
       if (v < 0) continue;
@@ -152,30 +159,30 @@ result<std::vector<vec3>> laplacian_deform(const M& mesh, std::span<const unsign
     }
     rhs_c.row(static_cast<int>(c)) = r;
   }
-  Eigen::SparseMatrix<double> Cf(static_cast<int>(constraints.size()), nfree);
+  sparse Cf(static_cast<int>(constraints.size()), nfree);
   Cf.setFromTriplets(cf.begin(), cf.end());
 
-  Eigen::SparseMatrix<double> A = Eigen::SparseMatrix<double>(Lf.transpose()) * Lf;
-  if (!constraints.empty()) A += options.soft_weight * (Eigen::SparseMatrix<double>(Cf.transpose()) * Cf);
+  sparse A = sparse(Lf.transpose()) * Lf;
+  if (!constraints.empty()) A += options.soft_weight * (sparse(Cf.transpose()) * Cf);
   double mean_diag = 0;
   for (int i = 0; i < nfree; ++i) mean_diag += A.coeff(i, i);
   mean_diag = nfree > 0 ? mean_diag / nfree : 1.0;
   const double eps = options.regularization * std::max(mean_diag, 1e-12);
-  Eigen::MatrixX3d x0(nfree, 3);
+  dense3 x0(nfree, 3);
   for (index_t v = 0; v < nv; ++v)
     if (col[static_cast<std::size_t>(v)] >= 0) x0.row(col[static_cast<std::size_t>(v)]) = X.row(static_cast<int>(v));
   {
-    Eigen::SparseMatrix<double> I(nfree, nfree);
+    sparse I(nfree, nfree);
     I.setIdentity();
     A += eps * I;
   }
-  Eigen::MatrixX3d rhs = Lf.transpose() * rhs_l + eps * x0;
+  dense3 rhs = Lf.transpose() * rhs_l + eps * x0;
   if (!constraints.empty()) rhs += options.soft_weight * (Cf.transpose() * rhs_c);
 
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(A);
+  Eigen::SimplicialLDLT<sparse> solver(A);
   if (solver.info() != Eigen::Success)
     return status::internal_error("laplacian_deform: sparse Cholesky factorisation failed");
-  const Eigen::MatrixX3d sol = solver.solve(rhs);
+  const dense3 sol = solver.solve(rhs);
   if (solver.info() != Eigen::Success || !sol.allFinite())
     return status::internal_error("laplacian_deform: sparse solve failed");
   for (index_t v = 0; v < nv; ++v) {

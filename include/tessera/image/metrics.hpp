@@ -96,11 +96,17 @@ result<double> neighborhood_energy(const O& output, const E& exemplar, const nei
 
   // kd-tree over PCA projections of the exemplar windows (unless brute force is cheaper or asked for)
   const bool brute = opts.brute_force || static_cast<double>(ne) * static_cast<double>(qnx * qny) * static_cast<double>(D) < 4e6;
-  Eigen::MatrixXd basis;
-  detail::lower_bound_knn<> index;
+  // Eigen and the kd-tree through dependent_t: compiled only where neighborhood_energy is used
+  using real = detail::dependent_t<double, E>;
+  using matrix = Eigen::Matrix<real, Eigen::Dynamic, Eigen::Dynamic>;
+  using column = Eigen::Matrix<real, Eigen::Dynamic, 1>;
+  using row = Eigen::Matrix<real, 1, Eigen::Dynamic>;
+  using knn = detail::dependent_knn<-1, E>;
+  matrix basis;
+  knn index;
   if (!brute) {
     const index_t m = std::min<index_t>(ne, 512);
-    Eigen::MatrixXd samples(m, D);
+    matrix samples(m, D);
     for (index_t s = 0; s < m; ++s) {
       const float* v = windows.data() + (s * ne / m) * D;
       for (index_t j = 0; j < D; ++j) samples(s, j) = v[j];
@@ -108,21 +114,21 @@ result<double> neighborhood_energy(const O& output, const E& exemplar, const nei
     basis = detail::pca_basis(std::move(samples), 12);
     const int d = static_cast<int>(basis.cols());
     std::vector<double> proj(static_cast<std::size_t>(ne * d));
-    Eigen::VectorXd v(D);
+    column v(D);
     double scale = 0;
     for (index_t i = 0; i < ne; ++i) {
       for (index_t j = 0; j < D; ++j) v(j) = windows[static_cast<std::size_t>(i * D + j)];
-      Eigen::Map<Eigen::RowVectorXd>(proj.data() + i * d, d) = v.transpose() * basis;
+      Eigen::Map<row>(proj.data() + i * d, d) = v.transpose() * basis;
       scale = std::max(scale, v.squaredNorm());
     }
-    index = detail::lower_bound_knn<>(std::move(proj), ne, d, scale);
+    index = knn(std::move(proj), ne, d, scale);
   }
 
   std::vector<double> row_sums(static_cast<std::size_t>(qny), 0.0);
   exec.parallel_for(0, qny, [&](index_t qy) {
     std::vector<float> q(static_cast<std::size_t>(D));
     std::vector<detail::neighbor> best;
-    Eigen::VectorXd qv(D);
+    column qv(D);
     double sum = 0;
     for (index_t qx = 0; qx < qnx; ++qx) {
       detail::gather_window(*out, qx * opts.sample_step, qy * opts.sample_step, w, q.data());
@@ -133,7 +139,7 @@ result<double> neighborhood_energy(const O& output, const E& exemplar, const nei
           nearest = std::min(nearest, detail::squared_distance(q.data(), windows.data() + i * D, w, w * C, nearest));
       } else {
         for (index_t j = 0; j < D; ++j) qv(j) = q[static_cast<std::size_t>(j)];
-        const Eigen::RowVectorXd qp = qv.transpose() * basis;
+        const row qp = qv.transpose() * basis;
         index.search(
             qp.data(), 1,
             [&](std::uint32_t i, double bound) { return detail::squared_distance(q.data(), windows.data() + i * D, w, w * C, bound); },

@@ -79,8 +79,9 @@ inline status validate_tile_manifest(const tile_manifest& m, std::string_view na
     if (auto s = validate_wang_edges(t.edges, m.horizontal_colors, m.vertical_colors); !s)
       return bad("tile ", t.index, ": ", s.message());
     if (t.file.empty()) return bad("tile ", t.index, " has an empty \"file\"");
-    const std::filesystem::path p(t.file);
-    if (p.is_absolute() || t.file.find("..") != std::string::npos)
+    // absolute on any platform: "/x", "\\x", "C:..."; or climbing out of the directory
+    const bool absolute = t.file[0] == '/' || t.file[0] == '\\' || (t.file.size() >= 2 && t.file[1] == ':');
+    if (absolute || t.file.find("..") != std::string::npos)
       return bad("tile ", t.index, ": file \"", t.file, "\" must be a plain name inside the tile directory");
   }
   return {};

@@ -56,9 +56,10 @@ inline void insert_top_k(std::vector<neighbor>& best, std::size_t k, const neigh
 /// translation units that use them, not by every file that includes this header.)
 template <class Matrix = Eigen::MatrixXd>
 Eigen::Index orthonormalize(Matrix& q) {
+  using column = Eigen::Matrix<typename Matrix::Scalar, Eigen::Dynamic, 1>;
   Eigen::Index kept = 0;
   for (Eigen::Index i = 0; i < q.cols(); ++i) {
-    Eigen::VectorXd v = q.col(i);
+    column v = q.col(i);
     const double before = v.norm();
     for (int pass = 0; pass < 2; ++pass)
       for (Eigen::Index j = 0; j < kept; ++j) v -= q.col(j).dot(v) * q.col(j);
@@ -76,14 +77,16 @@ Eigen::Index orthonormalize(Matrix& q) {
 /// gives valid lower bounds; a good one only makes searches faster. The result has at least one column.
 template <class Matrix = Eigen::MatrixXd>
 Matrix pca_basis(Matrix samples, int dims) {
+  using column = Eigen::Matrix<typename Matrix::Scalar, Eigen::Dynamic, 1>;
+  using row = Eigen::Matrix<typename Matrix::Scalar, 1, Eigen::Dynamic>;
   const Eigen::Index m = samples.rows(), D = samples.cols();
   TESSERA_ASSERT(m >= 1 && D >= 1 && dims >= 1);
-  const Eigen::RowVectorXd mean = samples.colwise().mean();
+  const row mean = samples.colwise().mean();
   samples.rowwise() -= mean;
   const Eigen::Index want = std::min<Eigen::Index>({dims, D, m});
-  Eigen::MatrixXd basis(D, want);
+  Matrix basis(D, want);
   Eigen::Index got = 0;
-  auto take_top = [&](const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>& es, auto&& direction) {
+  auto take_top = [&](const Eigen::SelfAdjointEigenSolver<Matrix>& es, auto&& direction) {
     const Eigen::Index n = es.eigenvalues().size();
     const double top = std::max(es.eigenvalues()(n - 1), 0.0);
     for (Eigen::Index i = n - 1; i >= 0 && got < want; --i) {
@@ -93,29 +96,29 @@ Matrix pca_basis(Matrix samples, int dims) {
   };
   if (std::min(m, D) <= 64) {
     if (D <= m) {
-      Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(samples.transpose() * samples);
-      take_top(es, [&](Eigen::Index i) { return Eigen::VectorXd(es.eigenvectors().col(i)); });
+      Eigen::SelfAdjointEigenSolver<Matrix> es(samples.transpose() * samples);
+      take_top(es, [&](Eigen::Index i) { return column(es.eigenvectors().col(i)); });
     } else {
-      Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(samples * samples.transpose());
-      take_top(es, [&](Eigen::Index i) { return Eigen::VectorXd(samples.transpose() * es.eigenvectors().col(i)); });
+      Eigen::SelfAdjointEigenSolver<Matrix> es(samples * samples.transpose());
+      take_top(es, [&](Eigen::Index i) { return column(samples.transpose() * es.eigenvectors().col(i)); });
     }
   } else {
     const Eigen::Index l = std::min<Eigen::Index>({want + 8, D, m});
-    Eigen::MatrixXd omega(D, l);
+    Matrix omega(D, l);
     for (Eigen::Index j = 0; j < l; ++j)
       for (Eigen::Index i = 0; i < D; ++i)
         omega(i, j) = 2.0 * bits_to_unit(hash_keys(0x70636131u, static_cast<std::uint64_t>(i), static_cast<std::uint64_t>(j))) - 1.0;
-    Eigen::MatrixXd q = samples * omega;  // m x l
+    Matrix q = samples * omega;  // m x l
     for (int power = 0; power < 2; ++power) {
       q.conservativeResize(Eigen::NoChange, orthonormalize(q));
-      Eigen::MatrixXd z = samples.transpose() * q;  // D x l
+      Matrix z = samples.transpose() * q;  // D x l
       z.conservativeResize(Eigen::NoChange, orthonormalize(z));
       q = samples * z;
     }
     q.conservativeResize(Eigen::NoChange, orthonormalize(q));
-    const Eigen::MatrixXd b = q.transpose() * samples;  // l x D: the samples in the found subspace
-    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(b * b.transpose());
-    take_top(es, [&](Eigen::Index i) { return Eigen::VectorXd(b.transpose() * es.eigenvectors().col(i)); });
+    const Matrix b = q.transpose() * samples;  // l x D: the samples in the found subspace
+    Eigen::SelfAdjointEigenSolver<Matrix> es(b * b.transpose());
+    take_top(es, [&](Eigen::Index i) { return column(b.transpose() * es.eigenvectors().col(i)); });
   }
   if (got == 0) {  // no variance at all: any unit direction is a valid (trivial) lower bound
     basis.col(0).setZero();
@@ -217,6 +220,11 @@ class lower_bound_knn {
   std::unique_ptr<tree> tree_;
   double margin_ = 0;
 };
+
+/// lower_bound_knn<DIM>, spelled so that it depends on `Dependent` (see dependent_t): the kd-tree
+/// code is then compiled only by the translation units that build one.
+template <int DIM, class Dependent>
+using dependent_knn = lower_bound_knn<(sizeof(Dependent*) != 0 ? DIM : DIM)>;
 
 }  // namespace detail
 TESSERA_NAMESPACE_END

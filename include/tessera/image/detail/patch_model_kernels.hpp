@@ -79,7 +79,11 @@ template <class T, int C>
 struct strip_family {
   index_t cols = 0, rows = 0;          ///< window size in pixels
   index_t count_x = 0, count_y = 0;    ///< window positions: x in [0, count_x), y in [0, count_y)
-  Eigen::MatrixXd basis;               ///< D x d
+  // Eigen types through dependent_t: compiled only where a strip family is built
+  using real = dependent_t<double, T>;
+  using matrix = Eigen::Matrix<real, Eigen::Dynamic, Eigen::Dynamic>;
+  using row_major = Eigen::Matrix<real, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  matrix basis;                        ///< D x d
   std::vector<double> projected;       ///< count_x * count_y rows of d values
   int d = 0;
 
@@ -101,20 +105,20 @@ struct strip_family {
     count_y = count_y_;
     const index_t n = count_x * count_y, D = cols * rows * C;
     const index_t m = std::min(n, samples);
-    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> sample(m, D);
+    row_major sample(m, D);
     for (index_t s = 0; s < m; ++s) {
       const index_t i = s * n / m;
       gather(img, i % count_x, i / count_x, sample.row(s).data());
     }
-    basis = pca_basis(Eigen::MatrixXd(sample), dims);
+    basis = pca_basis(matrix(sample), dims);
     d = static_cast<int>(basis.cols());
     projected.assign(static_cast<std::size_t>(n * d), 0.0);
     constexpr index_t block = 128;
     exec.parallel_for(0, (n + block - 1) / block, [&](index_t b) {
       const index_t first = b * block, last = std::min(n, first + block);
-      Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> x(last - first, D);
+      row_major x(last - first, D);
       for (index_t i = first; i < last; ++i) gather(img, i % count_x, i / count_x, x.row(i - first).data());
-      Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> out(projected.data() + first * d,
+      Eigen::Map<row_major> out(projected.data() + first * d,
                                                                                              last - first, d);
       out.noalias() = x * basis;
     });

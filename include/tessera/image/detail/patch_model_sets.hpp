@@ -117,8 +117,10 @@ std::vector<side_sets> compatible_sets(const image_buffer<T, C>& ex, const patch
     const double scale = max_value * max_value * static_cast<double>(f.cols * f.rows * C);
     // the kd-tree with a compile-time dimension for the default PCA size (faster distance loops)
     const bool fixed = f.d == 8;
-    const lower_bound_knn<8> index8 = fixed ? lower_bound_knn<8>(make_points(f, data_dx, data_dy), n, 8, scale) : lower_bound_knn<8>();
-    const lower_bound_knn<> index = fixed ? lower_bound_knn<>() : lower_bound_knn<>(make_points(f, data_dx, data_dy), n, f.d, scale);
+    using knn8 = dependent_knn<8, T>;
+    using knn = dependent_knn<-1, T>;
+    const knn8 index8 = fixed ? knn8(make_points(f, data_dx, data_dy), n, 8, scale) : knn8();
+    const knn index = fixed ? knn() : knn(make_points(f, data_dx, data_dy), n, f.d, scale);
     auto& out = sets[static_cast<std::size_t>(side)].ids;
     auto& dist = sets[static_cast<std::size_t>(side)].dist;
     out.assign(static_cast<std::size_t>(n * k), 0);
