@@ -128,15 +128,15 @@ namespace detail {
 /// smallest index).
 inline std::vector<index_t> apportion(const std::vector<double>& w, index_t total) {
   std::vector<index_t> count(w.size());
-  std::vector<std::pair<double, std::size_t>> rest;
+  std::vector<std::pair<double, std::size_t>> rest;  // (-remainder, index): ascending = largest first, ties by index
   index_t given = 0;
   for (std::size_t i = 0; i < w.size(); ++i) {
     const double exact = w[i] * static_cast<double>(total);
     count[i] = static_cast<index_t>(std::floor(exact));
     given += count[i];
-    rest.push_back({exact - static_cast<double>(count[i]), i});
+    rest.push_back({static_cast<double>(count[i]) - exact, i});
   }
-  std::stable_sort(rest.begin(), rest.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::sort(rest.begin(), rest.end());
   for (std::size_t k = 0; given < total && k < rest.size(); ++k, ++given) ++count[rest[k].second];
   for (std::size_t k = 0; given < total; k = (k + 1) % w.size(), ++given) ++count[k];  // rounding slack
   return count;

@@ -146,16 +146,26 @@ class tile_set_edges {
 
   void build_lookups() {
     const index_t n = size();
-    auto sorted_by = [&](auto key_of) {
-      std::vector<index_t> order(static_cast<std::size_t>(n));
-      std::iota(order.begin(), order.end(), index_t{0});
-      std::stable_sort(order.begin(), order.end(), [&](index_t a, index_t b) { return key_of(a) < key_of(b); });
+    // tile indices ordered by a key, ties by index: one (key, index) sort serves the four keys
+    std::vector<std::pair<index_t, index_t>> keyed(static_cast<std::size_t>(n));
+    auto sorted_by = [&](int which) {
+      for (index_t t = 0; t < n; ++t) {
+        const wang_edges& e = (*this)[t];
+        const index_t key = which == 0   ? complete_tile_index(e, nh_, nv_)
+                            : which == 1 ? static_cast<index_t>(e.north) * nv_ + e.west
+                            : which == 2 ? index_t{e.west}
+                                         : index_t{e.north};
+        keyed[static_cast<std::size_t>(t)] = {key, t};
+      }
+      std::sort(keyed.begin(), keyed.end());
+      std::vector<index_t> order(keyed.size());
+      for (std::size_t i = 0; i < keyed.size(); ++i) order[i] = keyed[i].second;
       return order;
     };
-    by_edges_ = sorted_by([&](index_t t) { return complete_tile_index((*this)[t], nh_, nv_); });
-    by_north_west_ = sorted_by([&](index_t t) { return static_cast<index_t>((*this)[t].north) * nv_ + (*this)[t].west; });
-    by_west_ = sorted_by([&](index_t t) { return index_t{(*this)[t].west}; });
-    by_north_ = sorted_by([&](index_t t) { return index_t{(*this)[t].north}; });
+    by_edges_ = sorted_by(0);
+    by_north_west_ = sorted_by(1);
+    by_west_ = sorted_by(2);
+    by_north_ = sorted_by(3);
     distinct_ = 0;
     for (index_t i = 0; i < n; ++i)
       if (i == 0 || complete_tile_index((*this)[by_edges_[static_cast<std::size_t>(i)]], nh_, nv_) !=
