@@ -13,7 +13,7 @@
 #include <tessera/image/wang_seam_quality.hpp>
 #include <tessera/image/wang_tiles.hpp>
 #include <tessera/io/png.hpp>
-#include <tessera/io/tile_manifest_file.hpp>
+#include <tessera/io/tile_manifest.hpp>
 #include <tessera/io/wang_tiles.hpp>
 #include <tessera/tiling/hash_coloring.hpp>
 #include <tessera/tiling/periodic_coloring.hpp>

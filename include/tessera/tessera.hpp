@@ -43,7 +43,6 @@
 #include "tiling/periodic_coloring.hpp"
 #include "tiling/scanline_coloring.hpp"
 #include "tiling/tile_lookup.hpp"
-#include "tiling/tile_manifest.hpp"
 #include "tiling/tile_set_edges.hpp"
 
 // fabric (paper 001)

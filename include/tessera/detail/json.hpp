@@ -1,5 +1,5 @@
 // tessera/detail/json.hpp: a small, tolerant JSON reader and writer for tessera's manifests
-// (tiling/tile_manifest.hpp). Internal; no stability promise.
+// (io/tile_manifest.hpp). Internal; no stability promise.
 //
 // Reads standard JSON and also tolerates what hand-edited files contain: trailing commas, // and
 // /* */ comments, and a UTF-8 byte-order mark. Errors report line and column. Numbers are doubles;

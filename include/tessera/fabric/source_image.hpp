@@ -126,7 +126,8 @@ inline result<palette> parse_palette(std::string_view text) {
 namespace detail {
 /// Splits `total` items among weights with exact integer counts (largest remainder, ties to the
 /// smallest index).
-inline std::vector<index_t> apportion(const std::vector<double>& w, index_t total) {
+template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
+std::vector<index_t> apportion(const std::vector<double>& w, index_t total) {
   std::vector<index_t> count(w.size());
   std::vector<std::pair<double, std::size_t>> rest;  // (-remainder, index): ascending = largest first, ties by index
   index_t given = 0;
@@ -142,7 +143,8 @@ inline std::vector<index_t> apportion(const std::vector<double>& w, index_t tota
   return count;
 }
 /// A seeded permutation of the tone labels with exact counts (Fisher-Yates, keyed by position).
-inline std::vector<int> shuffled_labels(const std::vector<index_t>& count, const counter_rng& rng) {
+template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
+std::vector<int> shuffled_labels(const std::vector<index_t>& count, const counter_rng& rng) {
   std::vector<int> labels;
   for (std::size_t i = 0; i < count.size(); ++i) labels.insert(labels.end(), static_cast<std::size_t>(count[i]), static_cast<int>(i));
   for (std::size_t i = labels.size(); i > 1; --i)
@@ -159,7 +161,8 @@ inline int tone_at(const std::vector<double>& p, double f) {
   return static_cast<int>(p.size() - 1);
 }
 /// Tone label of every pixel for the given layout.
-inline std::vector<int> source_labels(index_t w, index_t h, const std::vector<double>& p, const source_image_options& o) {
+template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
+std::vector<int> source_labels(index_t w, index_t h, const std::vector<double>& p, const source_image_options& o) {
   const index_t s = o.feature_size > 0 ? o.feature_size : std::max<index_t>(1, std::min(w, h) / 8);
   std::vector<int> label(static_cast<std::size_t>(w * h));
   const counter_rng rng(o.seed, stream_id("fabric.source"));

@@ -1,6 +1,6 @@
 // tessera/geometry/geometric_tile_files.hpp: saving and loading a geometric Wang tile set as a
 // directory: one OBJ per tile (DIR/tile_<index>.obj, coordinates written shortest-round-trip, so
-// borders stay bit-identical) and DIR/tiles.json, the manifest of tiling/tile_manifest.hpp (index,
+// borders stay bit-identical) and DIR/tiles.json, the manifest of io/tile_manifest.hpp (index,
 // edges [north, east, south, west]) with the exact world tile size as "tile_size" (a number, 4.8 is
 // written 4.8) and extra numbers "edge_height" and "height".
 #pragma once
@@ -16,7 +16,7 @@
 #include "../core/status.hpp"
 #include "../detail/json.hpp"
 #include "../io/obj.hpp"
-#include "../io/tile_manifest_file.hpp"
+#include "../io/tile_manifest.hpp"
 #include "geometric_wang_tiles.hpp"
 #include "tile_geometric_plane.hpp"
 

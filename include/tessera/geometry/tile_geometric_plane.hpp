@@ -91,7 +91,10 @@ inline index_t tile_set_corner_crossings(const geometric_tile_set& set) {
 /// colour): same number of vertices, positions within `tolerance` along the side and in height, and
 /// the same edges along the side. 0 means any valid tiling is continuous. Errors: those of
 /// tile_border_vertices, a set whose sizes disagree.
-inline result<index_t> tile_set_border_mismatch(const geometric_tile_set& set, double tolerance = 1e-6) {
+/// (A template only so that its maps and sorts are compiled where it is called, not by every
+/// includer: `Deferred` is always void; see docs/architecture.md, "Keeping the umbrella header cheap".)
+template <class Deferred = void>
+result<index_t> tile_set_border_mismatch(const geometric_tile_set& set, double tolerance = 1e-6) {
   if (set.tiles.size() != set.edges.size()) return status::invalid_argument("tile set: tiles and edges differ in count");
   const double w = set.tile_size;
   struct border {

@@ -1,5 +1,5 @@
 // tessera/io/wang_tiles.hpp: Wang tile directories — DIR/tile_<index>.png plus DIR/tiles.json
-// (tiling/tile_manifest.hpp) — written by `tessera wang build` and read by `tessera wang tile`.
+// (io/tile_manifest.hpp) — written by `tessera wang build` and read by `tessera wang tile`.
 // Needs PNG support: link tessera::io (stb).
 #pragma once
 
@@ -11,7 +11,7 @@
 #include "../core/image_buffer.hpp"
 #include "../core/status.hpp"
 #include "../image/wang_tiles.hpp"
-#include "tile_manifest_file.hpp"
+#include "tile_manifest.hpp"
 #include "png.hpp"
 
 TESSERA_NAMESPACE_BEGIN

@@ -43,7 +43,8 @@ struct terrain_mesh {
 namespace detail {
 /// Face adjacency in O(V + F): each undirected edge is filed under its smaller vertex (a CSR list),
 /// and the faces filed under the same (vertex, other vertex) pair are the faces of that edge.
-inline void build_terrain_adjacency(terrain_mesh& m) {
+template <class Deferred = void>  // compiled only where meshes are prepared (see docs/architecture.md)
+void build_terrain_adjacency(terrain_mesh& m) {
   const auto nv = static_cast<std::size_t>(m.num_vertices()), nf = static_cast<std::size_t>(m.num_faces());
   std::vector<std::int32_t> start(nv + 1, 0);
   for (const auto& f : m.faces)

@@ -47,7 +47,8 @@ struct strip_candidate {
 
 /// Windows of the source where a strip may be cut: crossing elements clear of the ends by the corner
 /// margin and (unless long) inside the strip. Positions on a lattice of step `step`.
-inline std::vector<strip_candidate> strip_candidates(const quilt_exemplar& src, bool horizontal, const strip_params& sp, double step) {
+template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
+std::vector<strip_candidate> strip_candidates(const quilt_exemplar& src, bool horizontal, const strip_params& sp, double step) {
   const int a = horizontal ? 0 : 1, b = horizontal ? 1 : 0;
   const aabb& bb = src.bounds();
   std::vector<strip_candidate> out;
@@ -68,7 +69,8 @@ inline std::vector<strip_candidate> strip_candidates(const quilt_exemplar& src, 
   return out;
 }
 
-inline std::vector<texture_element> split_components(const tri_mesh& m) {
+template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
+std::vector<texture_element> split_components(const tri_mesh& m) {
   auto parts = extract_elements(m, {.require_closed = false, .require_manifold = true});
   if (!parts) return {};
   return std::move(*parts);
@@ -76,7 +78,8 @@ inline std::vector<texture_element> split_components(const tri_mesh& m) {
 
 /// Cuts the strip at `c` out of the source. Returns false when an element cannot be cut cleanly
 /// (a cap that cannot be triangulated).
-inline bool extract_strip(const quilt_exemplar& src, bool horizontal, const strip_params& sp, const strip_candidate& c, edge_strip& out) {
+template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
+bool extract_strip(const quilt_exemplar& src, bool horizontal, const strip_params& sp, const strip_candidate& c, edge_strip& out) {
   const int a = horizontal ? 0 : 1, b = horizontal ? 1 : 0;
   out = {};
   out.horizontal = horizontal;
@@ -144,7 +147,8 @@ inline bool extract_strip(const quilt_exemplar& src, bool horizontal, const stri
 
 /// Places a strip half into tile coordinates: `shift` along the across axis (w_T for the north and
 /// east sides, which take the negative half), border bit for `side`.
-inline std::vector<texture_element> place_half(const edge_strip& s, bool positive, int side, double shift) {
+template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
+std::vector<texture_element> place_half(const edge_strip& s, bool positive, int side, double shift) {
   std::vector<texture_element> out = positive ? s.positive : s.negative;
   const int b = s.horizontal ? 1 : 0;
   for (auto& e : out) {
@@ -157,7 +161,8 @@ inline std::vector<texture_element> place_half(const edge_strip& s, bool positiv
 }
 
 /// True when some border element of `a` intersects some border element of `b` (tile coordinates).
-inline bool border_elements_collide(const std::vector<texture_element>& a, const std::vector<texture_element>& b) {
+template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
+bool border_elements_collide(const std::vector<texture_element>& a, const std::vector<texture_element>& b) {
   for (const auto& x : a) {
     if (!x.border) continue;
     for (const auto& y : b) {

@@ -118,7 +118,8 @@ tile_frame_result build_frame(const std::vector<edge_strip>& hs, const std::vect
   return r;
 }
 
-inline status choose_strips(const quilt_exemplar& src, int horizontal_colors, int vertical_colors, const strip_params& sp, std::uint64_t seed,
+template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
+status choose_strips(const quilt_exemplar& src, int horizontal_colors, int vertical_colors, const strip_params& sp, std::uint64_t seed,
                             std::vector<edge_strip>& hs, std::vector<edge_strip>& vs) {
   const double step = 0.5 * src.cell_size();
   const counter_rng rng(seed, stream_id("geometry.wang.strips"));

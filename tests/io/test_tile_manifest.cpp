@@ -1,10 +1,9 @@
-#include <tessera/tiling/tile_manifest.hpp>
+#include <tessera/io/tile_manifest.hpp>
 
 #include <filesystem>
 #include <fstream>
 
 #include <catch2/catch.hpp>
-#include <tessera/io/tile_manifest_file.hpp>
 
 using tessera::index_t;
 using tessera::tile_manifest;

@@ -1,5 +1,6 @@
-// tessera/tiling/tile_manifest.hpp: the `tiles.json` manifest of a Wang tile directory, shared by
-// image tiles (`tessera wang build`) and geometric tiles.
+// tessera/io/tile_manifest.hpp: the `tiles.json` manifest of a Wang tile directory, shared by
+// image tiles (`tessera wang build`) and geometric tiles: the format, and reading and writing
+// DIR/tiles.json. No extra library needed.
 //
 //   {
 //     "tile_size": 64, "horizontal_colors": 2, "vertical_colors": 2,
@@ -16,17 +17,21 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <initializer_list>
+#include <sstream>
 #include <string>
 #include <string_view>
+#include <system_error>
 #include <utility>
 #include <vector>
 
 #include "../core/config.hpp"
 #include "../core/status.hpp"
 #include "../detail/json.hpp"
-#include "complete_tile_set.hpp"
-#include "tile_set_edges.hpp"
+#include "../tiling/complete_tile_set.hpp"
+#include "../tiling/tile_set_edges.hpp"
 
 TESSERA_NAMESPACE_BEGIN
 
@@ -176,6 +181,44 @@ inline result<tile_set_edges> manifest_tile_set(const tile_manifest& m) {
   std::vector<wang_edges> edges(m.tiles.size());
   for (const auto& t : m.tiles) edges[static_cast<std::size_t>(t.index)] = t.edges;
   return tile_set_edges::create(m.horizontal_colors, m.vertical_colors, std::move(edges));
+}
+
+/// The path of the manifest inside a tile directory: DIR/tiles.json.
+inline std::string tile_manifest_path(const std::string& dir) { return (std::filesystem::path(dir) / "tiles.json").string(); }
+
+/// Reads and validates DIR/tiles.json and checks that every listed tile file exists. Errors:
+/// io_error naming DIR/tiles.json or the first missing tile file; parse_error / invalid_argument
+/// from parse_tile_manifest. Thread-safe (reads only).
+inline result<tile_manifest> read_tile_manifest(const std::string& dir) {
+  const std::string path = tile_manifest_path(dir);
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return status::io_error(detail::cat(path, ": cannot open the tile manifest"));
+  std::ostringstream text;
+  text << in.rdbuf();
+  auto m = parse_tile_manifest(text.str(), path);
+  if (!m) return m.error();
+  for (const auto& t : m->tiles) {
+    const auto file = std::filesystem::path(dir) / t.file;
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(file, ec))
+      return status::io_error(detail::cat(file.string(), ": tile ", t.index, " listed in ", path, " is missing"));
+  }
+  return m;
+}
+
+/// Validates `m` and writes it to DIR/tiles.json (creating DIR if needed). Errors: invalid manifest,
+/// io_error naming the path.
+inline status write_tile_manifest(const std::string& dir, const tile_manifest& m) {
+  const std::string path = tile_manifest_path(dir);
+  if (auto s = validate_tile_manifest(m, path); !s) return s;
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out) return status::io_error(detail::cat(path, ": cannot write the tile manifest"));
+  out << format_tile_manifest(m);
+  out.flush();
+  if (!out) return status::io_error(detail::cat(path, ": write failed"));
+  return {};
 }
 
 TESSERA_NAMESPACE_END
