@@ -69,7 +69,8 @@ inline double cut_pixel_cost(const site_window& win, int side, index_t width, in
 /// DP of one side's cut over depths [0, width): cum[b · width + x] = cheapest cost of a path from
 /// (b, x) to the far end b = p − 1 with |pos[b + 1] − pos[b]| <= 1 (Efros & Freeman's E_ij =
 /// e_ij + min(E_{i−1, j−1}, E_{i−1, j}, E_{i−1, j+1}), run from the far end).
-inline void side_cut(const site_window& win, int side, index_t width, std::vector<double>& cum) {
+template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
+void side_cut(const site_window& win, int side, index_t width, std::vector<double>& cum) {
   const index_t p = win.p, S = width;
   TESSERA_ASSERT(width >= 1 && width < p);
   cum.assign(static_cast<std::size_t>(p * S), std::numeric_limits<double>::infinity());
@@ -87,7 +88,8 @@ inline void side_cut(const site_window& win, int side, index_t width, std::vecto
 
 /// Traces the cheapest path through `cum` starting at (b0, x0), towards b = p − 1; positions before
 /// b0 are set to 0. Ties go to the smallest depth.
-inline void trace_cut(const std::vector<double>& cum, index_t p, index_t width, index_t b0, index_t x0, std::vector<index_t>& pos) {
+template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
+void trace_cut(const std::vector<double>& cum, index_t p, index_t width, index_t b0, index_t x0, std::vector<index_t>& pos) {
   const index_t S = width;
   pos.assign(static_cast<std::size_t>(p), 0);
   index_t x = x0;
@@ -115,7 +117,8 @@ struct cut_plan {
 };
 
 /// Finds the cut of every active side (see the header comment). `band_in` as in quilt_site.
-inline void plan_cuts(const site_window& win, const index_t band_in[4], cut_plan& plan) {
+template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
+void plan_cuts(const site_window& win, const index_t band_in[4], cut_plan& plan) {
   const index_t p = win.p;
   for (int s = 0; s < 4; ++s) {
     plan.band[s] = std::clamp<index_t>(band_in[s], 0, p - 1);
@@ -164,7 +167,8 @@ inline void plan_cuts(const site_window& win, const index_t band_in[4], cut_plan
 /// Labels window pixels new (1) or old (0) from a plan: a pixel is new when it lies on the new side
 /// of every active cut (for the L-cut: outside the corner region before the meeting point and past
 /// both paths where they apply). Empty pixels are always new: they have nothing old to keep.
-inline void labels_from_plan(const site_window& win, const cut_plan& plan, std::vector<std::uint8_t>& is_new) {
+template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
+void labels_from_plan(const site_window& win, const cut_plan& plan, std::vector<std::uint8_t>& is_new) {
   const index_t p = win.p;
   is_new.assign(static_cast<std::size_t>(p * p), 1);
   auto at = [](const std::vector<index_t>& v, index_t k) { return v[static_cast<std::size_t>(k)]; };
@@ -187,7 +191,8 @@ inline void labels_from_plan(const site_window& win, const cut_plan& plan, std::
 }
 
 /// plan_cuts followed by labels_from_plan.
-inline void cut_labels(const site_window& win, const index_t band_in[4], std::vector<std::uint8_t>& is_new) {
+template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
+void cut_labels(const site_window& win, const index_t band_in[4], std::vector<std::uint8_t>& is_new) {
   cut_plan plan;
   plan_cuts(win, band_in, plan);
   labels_from_plan(win, plan, is_new);

@@ -107,7 +107,8 @@ struct quilt_params {
 
 /// Positions of windows of size p covering [lo, hi) of an axis of length `size` with overlaps of at
 /// least `ov`; with `wrap` the axis is a circle of length `size` (lo = 0, hi = size).
-inline std::vector<index_t> plan_axis(index_t lo, index_t hi, index_t p, index_t ov, index_t size, bool wrap) {
+template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
+std::vector<index_t> plan_axis(index_t lo, index_t hi, index_t p, index_t ov, index_t size, bool wrap) {
   std::vector<index_t> pos;
   if (wrap) {
     const index_t n = std::max<index_t>(2, (size + (p - ov) - 1) / (p - ov));
@@ -128,7 +129,8 @@ inline std::vector<index_t> plan_axis(index_t lo, index_t hi, index_t p, index_t
 /// actual overlaps with the previous site; the first row/column and the east/south sides use `ov`
 /// (they meet fixed pixels or nothing); with wrapping the last site's east/south band is its overlap
 /// with the first one.
-inline std::vector<quilt_site> plan_sites(index_t x0, index_t y0, index_t x1, index_t y1, index_t p, index_t ov, index_t w,
+template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
+std::vector<quilt_site> plan_sites(index_t x0, index_t y0, index_t x1, index_t y1, index_t p, index_t ov, index_t w,
                                           index_t h, bool wrap_x, bool wrap_y) {
   const std::vector<index_t> xs = plan_axis(x0, x1, p, ov, w, wrap_x), ys = plan_axis(y0, y1, p, ov, h, wrap_y);
   auto bands = [&](const std::vector<index_t>& v, std::size_t i, index_t size, bool wrap, index_t& before, index_t& after) {

@@ -30,7 +30,8 @@ inline vec3 centroid(const tri_mesh& m, index_t f) {
 }
 
 /// Keeps the faces with keep[f] != 0; returns the sub-mesh and the old -> new vertex map.
-inline tri_mesh submesh(const tri_mesh& m, const std::vector<unsigned char>& keep, std::vector<index_t>& map) {
+template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
+tri_mesh submesh(const tri_mesh& m, const std::vector<unsigned char>& keep, std::vector<index_t>& map) {
   tri_mesh out;
   map.assign(m.positions.size(), -1);
   for (std::size_t f = 0; f < m.faces.size(); ++f) {
@@ -48,7 +49,8 @@ inline tri_mesh submesh(const tri_mesh& m, const std::vector<unsigned char>& kee
 }
 
 /// Boundary edges of `m` as a set of directed pairs.
-inline std::vector<std::pair<index_t, index_t>> boundary_edge_set(const tri_mesh& m) {
+template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
+std::vector<std::pair<index_t, index_t>> boundary_edge_set(const tri_mesh& m) {
   std::vector<std::pair<index_t, index_t>> e;
   for (const auto& b : boundary_edges(m)) e.push_back({std::min(b[0], b[1]), std::max(b[0], b[1])});
   std::sort(e.begin(), e.end());
@@ -58,7 +60,8 @@ inline std::vector<std::pair<index_t, index_t>> boundary_edge_set(const tri_mesh
 /// The boundary loops of a kept part that the cut created (`loops` of the part, `map` from the
 /// original mesh to the part). Loops made only of the original's boundary edges are left out; a loop
 /// mixing both makes the cut unusable (returns false). `out` may alias `loops`.
-inline bool cut_loops(const tri_mesh& original, const std::vector<index_t>& map, const std::vector<std::vector<index_t>>& loops,
+template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
+bool cut_loops(const tri_mesh& original, const std::vector<index_t>& map, const std::vector<std::vector<index_t>>& loops,
                       std::vector<std::vector<index_t>>& out) {
   const std::vector<std::pair<index_t, index_t>> orig = boundary_edge_set(original);
   std::vector<index_t> back;
@@ -83,7 +86,8 @@ inline bool cut_loops(const tri_mesh& original, const std::vector<index_t>& map,
 }
 
 /// True when any two faces of `m` that share no vertex intersect.
-inline bool self_intersects(const tri_mesh& m) {
+template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
+bool self_intersects(const tri_mesh& m) {
   const triangle_bvh bvh(m);
   bool hit = false;
   bvh.for_each_self_intersection(
@@ -109,7 +113,8 @@ inline vec3 vector_area(const tri_mesh& m, const std::vector<index_t>& loop) {
 
 // Joins loop a (ids in `m`, running as the boundary half-edges of its side) to loop b (same, other
 // side) with a ladder of triangles, choosing the shorter diagonal at each step.
-inline void stitch_loops(tri_mesh& m, const std::vector<index_t>& a, std::vector<index_t> b) {
+template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
+void stitch_loops(tri_mesh& m, const std::vector<index_t>& a, std::vector<index_t> b) {
   std::reverse(b.begin(), b.end());
   const std::size_t na = a.size(), nb = b.size();
   std::size_t start = 0;
@@ -138,7 +143,8 @@ inline void stitch_loops(tri_mesh& m, const std::vector<index_t>& a, std::vector
 /// uniform-Laplacian smoothing, v = average(neighbours) + delta, with delta = 0 on the seam itself and
 /// the original uniform Laplacian coordinate elsewhere (details kept). Fixed vertices and the border
 /// vertices of `domain` (§3.3.5) stay put. O(sweeps * ring size).
-inline void smooth_seam(texture_element& out, const std::vector<index_t>& seam_vertices, const xy_rect& domain, int rings) {
+template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
+void smooth_seam(texture_element& out, const std::vector<index_t>& seam_vertices, const xy_rect& domain, int rings) {
   const std::size_t nv = out.mesh.positions.size();
   std::vector<std::vector<index_t>> nbr(nv);
   for (const auto& f : out.mesh.faces)

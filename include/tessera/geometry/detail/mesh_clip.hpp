@@ -24,7 +24,8 @@ struct plane_split {
 
 /// Splits `m` by the plane p[axis] = value. Vertices within `snap` of the plane are moved onto it.
 /// New vertices on cut edges get p[axis] = value exactly, and the same position in both halves.
-inline plane_split split_mesh_by_plane(const tri_mesh& m, int axis, double value, double snap = 0) {
+template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
+plane_split split_mesh_by_plane(const tri_mesh& m, int axis, double value, double snap = 0) {
   const std::size_t nv = m.positions.size();
   std::vector<double> s(nv);
   std::vector<vec3> pos = m.positions;
@@ -101,7 +102,8 @@ inline plane_split split_mesh_by_plane(const tri_mesh& m, int axis, double value
 /// Boundary loops of a mesh, each as vertex ids in the direction of the boundary half-edges (as they
 /// run in their faces). Returns false when a boundary vertex has several outgoing boundary
 /// half-edges (a non-manifold boundary) or the boundary does not close.
-inline bool boundary_loops(const tri_mesh& m, std::vector<std::vector<index_t>>& loops) {
+template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
+bool boundary_loops(const tri_mesh& m, std::vector<std::vector<index_t>>& loops) {
   loops.clear();
   std::map<std::pair<index_t, index_t>, int> he;
   for (const auto& f : m.faces)
@@ -131,7 +133,8 @@ inline bool boundary_loops(const tri_mesh& m, std::vector<std::vector<index_t>>&
 /// Triangulates the planar polygon `poly` (2D points, simple, either winding) by ear clipping.
 /// Emits index triples into `poly` with the same winding as the polygon. Returns false for a
 /// polygon it cannot triangulate (self-intersecting or degenerate).
-inline bool ear_clip(const std::vector<vec2>& poly, std::vector<std::array<index_t, 3>>& tris) {
+template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
+bool ear_clip(const std::vector<vec2>& poly, std::vector<std::array<index_t, 3>>& tris) {
   const auto n = static_cast<index_t>(poly.size());
   if (n < 3) return false;
   double area2 = 0;
@@ -183,7 +186,8 @@ inline bool ear_clip(const std::vector<vec2>& poly, std::vector<std::array<index
 /// planar cap (ear clipping), oriented consistently with the adjacent faces. Loops elsewhere are left
 /// alone. Returns false (leaving `m` unchanged) when a loop on the plane cannot be capped: nested
 /// loops, a self-intersecting section, or a non-manifold boundary. `capped` counts the caps added.
-inline bool cap_plane_loops(tri_mesh& m, int axis, double value, index_t* capped = nullptr) {
+template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
+bool cap_plane_loops(tri_mesh& m, int axis, double value, index_t* capped = nullptr) {
   std::vector<std::vector<index_t>> loops;
   if (!boundary_loops(m, loops)) return false;
   const int a0 = axis == 0 ? 1 : 0, a1 = axis == 2 ? 1 : 2;
@@ -225,7 +229,8 @@ inline bool cap_plane_loops(tri_mesh& m, int axis, double value, index_t* capped
 }
 
 /// Removes vertices no face uses, renumbering faces; returns the old -> new map (-1 for removed).
-inline std::vector<index_t> compact_vertices(tri_mesh& m) {
+template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
+std::vector<index_t> compact_vertices(tri_mesh& m) {
   std::vector<index_t> map(m.positions.size(), -1);
   std::vector<vec3> pos;
   for (auto& f : m.faces)

@@ -77,7 +77,8 @@ void containment_measures(const grey_image& g, std::vector<Measure>& shapes, int
 /// most `max_side`, but never below 8 pixels on its smaller side (elongated exemplars keep a usable
 /// width); a copy that still holds more than max_side^2 pixels is cut to its first max_side^2 pixels
 /// along the longer axis, which bounds the periodicity count's O(pixels^2) work.
-inline grey_image analysis_copy(const grey_image& g, index_t max_side, index_t& factor) {
+template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
+grey_image analysis_copy(const grey_image& g, index_t max_side, index_t& factor) {
   const index_t small = std::min(g.w, g.h);
   factor = std::max<index_t>(1, std::min((std::max(g.w, g.h) + max_side - 1) / max_side, small / 8));
   grey_image out{{}, g.w / factor, g.h / factor};
@@ -208,7 +209,8 @@ void alignment_measures(const grey_image& g, std::vector<Measure>& shapes) {
 /// For each overlap width v in [vmin, vmax]: the Pearson correlation, over `pairs` random pairs of
 /// patches of (pw + v) x (ph + v), between the mean squared difference of their L-shaped overlap
 /// strips (the first v columns and rows) and that of the rest of the patches.
-inline std::vector<std::pair<index_t, double>> overlap_measures(const grey_image& g, index_t pw, index_t ph, index_t vmin,
+template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
+std::vector<std::pair<index_t, double>> overlap_measures(const grey_image& g, index_t pw, index_t ph, index_t vmin,
                                                                 index_t vmax, int pairs, std::uint64_t seed) {
   const counter_rng rng(seed, stream_id("patch_size.overlap_pairs"));
   const index_t nx = g.w - pw - vmax + 1, ny = g.h - ph - vmax + 1;
