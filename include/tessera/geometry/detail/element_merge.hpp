@@ -88,7 +88,8 @@ inline bool strictly_inside(const xy_rect& d, vec3 p, double m) {
 // links, so all cuts of equal eq. 8 cost tie and max-flow would return the one hugging the SOURCE;
 // the bias places the seam at the old/new boundary among them. Returns keep flags, or nothing when
 // the cut is infinite.
-inline std::optional<std::vector<unsigned char>> dual_graph_cut(const tri_mesh& m, const std::vector<double>& dist,
+template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
+std::optional<std::vector<unsigned char>> dual_graph_cut(const tri_mesh& m, const std::vector<double>& dist,
                                                                 const std::vector<signed char>& term,
                                                                 const std::vector<double>& bias) {
   const index_t nf = m.num_faces();
