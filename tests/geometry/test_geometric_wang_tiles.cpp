@@ -263,30 +263,29 @@ void check_set_and_plane(const geometric_tile_set& set, int nh, int nv) {
 }
 }  // namespace
 
-TEST_CASE("geometric Wang tiles from stones: set and plane are closed, manifold, disjoint, matching", "[geometric_wang]") {
-  const auto ex = prepare_quilt_exemplar(*make_stone_exemplar({.size = 7, .subdivisions = 1, .seed = 5}));
+namespace {
+// Builds an nh x nv set of `tile_size` tiles from `exemplar` (elements must cross tile edges) and
+// checks it with check_set_and_plane.
+void build_and_check(const tessera::tri_mesh& exemplar, int nh, int nv, double tile_size) {
+  const auto ex = prepare_quilt_exemplar(exemplar);
   REQUIRE(ex.ok());
   geometric_wang_options o;
-  o.horizontal_colors = 2, o.vertical_colors = 1;
-  o.tile_size = 3.6;
+  o.horizontal_colors = nh, o.vertical_colors = nv;
+  o.tile_size = tile_size;
   o.quilt.seed = 3;
   const auto set = build_geometric_wang_tiles(*ex, o);
   REQUIRE(set.ok());
   REQUIRE(set->crossing_elements > 0);
-  check_set_and_plane(*set, 2, 1);
+  check_set_and_plane(*set, nh, nv);
+}
+}  // namespace
+
+TEST_CASE("geometric Wang tiles from stones: set and plane are closed, manifold, disjoint, matching", "[geometric_wang]") {
+  build_and_check(*make_stone_exemplar({.size = 7, .subdivisions = 1, .seed = 5}), 2, 1, 3.6);
 }
 
 TEST_CASE("geometric Wang tiles from a weave: set and plane are closed, manifold, disjoint, matching", "[geometric_wang]") {
-  const auto ex = prepare_quilt_exemplar(*make_weave_exemplar({.size = 7, .segments_per_spacing = 4, .around = 4}));
-  REQUIRE(ex.ok());
-  geometric_wang_options o;
-  o.horizontal_colors = 1, o.vertical_colors = 2;
-  o.tile_size = 3.0;
-  o.quilt.seed = 3;
-  const auto set = build_geometric_wang_tiles(*ex, o);
-  REQUIRE(set.ok());
-  REQUIRE(set->crossing_elements > 0);
-  check_set_and_plane(*set, 1, 2);
+  build_and_check(*make_weave_exemplar({.size = 7, .segments_per_spacing = 4, .around = 4}), 1, 2, 3.0);
 }
 
 TEST_CASE("geometric Wang tiles reject absurd tile counts and cell sizes before looping", "[geometric_wang]") {

@@ -8,8 +8,6 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include "../core/config.hpp"
@@ -51,12 +49,7 @@ inline status save_geometric_tile_set(const std::string& dir, const geometric_ti
   const std::size_t at = text.find(integer_field);
   if (at == std::string::npos) return status::internal_error("save_geometric_tile_set: unexpected manifest layout");
   text.replace(at, integer_field.size(), detail::cat("\"tile_size\": ", detail::json_number(set.tile_size), ","));
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) return status::io_error(detail::cat(path, ": cannot write the tile manifest"));
-  out << text;
-  out.close();
-  if (!out) return status::io_error(detail::cat(path, ": write failed"));
-  return {};
+  return detail::write_tile_manifest_text(dir, text);
 }
 
 namespace detail {
@@ -127,11 +120,9 @@ inline result<std::pair<tile_manifest, double>> parse_geometric_manifest(std::st
 /// borders that differ (naming how many tile sides).
 inline result<geometric_tile_set> load_geometric_tile_set(const std::string& dir, double tolerance = 1e-6) {
   const std::string path = tile_manifest_path(dir);
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return status::io_error(detail::cat(path, ": cannot open the tile manifest"));
-  std::ostringstream text;
-  text << in.rdbuf();
-  auto parsed = detail::parse_geometric_manifest(text.str(), path);
+  auto text = detail::read_tile_manifest_text(dir);
+  if (!text) return text.error();
+  auto parsed = detail::parse_geometric_manifest(*text, path);
   if (!parsed) return parsed.error();
   const tile_manifest& m = parsed->first;
   geometric_tile_set set;
@@ -140,10 +131,9 @@ inline result<geometric_tile_set> load_geometric_tile_set(const std::string& dir
   set.horizontal_colors = m.horizontal_colors;
   set.vertical_colors = m.vertical_colors;
   for (const auto& t : m.tiles) {
-    const std::string file = (std::filesystem::path(dir) / t.file).string();
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(file, ec))
-      return status::io_error(detail::cat(file, ": tile ", t.index, " listed in ", path, " is missing"));
+    const auto found = detail::existing_tile_file(dir, t, path);
+    if (!found) return found.error();
+    const std::string& file = *found;
     auto tile = read_obj(file);
     if (!tile) return tile.error();
     for (const vec3& p : tile->positions)

@@ -18,9 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <initializer_list>
-#include <sstream>
 #include <string>
 #include <string_view>
 #include <system_error>
@@ -32,6 +30,7 @@
 #include "../detail/json.hpp"
 #include "../tiling/complete_tile_set.hpp"
 #include "../tiling/tile_set_edges.hpp"
+#include "detail/file.hpp"
 
 TESSERA_NAMESPACE_BEGIN
 
@@ -186,39 +185,50 @@ inline result<tile_set_edges> manifest_tile_set(const tile_manifest& m) {
 /// The path of the manifest inside a tile directory: DIR/tiles.json.
 inline std::string tile_manifest_path(const std::string& dir) { return (std::filesystem::path(dir) / "tiles.json").string(); }
 
+namespace detail {
+/// The text of DIR/tiles.json; io_error "DIR/tiles.json: cannot open the tile manifest".
+inline result<std::string> read_tile_manifest_text(const std::string& dir) {
+  const std::string path = tile_manifest_path(dir);
+  auto text = read_file(path);
+  if (!text) return status::io_error(cat(path, ": cannot open the tile manifest"));
+  return text;
+}
+/// The path of tile `t`'s file in DIR, or an io_error naming it when it is missing (`manifest`: the
+/// manifest's path, for the message).
+inline result<std::string> existing_tile_file(const std::string& dir, const tile_manifest_entry& t, const std::string& manifest) {
+  const auto file = std::filesystem::path(dir) / t.file;
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(file, ec))
+    return status::io_error(cat(file.string(), ": tile ", t.index, " listed in ", manifest, " is missing"));
+  return file.string();
+}
+/// Writes manifest text to DIR/tiles.json, creating DIR if needed.
+inline status write_tile_manifest_text(const std::string& dir, std::string_view text) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  return write_file(tile_manifest_path(dir), text);
+}
+}  // namespace detail
+
 /// Reads and validates DIR/tiles.json and checks that every listed tile file exists. Errors:
 /// io_error naming DIR/tiles.json or the first missing tile file; parse_error / invalid_argument
 /// from parse_tile_manifest. Thread-safe (reads only).
 inline result<tile_manifest> read_tile_manifest(const std::string& dir) {
+  auto text = detail::read_tile_manifest_text(dir);
+  if (!text) return text.error();
   const std::string path = tile_manifest_path(dir);
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return status::io_error(detail::cat(path, ": cannot open the tile manifest"));
-  std::ostringstream text;
-  text << in.rdbuf();
-  auto m = parse_tile_manifest(text.str(), path);
+  auto m = parse_tile_manifest(*text, path);
   if (!m) return m.error();
-  for (const auto& t : m->tiles) {
-    const auto file = std::filesystem::path(dir) / t.file;
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(file, ec))
-      return status::io_error(detail::cat(file.string(), ": tile ", t.index, " listed in ", path, " is missing"));
-  }
+  for (const auto& t : m->tiles)
+    if (auto file = detail::existing_tile_file(dir, t, path); !file) return file.error();
   return m;
 }
 
 /// Validates `m` and writes it to DIR/tiles.json (creating DIR if needed). Errors: invalid manifest,
 /// io_error naming the path.
 inline status write_tile_manifest(const std::string& dir, const tile_manifest& m) {
-  const std::string path = tile_manifest_path(dir);
-  if (auto s = validate_tile_manifest(m, path); !s) return s;
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) return status::io_error(detail::cat(path, ": cannot write the tile manifest"));
-  out << format_tile_manifest(m);
-  out.flush();
-  if (!out) return status::io_error(detail::cat(path, ": write failed"));
-  return {};
+  if (auto s = validate_tile_manifest(m, tile_manifest_path(dir)); !s) return s;
+  return detail::write_tile_manifest_text(dir, format_tile_manifest(m));
 }
 
 TESSERA_NAMESPACE_END

@@ -112,7 +112,6 @@ inline result<terrain_uv_buffer> export_corner_uvs(const terrain_mesh& mesh, con
   return b;
 }
 
-
 inline constexpr std::uint32_t terrain_uv_file_version = 2;
 inline constexpr std::size_t terrain_uv_header_bytes = 36, terrain_uv_record_bytes = 44;
 
