@@ -51,7 +51,8 @@ tessera::thread_pool_executor& pool(int threads) {
 
 void set_pixels(benchmark::State& state, index_t n) {
   state.SetItemsProcessed(state.iterations() * n * n);
-  state.counters["Mpix/s"] = benchmark::Counter(static_cast<double>(n * n) * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["Mpix/s"] =
+      benchmark::Counter(static_cast<double>(n * n) * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
 }
 
 // Wall-clock and process CPU seconds (all threads) of one call.
@@ -176,7 +177,8 @@ void BM_LifePerturbation(benchmark::State& state) {
       benchmark::ClobberMemory();
     });
     life += seconds([&] {
-      if (!tessera::life_perturbation(in, out, {.generations = 1}, exec)) state.SkipWithError("life_perturbation failed");
+      if (!tessera::life_perturbation(in, out, {.generations = 1}, exec))
+        state.SkipWithError("life_perturbation failed");
       benchmark::ClobberMemory();
     });
   }
@@ -188,17 +190,24 @@ void BM_LifePerturbation(benchmark::State& state) {
 
 BENCHMARK(BM_Memcpy)->Arg(400)->Arg(4096)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_CatMapStep)->ArgsProduct({{400, 4096}, {1, 2}})->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_CatMapJump)->ArgsProduct({{400, 4096}, {1, 31, 60, 300}, {1, 2}})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_CatMapJump)
+    ->ArgsProduct({{400, 4096}, {1, 31, 60, 300}, {1, 2}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 BENCHMARK(BM_CatMapSteps)->ArgsProduct({{400}, {1, 31, 60, 300}, {2}})->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_CatMapSteps)->ArgsProduct({{4096}, {1, 31, 60, 300}, {2}})->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+BENCHMARK(BM_CatMapSteps)
+    ->ArgsProduct({{4096}, {1, 31, 60, 300}, {2}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(1);
 BENCHMARK(BM_CatMapPeriod)
     ->Arg(400)
     ->Arg(4096)
-    ->Arg(1000003)                // a prime near 10^6
-    ->Arg(999999999989LL)         // the largest prime below 10^12
-    ->Arg(999983LL * 999979LL)    // two primes near 10^6 (hardest for Pollard's rho)
-    ->Arg(1000000000000LL)        // 2^12 5^12
-    ->Arg(1099511627776LL)        // 2^40
+    ->Arg(1000003)              // a prime near 10^6
+    ->Arg(999999999989LL)       // the largest prime below 10^12
+    ->Arg(999983LL * 999979LL)  // two primes near 10^6 (hardest for Pollard's rho)
+    ->Arg(1000000000000LL)      // 2^12 5^12
+    ->Arg(1099511627776LL)      // 2^40
     ->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_CatMapPeriodRandom)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_LifePerturbation)->ArgsProduct({{400, 4096}, {1, 2}})->Unit(benchmark::kMillisecond)->UseRealTime();

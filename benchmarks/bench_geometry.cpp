@@ -43,7 +43,8 @@ std::vector<vec3> queries(int n) {
 
 static void BM_bvh_build(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(triangle_bvh(rings()));
-  state.counters["triangles/s"] = benchmark::Counter(double(rings().num_faces()) * double(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["triangles/s"] =
+      benchmark::Counter(double(rings().num_faces()) * double(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_bvh_build)->Unit(benchmark::kMillisecond);
 
@@ -64,7 +65,8 @@ static void BM_baseline_brute_closest_point(benchmark::State& state) {
     for (const vec3& p : q) {
       double best = 1e300;
       for (const auto& f : m.faces) {
-        const auto c = detail::closest_point_on_triangle(p, m.positions[std::size_t(f[0])], m.positions[std::size_t(f[1])], m.positions[std::size_t(f[2])]);
+        const auto c = detail::closest_point_on_triangle(
+            p, m.positions[std::size_t(f[0])], m.positions[std::size_t(f[1])], m.positions[std::size_t(f[2])]);
         best = std::min(best, squared_norm(c.point - p));
       }
       benchmark::DoNotOptimize(best);
@@ -102,7 +104,8 @@ BENCHMARK(BM_bvh_raycast)->Unit(benchmark::kMicrosecond);
 static void BM_baseline_brute_raycast(benchmark::State& state) {
   const tri_mesh& m = rings();
   std::vector<std::array<vec3, 3>> tris;
-  for (const auto& f : m.faces) tris.push_back({m.positions[std::size_t(f[0])], m.positions[std::size_t(f[1])], m.positions[std::size_t(f[2])]});
+  for (const auto& f : m.faces)
+    tris.push_back({m.positions[std::size_t(f[0])], m.positions[std::size_t(f[1])], m.positions[std::size_t(f[2])]});
   const auto r = rays(10);
   for (auto _ : state)
     for (const auto& [o, d] : r) {
@@ -130,13 +133,15 @@ BENCHMARK(BM_baseline_brute_raycast)->Unit(benchmark::kMicrosecond);
 // whole exemplar preparation it is part of; baseline: copying the exemplar's arrays once
 static void BM_extract_elements(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(extract_elements(rings()));
-  state.counters["triangles/s"] = benchmark::Counter(double(rings().num_faces()) * double(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["triangles/s"] =
+      benchmark::Counter(double(rings().num_faces()) * double(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_extract_elements)->Unit(benchmark::kMillisecond);
 
 static void BM_prepare_quilt_exemplar(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(prepare_quilt_exemplar(rings()));
-  state.counters["triangles/s"] = benchmark::Counter(double(rings().num_faces()) * double(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["triangles/s"] =
+      benchmark::Counter(double(rings().num_faces()) * double(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_prepare_quilt_exemplar)->Unit(benchmark::kMillisecond);
 
@@ -145,7 +150,8 @@ static void BM_baseline_copy_exemplar(benchmark::State& state) {
     tri_mesh copy = rings();
     benchmark::DoNotOptimize(copy.positions.data());
   }
-  state.counters["triangles/s"] = benchmark::Counter(double(rings().num_faces()) * double(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["triangles/s"] =
+      benchmark::Counter(double(rings().num_faces()) * double(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_baseline_copy_exemplar)->Unit(benchmark::kMillisecond);
 
@@ -169,10 +175,13 @@ static void BM_max_flow_boykov_kolmogorov(benchmark::State& state) {
   const int w = int(state.range(0));
   for (auto _ : state) {
     max_flow_graph g(w * w);
-    grid_graph(w, [&](int n, double s, double t) { g.add_terminal(n, s, t); }, [&](int a, int b, double c) { g.add_edge(a, b, c, c); });
+    grid_graph(
+        w, [&](int n, double s, double t) { g.add_terminal(n, s, t); },
+        [&](int a, int b, double c) { g.add_edge(a, b, c, c); });
     benchmark::DoNotOptimize(*g.solve());
   }
-  state.counters["nodes/s"] = benchmark::Counter(double(w * w) * double(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["nodes/s"] =
+      benchmark::Counter(double(w * w) * double(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_max_flow_boykov_kolmogorov)->Arg(64)->Unit(benchmark::kMillisecond);
 
@@ -190,8 +199,13 @@ static void BM_baseline_max_flow_edmonds_karp(benchmark::State& state) {
       g[std::size_t(a)].push_back({b, int(g[std::size_t(b)].size()), ab});
       g[std::size_t(b)].push_back({a, int(g[std::size_t(a)].size()) - 1, ba});
     };
-    grid_graph(w, [&](int v, double cs, double ct) { if (cs > 0) add(s, v, cs, 0); if (ct > 0) add(v, t, ct, 0); },
-               [&](int a, int b, double c) { add(a, b, c, c); });
+    grid_graph(
+        w,
+        [&](int v, double cs, double ct) {
+          if (cs > 0) add(s, v, cs, 0);
+          if (ct > 0) add(v, t, ct, 0);
+        },
+        [&](int a, int b, double c) { add(a, b, c, c); });
     double flow = 0;
     for (;;) {
       std::vector<std::pair<int, int>> prev(std::size_t(n), {-1, -1});
@@ -207,7 +221,8 @@ static void BM_baseline_max_flow_edmonds_karp(benchmark::State& state) {
       }
       if (prev[std::size_t(t)].first < 0) break;
       double b = 1e300;
-      for (int v = t; v != s; v = prev[std::size_t(v)].first) b = std::min(b, g[std::size_t(prev[std::size_t(v)].first)][std::size_t(prev[std::size_t(v)].second)].cap);
+      for (int v = t; v != s; v = prev[std::size_t(v)].first)
+        b = std::min(b, g[std::size_t(prev[std::size_t(v)].first)][std::size_t(prev[std::size_t(v)].second)].cap);
       for (int v = t; v != s; v = prev[std::size_t(v)].first) {
         arc& a = g[std::size_t(prev[std::size_t(v)].first)][std::size_t(prev[std::size_t(v)].second)];
         a.cap -= b;
@@ -217,26 +232,33 @@ static void BM_baseline_max_flow_edmonds_karp(benchmark::State& state) {
     }
     benchmark::DoNotOptimize(flow);
   }
-  state.counters["nodes/s"] = benchmark::Counter(double(w * w) * double(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["nodes/s"] =
+      benchmark::Counter(double(w * w) * double(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_baseline_max_flow_edmonds_karp)->Arg(64)->Unit(benchmark::kMillisecond);
 
 static void BM_laplacian_deform(benchmark::State& state) {
   tri_mesh m;
-  detail::add_torus(m, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, 1.0, 0.3, int(state.range(0)), int(state.range(0)) / 3);
+  detail::add_torus(m, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, 1.0, 0.3, int(state.range(0)),
+                    int(state.range(0)) / 3);
   std::vector<laplacian_constraint> cs;
-  for (index_t v = 0; v < m.num_vertices(); v += 17) cs.push_back({{v, -1, -1}, {1, 0, 0}, m.positions[std::size_t(v)] + vec3{0, 0, 0.05}});
+  for (index_t v = 0; v < m.num_vertices(); v += 17)
+    cs.push_back({{v, -1, -1}, {1, 0, 0}, m.positions[std::size_t(v)] + vec3{0, 0, 0.05}});
   for (auto _ : state) benchmark::DoNotOptimize(laplacian_deform(m, {}, cs));
-  state.counters["vertices/s"] = benchmark::Counter(double(m.num_vertices()) * double(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["vertices/s"] =
+      benchmark::Counter(double(m.num_vertices()) * double(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_laplacian_deform)->Arg(48)->Unit(benchmark::kMillisecond);
 
 static void BM_icp_translation(benchmark::State& state) {
   const triangle_bvh bvh(rings());
   std::vector<vec3> pts;
-  for (index_t v = 0; v < rings().num_vertices(); v += 30) pts.push_back(rings().positions[std::size_t(v)] + vec3{0.08, -0.05, 0});
-  for (auto _ : state) benchmark::DoNotOptimize(icp_translation(pts, bvh, {}, {.max_iterations = 30, .free_axes = {true, true, false}}));
-  state.counters["points/s"] = benchmark::Counter(double(pts.size()) * double(state.iterations()), benchmark::Counter::kIsRate);
+  for (index_t v = 0; v < rings().num_vertices(); v += 30)
+    pts.push_back(rings().positions[std::size_t(v)] + vec3{0.08, -0.05, 0});
+  for (auto _ : state)
+    benchmark::DoNotOptimize(icp_translation(pts, bvh, {}, {.max_iterations = 30, .free_axes = {true, true, false}}));
+  state.counters["points/s"] =
+      benchmark::Counter(double(pts.size()) * double(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_icp_translation)->Unit(benchmark::kMillisecond);
 
@@ -271,10 +293,12 @@ std::size_t plane_bytes(const geometric_plane_layout& l) {
   return std::size_t(l.num_vertices()) * sizeof(vec3) + std::size_t(l.num_faces()) * sizeof(std::array<index_t, 3>);
 }
 void plane_counters(benchmark::State& state, const geometric_plane_layout& l) {
-  state.counters["triangles/s"] = benchmark::Counter(double(l.num_faces()) * double(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["triangles/s"] =
+      benchmark::Counter(double(l.num_faces()) * double(state.iterations()), benchmark::Counter::kIsRate);
   state.counters["triangles"] = double(l.num_faces());
   state.counters["tri_per_tile"] = double(l.num_faces()) / (64.0 * 64.0);
-  state.counters["bytes/s"] = benchmark::Counter(double(plane_bytes(l)) * double(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["bytes/s"] =
+      benchmark::Counter(double(plane_bytes(l)) * double(state.iterations()), benchmark::Counter::kIsRate);
 }
 }  // namespace
 

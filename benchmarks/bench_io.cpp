@@ -16,7 +16,8 @@
 namespace {
 
 const tessera::image_buffer<std::uint8_t, 3>& exemplar() {
-  static const auto img = *tessera::make_exemplar(tessera::exemplar_kind::rock, {.width = 512, .height = 512, .seed = 1});
+  static const auto img =
+      *tessera::make_exemplar(tessera::exemplar_kind::rock, {.width = 512, .height = 512, .seed = 1});
   return img;
 }
 
@@ -72,16 +73,23 @@ BENCHMARK(BM_PngDecode)->Unit(benchmark::kMillisecond);
 
 template <int Format>
 std::string format_mesh(const tessera::tri_mesh& m) {
-  if constexpr (Format == 0) return tessera::format_obj(m);
-  else if constexpr (Format == 1) return tessera::format_off(m);
-  else if constexpr (Format == 2) return tessera::format_ply(m);
-  else return tessera::format_ply(m, {.binary = true});
+  if constexpr (Format == 0)
+    return tessera::format_obj(m);
+  else if constexpr (Format == 1)
+    return tessera::format_off(m);
+  else if constexpr (Format == 2)
+    return tessera::format_ply(m);
+  else
+    return tessera::format_ply(m, {.binary = true});
 }
 template <int Format>
 tessera::result<tessera::tri_mesh> parse_mesh(std::string_view text) {
-  if constexpr (Format == 0) return tessera::parse_obj(text);
-  else if constexpr (Format == 1) return tessera::parse_off(text);
-  else return tessera::parse_ply(text);
+  if constexpr (Format == 0)
+    return tessera::parse_obj(text);
+  else if constexpr (Format == 1)
+    return tessera::parse_off(text);
+  else
+    return tessera::parse_ply(text);
 }
 
 template <int Format>

@@ -77,10 +77,13 @@ void run_synthesis(benchmark::State& state) {
     fastest = std::min(fastest, std::chrono::duration<double>(std::chrono::steady_clock::now() - f0).count());
     ++frames;
   }
-  const double per_frame = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() / static_cast<double>(frames);
+  const double per_frame =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() / static_cast<double>(frames);
   const double pixels = static_cast<double>(side * side);
-  state.counters["Mpix_s"] = benchmark::Counter(pixels * static_cast<double>(frames) / 1e6, benchmark::Counter::kIsRate);
-  state.counters["MiPix_s"] = benchmark::Counter(pixels * static_cast<double>(frames) / 1048576.0, benchmark::Counter::kIsRate);
+  state.counters["Mpix_s"] =
+      benchmark::Counter(pixels * static_cast<double>(frames) / 1e6, benchmark::Counter::kIsRate);
+  state.counters["MiPix_s"] =
+      benchmark::Counter(pixels * static_cast<double>(frames) / 1048576.0, benchmark::Counter::kIsRate);
   state.counters["x_memcpy"] = per_frame / copy;
   state.counters["x_memcpy_min"] = fastest / copy_min;  // fastest frame over fastest copy: steadier on a loaded machine
   state.counters["patch"] = static_cast<double>(model.patch_width());
@@ -88,8 +91,10 @@ void run_synthesis(benchmark::State& state) {
 }
 
 void BM_synthesize(benchmark::State& state) {
-  if (state.range(2) == 0) run_synthesis<std::uint8_t, 4>(state);
-  else run_synthesis<float, 3>(state);
+  if (state.range(2) == 0)
+    run_synthesis<std::uint8_t, 4>(state);
+  else
+    run_synthesis<float, 3>(state);
 }
 
 void BM_memcpy(benchmark::State& state) {
@@ -101,8 +106,8 @@ void BM_memcpy(benchmark::State& state) {
     benchmark::DoNotOptimize(dst.data());
     benchmark::ClobberMemory();
   }
-  state.counters["Mpix_s"] =
-      benchmark::Counter(static_cast<double>(side * side) * static_cast<double>(state.iterations()) / 1e6, benchmark::Counter::kIsRate);
+  state.counters["Mpix_s"] = benchmark::Counter(
+      static_cast<double>(side * side) * static_cast<double>(state.iterations()) / 1e6, benchmark::Counter::kIsRate);
   state.SetBytesProcessed(static_cast<std::int64_t>(bytes) * state.iterations());
 }
 
@@ -116,8 +121,10 @@ void BM_preprocess(benchmark::State& state) {
   std::size_t bytes = 0;
   for (auto _ : state) {
     auto m = threads == 1 ? tessera::build_patch_model(ex, opts) : tessera::build_patch_model(ex, opts, pool);
-    if (!m) state.SkipWithError(m.error().message().c_str());
-    else bytes = m->memory_bytes();
+    if (!m)
+      state.SkipWithError(m.error().message().c_str());
+    else
+      bytes = m->memory_bytes();
   }
   state.counters["model_bytes"] = static_cast<double>(bytes);
   state.counters["model_MiB"] = static_cast<double>(bytes) / 1048576.0;

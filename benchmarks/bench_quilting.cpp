@@ -15,7 +15,8 @@ using namespace tessera;
 
 namespace {
 const image_buffer<std::uint8_t, 3>& exemplar() {
-  static const auto ex = *make_exemplar<std::uint8_t, 3>(exemplar_kind::bricks, {.width = 128, .height = 128, .seed = 3});
+  static const auto ex =
+      *make_exemplar<std::uint8_t, 3>(exemplar_kind::bricks, {.width = 128, .height = 128, .seed = 3});
   return ex;
 }
 }  // namespace
@@ -28,7 +29,8 @@ static void BM_quilt_512_from_128(benchmark::State& state) {
     auto s = quilt(exemplar(), out, {.patch_size = 32}, pool);
     benchmark::DoNotOptimize(s);
   }
-  state.counters["pixels/s"] = benchmark::Counter(512.0 * 512.0 * double(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["pixels/s"] =
+      benchmark::Counter(512.0 * 512.0 * double(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_quilt_512_from_128)->Arg(1)->Arg(2)->ArgName("threads")->Unit(benchmark::kMillisecond)->UseRealTime();
 
@@ -38,7 +40,8 @@ static void BM_quilt_512_seamless(benchmark::State& state) {
     auto s = quilt(exemplar(), out, {.patch_size = 32, .seamless = true});
     benchmark::DoNotOptimize(s);
   }
-  state.counters["pixels/s"] = benchmark::Counter(512.0 * 512.0 * double(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["pixels/s"] =
+      benchmark::Counter(512.0 * 512.0 * double(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_quilt_512_seamless)->Unit(benchmark::kMillisecond)->UseRealTime();
 
@@ -49,13 +52,15 @@ static void BM_memcpy_512_rgb8(benchmark::State& state) {
     std::memcpy(dst.data(), src.data(), dst.size());
     benchmark::ClobberMemory();
   }
-  state.counters["pixels/s"] = benchmark::Counter(512.0 * 512.0 * double(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["pixels/s"] =
+      benchmark::Counter(512.0 * 512.0 * double(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_memcpy_512_rgb8)->Unit(benchmark::kMicrosecond);
 
 // Inpainting a 96 x 96 hole of a 256² image from the image itself.
 static void BM_inpaint_96_hole(benchmark::State& state) {
-  static const auto image = *make_exemplar<std::uint8_t, 3>(exemplar_kind::bricks, {.width = 256, .height = 256, .seed = 4});
+  static const auto image =
+      *make_exemplar<std::uint8_t, 3>(exemplar_kind::bricks, {.width = 256, .height = 256, .seed = 4});
   image_buffer<std::uint8_t, 1> mask(256, 256);
   for (index_t y = 80; y < 176; ++y)
     for (index_t x = 80; x < 176; ++x) mask.write(x, y, {255});
@@ -64,7 +69,8 @@ static void BM_inpaint_96_hole(benchmark::State& state) {
     auto s = constrained_quilt(image, mask, out, {.patch_size = 24});
     benchmark::DoNotOptimize(s);
   }
-  state.counters["hole pixels/s"] = benchmark::Counter(96.0 * 96.0 * double(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["hole pixels/s"] =
+      benchmark::Counter(96.0 * 96.0 * double(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_inpaint_96_hole)->Unit(benchmark::kMillisecond)->UseRealTime();
 
@@ -89,7 +95,8 @@ static void BM_overlap_errors_one_site(benchmark::State& state) {
     detail::overlap_errors(src, elements, 32, err, serial);
     benchmark::DoNotOptimize(err.data());
   }
-  state.counters["candidates/s"] = benchmark::Counter(97.0 * 97.0 * double(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["candidates/s"] =
+      benchmark::Counter(97.0 * 97.0 * double(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_overlap_errors_one_site)->Unit(benchmark::kMicrosecond);
 
@@ -110,7 +117,8 @@ static void BM_overlap_errors_one_site_naive(benchmark::State& state) {
       }
     benchmark::DoNotOptimize(err.data());
   }
-  state.counters["candidates/s"] = benchmark::Counter(97.0 * 97.0 * double(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["candidates/s"] =
+      benchmark::Counter(97.0 * 97.0 * double(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_overlap_errors_one_site_naive)->Unit(benchmark::kMicrosecond);
 

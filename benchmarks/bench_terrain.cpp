@@ -53,8 +53,9 @@ tessera::thread_pool_executor& pool() {
 }
 
 const tessera::image_buffer<std::uint8_t, 3>& exemplar() {
-  static const auto e =
-      tessera::make_exemplar<std::uint8_t, 3>(tessera::exemplar_kind::grass, {.width = exemplar_side, .height = exemplar_side}).value();
+  static const auto e = tessera::make_exemplar<std::uint8_t, 3>(tessera::exemplar_kind::grass,
+                                                                {.width = exemplar_side, .height = exemplar_side})
+                            .value();
   return e;
 }
 const tessera::exemplar_pyramid<std::uint8_t, 3>& pyramid() {
@@ -79,13 +80,17 @@ scene& get_scene(index_t triangles) {
     auto mesh = tessera::prepare_terrain_mesh(*m);
     if (!mesh) return mesh.error();
     s->mesh = std::move(*mesh);
-    const auto cam = tessera::make_camera_preset(tessera::camera_preset::overview, tessera::bounding_box(*m), frame_w, frame_h);
+    const auto cam =
+        tessera::make_camera_preset(tessera::camera_preset::overview, tessera::bounding_box(*m), frame_w, frame_h);
     if (!cam) return cam.error();
     if (auto st = tessera::project_mesh(s->mesh, *cam, s->proj, {}, pool()); !st) return st;
-    if (auto st = tessera::assign_scale_field(s->mesh, s->proj, {.min_scale = 0.5, .max_levels = pyramid().num_levels()}, s->field, pool());
+    if (auto st = tessera::assign_scale_field(
+            s->mesh, s->proj, {.min_scale = 0.5, .max_levels = pyramid().num_levels()}, s->field, pool());
         !st)
       return st;
-    if (auto st = tessera::synthesize_triangles(s->mesh, s->proj, s->field, exemplar_side, exemplar_side, {}, s->syn); !st) return st;
+    if (auto st = tessera::synthesize_triangles(s->mesh, s->proj, s->field, exemplar_side, exemplar_side, {}, s->syn);
+        !st)
+      return st;
     tessera::image_buffer<std::uint8_t, 3> frame(frame_w, frame_h);
     std::vector<double> t;
     for (int r = 0; r < 3; ++r) {
@@ -125,12 +130,16 @@ void BM_ScaleFieldAndSynthesis(benchmark::State& state) {
   for (auto _ : state) {
     const auto a = std::chrono::steady_clock::now();
     auto run = [&](auto& exec) {
-      if (auto st = tessera::assign_scale_field(s.mesh, s.proj, {.max_levels = pyramid().num_levels()}, s.field, exec); !st) return st;
+      if (auto st = tessera::assign_scale_field(s.mesh, s.proj, {.max_levels = pyramid().num_levels()}, s.field, exec);
+          !st)
+        return st;
       return tessera::synthesize_triangles(s.mesh, s.proj, s.field, exemplar_side, exemplar_side, {}, s.syn, exec);
     };
     tessera::status st;
-    if constexpr (Threads) st = run(pool());
-    else st = run(serial);
+    if constexpr (Threads)
+      st = run(pool());
+    else
+      st = run(serial);
     if (failed(state, st)) break;
     benchmark::DoNotOptimize(s.syn.offset.data());
     total_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - a).count();
@@ -139,8 +148,20 @@ void BM_ScaleFieldAndSynthesis(benchmark::State& state) {
   state.counters["vs_tiled_render"] = total_ms / static_cast<double>(state.iterations()) / s.tiled_ms;
   state.counters["continuous_edges"] = s.syn.continuous_fraction;
 }
-BENCHMARK(BM_ScaleFieldAndSynthesis<false>)->Name("ScaleFieldAndSynthesis/serial")->Arg(10000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_ScaleFieldAndSynthesis<true>)->Name("ScaleFieldAndSynthesis/2threads")->Arg(10000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_ScaleFieldAndSynthesis<false>)
+    ->Name("ScaleFieldAndSynthesis/serial")
+    ->Arg(10000)
+    ->Arg(100000)
+    ->Arg(1000000)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_ScaleFieldAndSynthesis<true>)
+    ->Name("ScaleFieldAndSynthesis/2threads")
+    ->Arg(10000)
+    ->Arg(100000)
+    ->Arg(1000000)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 void BM_ScaleField(benchmark::State& state) {
   scene* sp = scene_or_skip(state, state.range(0));
@@ -148,7 +169,9 @@ void BM_ScaleField(benchmark::State& state) {
   scene& s = *sp;
   tessera::serial_executor serial;
   for (auto _ : state) {
-    if (failed(state, tessera::assign_scale_field(s.mesh, s.proj, {.max_levels = pyramid().num_levels()}, s.field, serial))) break;
+    if (failed(state,
+               tessera::assign_scale_field(s.mesh, s.proj, {.max_levels = pyramid().num_levels()}, s.field, serial)))
+      break;
     benchmark::DoNotOptimize(s.field.level.data());
   }
   set_counters(state, s);
@@ -162,7 +185,8 @@ void BM_Synthesis(benchmark::State& state) {
   double total_ms = 0;
   for (auto _ : state) {
     const auto a = std::chrono::steady_clock::now();
-    if (failed(state, tessera::synthesize_triangles(s.mesh, s.proj, s.field, exemplar_side, exemplar_side, {}, s.syn))) break;
+    if (failed(state, tessera::synthesize_triangles(s.mesh, s.proj, s.field, exemplar_side, exemplar_side, {}, s.syn)))
+      break;
     benchmark::DoNotOptimize(s.syn.offset.data());
     total_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - a).count();
   }
@@ -175,7 +199,8 @@ void BM_Projection(benchmark::State& state) {
   scene* sp = scene_or_skip(state, state.range(0));
   if (!sp) return;
   scene& s = *sp;
-  const auto cam = tessera::make_camera_preset(tessera::camera_preset::overview, tessera::bounding_box(s.mesh), frame_w, frame_h);
+  const auto cam =
+      tessera::make_camera_preset(tessera::camera_preset::overview, tessera::bounding_box(s.mesh), frame_w, frame_h);
   if (failed(state, cam.error())) return;
   tessera::screen_projection p;
   for (auto _ : state) {
@@ -195,17 +220,31 @@ void BM_Render(benchmark::State& state) {
   tessera::image_buffer<std::uint8_t, 3> frame(frame_w, frame_h);
   for (auto _ : state) {
     tessera::status st;
-    if constexpr (Synthesized) st = tessera::render_terrain_frame(s.mesh, s.proj, s.field, s.syn, pyramid(), frame, {}, pool());
-    else st = tessera::render_tiled_frame(s.mesh, s.proj, tiled(), frame, {}, pool());
+    if constexpr (Synthesized)
+      st = tessera::render_terrain_frame(s.mesh, s.proj, s.field, s.syn, pyramid(), frame, {}, pool());
+    else
+      st = tessera::render_tiled_frame(s.mesh, s.proj, tiled(), frame, {}, pool());
     if (failed(state, st)) break;
     benchmark::DoNotOptimize(frame.data());
   }
   set_counters(state, s);
-  state.counters["pixels/s"] = benchmark::Counter(static_cast<double>(frame_w * frame_h) * static_cast<double>(state.iterations()),
-                                                  benchmark::Counter::kIsRate);
+  state.counters["pixels/s"] = benchmark::Counter(
+      static_cast<double>(frame_w * frame_h) * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
-BENCHMARK(BM_Render<true>)->Name("BM_RenderSynthesized")->Arg(10000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_Render<false>)->Name("BM_RenderTiled")->Arg(10000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Render<true>)
+    ->Name("BM_RenderSynthesized")
+    ->Arg(10000)
+    ->Arg(100000)
+    ->Arg(1000000)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_Render<false>)
+    ->Name("BM_RenderTiled")
+    ->Arg(10000)
+    ->Arg(100000)
+    ->Arg(1000000)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 void BM_MemcpyFrame(benchmark::State& state) {
   std::vector<std::uint8_t> a(static_cast<std::size_t>(frame_w * frame_h * 3), 7), b(a.size());

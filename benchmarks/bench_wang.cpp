@@ -21,7 +21,8 @@ using namespace tessera;
 
 namespace {
 const image_buffer<std::uint8_t, 4>& exemplar() {
-  static const auto ex = *make_exemplar<std::uint8_t, 4>(exemplar_kind::cells, {.width = 128, .height = 128, .seed = 3});
+  static const auto ex =
+      *make_exemplar<std::uint8_t, 4>(exemplar_kind::cells, {.width = 128, .height = 128, .seed = 3});
   return ex;
 }
 const wang_tile_set<std::uint8_t, 4>& tiles() {
@@ -50,7 +51,8 @@ static void BM_memcpy_4096_rgba8(benchmark::State& state) {
     std::memcpy(dst.data(), src.data(), dst.size());
     benchmark::ClobberMemory();
   }
-  state.counters["pixels/s"] = benchmark::Counter(double(big * big) * double(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["pixels/s"] =
+      benchmark::Counter(double(big * big) * double(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_memcpy_4096_rgba8)->Unit(benchmark::kMillisecond)->UseRealTime();
 
@@ -64,7 +66,8 @@ static void BM_memcpy_4096_rgba8_cached_source(benchmark::State& state) {
       std::memcpy(dst.data() + y * row, src.data() + (y % src_rows) * row, static_cast<std::size_t>(row));
     benchmark::ClobberMemory();
   }
-  state.counters["pixels/s"] = benchmark::Counter(double(big * big) * double(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["pixels/s"] =
+      benchmark::Counter(double(big * big) * double(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_memcpy_4096_rgba8_cached_source)->Unit(benchmark::kMillisecond)->UseRealTime();
 
@@ -76,7 +79,8 @@ static void BM_memset_4096_rgba8(benchmark::State& state) {
     std::memset(dst.data(), ++value, dst.size());
     benchmark::ClobberMemory();
   }
-  state.counters["pixels/s"] = benchmark::Counter(double(big * big) * double(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["pixels/s"] =
+      benchmark::Counter(double(big * big) * double(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_memset_4096_rgba8)->Unit(benchmark::kMillisecond)->UseRealTime();
 
@@ -89,7 +93,8 @@ static void compose_bench(benchmark::State& state, const Coloring& coloring) {
     benchmark::DoNotOptimize(s);
     benchmark::ClobberMemory();
   }
-  state.counters["pixels/s"] = benchmark::Counter(double(big * big) * double(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["pixels/s"] =
+      benchmark::Counter(double(big * big) * double(state.iterations()), benchmark::Counter::kIsRate);
 }
 
 // Goal: within 1.5x of a memcpy of the output; compare with all three baselines above.
@@ -97,7 +102,12 @@ static void BM_compose_4096_rgba8_scanline(benchmark::State& state) {
   static const auto coloring = *scanline_coloring::create(tiles().edges(), big / 64, big / 64, 1);
   compose_bench(state, coloring);
 }
-BENCHMARK(BM_compose_4096_rgba8_scanline)->Arg(1)->Arg(2)->ArgName("threads")->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_compose_4096_rgba8_scanline)
+    ->Arg(1)
+    ->Arg(2)
+    ->ArgName("threads")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 static void BM_compose_4096_rgba8_hash(benchmark::State& state) {
   static const auto coloring = *hash_coloring::for_set(tiles().edges(), 1);
@@ -119,7 +129,8 @@ static void BM_atlas_lookup_per_pixel(benchmark::State& state) {
       }
     benchmark::DoNotOptimize(sum);
   }
-  state.counters["lookups/s"] = benchmark::Counter(double(n * n) * double(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["lookups/s"] =
+      benchmark::Counter(double(n * n) * double(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_atlas_lookup_per_pixel)->Unit(benchmark::kMillisecond);
 

@@ -97,7 +97,8 @@ int main(int argc, char** argv) {
   tessera::explain_writable_image<engine::Texture2D>();  // a readable compile error if the adapter were incomplete
 
   engine::Texture2D texture(128, 128);
-  auto cells = tessera::make_exemplar<std::uint8_t, 3>(tessera::exemplar_kind::cells, {.width = 128, .height = 128, .seed = 7});
+  auto cells =
+      tessera::make_exemplar<std::uint8_t, 3>(tessera::exemplar_kind::cells, {.width = 128, .height = 128, .seed = 7});
   if (!cells) return fail(cells.error());
   if (auto s = tessera::copy_image(*cells, texture); !s) return fail(s);  // RGB8 -> packed RGBA8 (opaque)
 
@@ -106,7 +107,7 @@ int main(int argc, char** argv) {
   if (!grey16) return fail(grey16.error());
 
   const std::string path = dir + "/03_engine_texture.png", grey_path = dir + "/03_engine_texture_grey16.png";
-  if (auto s = tessera::write_png(path, texture); !s) return fail(s);  // 8-bit RGBA straight from the engine type
+  if (auto s = tessera::write_png(path, texture); !s) return fail(s);       // 8-bit RGBA straight from the engine type
   if (auto s = tessera::write_png(grey_path, *grey16); !s) return fail(s);  // 16-bit grey
   std::printf("texel (5, 9) = 0x%08x\n", texture.GetTexel(5, 9));
 
@@ -126,10 +127,11 @@ int main(int argc, char** argv) {
   if (auto s = tessera::validate_mesh(tile, "terrain tile"); !s) return fail(s);
   const auto box = tessera::bounding_box(tile);
   const auto normals = tessera::vertex_normals(tile);
-  std::printf("terrain tile: %td vertices, %td triangles, %zu boundary edges, height %.2f..%.2f, normal at centre "
-              "(%.2f, %.2f, %.2f)\n",
-              tessera::num_vertices(tile), tessera::num_faces(tile), tessera::boundary_edges(tile).size(), box.min.z,
-              box.max.z, normals[n * n / 2].x, normals[n * n / 2].y, normals[n * n / 2].z);
+  std::printf(
+      "terrain tile: %td vertices, %td triangles, %zu boundary edges, height %.2f..%.2f, normal at centre "
+      "(%.2f, %.2f, %.2f)\n",
+      tessera::num_vertices(tile), tessera::num_faces(tile), tessera::boundary_edges(tile).size(), box.min.z, box.max.z,
+      normals[n * n / 2].x, normals[n * n / 2].y, normals[n * n / 2].z);
   const std::string mesh_path = dir + "/03_engine_mesh.obj";
   if (auto s = tessera::write_mesh(mesh_path, tile); !s) return fail(s);  // any Mesh, through mesh_traits
   tile.AddTriangle(0, 1, 400);  // an index past the last vertex is reported, not read

@@ -46,9 +46,9 @@ int main(int argc, char** argv) {
   // [snippet:raw-mesh]
   // An interleaved vertex buffer as the engine uploads it: per vertex a position (x, y, z), a
   // normal (nx, ny, nz) and a uv (u, v), 8 floats. Two separate quads: a floor and a wall.
-  const std::vector<float> vertices = {
-      0, 0, 0, 0, 0, 1, 0, 0,  2, 0, 0, 0, 0, 1, 1, 0,  2, 2, 0, 0, 0, 1, 1, 1,  0, 2, 0, 0, 0, 1, 0, 1,
-      4, 0, 0, 1, 0, 0, 0, 0,  4, 1, 0, 1, 0, 0, 1, 0,  4, 1, 1, 1, 0, 0, 1, 1,  4, 0, 1, 1, 0, 0, 0, 1};
+  const std::vector<float> vertices = {0, 0, 0, 0, 0, 1, 0, 0, 2, 0, 0, 0, 0, 1, 1, 0, 2, 2, 0, 0, 0, 1,
+                                       1, 1, 0, 2, 0, 0, 0, 1, 0, 1, 4, 0, 0, 1, 0, 0, 0, 0, 4, 1, 0, 1,
+                                       0, 0, 1, 0, 4, 1, 1, 1, 0, 0, 1, 1, 4, 0, 1, 1, 0, 0, 0, 1};
   const std::vector<std::uint32_t> indices = {0, 1, 2, 0, 2, 3, 4, 5, 6, 4, 6, 7};
   auto mesh = tessera::make_mesh_view(vertices.data(), std::ptrdiff_t(vertices.size() / 8), indices.data(),
                                       std::ptrdiff_t(indices.size() / 3), nullptr, /*position_stride=*/8);

@@ -48,10 +48,11 @@ int main(int argc, char** argv) {
     auto s = tessera::dispatch_format(t.format, [&]<class T, int C>(tessera::format_tag<T, C>) -> tessera::status {
       auto view = tessera::make_image_view<C>(reinterpret_cast<T*>(t.bytes.get()), t.width, t.height);
       if (!view) return view.error();
-      auto exemplar = tessera::make_exemplar<T, C>(tessera::exemplar_kind::grass, {.width = t.width, .height = t.height});
+      auto exemplar =
+          tessera::make_exemplar<T, C>(tessera::exemplar_kind::grass, {.width = t.width, .height = t.height});
       if (!exemplar) return exemplar.error();
       if (auto c = tessera::copy_image(*exemplar, *view); !c) return c;  // fill the texture
-      auto grey = tessera::to_buffer<float, 1>(*view);                    // read it back as float grey
+      auto grey = tessera::to_buffer<float, 1>(*view);                   // read it back as float grey
       if (!grey) return grey.error();
       double mean = 0;
       for (std::ptrdiff_t y = 0; y < grey->height(); ++y)

@@ -40,8 +40,8 @@ void build(Eigen::MatrixXd& V, Eigen::MatrixXi& F, const tessera::image_buffer<f
   for (int i = 0; i < ring; ++i)
     for (int j = 0; j < tube; ++j) {
       const double u = 2 * std::numbers::pi * i / ring, v = 2 * std::numbers::pi * j / tube;
-      V.row(base + i * tube + j) << 2 + (1 + 0.3 * std::cos(v)) * std::cos(u), 2 + (1 + 0.3 * std::cos(v)) * std::sin(u),
-          1.5 + 0.3 * std::sin(v);
+      V.row(base + i * tube + j) << 2 + (1 + 0.3 * std::cos(v)) * std::cos(u),
+          2 + (1 + 0.3 * std::cos(v)) * std::sin(u), 1.5 + 0.3 * std::sin(v);
       const int a = base + i * tube + j, b = base + ((i + 1) % ring) * tube + j;
       const int c = base + i * tube + (j + 1) % tube, d = base + ((i + 1) % ring) * tube + (j + 1) % tube;
       F.row(f++) << a, b, d;
@@ -71,7 +71,8 @@ int main(int argc, char** argv) {
               std::ptrdiff_t(V.rows()), std::ptrdiff_t(F.rows()), parts.count, adjacency.boundary_edges,
               adjacency.nonmanifold_edges);
   std::printf("bounding box (%.2f, %.2f, %.2f) - (%.2f, %.2f, %.2f); normal of vertex 0 (%.2f, %.2f, %.2f)\n",
-              box.min.x, box.min.y, box.min.z, box.max.x, box.max.y, box.max.z, normals[0].x, normals[0].y, normals[0].z);
+              box.min.x, box.min.y, box.min.z, box.max.x, box.max.y, box.max.z, normals[0].x, normals[0].y,
+              normals[0].z);
 
   // A transposed V (3 x n, a common slip) is named as such.
   const Eigen::MatrixXd Vt = V.transpose();

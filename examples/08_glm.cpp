@@ -76,7 +76,7 @@ int main(int argc, char** argv) {
 
   GlmMesh crate = make_box({0, 0, 0}, {1, 1, 1});
   if (auto s = tessera::validate_mesh(crate, "crate"); !s) return fail(s);  // positions, indices and uvs
-  auto crate_mesh = tessera::to_tri_mesh(crate);                             // glm -> tessera, uvs included
+  auto crate_mesh = tessera::to_tri_mesh(crate);                            // glm -> tessera, uvs included
   const auto normals = tessera::face_normals(crate);
   // [/snippet]
   if (!crate_mesh) return fail(crate_mesh.error());

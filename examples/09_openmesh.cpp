@@ -32,7 +32,8 @@ PolyMesh make_sheet(int n) {
   std::vector<PolyMesh::VertexHandle> v;
   for (int y = 0; y <= n; ++y)
     for (int x = 0; x <= n; ++x)
-      v.push_back(m.add_vertex(PolyMesh::Point(float(x), float(y), 0.3f * std::sin(0.8f * float(x)) * std::cos(0.6f * float(y)))));
+      v.push_back(m.add_vertex(
+          PolyMesh::Point(float(x), float(y), 0.3f * std::sin(0.8f * float(x)) * std::cos(0.6f * float(y)))));
   for (int y = 0; y < n; ++y)
     for (int x = 0; x < n; ++x) {
       const int a = y * (n + 1) + x;

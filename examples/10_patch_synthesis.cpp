@@ -54,9 +54,11 @@ rgb8 heat_map(const tessera::patch_size_analysis& a, double (*value)(const tesse
   const index_t cell = 24;
   rgb8 out(static_cast<index_t>(ws.size()) * cell, static_cast<index_t>(hs.size()) * cell);
   for (const auto& m : a.sizes) {
-    const index_t cx = std::find(ws.begin(), ws.end(), m.width) - ws.begin(), cy = std::find(hs.begin(), hs.end(), m.height) - hs.begin();
+    const index_t cx = std::find(ws.begin(), ws.end(), m.width) - ws.begin(),
+                  cy = std::find(hs.begin(), hs.end(), m.height) - hs.begin();
     const double t = hi > lo ? (value(m) - lo) / (hi - lo) : 0.5;
-    const tessera::pixel<std::uint8_t, 3> c{static_cast<std::uint8_t>(30 + 225 * t), static_cast<std::uint8_t>(40 + 190 * t),
+    const tessera::pixel<std::uint8_t, 3> c{static_cast<std::uint8_t>(30 + 225 * t),
+                                            static_cast<std::uint8_t>(40 + 190 * t),
                                             static_cast<std::uint8_t>(120 - 90 * t)};
     const bool chosen = m.width == a.patch_width && m.height == a.patch_height;
     for (index_t y = 0; y < cell; ++y)
@@ -96,23 +98,29 @@ int main(int argc, char** argv) {
     const double seams = tessera::seam_gradient_ratio(out, lines, *ex).value_or(-1);
     const double hist = tessera::histogram_distance(out, *ex).value_or(-1);
     const double rep = tessera::repetition_score(out, 16).value_or(-1);
-    std::printf("%-7s %4td x %-3td %7td %10.4f %9.2f %8.3f %10.2f\n", name.c_str(), model->patch_width(), model->patch_height(),
-                model->overlap(), energy, seams, hist, rep);
+    std::printf("%-7s %4td x %-3td %7td %10.4f %9.2f %8.3f %10.2f\n", name.c_str(), model->patch_width(),
+                model->patch_height(), model->overlap(), energy, seams, hist, rep);
 
     const auto& a = *model->analysis();
     auto map = [&](const char* what, double (*f)(const tessera::patch_size_measure&)) {
       return tessera::write_png(dir + "/10_" + name + "_" + what + ".png", heat_map(a, f));
     };
     if (kind == tessera::exemplar_kind::bricks || kind == tessera::exemplar_kind::grass) {
-      if (auto s = map("containment", [](const tessera::patch_size_measure& m) { return m.containment; }); !s) return fail(s);
-      if (auto s = map("periodicity", [](const tessera::patch_size_measure& m) { return m.periodicity; }); !s) return fail(s);
-      if (auto s = map("alignment", [](const tessera::patch_size_measure& m) { return m.alignment; }); !s) return fail(s);
-      std::printf("  square candidates of %s: side, containment (share within tolerance / p90), periodicity (mean count / hits), alignment\n",
-                  name.c_str());
+      if (auto s = map("containment", [](const tessera::patch_size_measure& m) { return m.containment; }); !s)
+        return fail(s);
+      if (auto s = map("periodicity", [](const tessera::patch_size_measure& m) { return m.periodicity; }); !s)
+        return fail(s);
+      if (auto s = map("alignment", [](const tessera::patch_size_measure& m) { return m.alignment; }); !s)
+        return fail(s);
+      std::printf(
+          "  square candidates of %s: side, containment (share within tolerance / p90), periodicity (mean count / "
+          "hits), alignment\n",
+          name.c_str());
       for (const auto& m : a.sizes)
         if (m.width == m.height)
-          std::printf("    %3td  %.2f / %.2f   %6.1f / %.2f   %5.2f%s\n", m.width, m.containment, m.containment_p90, m.periodicity,
-                      m.periodicity_hits, m.alignment, m.width == a.patch_width && m.height == a.patch_height ? "  <- chosen" : "");
+          std::printf("    %3td  %.2f / %.2f   %6.1f / %.2f   %5.2f%s\n", m.width, m.containment, m.containment_p90,
+                      m.periodicity, m.periodicity_hits, m.alignment,
+                      m.width == a.patch_width && m.height == a.patch_height ? "  <- chosen" : "");
       std::printf("  overlap discrimination:");
       for (const auto& o : a.overlaps) std::printf(" %td:%.2f", o.overlap, o.discrimination);
       std::printf("  -> %td\n", a.overlap);
@@ -122,15 +130,21 @@ int main(int argc, char** argv) {
   // feathering (paper 002) against minimum-error seams (its named improvement) on a structured texture
   auto bricks = tessera::make_exemplar<std::uint8_t, 3>(tessera::exemplar_kind::bricks, {.width = 128, .height = 128});
   if (!bricks) return fail(bricks.error());
-  auto model = tessera::build_patch_model(*bricks, {.patch_width = 40, .patch_height = 40, .overlap = 12, .seams = true}, pool);
+  auto model =
+      tessera::build_patch_model(*bricks, {.patch_width = 40, .patch_height = 40, .overlap = 12, .seams = true}, pool);
   if (!model) return fail(model.error());
   rgb8 feather(160, 160), cut(160, 160);
   if (auto s = tessera::synthesize(*model, feather, {.seed = 3}, pool); !s) return fail(s.error());
-  if (auto s = tessera::synthesize(*model, cut, {.seed = 3, .seams = tessera::seam_mode::cut}, pool); !s) return fail(s.error());
-  if (auto s = tessera::write_png(dir + "/10_bricks_feather_cut.png", side_by_side(feather, cut, 2)); !s) return fail(s);
+  if (auto s = tessera::synthesize(*model, cut, {.seed = 3, .seams = tessera::seam_mode::cut}, pool); !s)
+    return fail(s.error());
+  if (auto s = tessera::write_png(dir + "/10_bricks_feather_cut.png", side_by_side(feather, cut, 2)); !s)
+    return fail(s);
   std::printf("bricks 40 x 40, overlap 12: neighbourhood energy feather %.4f, cut %.4f\n",
-              tessera::neighborhood_energy(feather, *bricks).value_or(-1), tessera::neighborhood_energy(cut, *bricks).value_or(-1));
-  std::printf("wrote %s/10_<kind>.png, 10_bricks_feather_cut.png and 10_{bricks,grass}_{containment,periodicity,alignment}.png\n",
-              dir.c_str());
+              tessera::neighborhood_energy(feather, *bricks).value_or(-1),
+              tessera::neighborhood_energy(cut, *bricks).value_or(-1));
+  std::printf(
+      "wrote %s/10_<kind>.png, 10_bricks_feather_cut.png and "
+      "10_{bricks,grass}_{containment,periodicity,alignment}.png\n",
+      dir.c_str());
   return 0;
 }

@@ -43,9 +43,14 @@ int main(int argc, char** argv) {
   tessera::image_buffer<float, 3> normal(128, 128);
   for (index_t y = 0; y < 128; ++y)
     for (index_t x = 0; x < 128; ++x) {
-      auto h = [&](index_t u, index_t v) { return tessera::channel_to_unit(height.read(std::clamp<index_t>(u, 0, 127), std::clamp<index_t>(v, 0, 127))[0]); };
-      const double dx = 4.0 * (h(x + 1, y) - h(x - 1, y)), dy = 4.0 * (h(x, y + 1) - h(x, y - 1)), len = std::sqrt(dx * dx + dy * dy + 1);
-      normal.write(x, y, {static_cast<float>(0.5 - 0.5 * dx / len), static_cast<float>(0.5 - 0.5 * dy / len), static_cast<float>(0.5 + 0.5 / len)});
+      auto h = [&](index_t u, index_t v) {
+        return tessera::channel_to_unit(height.read(std::clamp<index_t>(u, 0, 127), std::clamp<index_t>(v, 0, 127))[0]);
+      };
+      const double dx = 4.0 * (h(x + 1, y) - h(x - 1, y)), dy = 4.0 * (h(x, y + 1) - h(x, y - 1)),
+                   len = std::sqrt(dx * dx + dy * dy + 1);
+      normal.write(x, y,
+                   {static_cast<float>(0.5 - 0.5 * dx / len), static_cast<float>(0.5 - 0.5 * dy / len),
+                    static_cast<float>(0.5 + 0.5 / len)});
     }
 
   // [snippet:patch_synthesis]
@@ -68,7 +73,8 @@ int main(int argc, char** argv) {
   }
   // [/snippet]
   const bool identical = tiles == whole;
-  std::printf("16 tiles rendered separately %s the single 512 x 512 render\n", identical ? "are bit-identical to" : "DIFFER from");
+  std::printf("16 tiles rendered separately %s the single 512 x 512 render\n",
+              identical ? "are bit-identical to" : "DIFFER from");
   for (index_t i = 0; i < 512; ++i)
     for (index_t k = 128; k < 512; k += 128) {  // mark the tile borders (one pixel, for the picture only)
       tiles.write(k, i, {255, 255, 255});

@@ -70,18 +70,21 @@ int main(int argc, char** argv) {
   if (!save(dir + "/quilt_kinds.png", side_by_side(row))) return 1;
 
   // 2. Seamless output: synthesized on a torus, it repeats without seams; a plain one does not.
-  auto cells = tessera::make_exemplar<std::uint8_t, 3>(tessera::exemplar_kind::cells, {.width = 96, .height = 96, .seed = 5});
+  auto cells =
+      tessera::make_exemplar<std::uint8_t, 3>(tessera::exemplar_kind::cells, {.width = 96, .height = 96, .seed = 5});
   rgb8 seamless(128, 128), plain(128, 128);
   // [snippet:seamless]
   auto s1 = tessera::quilt(*cells, seamless, {.patch_size = 24, .overlap = 6, .seamless = true}, pool);
   // [/snippet]
   auto s2 = tessera::quilt(*cells, plain, {.patch_size = 24, .overlap = 6}, pool);
   if (!s1 || !s2) return std::fprintf(stderr, "%s %s\n", s1.to_string().c_str(), s2.to_string().c_str()), 1;
-  if (!save(dir + "/seamless_3x3.png", repeat(seamless, 3)) || !save(dir + "/plain_3x3.png", repeat(plain, 3))) return 1;
+  if (!save(dir + "/seamless_3x3.png", repeat(seamless, 3)) || !save(dir + "/plain_3x3.png", repeat(plain, 3)))
+    return 1;
 
   // 3. Inpainting: a disc-shaped hole filled from the rest of the image; pixels outside the hole
   //    are untouched, bit for bit.
-  auto wall = tessera::make_exemplar<std::uint8_t, 3>(tessera::exemplar_kind::bricks, {.width = 192, .height = 192, .seed = 9});
+  auto wall =
+      tessera::make_exemplar<std::uint8_t, 3>(tessera::exemplar_kind::bricks, {.width = 192, .height = 192, .seed = 9});
   tessera::image_buffer<std::uint8_t, 1> mask(192, 192);
   for (index_t y = 0; y < 192; ++y)
     for (index_t x = 0; x < 192; ++x)

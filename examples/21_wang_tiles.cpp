@@ -66,12 +66,14 @@ int fail(const tessera::status& s) {
 int main(int argc, char** argv) {
   const std::string dir = argc > 1 ? argv[1] : ".";
   tessera::thread_pool_executor pool;
-  auto exemplar = tessera::make_exemplar<std::uint8_t, 3>(tessera::exemplar_kind::cells, {.width = 128, .height = 128, .seed = 3});
+  auto exemplar =
+      tessera::make_exemplar<std::uint8_t, 3>(tessera::exemplar_kind::cells, {.width = 128, .height = 128, .seed = 3});
   if (!exemplar) return fail(exemplar.error());
 
   // [snippet:wang_build]
   // The complete set for 2 horizontal and 2 vertical colours: 2² · 2² = 16 tiles of 64 x 64.
-  auto set = tessera::build_wang_tiles(*exemplar, {.tile_size = 64, .horizontal_colors = 2, .vertical_colors = 2}, pool);
+  auto set =
+      tessera::build_wang_tiles(*exemplar, {.tile_size = 64, .horizontal_colors = 2, .vertical_colors = 2}, pool);
   if (!set) return fail(set.error());
   // A 10 x 6 plane by Cohen's scanline colouring, composed by row memcpys.
   auto coloring = tessera::scanline_coloring::create(set->edges(), 10, 6, /*seed=*/5);
@@ -88,8 +90,8 @@ int main(int argc, char** argv) {
   // Every pair of tiles that can touch, measured across its shared edge.
   auto quality = tessera::wang_seam_quality(*set, *exemplar);
   if (!quality) return fail(quality.error());
-  std::printf("seam gradient ratio over %zu touching pairs: mean %.3f, max %.3f\n", quality->pairs.size(), quality->mean_ratio,
-              quality->max_ratio);
+  std::printf("seam gradient ratio over %zu touching pairs: mean %.3f, max %.3f\n", quality->pairs.size(),
+              quality->mean_ratio, quality->max_ratio);
 
   // [snippet:wang_atlas]
   // Wei's edge-ordered atlas. Tiles of 64 built with default options share an 8-texel border and

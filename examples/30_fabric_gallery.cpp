@@ -59,7 +59,8 @@ int main(int argc, char** argv) {
   // 1. The orbit of a 75 % black / 25 % white block source (figure 3) under the cat map:
   //    31 steps give twill (figure 5), 60 flannel (figure 4); step 300 is the source again.
   rgb8 source(n, n);
-  if (!check(tessera::make_source_image(source, black_white, {.layout = tessera::source_layout::blocks, .seed = 1}))) return 1;
+  if (!check(tessera::make_source_image(source, black_white, {.layout = tessera::source_layout::blocks, .seed = 1})))
+    return 1;
   std::vector<rgb8> orbit;
   for (std::int64_t steps : {0, 1, 2, 5, 31, 60, 150, 300}) {
     auto f = tessera::cat_map(source, steps, {}, pool);
@@ -79,7 +80,8 @@ int main(int argc, char** argv) {
   if (!save("family.png", grid(family, 4, 200))) return 1;
 
   // 3. Source layouts (§1.3): stripes, blocks, cells of a three-tone palette, and 31 steps of each.
-  const tessera::palette denim = {{{0.10f, 0.16f, 0.32f}, 0.6}, {{0.55f, 0.62f, 0.75f}, 0.25}, {{0.93f, 0.92f, 0.88f}, 0.15}};
+  const tessera::palette denim = {
+      {{0.10f, 0.16f, 0.32f}, 0.6}, {{0.55f, 0.62f, 0.75f}, 0.25}, {{0.93f, 0.92f, 0.88f}, 0.15}};
   std::vector<rgb8> layouts, mapped;
   for (auto layout : {tessera::source_layout::stripes, tessera::source_layout::blocks, tessera::source_layout::cells}) {
     rgb8 img(n, n);
@@ -112,8 +114,10 @@ int main(int argc, char** argv) {
     tweeds.push_back(std::move(img));
   }
   if (!save("tweed_generations.png", grid(tweeds, 4, 160))) return 1;
-  const tessera::palette grey = {{{0.15f, 0.15f, 0.17f}, 0.45}, {{0.45f, 0.45f, 0.47f}, 0.30},
-                                 {{0.85f, 0.84f, 0.80f}, 0.20}, {{0.20f, 0.30f, 0.50f}, 0.05}};
+  const tessera::palette grey = {{{0.15f, 0.15f, 0.17f}, 0.45},
+                                 {{0.45f, 0.45f, 0.47f}, 0.30},
+                                 {{0.85f, 0.84f, 0.80f}, 0.20},
+                                 {{0.20f, 0.30f, 0.50f}, 0.05}};
   std::vector<rgb8> coats;
   for (int generations : {0, 3}) {
     rgb8 img(n, n);

@@ -33,7 +33,7 @@ int main(int argc, char** argv) {
   const tessera::index_t w = 1000, h = 310;
   tessera::image_buffer<std::uint8_t, 3> plot(w, h, {255, 255, 255});
   for (tessera::index_t x = 0; x < w; ++x) {
-    plot.write(x, h - 1 - x / 10, {200, 200, 200});          // period = N
+    plot.write(x, h - 1 - x / 10, {200, 200, 200});                                         // period = N
     plot.write(x, h - 1 - std::min<tessera::index_t>(h - 1, 3 * x / 10), {240, 190, 190});  // period = 3N
   }
   for (std::int64_t n = 1; n <= 1000; ++n) {
@@ -43,7 +43,9 @@ int main(int argc, char** argv) {
     for (tessera::index_t dy = -1; dy <= 1; ++dy)
       for (tessera::index_t dx = -1; dx <= 1; ++dx)
         if (x + dx >= 0 && x + dx < w && y + dy >= 0 && y + dy < h && (paper || dx == 0 || dy == 0))
-          plot.write(x + dx, y + dy, paper ? tessera::pixel<std::uint8_t, 3>{200, 30, 30} : tessera::pixel<std::uint8_t, 3>{20, 40, 110});
+          plot.write(
+              x + dx, y + dy,
+              paper ? tessera::pixel<std::uint8_t, 3>{200, 30, 30} : tessera::pixel<std::uint8_t, 3>{20, 40, 110});
   }
   const std::string path = dir + "/period.png";
   if (auto s = tessera::write_png(path, plot); !s) {

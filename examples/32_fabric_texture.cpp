@@ -21,7 +21,9 @@ int main(int argc, char** argv) {
   const tessera::fabric_options options{.iterations = 45,
                                         .perturbation = {.generations = 3, .seed = 7},
                                         .tile_size = 512};  // weave 512 x 512, tile it twice
-  if (auto s = tessera::make_fabric(*tones, {.layout = tessera::source_layout::blocks, .seed = 7}, texture, options, pool); !s)
+  if (auto s =
+          tessera::make_fabric(*tones, {.layout = tessera::source_layout::blocks, .seed = 7}, texture, options, pool);
+      !s)
     return std::fprintf(stderr, "%s\n", s.to_string().c_str()), 1;
   // [/snippet]
   if (auto s = tessera::write_png(path, texture); !s) return std::fprintf(stderr, "%s\n", s.to_string().c_str()), 1;
@@ -29,8 +31,9 @@ int main(int argc, char** argv) {
   const auto shares = tessera::dominant_tones(texture, 4);
   std::printf("wrote %s; dominant tones:", path.c_str());
   for (const auto& t : *shares)
-    std::printf(" #%02x%02x%02x %.0f%%", static_cast<int>(t.color[0] * 255 + 0.5f), static_cast<int>(t.color[1] * 255 + 0.5f),
-                static_cast<int>(t.color[2] * 255 + 0.5f), 100 * t.proportion);
+    std::printf(" #%02x%02x%02x %.0f%%", static_cast<int>(t.color[0] * 255 + 0.5f),
+                static_cast<int>(t.color[1] * 255 + 0.5f), static_cast<int>(t.color[2] * 255 + 0.5f),
+                100 * t.proportion);
   std::printf("\n");
   return 0;
 }

@@ -43,7 +43,8 @@ struct scene_spec {
   tessera::look_at_camera camera;
 };
 
-int render_scene(const scene_spec& spec, const std::string& dir, tessera::thread_pool_executor& pool, bool diagnostics) {
+int render_scene(const scene_spec& spec, const std::string& dir, tessera::thread_pool_executor& pool,
+                 bool diagnostics) {
   const auto source = tessera::make_terrain(spec.terrain, pool);
   if (!source) return check(source.error());
   const auto exemplar = tessera::make_exemplar<std::uint8_t, 3>(spec.kind, {.width = 256, .height = 256});
@@ -61,22 +62,29 @@ int render_scene(const scene_spec& spec, const std::string& dir, tessera::thread
   tessera::scale_field field;
   tessera::triangle_synthesis syn;
   if (auto s = tessera::project_mesh(mesh, *camera, proj, {}, pool); !s) return check(s);
-  if (auto s = tessera::assign_scale_field(mesh, proj, {.min_scale = 0.5, .max_levels = pyramid.num_levels()}, field, pool); !s)
+  if (auto s =
+          tessera::assign_scale_field(mesh, proj, {.min_scale = 0.5, .max_levels = pyramid.num_levels()}, field, pool);
+      !s)
     return check(s);
-  if (auto s = tessera::synthesize_triangles(mesh, proj, field, exemplar->width(), exemplar->height(), {.seed = 7}, syn, pool); !s)
+  if (auto s = tessera::synthesize_triangles(mesh, proj, field, exemplar->width(), exemplar->height(), {.seed = 7}, syn,
+                                             pool);
+      !s)
     return check(s);
   if (!syn.warning.ok()) std::fprintf(stderr, "warning: %s\n", syn.warning.message().c_str());
   frame_t frame(width, height);
-  if (auto s = tessera::render_terrain_frame(mesh, proj, field, syn, pyramid, frame, {.sun = sun}, pool); !s) return check(s);
+  if (auto s = tessera::render_terrain_frame(mesh, proj, field, syn, pyramid, frame, {.sun = sun}, pool); !s)
+    return check(s);
   // [/snippet]
 
-  const std::string synthesized = dir + "/" + spec.name + "_synthesized.png", tiled_path = dir + "/" + spec.name + "_tiled.png";
+  const std::string synthesized = dir + "/" + spec.name + "_synthesized.png",
+                    tiled_path = dir + "/" + spec.name + "_tiled.png";
   if (check(tessera::write_png(synthesized, frame))) return 1;
   const auto tiled = tessera::prepare_tiled_texture(*exemplar, pool).value();
   if (check(tessera::render_tiled_frame(mesh, proj, tiled, frame, {.sun = sun}, pool))) return 1;
   if (check(tessera::write_png(tiled_path, frame))) return 1;
-  std::printf("%-6s %7td visible triangles, %3td levels (max jump %d), %4td restarts, %.1f %% continuous edges\n", spec.name,
-              proj.num_visible(), field.levels, field.max_level_jump, syn.restarts, 100 * syn.continuous_fraction);
+  std::printf("%-6s %7td visible triangles, %3td levels (max jump %d), %4td restarts, %.1f %% continuous edges\n",
+              spec.name, proj.num_visible(), field.levels, field.max_level_jump, syn.restarts,
+              100 * syn.continuous_fraction);
   std::printf("  wrote %s\n  wrote %s\n", synthesized.c_str(), tiled_path.c_str());
   if (!diagnostics) return 0;
 
@@ -91,7 +99,8 @@ int render_scene(const scene_spec& spec, const std::string& dir, tessera::thread
   if (write("regions.png", {.shading = tessera::terrain_shading::regions, .sun = sun})) return 1;
   // seam blending, magnified: a 160 x 90 corner at 3x
   for (double feather : {0.0, 3.0}) {
-    if (check(tessera::render_terrain_frame(mesh, proj, field, syn, pyramid, frame, {.feather = feather}, pool))) return 1;
+    if (check(tessera::render_terrain_frame(mesh, proj, field, syn, pyramid, frame, {.feather = feather}, pool)))
+      return 1;
     frame_t zoom(480, 270);
     for (index_t y = 0; y < 270; ++y)
       for (index_t x = 0; x < 480; ++x) zoom.write(x, y, frame.read(240 + x / 3, 250 + y / 3));
@@ -101,7 +110,8 @@ int render_scene(const scene_spec& spec, const std::string& dir, tessera::thread
   }
   // the continuous variant of the scale field
   if (check(tessera::assign_scale_field(
-          mesh, proj, {.min_scale = 0.5, .max_levels = pyramid.num_levels(), .mode = tessera::scale_mode::continuous}, field, pool)))
+          mesh, proj, {.min_scale = 0.5, .max_levels = pyramid.num_levels(), .mode = tessera::scale_mode::continuous},
+          field, pool)))
     return 1;
   return write("scale_field_continuous.png", {.shading = tessera::terrain_shading::scale_field, .sun = sun});
 }
@@ -124,17 +134,24 @@ int main(int argc, char** argv) {
   std::printf("wrote %s/exemplars.png\n", dir.c_str());
 
   // the paper's figure: a low, grazing view over a wide, gently rolling grass plane
-  const scene_spec grass{"grass", tessera::exemplar_kind::grass,
+  const scene_spec grass{"grass",
+                         tessera::exemplar_kind::grass,
                          {.cells_x = 160, .cells_y = 160, .size_x = 200, .size_y = 200, .height = 6, .seed = 3},
                          {.eye = {0, -96, 9}, .target = {0, 60, 0}, .fov_y_degrees = 50, .near = 0.05, .far = 600}};
   // dunes seen from a little higher
-  const scene_spec sand{"sand", tessera::exemplar_kind::sand,
-                        {.cells_x = 160, .cells_y = 160, .size_x = 160, .size_y = 160, .height = 12, .feature_size = 0.3, .seed = 5},
-                        {.eye = {-70, -70, 22}, .target = {20, 20, 0}, .fov_y_degrees = 50, .near = 0.05, .far = 600}};
+  const scene_spec sand{
+      "sand",
+      tessera::exemplar_kind::sand,
+      {.cells_x = 160, .cells_y = 160, .size_x = 160, .size_y = 160, .height = 12, .feature_size = 0.3, .seed = 5},
+      {.eye = {-70, -70, 22}, .target = {20, 20, 0}, .fov_y_degrees = 50, .near = 0.05, .far = 600}};
   // steep mountains: the tiled frame stretches on the slopes
-  const scene_spec rock{"rock", tessera::exemplar_kind::rock,
-                        {.cells_x = 160, .cells_y = 160, .size_x = 100, .size_y = 100, .height = 40, .feature_size = 0.45, .seed = 2},
-                        {.eye = {-15, -105, 62}, .target = {0, 5, 6}, .fov_y_degrees = 45, .near = 0.05, .far = 600}};
-  if (render_scene(grass, dir, pool, true) || render_scene(sand, dir, pool, false) || render_scene(rock, dir, pool, false)) return 1;
+  const scene_spec rock{
+      "rock",
+      tessera::exemplar_kind::rock,
+      {.cells_x = 160, .cells_y = 160, .size_x = 100, .size_y = 100, .height = 40, .feature_size = 0.45, .seed = 2},
+      {.eye = {-15, -105, 62}, .target = {0, 5, 6}, .fov_y_degrees = 45, .near = 0.05, .far = 600}};
+  if (render_scene(grass, dir, pool, true) || render_scene(sand, dir, pool, false) ||
+      render_scene(rock, dir, pool, false))
+    return 1;
   return 0;
 }

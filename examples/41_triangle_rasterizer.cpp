@@ -87,7 +87,7 @@ int main(int argc, char** argv) {
         }
         return true;  // false would skip the triangle
       },
-      [&](index_t f, const tessera::fragment& frag) {  // each pixel on one thread, f ascending
+      [&](index_t f, const tessera::fragment& frag) {      // each pixel on one thread, f ascending
         if (depth.test_and_set(frag.x, frag.y, frag.w)) {  // w: view depth, even precision
           id[frag.y * w + frag.x] = static_cast<std::int32_t>(f);
           bary[frag.y * w + frag.x] = frag.bary;  // perspective-correct corner weights
@@ -116,11 +116,14 @@ int main(int argc, char** argv) {
         const double lambert = 0.3 + 0.7 * std::max(0.0, glm::dot(glm::normalize(n), light));
         const bool ground = f >= static_cast<std::int32_t>(m.f.size()) - 2;
         const bool dark = ground && ((static_cast<int>(std::floor(u * 2)) + static_cast<int>(std::floor(v * 2))) & 1);
-        const std::array<double, 3> albedo = ground ? (dark ? std::array<double, 3>{0.35, 0.38, 0.4} : std::array<double, 3>{0.85, 0.85, 0.8})
-                                                    : std::array<double, 3>{0.85, 0.45, 0.2};
+        const std::array<double, 3> albedo =
+            ground ? (dark ? std::array<double, 3>{0.35, 0.38, 0.4} : std::array<double, 3>{0.85, 0.85, 0.8})
+                   : std::array<double, 3>{0.85, 0.45, 0.2};
         for (int k = 0; k < 3; ++k) c[k] = albedo[k] * lambert;
       }
-      image.write(x, y, {static_cast<std::uint8_t>(255 * c[0]), static_cast<std::uint8_t>(255 * c[1]), static_cast<std::uint8_t>(255 * c[2])});
+      image.write(x, y,
+                  {static_cast<std::uint8_t>(255 * c[0]), static_cast<std::uint8_t>(255 * c[1]),
+                   static_cast<std::uint8_t>(255 * c[2])});
     }
 
   // overdraw of the torus alone seen from above: a closed surface covers each pixel exactly twice
@@ -150,7 +153,8 @@ int main(int argc, char** argv) {
     return 1;
   }
   std::printf("wrote %s\nwrote %s\n", a.c_str(), b.c_str());
-  std::printf("torus from above: %d pixels covered twice, %d once (silhouette rims: none expected), %d three times or more\n",
-              histogram[2], histogram[1], histogram[3]);
+  std::printf(
+      "torus from above: %d pixels covered twice, %d once (silhouette rims: none expected), %d three times or more\n",
+      histogram[2], histogram[1], histogram[3]);
   return histogram[3] == 0 ? 0 : 1;
 }

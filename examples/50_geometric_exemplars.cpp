@@ -26,8 +26,10 @@ int main(int argc, char** argv) {
     }
     const std::string obj = dir + "/exemplar_" + it.name + ".obj", png = dir + "/exemplar_" + it.name + ".png";
     if (auto s = write_obj(obj, *it.mesh); !s) return std::fprintf(stderr, "%s\n", s.to_string().c_str()), 1;
-    if (auto s = write_mesh_preview(png, *it.mesh, {.width = 480, .height = 360}); !s) return std::fprintf(stderr, "%s\n", s.to_string().c_str()), 1;
-    std::printf("%-10s %5lld vertices -> %s, %s\n", it.name, static_cast<long long>(it.mesh->num_vertices()), obj.c_str(), png.c_str());
+    if (auto s = write_mesh_preview(png, *it.mesh, {.width = 480, .height = 360}); !s)
+      return std::fprintf(stderr, "%s\n", s.to_string().c_str()), 1;
+    std::printf("%-10s %5lld vertices -> %s, %s\n", it.name, static_cast<long long>(it.mesh->num_vertices()),
+                obj.c_str(), png.c_str());
   }
   return 0;
 }

@@ -22,11 +22,13 @@ int main(int argc, char** argv) {
   const auto quilt = mesh_quilt(*prepared, 16, 12, {.seed = 7}, pool);
   if (!quilt) return std::fprintf(stderr, "%s\n", quilt.error().to_string().c_str()), 1;
   const auto report = check_geometric_texture(quilt->mesh);
-  std::printf("quilted %zu elements (%lld merged, %lld dropped); open edges %lld, non-manifold %lld, intersecting pairs %lld\n",
-              quilt->elements.size(), static_cast<long long>(quilt->stats.elements_merged),
-              static_cast<long long>(quilt->stats.elements_dropped), static_cast<long long>(report->open_edges_inside),
-              static_cast<long long>(report->nonmanifold_edges), static_cast<long long>(report->intersecting_pairs));
-  const std::string obj = dir + "/quilt_stones.obj", png = dir + "/quilt_stones.png", ex_png = dir + "/quilt_stones_exemplar.png";
+  std::printf(
+      "quilted %zu elements (%lld merged, %lld dropped); open edges %lld, non-manifold %lld, intersecting pairs %lld\n",
+      quilt->elements.size(), static_cast<long long>(quilt->stats.elements_merged),
+      static_cast<long long>(quilt->stats.elements_dropped), static_cast<long long>(report->open_edges_inside),
+      static_cast<long long>(report->nonmanifold_edges), static_cast<long long>(report->intersecting_pairs));
+  const std::string obj = dir + "/quilt_stones.obj", png = dir + "/quilt_stones.png",
+                    ex_png = dir + "/quilt_stones_exemplar.png";
   if (auto s = write_obj(obj, quilt->mesh); !s) return std::fprintf(stderr, "%s\n", s.to_string().c_str()), 1;
   if (auto s = write_mesh_preview(png, quilt->mesh, {.width = 800, .height = 520}, pool); !s) return 1;
   if (auto s = write_mesh_preview(ex_png, *exemplar, {.width = 400, .height = 320}, pool); !s) return 1;

@@ -75,7 +75,8 @@ class arguments {
           arg = arg.substr(0, eq);
           inline_value = true;
         }
-        auto it = std::find_if(cmd.options.begin(), cmd.options.end(), [&](const option_spec& o) { return o.name == arg; });
+        auto it =
+            std::find_if(cmd.options.begin(), cmd.options.end(), [&](const option_spec& o) { return o.name == arg; });
         if (it == cmd.options.end()) {
           error = "unknown option " + arg + " (see tessera " + cmd.name + " --help)";
           return std::nullopt;
@@ -145,10 +146,11 @@ class arguments {
     std::vector<double> v;
     if (!split_numbers(s, 'x', v) || (v.size() != 1 && v.size() != 2)) return bad(name, s, "WxH");
     const double wd = v[0], hd = v.size() == 2 ? v[1] : v[0];
-    if (!(wd >= 1 && hd >= 1) || wd != std::floor(wd) || hd != std::floor(hd)) return bad(name, s, "positive integers WxH");
+    if (!(wd >= 1 && hd >= 1) || wd != std::floor(wd) || hd != std::floor(hd))
+      return bad(name, s, "positive integers WxH");
     if (wd > double(max_side) || hd > double(max_side) || wd * hd > double(max_pixels))
-      return bad(name, s, "at most " + std::to_string(max_side) + " per side and " + std::to_string(max_pixels) +
-                              " in all");
+      return bad(name, s,
+                 "at most " + std::to_string(max_side) + " per side and " + std::to_string(max_pixels) + " in all");
     return std::pair{static_cast<index_t>(wd), static_cast<index_t>(hd)};
   }
   /// Comma-separated finite numbers, exactly `count` of them ("x,y,z").
@@ -252,13 +254,16 @@ class json_line {
   static std::string quote(std::string_view s) {
     std::string out = "\"";
     for (char c : s) {
-      if (c == '"' || c == '\\') out += '\\', out += c;
-      else if (c == '\n') out += "\\n";
+      if (c == '"' || c == '\\')
+        out += '\\', out += c;
+      else if (c == '\n')
+        out += "\\n";
       else if (static_cast<unsigned char>(c) < 0x20) {
         char buf[8];
         std::snprintf(buf, sizeof buf, "\\u%04x", c);
         out += buf;
-      } else out += c;
+      } else
+        out += c;
     }
     return out + "\"";
   }

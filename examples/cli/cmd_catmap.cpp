@@ -27,8 +27,12 @@ int run(const cli::arguments& args) {
     ms = cli::median_ms(args.repeat(), [&] { p = tessera::cat_map_period(*n, *family); });
     if (!p) return cli::fail(args, p.error());
     if (args.stats())
-      cli::json_line().add("command", "catmap").add("N", static_cast<long long>(*n)).add("period", static_cast<std::uint64_t>(*p))
-          .add("period_ms", ms).print();
+      cli::json_line()
+          .add("command", "catmap")
+          .add("N", static_cast<long long>(*n))
+          .add("period", static_cast<std::uint64_t>(*p))
+          .add("period_ms", ms)
+          .print();
     else
       std::printf("%llu\n", static_cast<unsigned long long>(*p));
     return 0;
@@ -41,10 +45,13 @@ int run(const cli::arguments& args) {
   if (!steps) return cli::fail(args, steps.error());
   tessera::cat_map_options options{.family = *family};
   const std::string mode = args.str("--non-square", "reject");
-  if (mode == "center") options.non_square = tessera::non_square_mode::centered_square;
-  else if (mode == "tiles") options.non_square = tessera::non_square_mode::square_tiles;
+  if (mode == "center")
+    options.non_square = tessera::non_square_mode::centered_square;
+  else if (mode == "tiles")
+    options.non_square = tessera::non_square_mode::square_tiles;
   else if (mode != "reject")
-    return cli::fail(args, tessera::status::invalid_argument("--non-square expects reject, center or tiles, got '" + mode + "'"));
+    return cli::fail(
+        args, tessera::status::invalid_argument("--non-square expects reject, center or tiles, got '" + mode + "'"));
   auto tile = args.integer("--tile", 0, 0, fabric_cli::max_side);
   if (!tile) return cli::fail(args, tile.error());
   options.tile_size = static_cast<tessera::index_t>(*tile);
@@ -77,10 +84,17 @@ int run(const cli::arguments& args) {
                                     : std::min(info->width, info->height);
   auto period = tessera::cat_map_period(side, *family);
   if (args.stats())
-    cli::json_line().add("command", "catmap").add("width", info->width).add("height", info->height)
-        .add("iterations", static_cast<long long>(*steps)).add("side", side)
+    cli::json_line()
+        .add("command", "catmap")
+        .add("width", info->width)
+        .add("height", info->height)
+        .add("iterations", static_cast<long long>(*steps))
+        .add("side", side)
         .add("period", static_cast<std::uint64_t>(period.value_or(0)))
-        .add("catmap_ms", ms).add("repeat", args.repeat()).add("threads", pool.concurrency()).print();
+        .add("catmap_ms", ms)
+        .add("repeat", args.repeat())
+        .add("threads", pool.concurrency())
+        .print();
   else
     std::fprintf(stderr, "wrote %s (%lld steps of the cat map on %lld x %lld squares; period %llu)\n", out->c_str(),
                  static_cast<long long>(*steps), static_cast<long long>(side), static_cast<long long>(side),

@@ -21,21 +21,23 @@ int convert_image(const cli::arguments& args, const std::string& in, const std::
   auto channels = args.integer("--channels", info->channels);
   if (!channels) return cli::fail(args, channels.error());
   if (*channels < 1 || *channels > 4)
-    return cli::fail(args, status::invalid_argument("--channels must be 1, 2, 3 or 4, got " + std::to_string(*channels)));
+    return cli::fail(args,
+                     status::invalid_argument("--channels must be 1, 2, 3 or 4, got " + std::to_string(*channels)));
   auto depth = args.integer("--depth", info->bit_depth);
   if (!depth) return cli::fail(args, depth.error());
   if (*depth != 8 && *depth != 16)
     return cli::fail(args, status::invalid_argument("--depth must be 8 or 16, got " + std::to_string(*depth)));
   status s;
   const double ms = cli::time_ms([&] {
-    s = tessera::dispatch_channels<std::uint16_t>(static_cast<int>(*channels), [&]<class T, int C>(tessera::format_tag<T, C>) {
-      auto img = tessera::read_png<std::uint16_t, C>(in);  // 16-bit keeps a 16-bit source exact
-      if (!img) return img.error();
-      if (*depth == 16) return tessera::write_png(out, *img);
-      auto bytes = tessera::to_buffer<std::uint8_t, C>(*img);
-      if (!bytes) return bytes.error();
-      return tessera::write_png(out, *bytes);
-    });
+    s = tessera::dispatch_channels<std::uint16_t>(
+        static_cast<int>(*channels), [&]<class T, int C>(tessera::format_tag<T, C>) {
+          auto img = tessera::read_png<std::uint16_t, C>(in);  // 16-bit keeps a 16-bit source exact
+          if (!img) return img.error();
+          if (*depth == 16) return tessera::write_png(out, *img);
+          auto bytes = tessera::to_buffer<std::uint8_t, C>(*img);
+          if (!bytes) return bytes.error();
+          return tessera::write_png(out, *bytes);
+        });
   });
   if (!s) return cli::fail(args, s);
   if (args.stats())
@@ -83,7 +85,9 @@ int convert_mesh(const cli::arguments& args, const std::string& in, const std::s
         .print();
   else
     std::printf("wrote %s (%td vertices, %td triangles%s)\n", out.c_str(), mesh->num_vertices(), mesh->num_faces(),
-                dropped_uvs ? "; OFF cannot hold the uvs, they were dropped" : mesh->has_uvs() ? ", with uvs" : "");
+                dropped_uvs       ? "; OFF cannot hold the uvs, they were dropped"
+                : mesh->has_uvs() ? ", with uvs"
+                                  : "");
   return 0;
 }
 
@@ -92,11 +96,13 @@ int run_convert(const cli::arguments& args) {
     return cli::fail(args, status::invalid_argument("expects IN and OUT files (see tessera convert --help)"));
   const std::string& in = args.positional()[0];
   const std::string& out = args.positional()[1];
-  const bool in_png = tessera::detail::file_extension(in) == "png", out_png = tessera::detail::file_extension(out) == "png";
+  const bool in_png = tessera::detail::file_extension(in) == "png",
+             out_png = tessera::detail::file_extension(out) == "png";
   if (in_png && out_png) return convert_image(args, in, out);
   if (tessera::is_mesh_path(in) && tessera::is_mesh_path(out)) return convert_mesh(args, in, out);
   if (in_png != out_png && (in_png || tessera::is_mesh_path(in)) && (out_png || tessera::is_mesh_path(out)))
-    return cli::fail(args, status::invalid_argument("cannot convert between an image and a mesh (" + in + " -> " + out + ")"));
+    return cli::fail(
+        args, status::invalid_argument("cannot convert between an image and a mesh (" + in + " -> " + out + ")"));
   const std::string& bad = !in_png && !tessera::is_mesh_path(in) ? in : out;
   return cli::fail(args, status::unsupported(bad + ": unknown file type (expected .png, .obj, .off or .ply)"));
 }

@@ -13,7 +13,8 @@ namespace {
 int run(const cli::arguments& args) {
   using namespace tessera;
   if (args.positional().size() != 1)
-    return cli::fail(args, status::invalid_argument("expects one kind: rings, stones or weave (see tessera exemplar --help)"));
+    return cli::fail(
+        args, status::invalid_argument("expects one kind: rings, stones or weave (see tessera exemplar --help)"));
   const std::string kind = args.positional()[0];
   auto out = args.required("--out");
   if (!out) return cli::fail(args, out.error());
@@ -65,15 +66,18 @@ int run(const cli::arguments& args) {
 }
 
 const cli::registrar reg{[] {
-  cli::command c{"exemplar", "generate a geometric-texture exemplar mesh (rings, stones, weave)",
-                 "tessera exemplar rings|stones|weave --out E.obj [--seed S] [--size L] [--density D] [--segments N] [--chain-mail]",
-                 {{"--out", "FILE", "output mesh (.obj, .off or .ply)"},
-                  {"--size", "L", "the exemplar covers [0, L]^2 (default 8)"},
-                  {"--density", "D", "relative element density (default 1)"},
-                  {"--segments", "N", "mesh resolution: ring segments / stone subdivisions / thread segments (0 = default)"},
-                  {"--chain-mail", "", "rings: interlock them like European 4-in-1 chain mail"}},
-                 run,
-                 "KIND"};
+  cli::command c{
+      "exemplar",
+      "generate a geometric-texture exemplar mesh (rings, stones, weave)",
+      "tessera exemplar rings|stones|weave --out E.obj [--seed S] [--size L] [--density D] [--segments N] "
+      "[--chain-mail]",
+      {{"--out", "FILE", "output mesh (.obj, .off or .ply)"},
+       {"--size", "L", "the exemplar covers [0, L]^2 (default 8)"},
+       {"--density", "D", "relative element density (default 1)"},
+       {"--segments", "N", "mesh resolution: ring segments / stone subdivisions / thread segments (0 = default)"},
+       {"--chain-mail", "", "rings: interlock them like European 4-in-1 chain mail"}},
+      run,
+      "KIND"};
   for (auto& o : cli::common_options()) c.options.push_back(o);
   return c;
 }()};

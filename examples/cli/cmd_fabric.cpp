@@ -41,17 +41,25 @@ int run(const cli::arguments& args) {
   }
   if (args.has("--layout")) {
     const std::string l = args.str("--layout");
-    if (l == "stripes") recipe.source.layout = tessera::source_layout::stripes;
-    else if (l == "blocks") recipe.source.layout = tessera::source_layout::blocks;
-    else if (l == "cells") recipe.source.layout = tessera::source_layout::cells;
-    else return cli::fail(args, status::invalid_argument("--layout expects stripes, blocks or cells, got '" + l + "'"));
+    if (l == "stripes")
+      recipe.source.layout = tessera::source_layout::stripes;
+    else if (l == "blocks")
+      recipe.source.layout = tessera::source_layout::blocks;
+    else if (l == "cells")
+      recipe.source.layout = tessera::source_layout::cells;
+    else
+      return cli::fail(args, status::invalid_argument("--layout expects stripes, blocks or cells, got '" + l + "'"));
   }
   if (args.has("--fit")) {
     const std::string f = args.str("--fit");
-    if (f == "reject") recipe.options.fit = tessera::source_fit::reject;
-    else if (f == "center") recipe.options.fit = tessera::source_fit::centered_square;
-    else if (f == "crop") recipe.options.fit = tessera::source_fit::crop_or_repeat;
-    else return cli::fail(args, status::invalid_argument("--fit expects reject, center or crop, got '" + f + "'"));
+    if (f == "reject")
+      recipe.options.fit = tessera::source_fit::reject;
+    else if (f == "center")
+      recipe.options.fit = tessera::source_fit::centered_square;
+    else if (f == "crop")
+      recipe.options.fit = tessera::source_fit::crop_or_repeat;
+    else
+      return cli::fail(args, status::invalid_argument("--fit expects reject, center or crop, got '" + f + "'"));
   }
   // every number range-checked before it is used (and before anything is allocated)
   auto feature = args.integer("--feature", recipe.source.feature_size, 0, fabric_cli::max_square);
@@ -93,10 +101,10 @@ int run(const cli::arguments& args) {
                              ? std::min(source.width(), source.height())
                              : std::max(size.first, size.second);
   if (square > fabric_cli::max_square)
-    return cli::fail(args, status::invalid_argument(
-                               "the fabric would be generated at " + std::to_string(square) + " x " + std::to_string(square) +
-                               " (the larger side of --size); give --tile T <= " +
-                               std::to_string(fabric_cli::max_square) + " to tile a smaller periodic square"));
+    return cli::fail(
+        args, status::invalid_argument("the fabric would be generated at " + std::to_string(square) + " x " +
+                                       std::to_string(square) + " (the larger side of --size); give --tile T <= " +
+                                       std::to_string(fabric_cli::max_square) + " to tile a smaller periodic square"));
   if (recipe.photo) {
     auto s = tessera::make_exemplar<float, 3>(*recipe.photo, {.width = square, .height = square, .seed = seed});
     if (!s) return cli::fail(args, s.error());
@@ -119,10 +127,18 @@ int run(const cli::arguments& args) {
     tessera::palette tones = recipe.tones;
     if (tones.empty()) tones = tessera::dominant_tones(out, 4, {.seed = seed}).value_or(tessera::palette{});
     const auto shares = tessera::tone_proportions(out, tones).value_or(std::vector<double>{});
-    cli::json_line().add("command", "fabric").add("width", size.first).add("height", size.second)
-        .add("tile", recipe.options.tile_size).add("iterations", static_cast<long long>(recipe.options.iterations))
-        .add("generations", recipe.options.perturbation.generations).add("fabric_ms", ms).add("repeat", args.repeat())
-        .add("threads", pool.concurrency()).raw("tone_shares", fabric_cli::shares_json(shares)).print();
+    cli::json_line()
+        .add("command", "fabric")
+        .add("width", size.first)
+        .add("height", size.second)
+        .add("tile", recipe.options.tile_size)
+        .add("iterations", static_cast<long long>(recipe.options.iterations))
+        .add("generations", recipe.options.perturbation.generations)
+        .add("fabric_ms", ms)
+        .add("repeat", args.repeat())
+        .add("threads", pool.concurrency())
+        .raw("tone_shares", fabric_cli::shares_json(shares))
+        .print();
   } else {
     std::fprintf(stderr, "wrote %s (%lld x %lld)\n", out_path->c_str(), static_cast<long long>(size.first),
                  static_cast<long long>(size.second));
@@ -134,14 +150,17 @@ std::vector<cli::option_spec> options() {
   std::vector<cli::option_spec> o = {
       {"--preset", "NAME", "flannel, twill, linen or tweed (the paper's figures 4-9)"},
       {"--source", "S.png", "an existing image as the source (paper 001 §1.3, second way)"},
-      {"--fit", "MODE", "a --source that is not the fabric's square: reject (default), center (map its largest "
-                        "centred square at its own size and tile it) or crop (centred window, repeated if smaller)"},
+      {"--fit", "MODE",
+       "a --source that is not the fabric's square: reject (default), center (map its largest "
+       "centred square at its own size and tile it) or crop (centred window, repeated if smaller)"},
       {"--palette", "LIST", "main tones \"#000000:0.75,#ffffff:0.25\" (weights are normalized; see tessera tones)"},
       {"--layout", "L", "source layout for --palette: stripes (default), blocks or cells"},
       {"--feature", "F", "stripe period / block side / cell spacing in pixels, 0..8192 (default size / 8)"},
       {"--size", "N|WxH", "output size, at most 16384 per side and 2^26 pixels (default: the source's, else 400)"},
-      {"--tile", "T", "generate a T x T periodic fabric, T <= 8192, and tile it (default: at the output's larger side)"},
-      {"--iterations", "n", "cat-map steps, any integer, negative inverts (presets: flannel 60, twill 31, linen 80, tweed 45)"},
+      {"--tile", "T",
+       "generate a T x T periodic fabric, T <= 8192, and tile it (default: at the output's larger side)"},
+      {"--iterations", "n",
+       "cat-map steps, any integer, negative inverts (presets: flannel 60, twill 31, linen 80, tweed 45)"},
       {"--family", "a,b", "the cat map [1 a; b ab+1], integers (default 1,1)"},
       {"--generations", "m", "game-of-life perturbation generations, 0..10000 (default 0; tweed 3)"},
       {"--K", "K", "brighten when exactly K neighbours are brighter, 0..8 (default 3)"},

@@ -35,7 +35,8 @@ int build(const cli::arguments& args) {
   if (!ex) return cli::fail(args, ex.error());
   for (const double c : *colors)
     if (!(c >= 0 && c <= max_wang_colors) || c != std::floor(c))
-      return cli::fail(args, status::invalid_argument(detail::cat("--colors expects two integers NH,NV in [1, ", max_wang_colors, "], got ", c)));
+      return cli::fail(args, status::invalid_argument(detail::cat("--colors expects two integers NH,NV in [1, ",
+                                                                  max_wang_colors, "], got ", c)));
   geometric_wang_options o;
   o.horizontal_colors = static_cast<int>((*colors)[0]);
   o.vertical_colors = static_cast<int>((*colors)[1]);
@@ -122,7 +123,8 @@ int tile(const cli::arguments& args) {
   }
   thread_pool_executor pool(args.threads());
   result<tri_mesh> plane = status::internal_error("not run");
-  const double ms = cli::median_ms(args.repeat(), [&] { plane = tile_geometric_plane(*set, coloring, cols, rows, pool); });
+  const double ms =
+      cli::median_ms(args.repeat(), [&] { plane = tile_geometric_plane(*set, coloring, cols, rows, pool); });
   if (!plane) return cli::fail(args, plane.error());
   if (auto s = write_mesh(*out, *plane); !s) return cli::fail(args, s);
   if (args.stats()) {
@@ -143,14 +145,15 @@ int tile(const cli::arguments& args) {
         .add("border_mismatch", mismatch ? *mismatch : index_t{-1})
         .print();
   } else {
-    std::printf("wrote %s (%lld x %lld tiles, %lld vertices)\n", out->c_str(), static_cast<long long>(cols), static_cast<long long>(rows),
-                static_cast<long long>(plane->num_vertices()));
+    std::printf("wrote %s (%lld x %lld tiles, %lld vertices)\n", out->c_str(), static_cast<long long>(cols),
+                static_cast<long long>(rows), static_cast<long long>(plane->num_vertices()));
   }
   return 0;
 }
 
 const cli::registrar reg_build{[] {
-  cli::command c{"geo-wang build", "build a complete set of planar geometric-texture Wang tiles from an exemplar mesh",
+  cli::command c{"geo-wang build",
+                 "build a complete set of planar geometric-texture Wang tiles from an exemplar mesh",
                  "tessera geo-wang build --exemplar E.obj --colors NH,NV --tile W --out DIR [options]",
                  {{"--exemplar", "FILE", "exemplar mesh of closed elements"},
                   {"--colors", "NH,NV", "colours of horizontal (north/south) and vertical (east/west) edges"},
@@ -163,7 +166,8 @@ const cli::registrar reg_build{[] {
 }()};
 
 const cli::registrar reg_tile{[] {
-  cli::command c{"geo-wang tile", "tile a plane from a geometric Wang tile set into one welded mesh",
+  cli::command c{"geo-wang tile",
+                 "tile a plane from a geometric Wang tile set into one welded mesh",
                  "tessera geo-wang tile --tiles DIR --grid COLSxROWS --out O.obj [--seed S] [--coloring hash|scanline]",
                  {{"--tiles", "DIR", "tile set directory (tiles.json + OBJ tiles)"},
                   {"--grid", "COLSxROWS", "number of tiles"},

@@ -105,8 +105,8 @@ int run_info(const cli::arguments& args) {
   const std::string& path = args.positional()[0];
   if (tessera::detail::file_extension(path) == "png") return info_image(args, path);
   if (tessera::is_mesh_path(path)) return info_mesh(args, path);
-  return cli::fail(args, tessera::status::unsupported(
-                             path + ": unknown file type (expected .png, .obj, .off or .ply)"));
+  return cli::fail(args,
+                   tessera::status::unsupported(path + ": unknown file type (expected .png, .obj, .off or .ply)"));
 }
 
 const cli::registrar reg({

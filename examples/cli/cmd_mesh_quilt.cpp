@@ -59,13 +59,15 @@ int run(const cli::arguments& args) {
         .add("intersecting_pairs", rep->intersecting_pairs)
         .print();
   } else {
-    std::printf("wrote %s (%lld vertices, %zu elements)\n", out->c_str(), static_cast<long long>(r->mesh.num_vertices()), r->elements.size());
+    std::printf("wrote %s (%lld vertices, %zu elements)\n", out->c_str(),
+                static_cast<long long>(r->mesh.num_vertices()), r->elements.size());
   }
   return 0;
 }
 
 const cli::registrar reg{[] {
-  cli::command c{"mesh-quilt", "grow a larger geometric texture from an exemplar mesh (mesh quilting)",
+  cli::command c{"mesh-quilt",
+                 "grow a larger geometric texture from an exemplar mesh (mesh quilting)",
                  "tessera mesh-quilt --exemplar E.obj --size X,Y --out O.obj [options]",
                  {{"--exemplar", "FILE", "exemplar mesh of closed elements (.obj, .off, .ply)"},
                   {"--size", "X,Y", "output extent in exemplar units"},

@@ -21,8 +21,10 @@ int run_quilt(const cli::arguments& args) {
   if (!out_path) return cli::fail(args, out_path.error());
   const bool inpaint = args.has("--mask") || args.has("--in");
   if (inpaint && !(args.has("--mask") && args.has("--in")))
-    return cli::fail(args, tessera::status::invalid_argument("--mask and --in go together (fill the masked pixels of --in)"));
-  if (!inpaint && !args.has("--exemplar")) return cli::fail(args, tessera::status::invalid_argument("missing required option --exemplar"));
+    return cli::fail(args,
+                     tessera::status::invalid_argument("--mask and --in go together (fill the masked pixels of --in)"));
+  if (!inpaint && !args.has("--exemplar"))
+    return cli::fail(args, tessera::status::invalid_argument("missing required option --exemplar"));
   auto patch = args.integer("--patch", 0, 0, 65536);
   auto overlap = args.integer("--overlap", 0, 0, 65536);
   auto tolerance = args.number("--tolerance", 0.1, 0, 1e30);
@@ -36,45 +38,50 @@ int run_quilt(const cli::arguments& args) {
   tessera::thread_pool_executor pool(args.threads());
   double ms = 0;
   index_t width = 0, height = 0;
-  auto s = cli::with_image_source(args, inpaint ? "--in" : "--exemplar", [&]<class T, int C>(tessera::format_tag<T, C>) -> tessera::status {
-    tessera::image_buffer<T, C> out;
-    if (inpaint) {
-      auto image = cli::load_image_source<T, C>(args, "--in");
-      if (!image) return image.error();
-      auto mask = tessera::read_png<std::uint8_t, 1>(args.str("--mask"));
-      if (!mask) return mask.error();
-      out = tessera::image_buffer<T, C>(image->width(), image->height());
-      tessera::status result;
-      if (args.has("--exemplar")) {
-        auto ex = cli::load_image_source<T, C>(args, "--exemplar");
-        if (!ex) return ex.error();
-        ms = cli::median_ms(args.repeat(), [&] { result = tessera::constrained_quilt(*ex, *image, *mask, out, options, pool); });
-      } else {
-        ms = cli::median_ms(args.repeat(), [&] { result = tessera::constrained_quilt(*image, *mask, out, options, pool); });
-      }
-      if (!result) return result;
-    } else {
-      if (!args.has("--size")) return tessera::status::invalid_argument("missing required option --size");
-      auto size = args.size("--size", 65536, tessera::max_quilt_pixels);
-      if (!size) return size.error();
-      auto ex = cli::load_image_source<T, C>(args, "--exemplar");
-      if (!ex) return ex.error();
-      auto buffer = tessera::image_buffer<T, C>::create(size->first, size->second);
-      if (!buffer) return buffer.error();
-      out = std::move(*buffer);
-      tessera::status result;
-      ms = cli::median_ms(args.repeat(), [&] { result = tessera::quilt(*ex, out, options, pool); });
-      if (!result) return result;
-    }
-    width = out.width();
-    height = out.height();
-    return tessera::write_png(*out_path, out);
-  });
+  auto s = cli::with_image_source(
+      args, inpaint ? "--in" : "--exemplar", [&]<class T, int C>(tessera::format_tag<T, C>) -> tessera::status {
+        tessera::image_buffer<T, C> out;
+        if (inpaint) {
+          auto image = cli::load_image_source<T, C>(args, "--in");
+          if (!image) return image.error();
+          auto mask = tessera::read_png<std::uint8_t, 1>(args.str("--mask"));
+          if (!mask) return mask.error();
+          out = tessera::image_buffer<T, C>(image->width(), image->height());
+          tessera::status result;
+          if (args.has("--exemplar")) {
+            auto ex = cli::load_image_source<T, C>(args, "--exemplar");
+            if (!ex) return ex.error();
+            ms = cli::median_ms(args.repeat(),
+                                [&] { result = tessera::constrained_quilt(*ex, *image, *mask, out, options, pool); });
+          } else {
+            ms = cli::median_ms(args.repeat(),
+                                [&] { result = tessera::constrained_quilt(*image, *mask, out, options, pool); });
+          }
+          if (!result) return result;
+        } else {
+          if (!args.has("--size")) return tessera::status::invalid_argument("missing required option --size");
+          auto size = args.size("--size", 65536, tessera::max_quilt_pixels);
+          if (!size) return size.error();
+          auto ex = cli::load_image_source<T, C>(args, "--exemplar");
+          if (!ex) return ex.error();
+          auto buffer = tessera::image_buffer<T, C>::create(size->first, size->second);
+          if (!buffer) return buffer.error();
+          out = std::move(*buffer);
+          tessera::status result;
+          ms = cli::median_ms(args.repeat(), [&] { result = tessera::quilt(*ex, out, options, pool); });
+          if (!result) return result;
+        }
+        width = out.width();
+        height = out.height();
+        return tessera::write_png(*out_path, out);
+      });
   if (!s) return cli::fail(args, s);
   if (args.stats())
     cli::json_line()
         .add("command", "quilt")
-        .add("mode", inpaint ? "inpaint" : options.seamless ? "seamless" : "quilt")
+        .add("mode", inpaint            ? "inpaint"
+                     : options.seamless ? "seamless"
+                                        : "quilt")
         .add("width", width)
         .add("height", height)
         .add("quilt_ms", ms)
@@ -84,7 +91,8 @@ int run_quilt(const cli::arguments& args) {
 
 std::vector<cli::option_spec> quilt_options_spec() {
   std::vector<cli::option_spec> o = {
-      {"--exemplar", "E.png", "exemplar PNG or procedural kind (grass, ...); optional with --in: the image itself, hole excluded"},
+      {"--exemplar", "E.png",
+       "exemplar PNG or procedural kind (grass, ...); optional with --in: the image itself, hole excluded"},
       cli::exemplar_size_option(),
       {"--size", "WxH", "output size (quilting)"},
       {"--out", "O.png", "output PNG"},

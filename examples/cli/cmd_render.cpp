@@ -10,16 +10,22 @@ namespace {
 
 int run(const cli::arguments& args) {
   using namespace tessera;
-  if (args.positional().size() != 1) return cli::fail(args, status::invalid_argument("expects one input mesh (see tessera render --help)"));
+  if (args.positional().size() != 1)
+    return cli::fail(args, status::invalid_argument("expects one input mesh (see tessera render --help)"));
   auto out = args.required("--out");
   if (!out) return cli::fail(args, out.error());
   mesh_preview_options o;
   const std::string view = args.str("--view", "oblique");
-  if (view == "oblique") o.azimuth_degrees = -60, o.elevation_degrees = 45;
-  else if (view == "top") o.azimuth_degrees = 0, o.elevation_degrees = 90;
-  else if (view == "front") o.azimuth_degrees = 0, o.elevation_degrees = 20;
-  else if (view == "side") o.azimuth_degrees = 90, o.elevation_degrees = 20;
-  else return cli::fail(args, status::invalid_argument("--view expects oblique, top, front or side, got '" + view + "'"));
+  if (view == "oblique")
+    o.azimuth_degrees = -60, o.elevation_degrees = 45;
+  else if (view == "top")
+    o.azimuth_degrees = 0, o.elevation_degrees = 90;
+  else if (view == "front")
+    o.azimuth_degrees = 0, o.elevation_degrees = 20;
+  else if (view == "side")
+    o.azimuth_degrees = 90, o.elevation_degrees = 20;
+  else
+    return cli::fail(args, status::invalid_argument("--view expects oblique, top, front or side, got '" + view + "'"));
   auto az = args.number("--azimuth", o.azimuth_degrees);
   auto el = args.number("--elevation", o.elevation_degrees);
   auto grid = args.number("--grid", 0);
@@ -40,14 +46,20 @@ int run(const cli::arguments& args) {
   if (!img) return cli::fail(args, img.error());
   if (auto s = write_png(*out, *img); !s) return cli::fail(args, s);
   if (args.stats())
-    cli::json_line().add("render_ms", ms).add("faces", mesh->num_faces()).add("width", o.width).add("height", o.height).print();
+    cli::json_line()
+        .add("render_ms", ms)
+        .add("faces", mesh->num_faces())
+        .add("width", o.width)
+        .add("height", o.height)
+        .print();
   else
     std::printf("wrote %s\n", out->c_str());
   return 0;
 }
 
 const cli::registrar reg{[] {
-  cli::command c{"render", "render a shaded preview of a mesh to PNG",
+  cli::command c{"render",
+                 "render a shaded preview of a mesh to PNG",
                  "tessera render IN.obj --out P.png [--view oblique|top|front|side] [options]",
                  {{"--out", "FILE", "output PNG"},
                   {"--view", "V", "oblique (default), top, front or side"},

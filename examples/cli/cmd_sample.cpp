@@ -16,8 +16,9 @@ inline constexpr tessera::index_t max_side = 16384;
 
 int run_sample(const cli::arguments& args) {
   if (args.positional().size() != 1)
-    return cli::fail(args, status::invalid_argument(
-                               "expects one KIND: grass, sand, rock, bricks, cells, weave or dots (see tessera sample --help)"));
+    return cli::fail(
+        args, status::invalid_argument(
+                  "expects one KIND: grass, sand, rock, bricks, cells, weave or dots (see tessera sample --help)"));
   const auto kind = tessera::parse_exemplar_kind(args.positional()[0]);
   if (!kind) return cli::fail(args, kind.error());
   auto out = args.required("--out");

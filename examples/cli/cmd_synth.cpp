@@ -58,7 +58,8 @@ tessera::result<synth_request> parse(const cli::arguments& args) {
       if (d != std::floor(d)) return window_error("no fractions");
     if (std::abs(v[0]) > max_origin || std::abs(v[1]) > max_origin)
       return window_error("|X| and |Y| at most 2^52 (the texture plane)");
-    if (!(v[2] >= 1 && v[3] >= 1) || v[2] > double(max_side) || v[3] > double(max_side) || v[2] * v[3] > double(max_pixels))
+    if (!(v[2] >= 1 && v[3] >= 1) || v[2] > double(max_side) || v[3] > double(max_side) ||
+        v[2] * v[3] > double(max_pixels))
       return window_error(("W and H in [1, " + std::to_string(max_side) + "] and W x H at most 2^28").c_str());
     r.origin = {static_cast<index_t>(v[0]), static_cast<index_t>(v[1])};
     r.width = static_cast<index_t>(v[2]);
@@ -80,8 +81,10 @@ tessera::result<synth_request> parse(const cli::arguments& args) {
   if (!overlap) return overlap.error();
   r.overlap = static_cast<index_t>(*overlap);
   const std::string seams = args.str("--seams", "feather");
-  if (seams == "cut") r.seams = tessera::seam_mode::cut;
-  else if (seams != "feather") return status::invalid_argument("--seams expects feather or cut, got '" + seams + "'");
+  if (seams == "cut")
+    r.seams = tessera::seam_mode::cut;
+  else if (seams != "feather")
+    return status::invalid_argument("--seams expects feather or cut, got '" + seams + "'");
   r.seed = args.seed();  // --seed, --threads and --repeat were checked by main (check_common)
   r.threads = args.threads();
   r.repeat = args.repeat();
@@ -122,7 +125,8 @@ int run_format(const cli::arguments& args, const synth_request& r) {
     for (index_t y = 0; y < r.height; ++y)
       for (index_t x = 0; x < r.width; ++x) {
         const auto c = coords.read(x, y);
-        shown.write(x, y, {static_cast<std::uint16_t>(c[0] * sx + 0.5), static_cast<std::uint16_t>(c[1] * sy + 0.5), 0});
+        shown.write(x, y,
+                    {static_cast<std::uint16_t>(c[0] * sx + 0.5), static_cast<std::uint16_t>(c[1] * sy + 0.5), 0});
       }
     if (auto s = tessera::write_png(r.source_map, shown); !s) return cli::fail(args, s);
   }
@@ -160,7 +164,8 @@ int run_format(const cli::arguments& args, const synth_request& r) {
       if (auto g = tessera::seam_gradient_ratio(crop, seams, *ex)) line.add("seam_gradient_ratio", *g);
     if (auto h = tessera::histogram_distance(crop, *ex)) line.add("histogram_distance", *h);
     if (std::max(cw, ch) >= 32)
-      if (auto rep = tessera::repetition_score(crop, std::min<index_t>(16, std::max(cw, ch) / 2))) line.add("repetition", *rep);
+      if (auto rep = tessera::repetition_score(crop, std::min<index_t>(16, std::max(cw, ch) / 2)))
+        line.add("repetition", *rep);
     line.print();
   } else {
     std::printf("wrote %s (%td x %td, patch %td x %td, overlap %td, %.2f ms)\n", r.out.c_str(), r.width, r.height,
@@ -188,7 +193,9 @@ int run_synth(const cli::arguments& args) {
 
 std::vector<cli::option_spec> synth_options() {
   std::vector<cli::option_spec> o = {
-      {"--exemplar", "E.png", "exemplar image (PNG, 8 or 16 bits, 1-4 channels) or a procedural kind: grass, sand, rock, bricks, cells, weave, dots"},
+      {"--exemplar", "E.png",
+       "exemplar image (PNG, 8 or 16 bits, 1-4 channels) or a procedural kind: grass, sand, rock, bricks, cells, "
+       "weave, dots"},
       cli::exemplar_size_option(),
       {"--size", "WxH", "output size (required unless --window is given)"},
       {"--out", "O.png", "output image"},
@@ -201,11 +208,12 @@ std::vector<cli::option_spec> synth_options() {
   return o;
 }
 
-const cli::registrar reg({.name = "synth",
-                          .summary = "synthesize a large texture or any window of an infinite one from an exemplar (patch synthesis)",
-                          .usage = "tessera synth --exemplar E.png --size WxH --out O.png [--seed S] [--threads T] [--patch P] "
-                                   "[--overlap V] [--seams feather|cut] [--window X,Y,W,H] [--source-map M.png] [--repeat N] [--stats]",
-                          .options = synth_options(),
-                          .run = run_synth});
+const cli::registrar reg(
+    {.name = "synth",
+     .summary = "synthesize a large texture or any window of an infinite one from an exemplar (patch synthesis)",
+     .usage = "tessera synth --exemplar E.png --size WxH --out O.png [--seed S] [--threads T] [--patch P] "
+              "[--overlap V] [--seams feather|cut] [--window X,Y,W,H] [--source-map M.png] [--repeat N] [--stats]",
+     .options = synth_options(),
+     .run = run_synth});
 
 }  // namespace

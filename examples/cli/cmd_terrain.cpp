@@ -38,7 +38,8 @@ result<tessera::vec3> vec_option(const cli::arguments& args, const char* name) {
   return tessera::vec3{(*v)[0], (*v)[1], (*v)[2]};
 }
 
-result<tessera::terrain_camera> make_cli_camera(const cli::arguments& args, const tessera::aabb& bounds, index_t w, index_t h) {
+result<tessera::terrain_camera> make_cli_camera(const cli::arguments& args, const tessera::aabb& bounds, index_t w,
+                                                index_t h) {
   auto preset = tessera::parse_camera_preset(args.str("--camera", "grazing"));
   if (!preset) return preset.error();
   auto look = tessera::camera_preset_look_at(*preset, bounds);
@@ -76,7 +77,8 @@ int run_terrain(const cli::arguments& args) {
   const auto out_path = args.required("--out");
   if (!out_path) return fail(out_path.error());
   if (!args.has("--exemplar")) return fail(status::invalid_argument("missing required option --exemplar"));
-  if (args.has("--mesh") && args.has("--grid")) return fail(status::invalid_argument("give --mesh or --grid, not both"));
+  if (args.has("--mesh") && args.has("--grid"))
+    return fail(status::invalid_argument("give --mesh or --grid, not both"));
   auto vp = args.has("--viewport") ? args.size("--viewport", tessera::max_viewport_side, index_t{1} << 26)
                                    : result<std::pair<index_t, index_t>>(std::pair<index_t, index_t>{960, 540});
   if (!vp) return fail(vp.error());
@@ -92,19 +94,22 @@ int run_terrain(const cli::arguments& args) {
   if (restart != "wait" && restart != "immediate")
     return fail(status::invalid_argument("--restart expects wait or immediate, got '" + restart + "'"));
   const std::string keep_axis = args.str("--keep-axis", "yes");
-  if (keep_axis != "yes" && keep_axis != "no") return fail(status::invalid_argument("--keep-axis expects yes or no, got '" + keep_axis + "'"));
+  if (keep_axis != "yes" && keep_axis != "no")
+    return fail(status::invalid_argument("--keep-axis expects yes or no, got '" + keep_axis + "'"));
   if (continuation != "oldest" && continuation != "first")
     return fail(status::invalid_argument("--continuation expects oldest or first, got '" + continuation + "'"));
-  if (mode != "stepped" && mode != "continuous") return fail(status::invalid_argument("--mode expects stepped or continuous, got '" + mode + "'"));
+  if (mode != "stepped" && mode != "continuous")
+    return fail(status::invalid_argument("--mode expects stepped or continuous, got '" + mode + "'"));
   if (placement != "away" && placement != "uniform")
     return fail(status::invalid_argument("--placement expects away or uniform, got '" + placement + "'"));
 
   tessera::thread_pool_executor pool(args.threads());
   auto exemplar = cli::load_image_source<std::uint8_t, 3>(args, "--exemplar", 256);
   if (!exemplar) return fail(exemplar.error());
-  result<tessera::tri_mesh> source = args.has("--mesh")
-                                         ? tessera::read_mesh(args.str("--mesh"))
-                                         : tessera::make_terrain({.cells_x = *grid, .cells_y = *grid, .height = *relief, .seed = args.seed()}, pool);
+  result<tessera::tri_mesh> source =
+      args.has("--mesh")
+          ? tessera::read_mesh(args.str("--mesh"))
+          : tessera::make_terrain({.cells_x = *grid, .cells_y = *grid, .height = *relief, .seed = args.seed()}, pool);
   if (!source) return fail(source.error());
   auto mesh = tessera::prepare_terrain_mesh(*source, args.has("--mesh") ? args.str("--mesh") : "terrain");
   if (!mesh) return fail(mesh.error());
@@ -119,9 +124,10 @@ int run_terrain(const cli::arguments& args) {
   tessera::scale_field field;
   tessera::triangle_synthesis syn;
   if (auto s = tessera::project_mesh(*mesh, *camera, proj, {}, pool); !s) return fail(s);
-  const tessera::scale_field_options field_opts{.min_scale = *min_scale,
-                                                .max_levels = pyramid->num_levels(),
-                                                .mode = mode == "continuous" ? tessera::scale_mode::continuous : tessera::scale_mode::stepped};
+  const tessera::scale_field_options field_opts{
+      .min_scale = *min_scale,
+      .max_levels = pyramid->num_levels(),
+      .mode = mode == "continuous" ? tessera::scale_mode::continuous : tessera::scale_mode::stepped};
   status error;
   const double field_ms = cli::median_ms(args.repeat(), [&] {
     if (error.ok()) error = tessera::assign_scale_field(*mesh, proj, field_opts, field, pool);
@@ -129,16 +135,20 @@ int run_terrain(const cli::arguments& args) {
   if (!error) return fail(error);
   const tessera::triangle_synthesis_options syn_opts{
       .seed = args.seed(),
-      .placement = placement == "uniform" ? tessera::placement_strategy::uniform : tessera::placement_strategy::away_from_neighbors,
-      .continuation = continuation == "first" ? tessera::continuation_rule::first_neighbor : tessera::continuation_rule::oldest_placement,
+      .placement = placement == "uniform" ? tessera::placement_strategy::uniform
+                                          : tessera::placement_strategy::away_from_neighbors,
+      .continuation = continuation == "first" ? tessera::continuation_rule::first_neighbor
+                                              : tessera::continuation_rule::oldest_placement,
       .defer_restarts = restart == "wait",
       .keep_fitting_axis = keep_axis == "yes"};
   const double syn_ms = cli::median_ms(args.repeat(), [&] {
-    if (error.ok()) error = tessera::synthesize_triangles(*mesh, proj, field, exemplar->width(), exemplar->height(), syn_opts, syn);
+    if (error.ok())
+      error = tessera::synthesize_triangles(*mesh, proj, field, exemplar->width(), exemplar->height(), syn_opts, syn);
   });
   if (!error) return fail(error);
   if (!syn.warning.ok()) std::fprintf(stderr, "tessera terrain: warning: %s\n", syn.warning.message().c_str());
-  if (proj.num_visible() == 0) std::fprintf(stderr, "tessera terrain: warning: no triangle is visible from this camera\n");
+  if (proj.num_visible() == 0)
+    std::fprintf(stderr, "tessera terrain: warning: no triangle is visible from this camera\n");
 
   rgb_image frame(vp->first, vp->second);
   const auto shading = args.str("--shading", "texture");
@@ -149,9 +159,12 @@ int run_terrain(const cli::arguments& args) {
     if (!sun) return fail(sun.error());
     render_opts.sun = tiled_opts.sun = {sun->x, sun->y, sun->z};
   }
-  if (shading == "scale") render_opts.shading = tessera::terrain_shading::scale_field;
-  else if (shading == "regions") render_opts.shading = tessera::terrain_shading::regions;
-  else if (shading != "texture") return fail(status::invalid_argument("--shading expects texture, scale or regions, got '" + shading + "'"));
+  if (shading == "scale")
+    render_opts.shading = tessera::terrain_shading::scale_field;
+  else if (shading == "regions")
+    render_opts.shading = tessera::terrain_shading::regions;
+  else if (shading != "texture")
+    return fail(status::invalid_argument("--shading expects texture, scale or regions, got '" + shading + "'"));
   const double render_ms = cli::median_ms(args.repeat(), [&] {
     if (error.ok()) error = tessera::render_terrain_frame(*mesh, proj, field, syn, *pyramid, frame, render_opts, pool);
   });
@@ -159,7 +172,8 @@ int run_terrain(const cli::arguments& args) {
   if (auto s = tessera::write_png(*out_path, frame); !s) return fail(s);
   if (args.has("--scale-out")) {
     render_opts.shading = tessera::terrain_shading::scale_field;
-    if (auto s = tessera::render_terrain_frame(*mesh, proj, field, syn, *pyramid, frame, render_opts, pool); !s) return fail(s);
+    if (auto s = tessera::render_terrain_frame(*mesh, proj, field, syn, *pyramid, frame, render_opts, pool); !s)
+      return fail(s);
     if (auto s = tessera::write_png(args.str("--scale-out"), frame); !s) return fail(s);
   }
   if (args.has("--tiled-out")) {
@@ -190,10 +204,13 @@ int run_terrain(const cli::arguments& args) {
 
 std::vector<cli::option_spec> terrain_options() {
   std::vector<cli::option_spec> o = {
-      {"--exemplar", "E", "exemplar PNG, or a procedural kind: grass, sand, rock, bricks, cells, weave, dots (required)"},
+      {"--exemplar", "E",
+       "exemplar PNG, or a procedural kind: grass, sand, rock, bricks, cells, weave, dots (required)"},
       cli::exemplar_size_option(256),
-      {"--mesh", "M.obj", "terrain mesh (.obj, .off or .ply; polygons are fan-triangulated); default: a procedural heightfield"},
-      {"--grid", "N", "procedural heightfield of N x N cells, 2 N^2 triangles, N in 1..4096 (default 128; --seed picks the relief)"},
+      {"--mesh", "M.obj",
+       "terrain mesh (.obj, .off or .ply; polygons are fan-triangulated); default: a procedural heightfield"},
+      {"--grid", "N",
+       "procedural heightfield of N x N cells, 2 N^2 triangles, N in 1..4096 (default 128; --seed picks the relief)"},
       {"--height", "H", "relief of the procedural heightfield on its 100 x 100 extent (default 14; 0 = a flat plane)"},
       {"--camera", "P", "view preset grazing, oblique or overview (default grazing); --eye/--target/--fov override it"},
       {"--eye", "x,y,z", "eye position (z is up)"},
@@ -204,21 +221,26 @@ std::vector<cli::option_spec> terrain_options() {
       {"--min-scale", "s", "smallest texture scale, in (0, 1] (default 0.5)"},
       {"--levels", "N", "exemplar pyramid levels (default 0: steps of at most 0.008 in scale)"},
       {"--mode", "M", "scale field: stepped (the paper) or continuous (default stepped)"},
-      {"--placement", "P", "restart placement: away (from synthesized neighbours) or uniform (the paper) (default away)"},
-      {"--continuation", "R", "which synthesized neighbour's coordinates to continue: oldest (placement) or first (in side "
-                              "order, the paper read literally) (default oldest)"},
-      {"--restart", "R", "a face that fits no neighbour's coordinates: wait (once, for neighbours synthesized later) or immediate "
-                         "(a new placement at once, the paper) (default wait)"},
-      {"--keep-axis", "yes|no", "a new placement keeps the offset along an axis where a neighbouring placement still fits (default "
-                                "yes; no: both axes at random, the paper)"},
+      {"--placement", "P",
+       "restart placement: away (from synthesized neighbours) or uniform (the paper) (default away)"},
+      {"--continuation", "R",
+       "which synthesized neighbour's coordinates to continue: oldest (placement) or first (in side "
+       "order, the paper read literally) (default oldest)"},
+      {"--restart", "R",
+       "a face that fits no neighbour's coordinates: wait (once, for neighbours synthesized later) or immediate "
+       "(a new placement at once, the paper) (default wait)"},
+      {"--keep-axis", "yes|no",
+       "a new placement keeps the offset along an axis where a neighbouring placement still fits (default "
+       "yes; no: both axes at random, the paper)"},
       {"--feather", "PX", "seam blending width in pixels (default 3; 0 = none)"},
       {"--shading", "S", "frame shading: texture, scale or regions (default texture)"},
       {"--sun", "x,y,z", "direction towards a light: flat Lambert shading of the frames (default: unlit)"},
       {"--out", "F.png", "the synthesized frame (required)"},
       {"--scale-out", "F.png", "also write the colour-coded scale field (yellow: scale 1, purple: min-scale)"},
       {"--tiled-out", "F.png", "also write the same frame with plain tiled texture mapping"},
-      {"--uv-out", "F.bin", "per-triangle texture coordinates for an engine (TSUV version 2, little-endian: 36-byte header, then per "
-                            "face 6 f32 corner uv, 2 f32 offset, i32 level, f32 scale, u32 state; see docs/terrain.md)"},
+      {"--uv-out", "F.bin",
+       "per-triangle texture coordinates for an engine (TSUV version 2, little-endian: 36-byte header, then per "
+       "face 6 f32 corner uv, 2 f32 offset, i32 level, f32 scale, u32 state; see docs/terrain.md)"},
   };
   for (auto& c : cli::common_options()) o.push_back(c);
   return o;

@@ -36,8 +36,10 @@ int run(const cli::arguments& args) {
   const double ms = cli::median_ms(args.repeat(), [&] {
     if (given.empty()) {
       auto d = tessera::dominant_tones(*img, static_cast<int>(*max), {.seed = args.seed()});
-      if (!d) st = d.error();
-      else tones = std::move(*d);
+      if (!d)
+        st = d.error();
+      else
+        tones = std::move(*d);
     } else {
       auto shares = tessera::tone_proportions(*img, given);
       if (!shares) {
@@ -59,9 +61,16 @@ int run(const cli::arguments& args) {
       list += buf;
     }
     list += "]";
-    cli::json_line().add("command", "tones").add("file", path).add("width", img->width()).add("height", img->height())
-        .add("method", given.empty() ? "dominant" : "nearest").raw("tones", list)
-        .add("palette", fabric_cli::palette_text(tones)).add("tones_ms", ms).print();
+    cli::json_line()
+        .add("command", "tones")
+        .add("file", path)
+        .add("width", img->width())
+        .add("height", img->height())
+        .add("method", given.empty() ? "dominant" : "nearest")
+        .raw("tones", list)
+        .add("palette", fabric_cli::palette_text(tones))
+        .add("tones_ms", ms)
+        .print();
     return 0;
   }
   std::printf("%s: %lld x %lld, %s\n", path.c_str(), static_cast<long long>(img->width()),
@@ -76,8 +85,9 @@ int run(const cli::arguments& args) {
 std::vector<cli::option_spec> options() {
   std::vector<cli::option_spec> o = {
       {"--max", "N", "how many dominant tones to find, 1..64 (default 4; fewer if the image has fewer colours)"},
-      {"--palette", "LIST", "measure these tones instead (\"#000000:1,#ffffff:1\"; weights ignored): each pixel "
-                            "counts for the nearest"}};
+      {"--palette", "LIST",
+       "measure these tones instead (\"#000000:1,#ffffff:1\"; weights ignored): each pixel "
+       "counts for the nearest"}};
   for (auto& c : cli::common_options()) o.push_back(c);
   return o;
 }

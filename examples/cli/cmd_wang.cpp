@@ -32,7 +32,8 @@ int run_build(const cli::arguments& args) {
   auto dir = args.required("--out");
   if (!ex_path) return cli::fail(args, ex_path.error());
   if (!dir) return cli::fail(args, dir.error());
-  auto colors = args.has("--colors") ? args.numbers("--colors", 2) : tessera::result<std::vector<double>>(std::vector<double>{2, 2});
+  auto colors = args.has("--colors") ? args.numbers("--colors", 2)
+                                     : tessera::result<std::vector<double>>(std::vector<double>{2, 2});
   if (!colors) return cli::fail(args, colors.error());
   // range-checked before any conversion to int (1e10 must not wrap)
   for (double c : *colors)
@@ -46,7 +47,8 @@ int run_build(const cli::arguments& args) {
   auto border = args.integer("--border", 0, 0, 65536);
   auto mip_levels = args.integer("--mip-levels", 0, 0, 16);
   auto tolerance = args.number("--tolerance", 0.1, 0, 1e30);
-  for (const auto* r : {&tile.error(), &overlap.error(), &patch.error(), &border.error(), &mip_levels.error(), &tolerance.error()})
+  for (const auto* r :
+       {&tile.error(), &overlap.error(), &patch.error(), &border.error(), &mip_levels.error(), &tolerance.error()})
     if (!r->ok()) return cli::fail(args, *r);
   const int nh = static_cast<int>((*colors)[0]), nv = static_cast<int>((*colors)[1]);
   tessera::wang_tile_options options{.tile_size = static_cast<index_t>(*tile),
@@ -64,41 +66,46 @@ int run_build(const cli::arguments& args) {
     options.tiles.assign(subset->tiles().begin(), subset->tiles().end());
   }
   tessera::thread_pool_executor pool(args.threads());
-  auto s = cli::with_image_source(args, "--exemplar", [&]<class T, int C>(tessera::format_tag<T, C>) -> tessera::status {
-    auto exemplar = cli::load_image_source<T, C>(args, "--exemplar");
-    if (!exemplar) return exemplar.error();
-    tessera::result<tessera::wang_tile_set<T, C>> set = tessera::status::internal_error("not built");
-    const double ms = cli::median_ms(args.repeat(), [&] { set = tessera::build_wang_tiles(*exemplar, options, pool); });
-    if (!set) return set.error();
-    if (auto st = tessera::save_wang_tiles(*dir, *set); !st) return st;
-    // the GPU atlas: Wei's edge-ordered layout for complete sets, padded otherwise
-    const auto layout = set->edges().is_complete() ? tessera::atlas_layout::edge_ordered : tessera::atlas_layout::padded;
-    auto atlas = tessera::build_wang_atlas(*set, {.layout = layout});
-    if (!atlas) return atlas.error();
-    if (auto st = tessera::write_png((std::filesystem::path(*dir) / "atlas.png").string(), atlas->image); !st) return st;
-    if (args.stats()) {
-      auto quality = tessera::wang_seam_quality(*set, *exemplar);
-      if (!quality) return quality.error();
-      cli::json_line()
-          .add("command", "wang build")
-          .add("tiles", set->size())
-          .add("tile_size", set->tile_size())
-          .add("build_ms", ms)
-          .add("seam_ratio_mean", quality->mean_ratio)
-          .add("seam_ratio_max", quality->max_ratio)
-          .add("atlas", layout == tessera::atlas_layout::edge_ordered ? "edge_ordered" : "padded")
-          .add("atlas_mip_levels", atlas->mip_levels)
-          .add("shared_border", set->shared_border())
-          .print();
-    }
-    return {};
-  });
+  auto s =
+      cli::with_image_source(args, "--exemplar", [&]<class T, int C>(tessera::format_tag<T, C>) -> tessera::status {
+        auto exemplar = cli::load_image_source<T, C>(args, "--exemplar");
+        if (!exemplar) return exemplar.error();
+        tessera::result<tessera::wang_tile_set<T, C>> set = tessera::status::internal_error("not built");
+        const double ms =
+            cli::median_ms(args.repeat(), [&] { set = tessera::build_wang_tiles(*exemplar, options, pool); });
+        if (!set) return set.error();
+        if (auto st = tessera::save_wang_tiles(*dir, *set); !st) return st;
+        // the GPU atlas: Wei's edge-ordered layout for complete sets, padded otherwise
+        const auto layout =
+            set->edges().is_complete() ? tessera::atlas_layout::edge_ordered : tessera::atlas_layout::padded;
+        auto atlas = tessera::build_wang_atlas(*set, {.layout = layout});
+        if (!atlas) return atlas.error();
+        if (auto st = tessera::write_png((std::filesystem::path(*dir) / "atlas.png").string(), atlas->image); !st)
+          return st;
+        if (args.stats()) {
+          auto quality = tessera::wang_seam_quality(*set, *exemplar);
+          if (!quality) return quality.error();
+          cli::json_line()
+              .add("command", "wang build")
+              .add("tiles", set->size())
+              .add("tile_size", set->tile_size())
+              .add("build_ms", ms)
+              .add("seam_ratio_mean", quality->mean_ratio)
+              .add("seam_ratio_max", quality->max_ratio)
+              .add("atlas", layout == tessera::atlas_layout::edge_ordered ? "edge_ordered" : "padded")
+              .add("atlas_mip_levels", atlas->mip_levels)
+              .add("shared_border", set->shared_border())
+              .print();
+        }
+        return {};
+      });
   if (!s) return cli::fail(args, s);
   return 0;
 }
 
 template <class T, int C>
-tessera::status tile_with(const cli::arguments& args, const std::string& dir, const std::string& kind, index_t cols, index_t rows) {
+tessera::status tile_with(const cli::arguments& args, const std::string& dir, const std::string& kind, index_t cols,
+                          index_t rows) {
   auto period = args.integer("--period", 4, 1, 8192);
   if (!period) return period.error();
   auto set = tessera::load_wang_tiles<T, C>(dir);
@@ -153,13 +160,15 @@ int run_tile(const cli::arguments& args) {
   if (!grid) return cli::fail(args, grid.error());
   const std::string kind = args.str("--coloring", "scanline");
   if (kind != "scanline" && kind != "hash" && kind != "periodic")
-    return cli::fail(args, tessera::status::invalid_argument("--coloring expects scanline, hash or periodic, got '" + kind + "'"));
+    return cli::fail(
+        args, tessera::status::invalid_argument("--coloring expects scanline, hash or periodic, got '" + kind + "'"));
   // the tiles' pixel format, from the first tile file
   auto manifest = tessera::read_tile_manifest(*dir);
   if (!manifest) return cli::fail(args, manifest.error());
   auto info = tessera::read_png_info((std::filesystem::path(*dir) / manifest->tiles.front().file).string());
   if (!info) return cli::fail(args, info.error());
-  const tessera::pixel_format fmt{info->bit_depth == 16 ? tessera::channel_type::uint16 : tessera::channel_type::uint8, info->channels};
+  const tessera::pixel_format fmt{info->bit_depth == 16 ? tessera::channel_type::uint16 : tessera::channel_type::uint8,
+                                  info->channels};
   auto s = tessera::dispatch_format(fmt, [&]<class T, int C>(tessera::format_tag<T, C>) {
     return tile_with<T, C>(args, *dir, kind, grid->first, grid->second);
   });
@@ -183,10 +192,12 @@ const cli::registrar build_command({
         {"--tile", "T", "tile size in pixels (default 64; at most the exemplar's smaller side)"},
         {"--out", "DIR", "output directory: tile_<index>.png, tiles.json, atlas.png"},
         {"--subset", "", "build the modular subset (Cohen's 8 tiles for 2,2) instead of all NH^2 NV^2"},
-        {"--overlap", "V", "quilting overlap = depth of each edge sample in a tile (default max(tile / 10, border + 2))"},
+        {"--overlap", "V",
+         "quilting overlap = depth of each edge sample in a tile (default max(tile / 10, border + 2))"},
         {"--patch", "P", "quilting patch size (default about tile / 3)"},
-        {"--mip-levels", "L", "mip levels of atlas.png that sample exactly across tile borders and corners "
-                              "(border 2^(L-1); default: up to 4 as the tile size allows)"},
+        {"--mip-levels", "L",
+         "mip levels of atlas.png that sample exactly across tile borders and corners "
+         "(border 2^(L-1); default: up to 4 as the tile size allows)"},
         {"--border", "B", "outer pixels copied from the edge samples and never cut (default 2^(L-1))"},
         {"--tolerance", "T", "candidate tolerance (default 0.1)"},
     }),
@@ -196,8 +207,9 @@ const cli::registrar build_command({
 const cli::registrar tile_command({
     .name = "wang tile",
     .summary = "compose a tiled image from a Wang tile directory",
-    .usage = "tessera wang tile --tiles DIR --grid COLSxROWS --out O.png [--seed S] [--coloring scanline|hash|periodic] "
-             "[--repeat N]",
+    .usage =
+        "tessera wang tile --tiles DIR --grid COLSxROWS --out O.png [--seed S] [--coloring scanline|hash|periodic] "
+        "[--repeat N]",
     .options = with_common({
         {"--tiles", "DIR", "tile directory written by tessera wang build"},
         {"--grid", "COLSxROWS", "number of tiles across and down"},

@@ -48,8 +48,8 @@ tessera::result<tessera::image_buffer<T, C>> load_image_source(const arguments& 
   auto size = args.integer("--exemplar-size", default_size);
   if (!size) return size.error();
   return tessera::make_exemplar<T, C>(*kind, {.width = static_cast<tessera::index_t>(*size),
-                                               .height = static_cast<tessera::index_t>(*size),
-                                               .seed = args.seed()});
+                                              .height = static_cast<tessera::index_t>(*size),
+                                              .seed = args.seed()});
 }
 
 /// Calls `f(format_tag<T, C>{})` with the format of the image `option` names.

@@ -78,9 +78,9 @@ TEST_CASE("eigen: vectors are pixels and convert like std::array pixels") {
   STATIC_REQUIRE(tessera::Pixel<Eigen::Vector4f>);
   STATIC_REQUIRE(tessera::Pixel<Eigen::Matrix<std::uint16_t, 1, 1>>);
   STATIC_REQUIRE(tessera::Pixel<Eigen::Array<std::uint8_t, 4, 1>>);
-  STATIC_REQUIRE_FALSE(tessera::Pixel<Eigen::Vector3d>);              // double channels
-  STATIC_REQUIRE_FALSE(tessera::Pixel<Eigen::Matrix<float, 5, 1>>);   // 5 channels
-  STATIC_REQUIRE_FALSE(tessera::Pixel<Eigen::VectorXf>);              // size unknown at compile time
+  STATIC_REQUIRE_FALSE(tessera::Pixel<Eigen::Vector3d>);             // double channels
+  STATIC_REQUIRE_FALSE(tessera::Pixel<Eigen::Matrix<float, 5, 1>>);  // 5 channels
+  STATIC_REQUIRE_FALSE(tessera::Pixel<Eigen::VectorXf>);             // size unknown at compile time
 
   const rgb8 p(200, 0, 255);
   const auto f = tessera::convert_pixel<Eigen::Vector3f>(p);

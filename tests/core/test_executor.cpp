@@ -39,9 +39,10 @@ TEST_CASE("thread pool: explicit thread counts, offsets and nesting", "[executor
 
 TEST_CASE("thread pool: an exception from the callback reaches the caller", "[executor]") {
   tessera::thread_pool_executor pool(2);
-  REQUIRE_THROWS_AS(pool.parallel_for(0, 1000, [](index_t i) {
-    if (i == 517) throw std::runtime_error("boom");
-  }),
+  REQUIRE_THROWS_AS(pool.parallel_for(0, 1000,
+                                      [](index_t i) {
+                                        if (i == 517) throw std::runtime_error("boom");
+                                      }),
                     std::runtime_error);
   // the pool stays usable afterwards
   std::atomic<index_t> sum{0};

@@ -54,11 +54,11 @@ struct tessera::image_traits<engine_texture> {
 static_assert(tessera::Channel<std::uint8_t> && tessera::Channel<std::uint16_t> && tessera::Channel<float>);
 static_assert(!tessera::Channel<double> && !tessera::Channel<int> && !tessera::Channel<std::int8_t>);
 static_assert(tessera::Pixel<float> && tessera::Pixel<std::uint8_t> && tessera::Pixel<std::array<float, 4>>);
-static_assert(!tessera::Pixel<double>);                     // channel type not supported
-static_assert(!tessera::Pixel<std::array<float, 5>>);       // too many channels
-static_assert(!tessera::Pixel<std::array<float, 0>>);       // too few
-static_assert(!tessera::Pixel<std::array<double, 3>>);      // channel type
-static_assert(!tessera::Pixel<std::vector<float>>);         // unknown to pixel_traits
+static_assert(!tessera::Pixel<double>);                 // channel type not supported
+static_assert(!tessera::Pixel<std::array<float, 5>>);   // too many channels
+static_assert(!tessera::Pixel<std::array<float, 0>>);   // too few
+static_assert(!tessera::Pixel<std::array<double, 3>>);  // channel type
+static_assert(!tessera::Pixel<std::vector<float>>);     // unknown to pixel_traits
 static_assert(tessera::Image<grey_image> && tessera::WritableImage<grey_image>);
 static_assert(tessera::Image<checker> && !tessera::WritableImage<checker>);
 static_assert(tessera::Image<engine_texture> && tessera::WritableImage<engine_texture>);
@@ -123,7 +123,8 @@ TEST_CASE("image: convert_pixel between channel counts", "[image]") {
   const auto ga = convert_pixel<pixel<float, 2>>(pixel<float, 4>{0.5f, 0.5f, 0.5f, 0.25f});
   REQUIRE(ga[0] == Approx(0.5f));
   REQUIRE(ga[1] == 0.25f);
-  REQUIRE(convert_pixel<pixel<std::uint8_t, 4>>(pixel<std::uint8_t, 2>{10, 20}) == pixel<std::uint8_t, 4>{10, 10, 10, 20});
+  REQUIRE(convert_pixel<pixel<std::uint8_t, 4>>(pixel<std::uint8_t, 2>{10, 20}) ==
+          pixel<std::uint8_t, 4>{10, 10, 10, 20});
   // same channel count: per channel
   REQUIRE(convert_pixel<pixel<std::uint8_t, 2>>(pixel<std::uint16_t, 2>{65535, 0}) == pixel<std::uint8_t, 2>{255, 0});
 }

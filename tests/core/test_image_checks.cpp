@@ -32,7 +32,12 @@ TEST_CASE("image_checks: valid extents pass", "[image_checks]") {
 }
 
 TEST_CASE("image_checks: zero and negative sizes", "[image_checks]") {
-  for (auto [w, h] : {std::pair<index_t, index_t>{0, 5}, {5, 0}, {0, 0}, {-1, 5}, {5, -7}, {-3, -3},
+  for (auto [w, h] : {std::pair<index_t, index_t>{0, 5},
+                      {5, 0},
+                      {0, 0},
+                      {-1, 5},
+                      {5, -7},
+                      {-3, -3},
                       {std::numeric_limits<index_t>::min(), 1}}) {
     const auto s = validate_image_extent(w, h, 3, "exemplar");
     REQUIRE(s.code() == status_code::invalid_argument);
@@ -57,7 +62,7 @@ TEST_CASE("image_checks: sizes whose element or byte count overflows", "[image_c
                          {1, big, 1},
                          {big, big, 4},
                          {index_t{1} << 32, index_t{1} << 32, 1},  // product wraps to 0 in 64 bits
-                         {3037000500, 3037000500, 1}}) {          // product overflows index_t
+                         {3037000500, 3037000500, 1}}) {           // product overflows index_t
     const auto s = validate_image_extent(w, h, c, "mask");
     REQUIRE(s.code() == status_code::size_overflow);
     REQUIRE(mentions(s, "mask"));

@@ -30,8 +30,7 @@ TEST_CASE("image_view: packed and strided buffers", "[image_view]") {
   REQUIRE(v->stride() == 11);
   REQUIRE_FALSE(v->empty());
   for (index_t y = 0; y < 2; ++y)
-    for (index_t x = 0; x < 3; ++x)
-      v->write(x, y, {std::uint8_t(10 * x + y), std::uint8_t(x), std::uint8_t(y)});
+    for (index_t x = 0; x < 3; ++x) v->write(x, y, {std::uint8_t(10 * x + y), std::uint8_t(x), std::uint8_t(y)});
   REQUIRE(v->read(2, 1) == std::array<std::uint8_t, 3>{21, 2, 1});
   REQUIRE(buf[11 + 6] == 21);  // row 1 starts at the stride
   REQUIRE(buf[9] == 99);       // padding untouched
@@ -98,7 +97,8 @@ TEST_CASE("image_view: bad buffers are rejected with a status", "[image_view]") 
   const index_t big = std::numeric_limits<index_t>::max();
   REQUIRE(code(tessera::make_image_view<2>(buf.data(), big / 2, 4)) == status_code::size_overflow);
   REQUIRE(code(tessera::make_image_view<2>(buf.data(), 4, 4, big / 2)) == status_code::size_overflow);
-  REQUIRE(code(tessera::make_image_view<4>(buf.data(), index_t{1} << 30, index_t{1} << 30)) == status_code::size_overflow);
+  REQUIRE(code(tessera::make_image_view<4>(buf.data(), index_t{1} << 30, index_t{1} << 30)) ==
+          status_code::size_overflow);
 
   // the caller's buffer is never touched by validation
   for (auto v : buf) REQUIRE(v == 0);

@@ -48,10 +48,13 @@ struct tessera::mesh_traits<soup> {
   static index_t num_vertices(const soup& s) { return static_cast<index_t>(s.corners.size()); }
   static index_t num_faces(const soup& s) { return static_cast<index_t>(s.corners.size() / 3); }
   static index_t face_vertex(const soup&, index_t f, int k) { return 3 * f + k; }
-  static const std::array<double, 3>& position(const soup& s, index_t v) { return s.corners[static_cast<std::size_t>(v)]; }
+  static const std::array<double, 3>& position(const soup& s, index_t v) {
+    return s.corners[static_cast<std::size_t>(v)];
+  }
 };
 
-static_assert(tessera::Point<xyz> && tessera::Point<xy> && tessera::Point<std::array<float, 3>> && tessera::Point<vec3>);
+static_assert(tessera::Point<xyz> && tessera::Point<xy> && tessera::Point<std::array<float, 3>> &&
+              tessera::Point<vec3>);
 static_assert(!tessera::Point<int> && !tessera::Point<std::vector<int>*>);
 static_assert(tessera::Mesh<member_mesh> && !tessera::UVMesh<member_mesh>);
 static_assert(tessera::Mesh<uv_mesh> && tessera::UVMesh<uv_mesh>);

@@ -200,7 +200,8 @@ TEST_CASE("mesh_topology: works on any Mesh type", "[mesh_topology]") {
   REQUIRE(tessera::connected_components(empty).count == 0);
 }
 
-TEST_CASE("mesh_topology: faces naming vertices out of range are ignored, never indexed", "[mesh_topology][bad_input]") {
+TEST_CASE("mesh_topology: faces naming vertices out of range are ignored, never indexed",
+          "[mesh_topology][bad_input]") {
   // The tetrahedron plus three bad faces: a negative index, one past the end, a huge one. Under
   // ASan any read or write through those indices would fail this test.
   tri_mesh m = tetrahedron();

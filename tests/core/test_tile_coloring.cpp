@@ -24,7 +24,10 @@ struct procedural {
     index_t c = face % cols, r = face / cols;
     if (side == tessera::side_south) ++r;
     if (side == tessera::side_east) ++c;
-    if (torus) { r %= rows; c %= cols; }
+    if (torus) {
+      r %= rows;
+      c %= cols;
+    }
     const bool horizontal = tessera::is_horizontal_side(side);
     return static_cast<int>((horizontal ? (r * 7 + c * 3) : (r * 5 + c * 11)) % (horizontal ? 3 : 2));
   }

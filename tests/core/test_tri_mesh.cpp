@@ -155,7 +155,8 @@ TEST_CASE("tri_mesh: normals, areas and bounding box", "[tri_mesh]") {
   const auto vn = tessera::vertex_normals(m);
   for (index_t v = 0; v < 4; ++v) {
     REQUIRE(tessera::norm(vn[static_cast<std::size_t>(v)]) == Approx(1.0));
-    REQUIRE(tessera::dot(vn[static_cast<std::size_t>(v)], m.positions[static_cast<std::size_t>(v)] - vec3{0.25, 0.25, 0.25}) > 0);
+    REQUIRE(tessera::dot(vn[static_cast<std::size_t>(v)],
+                         m.positions[static_cast<std::size_t>(v)] - vec3{0.25, 0.25, 0.25}) > 0);
   }
 
   const auto box = tessera::bounding_box(m);

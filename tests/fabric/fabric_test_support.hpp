@@ -32,8 +32,10 @@ tessera::image_buffer<T, C> random_image(index_t w, index_t h, std::uint64_t see
   tessera::image_buffer<T, C> img(w, h);
   const tessera::counter_rng rng(seed);
   for (index_t i = 0; i < w * h * C; ++i) {
-    if constexpr (std::is_floating_point_v<T>) img.data()[i] = static_cast<T>(rng.uniform(i));
-    else img.data()[i] = static_cast<T>(rng.bits(i));
+    if constexpr (std::is_floating_point_v<T>)
+      img.data()[i] = static_cast<T>(rng.uniform(i));
+    else
+      img.data()[i] = static_cast<T>(rng.bits(i));
   }
   return img;
 }

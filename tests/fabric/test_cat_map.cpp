@@ -74,7 +74,8 @@ TEST_CASE("jumps by huge step counts reduce modulo the period", "[cat_map]") {
   const index_t n = 50;
   const auto img = random_image<std::uint16_t, 2>(n, n, 9);
   const auto period = static_cast<std::int64_t>(*cat_map_period(n));
-  for (std::int64_t k : std::vector<std::int64_t>{INT64_MAX, INT64_MIN, INT64_MIN + 1, std::int64_t{1} << 40, -(std::int64_t{3} << 50)}) {
+  for (std::int64_t k : std::vector<std::int64_t>{INT64_MAX, INT64_MIN, INT64_MIN + 1, std::int64_t{1} << 40,
+                                                  -(std::int64_t{3} << 50)}) {
     const std::int64_t r = ((k % period) + period) % period;
     for (cat_map_strategy s : strategies) {
       auto a = cat_map(img, k, {.strategy = s});
@@ -284,8 +285,10 @@ TEST_CASE("the separable kernel equals the direct gather for every factorization
       REQUIRE(direct == separable);
       for (index_t y = 0; y < n; ++y)
         for (index_t x = 0; x < n; ++x) {
-          const auto sx = static_cast<index_t>((g.a * static_cast<detail::u64>(x) + g.b * static_cast<detail::u64>(y)) % un);
-          const auto sy = static_cast<index_t>((g.c * static_cast<detail::u64>(x) + g.d * static_cast<detail::u64>(y)) % un);
+          const auto sx =
+              static_cast<index_t>((g.a * static_cast<detail::u64>(x) + g.b * static_cast<detail::u64>(y)) % un);
+          const auto sy =
+              static_cast<index_t>((g.c * static_cast<detail::u64>(x) + g.d * static_cast<detail::u64>(y)) % un);
           REQUIRE(direct.read(x, y) == img.read(sx, sy));
         }
     }

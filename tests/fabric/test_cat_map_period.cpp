@@ -55,7 +55,7 @@ TEST_CASE("cat_map_period of the generalized family [1 a, b ab+1] equals brute f
 TEST_CASE("cat_map_period: known values", "[cat_map_period]") {
   CHECK(*cat_map_period(1) == 1);
   CHECK(*cat_map_period(2) == 3);
-  CHECK(*cat_map_period(5) == 10);  // p = 5 divides the discriminant 5
+  CHECK(*cat_map_period(5) == 10);     // p = 5 divides the discriminant 5
   CHECK(*cat_map_period(400) == 300);  // the paper's 400 x 400 images
   CHECK(*cat_map_period(4096) == 3072);
   // half the Pisano period for N > 2: pi(10) = 60, pi(100) = 300
@@ -65,15 +65,15 @@ TEST_CASE("cat_map_period: known values", "[cat_map_period]") {
 
 TEST_CASE("cat_map_period is exact for large N up to 10^12 and beyond", "[cat_map_period]") {
   const std::vector<std::int64_t> ns = {
-      1000000000000LL,           // 2^12 5^12
-      999999999989LL,            // prime, 5 a non-residue or residue
-      999983LL * 999979LL,       // two primes near 10^6
-      1099511627776LL,           // 2^40
-      762939453125LL,            // 5^17
-      999961LL * 999961LL,       // a prime squared
-      600851475143LL,            // 71 839 1471 6857
+      1000000000000LL,      // 2^12 5^12
+      999999999989LL,       // prime, 5 a non-residue or residue
+      999983LL * 999979LL,  // two primes near 10^6
+      1099511627776LL,      // 2^40
+      762939453125LL,       // 5^17
+      999961LL * 999961LL,  // a prime squared
+      600851475143LL,       // 71 839 1471 6857
       123456789012LL,
-      4611686018427387847LL,     // 2^62 - 57, near the limit
+      4611686018427387847LL,  // 2^62 - 57, near the limit
   };
   for (std::int64_t n : ns) {
     INFO("N = " << n);

@@ -54,7 +54,8 @@ TEST_CASE("relight changes lightness only: hue and saturation are kept", "[hls]"
     }
     // it is also what hls_to_rgb gives for (H, L', S)
     const auto direct = hls_to_rgb({before.h, l_new, before.s});
-    for (int k = 0; k < 3; ++k) REQUIRE(c[static_cast<std::size_t>(k)] == Approx(direct[static_cast<std::size_t>(k)]).margin(1e-4));
+    for (int k = 0; k < 3; ++k)
+      REQUIRE(c[static_cast<std::size_t>(k)] == Approx(direct[static_cast<std::size_t>(k)]).margin(1e-4));
   }
   // black and white relight to grey
   const auto g = relight(0, 0, 0, 0, 0.4f);

@@ -22,8 +22,8 @@ namespace {
 // key from SplitMix64, then the 32-bit hash lowbias32 of key + x, top 24 bits.
 double oracle_r(std::uint64_t seed, int g, index_t x, index_t y) {
   const counter_rng rng(seed, stream_id("fabric.life"));
-  const auto key = static_cast<std::uint32_t>(mix64(rng.bits(static_cast<std::uint64_t>(g)) +
-                                                    static_cast<std::uint64_t>(y + 1) * 0x9e3779b97f4a7c15ULL));
+  const auto key = static_cast<std::uint32_t>(
+      mix64(rng.bits(static_cast<std::uint64_t>(g)) + static_cast<std::uint64_t>(y + 1) * 0x9e3779b97f4a7c15ULL));
   std::uint32_t v = key + static_cast<std::uint32_t>(x);
   v ^= v >> 16;
   v *= 0x7feb352dU;
@@ -98,7 +98,8 @@ void check_integer_oracle(const image_buffer<T, C>& img, const life_perturbation
       const double span = 1 - std::abs(2 * l[i] - 1), span_new = 1 - std::abs(2 * expected[i] - 1);
       const double k = span > 0 ? span_new / span : 0;
       for (int c = 0; c < std::min(C, 3); ++c) {
-        const double v = C <= 2 ? expected[i] * top : expected[i] * top + (a[static_cast<std::size_t>(c)] - l[i] * top) * k;
+        const double v =
+            C <= 2 ? expected[i] * top : expected[i] * top + (a[static_cast<std::size_t>(c)] - l[i] * top) * k;
         REQUIRE(std::abs(b[static_cast<std::size_t>(c)] - std::clamp(v, 0.0, top)) <= 0.5 + 1e-3 * top / 255);
       }
       if constexpr (C == 2 || C == 4) REQUIRE(a[C - 1] == b[C - 1]);  // alpha
@@ -124,7 +125,8 @@ double hue_distance(double a, double b) {
 // A cat-mapped fabric with some colour: the typical input of the perturbation.
 image_buffer<float, 3> fabric(index_t n) {
   image_buffer<float, 3> src(n, n);
-  const palette tones = {{{0.30f, 0.22f, 0.16f}, 4}, {{0.55f, 0.45f, 0.33f}, 3}, {{0.78f, 0.72f, 0.60f}, 2}, {{0.6f, 0.25f, 0.15f}, 1}};
+  const palette tones = {
+      {{0.30f, 0.22f, 0.16f}, 4}, {{0.55f, 0.45f, 0.33f}, 3}, {{0.78f, 0.72f, 0.60f}, 2}, {{0.6f, 0.25f, 0.15f}, 1}};
   REQUIRE(make_source_image(src, tones, {.layout = source_layout::cells, .feature_size = 6}).ok());
   return *cat_map(src, 17);
 }
@@ -134,10 +136,10 @@ TEST_CASE("the perturbation follows the paper's brighten / darken rule (oracle)"
   const auto noisy = random_image<float, 3>(23, 17, 8);
   const auto cloth = fabric(24);
   std::vector<life_perturbation_options> cases = {
-      {},                                                                          // K = 3, N = 6
-      {.generations = 3, .seed = 9},                                               // synchronous generations
-      {.live_count = 2, .live_exact = false, .dead_count = 5},                     // at least K
-      {.generations = 2, .dead_count = 7, .crowding_count = 6},                    // §1.2's crowding rule
+      {},                                                        // K = 3, N = 6
+      {.generations = 3, .seed = 9},                             // synchronous generations
+      {.live_count = 2, .live_exact = false, .dead_count = 5},   // at least K
+      {.generations = 2, .dead_count = 7, .crowding_count = 6},  // §1.2's crowding rule
       {.live_count = 4, .dead_count = 5, .live_test = life_test::above_threshold, .threshold = 0.45f},
       {.live_count = 0, .dead_count = 1},
   };
@@ -207,7 +209,8 @@ TEST_CASE("the SIMD paths of the integer generation equal the portable loops", "
   using default_loops = life_int_loops<std::uint8_t, false>;
   using avx2_loops = life_int_loops<std::uint8_t, true>;
   const life_int_rule<std::int16_t> rule{3, 6, 7, 300, true, false};
-  std::vector<std::uint16_t> toward(static_cast<std::size_t>(w)), kind(toward.size()), toward2(toward.size()), kind2(toward.size());
+  std::vector<std::uint16_t> toward(static_cast<std::size_t>(w)), kind(toward.size()), toward2(toward.size()),
+      kind2(toward.size());
   const std::int16_t* r = rows.data();
   const index_t p = w + 2;
   default_loops::classify<false, true>(r, r + p, r + 2 * p, w, rule, toward.data(), kind.data());

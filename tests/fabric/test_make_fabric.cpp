@@ -27,7 +27,8 @@ TEST_CASE("make_fabric = source square, cat map, perturbation, tiling", "[make_f
     for (index_t x = 0; x < 130; ++x) REQUIRE(wide.read(x, y) == tile.read(x % 48, y % 48));
 }
 
-TEST_CASE("make_fabric: a source that is not N x N is rejected unless options.fit says how to read it", "[make_fabric]") {
+TEST_CASE("make_fabric: a source that is not N x N is rejected unless options.fit says how to read it",
+          "[make_fabric]") {
   const auto src = fabric_test::random_image<std::uint8_t, 3>(48, 48, 2);
   image_buffer<std::uint8_t, 3> wide(130, 70), small(20, 20);
   // default: reject, naming both sizes and the options that would accept it

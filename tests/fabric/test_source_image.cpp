@@ -16,7 +16,8 @@ template <class Img>
 std::map<std::array<std::uint8_t, 3>, double> shares(const Img& img) {
   std::map<std::array<std::uint8_t, 3>, double> m;
   for (index_t y = 0; y < img.height(); ++y)
-    for (index_t x = 0; x < img.width(); ++x) m[img.read(x, y)] += 1.0 / static_cast<double>(img.width() * img.height());
+    for (index_t x = 0; x < img.width(); ++x)
+      m[img.read(x, y)] += 1.0 / static_cast<double>(img.width() * img.height());
   return m;
 }
 }  // namespace
@@ -31,8 +32,8 @@ TEST_CASE("parse_palette reads #rrggbb:weight lists", "[source_image]") {
   REQUIRE(q.ok());
   CHECK((*q)[0].color[1] == Approx(128.0 / 255));
   CHECK((*q)[1].color[0] == Approx(16.0 / 255));
-  for (const char* bad : {"", "#000000", "#00000:1", "#00000g:1", "#000000:x", "#000000:-1", "#000000:0,#ffffff:0",
-                          "#000000:0.5,"}) {
+  for (const char* bad :
+       {"", "#000000", "#00000:1", "#00000g:1", "#000000:x", "#000000:-1", "#000000:0,#ffffff:0", "#000000:0.5,"}) {
     INFO(bad);
     auto e = parse_palette(bad);
     REQUIRE_FALSE(e.ok());
@@ -66,7 +67,8 @@ TEST_CASE("source images reproduce the palette proportions", "[source_image]") {
   CHECK(s[{0, 0, 0}] == Approx(0.75));
   CHECK(s[{255, 255, 255}] == Approx(0.25));
   for (index_t x = 0; x < 96; ++x) CHECK(img.read(x, 13) == img.read(0, 13));  // horizontal bands
-  REQUIRE(make_source_image(img, black_white, {.layout = source_layout::stripes, .feature_size = 16, .vertical = true}).ok());
+  REQUIRE(make_source_image(img, black_white, {.layout = source_layout::stripes, .feature_size = 16, .vertical = true})
+              .ok());
   for (index_t y = 0; y < 96; ++y) CHECK(img.read(13, y) == img.read(13, 0));
   // blocks: 36 blocks of 16 x 16, exactly 27 black
   REQUIRE(make_source_image(img, black_white, {.layout = source_layout::blocks, .feature_size = 16, .seed = 5}).ok());
@@ -111,7 +113,8 @@ TEST_CASE("make_source_image rejects bad input", "[source_image]") {
   auto s = make_source_image(img, black_white, {.feature_size = -3});
   CHECK(s.code() == status_code::invalid_argument);
   CHECK(s.message().find("-3") != std::string::npos);
-  CHECK(make_source_image(img, black_white, {.layout = static_cast<source_layout>(9)}).code() == status_code::invalid_argument);
+  CHECK(make_source_image(img, black_white, {.layout = static_cast<source_layout>(9)}).code() ==
+        status_code::invalid_argument);
   image_view<std::uint8_t, 3> empty;
   CHECK(make_source_image(empty, black_white).code() == status_code::invalid_argument);
 }

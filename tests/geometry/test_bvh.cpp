@@ -19,7 +19,8 @@ tri_mesh random_soup(std::uint64_t seed, int n, double size) {
     const vec3 c{rng.uniform(i, 0), rng.uniform(i, 1), rng.uniform(i, 2)};
     index_t v[3];
     for (int k = 0; k < 3; ++k)
-      v[k] = m.add_vertex(c + vec3{rng.uniform(i, k, 3) - 0.5, rng.uniform(i, k, 4) - 0.5, rng.uniform(i, k, 5) - 0.5} * size);
+      v[k] = m.add_vertex(c + vec3{rng.uniform(i, k, 3) - 0.5, rng.uniform(i, k, 4) - 0.5, rng.uniform(i, k, 5) - 0.5} *
+                                  size);
     m.add_face(v[0], v[1], v[2]);
   }
   return m;
@@ -35,7 +36,8 @@ TEST_CASE("closest point on a triangle matches dense sampling", "[bvh]") {
     const vec3 a{rng.uniform(trial, 0), rng.uniform(trial, 1), rng.uniform(trial, 2)};
     const vec3 b{rng.uniform(trial, 3), rng.uniform(trial, 4), rng.uniform(trial, 5)};
     const vec3 c{rng.uniform(trial, 6), rng.uniform(trial, 7), rng.uniform(trial, 8)};
-    const vec3 p = vec3{rng.uniform(trial, 9), rng.uniform(trial, 10), rng.uniform(trial, 11)} * 2.0 - vec3{0.5, 0.5, 0.5};
+    const vec3 p =
+        vec3{rng.uniform(trial, 9), rng.uniform(trial, 10), rng.uniform(trial, 11)} * 2.0 - vec3{0.5, 0.5, 0.5};
     const auto r = detail::closest_point_on_triangle(p, a, b, c);
     const vec3 rebuilt = a * r.bary.x + b * r.bary.y + c * r.bary.z;
     REQUIRE(norm(rebuilt - r.point) < 1e-9);
@@ -167,9 +169,9 @@ TEST_CASE("triangle-triangle test agrees with the edge-crossing oracle", "[bvh]"
 TEST_CASE("triangle-triangle test: coplanar, touching and shared-vertex cases", "[bvh]") {
   const std::array<vec3, 3> a{vec3{0, 0, 0}, vec3{1, 0, 0}, vec3{0, 1, 0}};
   REQUIRE(detail::triangles_intersect(a, {vec3{0.2, 0.2, 0}, vec3{2, 0.2, 0}, vec3{0.2, 2, 0}}));  // coplanar overlap
-  REQUIRE_FALSE(detail::triangles_intersect(a, {vec3{2, 2, 0}, vec3{3, 2, 0}, vec3{2, 3, 0}}));   // coplanar apart
-  REQUIRE(detail::triangles_intersect(a, {vec3{1, 0, 0}, vec3{2, 0, 0}, vec3{2, 1, 0}}));         // share a vertex
-  REQUIRE_FALSE(detail::triangles_intersect(a, {vec3{0, 0, 0.1}, vec3{1, 0, 0.1}, vec3{0, 1, 0.1}}));  // parallel
+  REQUIRE_FALSE(detail::triangles_intersect(a, {vec3{2, 2, 0}, vec3{3, 2, 0}, vec3{2, 3, 0}}));    // coplanar apart
+  REQUIRE(detail::triangles_intersect(a, {vec3{1, 0, 0}, vec3{2, 0, 0}, vec3{2, 1, 0}}));          // share a vertex
+  REQUIRE_FALSE(detail::triangles_intersect(a, {vec3{0, 0, 0.1}, vec3{1, 0, 0.1}, vec3{0, 1, 0.1}}));    // parallel
   REQUIRE(detail::triangles_intersect(a, {vec3{0.2, 0.2, -1}, vec3{0.2, 0.2, 1}, vec3{0.3, 0.25, 1}}));  // piercing
   REQUIRE_FALSE(detail::triangles_intersect(a, {vec3{0.8, 0.8, -1}, vec3{0.8, 0.8, 1}, vec3{0.9, 0.85, 1}}));
 }
@@ -186,7 +188,10 @@ TEST_CASE("BVH intersecting pairs equal brute force", "[bvh]") {
   REQUIRE(!expected.empty());
 
   std::set<std::pair<index_t, index_t>> self, self_expected;
-  ba.for_each_self_intersection([](index_t, index_t) { return false; }, [&](index_t f, index_t g) { self.insert({f, g}); });
+  ba.for_each_self_intersection([](index_t, index_t) { return false; },
+                                [&](index_t f, index_t g) {
+                                  self.insert({f, g});
+                                });
   for (index_t f = 0; f < a.num_faces(); ++f)
     for (index_t g = f + 1; g < a.num_faces(); ++g)
       if (detail::triangles_intersect(corners(a, f), corners(a, g))) self_expected.insert({f, g});

@@ -11,7 +11,8 @@
 using namespace tessera;
 
 TEST_CASE("constrained quilting never moves fixed frame vertices and keeps the tile border", "[constrained_quilt]") {
-  const auto ex = prepare_quilt_exemplar(*make_ring_exemplar({.size = 6.4, .spacing = 1.6, .ring_segments = 12, .tube_segments = 5, .seed = 8}));
+  const auto ex = prepare_quilt_exemplar(
+      *make_ring_exemplar({.size = 6.4, .spacing = 1.6, .ring_segments = 12, .tube_segments = 5, .seed = 8}));
   REQUIRE(ex.ok());
   const double w = 4.8;
   // frame: a ring cut by the west side x = 0 (the half inside the tile), its border vertices fixed
@@ -58,10 +59,13 @@ TEST_CASE("constrained quilting rejects bad frames and domains", "[constrained_q
   REQUIRE_FALSE(constrained_mesh_quilt(*ex, {0, 0, std::nan(""), 4}, {}).ok());
   texture_element outside;
   detail::add_torus(outside.mesh, {9, 9, 1}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, 0.5, 0.1, 8, 4);
-  REQUIRE(constrained_mesh_quilt(*ex, {0, 0, 4, 4}, quilt_frame{{outside}, {}}).error().message().find("outside the domain") !=
-          std::string::npos);
+  REQUIRE(constrained_mesh_quilt(*ex, {0, 0, 4, 4}, quilt_frame{{outside}, {}})
+              .error()
+              .message()
+              .find("outside the domain") != std::string::npos);
   texture_element wrong = outside;
   for (vec3& p : wrong.mesh.positions) p -= vec3{7, 7, 0};
   wrong.fixed.assign(3, 1);
-  REQUIRE(constrained_mesh_quilt(*ex, {0, 0, 4, 4}, quilt_frame{{wrong}, {}}).error().message().find("fixed flags") != std::string::npos);
+  REQUIRE(constrained_mesh_quilt(*ex, {0, 0, 4, 4}, quilt_frame{{wrong}, {}}).error().message().find("fixed flags") !=
+          std::string::npos);
 }

@@ -29,15 +29,16 @@ double eq8(const tri_mesh& m, const std::vector<double>& dist, index_t a, index_
 }
 // cost of a labelling: eq. 8 over dual edges between kept and removed faces, plus the terminal
 // links (bias) of free faces on the side they do not prefer; infinite for a violated terminal
-double cut_cost(const tri_mesh& m, const std::vector<double>& dist, const std::vector<signed char>& term, const std::vector<double>& bias,
-                const std::vector<unsigned char>& keep) {
+double cut_cost(const tri_mesh& m, const std::vector<double>& dist, const std::vector<signed char>& term,
+                const std::vector<double>& bias, const std::vector<unsigned char>& keep) {
   double c = 0;
   for (std::size_t f = 0; f < keep.size(); ++f) {
     if ((term[f] > 0 && !keep[f]) || (term[f] < 0 && keep[f])) return std::numeric_limits<double>::infinity();
     if (term[f] == 0) c += keep[f] ? std::max(0.0, -bias[f]) : std::max(0.0, bias[f]);
   }
   for (const mesh_edge& e : mesh_edges(m))
-    if (e.faces.size() == 2 && keep[std::size_t(e.faces[0][0])] != keep[std::size_t(e.faces[1][0])]) c += eq8(m, dist, e.v0, e.v1);
+    if (e.faces.size() == 2 && keep[std::size_t(e.faces[0][0])] != keep[std::size_t(e.faces[1][0])])
+      c += eq8(m, dist, e.v0, e.v1);
   return c;
 }
 detail::merge_params regions(xy_rect domain, double old_x1, double patch_x0) {
@@ -63,7 +64,8 @@ TEST_CASE("the eq. 8 dual-graph cut is a minimum cut (brute force over an icosah
     std::vector<double> bias(20, 0.0);
     term[0] = 1, term[std::size_t(12 + trial)] = -1, term[std::size_t(5 + trial)] = -1;
     for (std::size_t f = 0; f < 20; ++f)
-      if (term[f] == 0 && trial > 0) bias[f] = 0.05 * (f % 3 == 0 ? 1 : f % 3 == 1 ? -1 : 0);  // the weak old/new preference
+      if (term[f] == 0 && trial > 0)
+        bias[f] = 0.05 * (f % 3 == 0 ? 1 : f % 3 == 1 ? -1 : 0);  // the weak old/new preference
     const auto keep = detail::dual_graph_cut(m, dist, term, bias);
     REQUIRE(keep.has_value());
     const double got = cut_cost(m, dist, term, bias, *keep);
@@ -83,7 +85,8 @@ TEST_CASE("the eq. 8 dual-graph cut is a minimum cut (brute force over an icosah
   }
 }
 
-TEST_CASE("merge_pair joins two overlapping pebbles along one seam into one closed, manifold element", "[element_merge]") {
+TEST_CASE("merge_pair joins two overlapping pebbles along one seam into one closed, manifold element",
+          "[element_merge]") {
   // C_T: a pebble already in the output; C_in: the corresponding exemplar pebble, slightly offset.
   // Old region x < 0.1, patch P_T x > -0.2: the overlap is -0.2 < x < 0.1, the new region x >= 0.1.
   const texture_element ct = pebble({0, 0, 0.3}, 0.5, 0.3), cin = pebble({0.03, 0.02, 0.3}, 0.5, 0.3);
@@ -136,7 +139,9 @@ TEST_CASE("merge_pair joins two overlapping pebbles along one seam into one clos
   }
 }
 
-TEST_CASE("merge_pair against a tile border keeps the fixed border bit-identical, the paper's SINK rule conflicts there", "[element_merge]") {
+TEST_CASE(
+    "merge_pair against a tile border keeps the fixed border bit-identical, the paper's SINK rule conflicts there",
+    "[element_merge]") {
   // C_T: the half of a pebble inside a tile [0, 2]^2, cut by the west side x = 0 (a frame element:
   // border set {west}, the vertices of its triangles on the side fixed). C_in: a whole pebble
   // close to it, crossing the west side (an exemplar element placed by the quilting).
@@ -174,8 +179,10 @@ TEST_CASE("merge_pair against a tile border keeps the fixed border bit-identical
   std::set<std::array<double, 3>> fixed_after;
   for (std::size_t v = 0; v < merged->fixed.size(); ++v) {
     const vec3 q = merged->mesh.positions[v];
-    if (merged->fixed[v]) fixed_after.insert({q.x, q.y, q.z});
-    else REQUIRE(q.x > 0);
+    if (merged->fixed[v])
+      fixed_after.insert({q.x, q.y, q.z});
+    else
+      REQUIRE(q.x > 0);
   }
   REQUIRE(fixed_after == fixed_before);  // every fixed vertex of the border triangles, bit for bit
   REQUIRE(merged->border == border_bit(side_west));

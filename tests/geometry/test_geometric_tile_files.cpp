@@ -50,7 +50,8 @@ TEST_CASE("tile sets in the older layout (integer tile_size + tile_world_size) s
   REQUIRE(save_geometric_tile_set(dir, tiny_set()).ok());
   {
     std::ofstream json(dir + "/tiles.json", std::ios::trunc);
-    json << "{\"tile_size\": 3, \"horizontal_colors\": 1, \"vertical_colors\": 1, \"tile_world_size\": 2.5, \"edge_height\": 0.8,\n"
+    json << "{\"tile_size\": 3, \"horizontal_colors\": 1, \"vertical_colors\": 1, \"tile_world_size\": 2.5, "
+            "\"edge_height\": 0.8,\n"
             " \"tiles\": [{\"index\": 0, \"file\": \"tile_0.obj\", \"edges\": [0, 0, 0, 0]}]}\n";
   }
   const auto back = load_geometric_tile_set(dir);

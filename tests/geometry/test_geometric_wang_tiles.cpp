@@ -15,8 +15,8 @@ using namespace tessera;
 namespace {
 // a small, fast ring exemplar and its 2 x 2-colour tile set, shared by the tests of this file
 const quilt_exemplar& rings() {
-  static const quilt_exemplar ex =
-      *prepare_quilt_exemplar(*make_ring_exemplar({.size = 8, .spacing = 2.0, .ring_segments = 12, .tube_segments = 5, .seed = 3}));
+  static const quilt_exemplar ex = *prepare_quilt_exemplar(
+      *make_ring_exemplar({.size = 8, .spacing = 2.0, .ring_segments = 12, .tube_segments = 5, .seed = 3}));
   return ex;
 }
 const geometric_tile_set& ring_set() {
@@ -43,8 +43,9 @@ TEST_CASE("geometric Wang tiles: complete set, identical borders, continuous til
   REQUIRE(*tile_set_border_mismatch(set, 0.0) == 0);  // bit-identical, not just within 1e-6
   // merges happen in the interiors (rates: docs/geometry.md; in small tiles whose strips split many
   // elements, like this one, most merges fail, mostly at pairing the cut loops)
-  INFO("interior merges " << set.stats.merges_succeeded << " / " << set.stats.merges_attempted << "; frame merges " << set.frame_merged
-                          << " merged, " << set.frame_dropped << " dropped of " << set.frame_merges_attempted << " merge_pair calls");
+  INFO("interior merges " << set.stats.merges_succeeded << " / " << set.stats.merges_attempted << "; frame merges "
+                          << set.frame_merged << " merged, " << set.frame_dropped << " dropped of "
+                          << set.frame_merges_attempted << " merge_pair calls");
   REQUIRE(set.stats.merges_succeeded > 0);
   REQUIRE(set.stats.elements_merged > 0);
   REQUIRE(set.frame_merged <= set.frame_merges_attempted);
@@ -90,8 +91,8 @@ TEST_CASE("geometric Wang tiles: complete set, identical borders, continuous til
   for (std::size_t i = 0; i < v.size(); ++i) v[i] = int(rng.below(2, i, 1));
   for (index_t r = 0; r < rows; ++r)
     for (index_t col = 0; col < cols; ++col)
-      c.colors.push_back({h[std::size_t(r * cols + col)], v[std::size_t(r * (cols + 1) + col + 1)], h[std::size_t((r + 1) * cols + col)],
-                          v[std::size_t(r * (cols + 1) + col)]});
+      c.colors.push_back({h[std::size_t(r * cols + col)], v[std::size_t(r * (cols + 1) + col + 1)],
+                          h[std::size_t((r + 1) * cols + col)], v[std::size_t(r * (cols + 1) + col)]});
   const auto plane = tile_geometric_plane(set, c, cols, rows);
   REQUIRE(plane.ok());
   const double w = set.tile_size;
@@ -101,7 +102,11 @@ TEST_CASE("geometric Wang tiles: complete set, identical borders, continuous til
   REQUIRE(rep->intersecting_pairs == 0);
   // welding: vertex count = sum of tiles minus the shared border vertices
   index_t sum = 0;
-  for (index_t f = 0; f < cols * rows; ++f) sum += set.tiles[std::size_t(complete_tile_index({c.colors[std::size_t(f)][0], c.colors[std::size_t(f)][1], c.colors[std::size_t(f)][2], c.colors[std::size_t(f)][3]}, 2, 2))].num_vertices();
+  for (index_t f = 0; f < cols * rows; ++f)
+    sum += set.tiles[std::size_t(complete_tile_index({c.colors[std::size_t(f)][0], c.colors[std::size_t(f)][1],
+                                                      c.colors[std::size_t(f)][2], c.colors[std::size_t(f)][3]},
+                                                     2, 2))]
+               .num_vertices();
   REQUIRE(plane->num_vertices() < sum);
   // the same with a thread pool
   thread_pool_executor pool(3);
@@ -183,7 +188,8 @@ TEST_CASE("geometric Wang tiles reject bad input", "[geometric_wang]") {
 }
 
 TEST_CASE("geometric Wang tiles from an exemplar smaller than the tile quilt a larger source", "[geometric_wang]") {
-  const auto ex = prepare_quilt_exemplar(*make_ring_exemplar({.size = 4.2, .spacing = 1.6, .ring_segments = 12, .tube_segments = 5}));
+  const auto ex = prepare_quilt_exemplar(
+      *make_ring_exemplar({.size = 4.2, .spacing = 1.6, .ring_segments = 12, .tube_segments = 5}));
   geometric_wang_options o;
   o.horizontal_colors = o.vertical_colors = 1;
   o.tile_size = 4.8;
@@ -197,11 +203,12 @@ TEST_CASE("geometric Wang tiles from an exemplar smaller than the tile quilt a l
 TEST_CASE("tile_corner_crossings counts elements touching two adjacent sides", "[geometric_wang]") {
   const double w = 4;
   tri_mesh t;
-  t.add_face(t.add_vertex({w, 1, 0}), t.add_vertex({1, w, 0}), t.add_vertex({w - 0.5, w - 0.5, 1}));  // north and east: a corner
-  t.add_face(t.add_vertex({0, 2, 0}), t.add_vertex({w, 2.2, 0}), t.add_vertex({2, 2.5, 1}));          // west and east: a thread
-  t.add_face(t.add_vertex({1, 0, 0}), t.add_vertex({2, 0, 0}), t.add_vertex({1.5, 1, 1}));            // south only
+  t.add_face(t.add_vertex({w, 1, 0}), t.add_vertex({1, w, 0}),
+             t.add_vertex({w - 0.5, w - 0.5, 1}));  // north and east: a corner
+  t.add_face(t.add_vertex({0, 2, 0}), t.add_vertex({w, 2.2, 0}), t.add_vertex({2, 2.5, 1}));  // west and east: a thread
+  t.add_face(t.add_vertex({1, 0, 0}), t.add_vertex({2, 0, 0}), t.add_vertex({1.5, 1, 1}));    // south only
   REQUIRE(tile_corner_crossings(t, w) == 1);
-  t.add_face(t.add_vertex({0, 0.5, 0}), t.add_vertex({0.5, 0, 0}), t.add_vertex({0.5, 0.5, 1}));      // south and west
+  t.add_face(t.add_vertex({0, 0.5, 0}), t.add_vertex({0.5, 0, 0}), t.add_vertex({0.5, 0.5, 1}));  // south and west
   REQUIRE(tile_corner_crossings(t, w) == 2);
 }
 
@@ -216,7 +223,8 @@ TEST_CASE("geometric Wang tiles: every fixed vertex of the real frames comes out
   REQUIRE(plan.ok());
   index_t on_line = 0, off_line = 0;
   for (std::size_t t = 0; t < set.tiles.size(); ++t) {
-    const auto fr = detail::build_frame(plan->hs, plan->vs, set.edges[t], o.tile_size, plan->sp.half_height, rings().cell_size());
+    const auto fr =
+        detail::build_frame(plan->hs, plan->vs, set.edges[t], o.tile_size, plan->sp.half_height, rings().cell_size());
     std::set<std::array<double, 3>> out;
     for (const vec3& p : set.tiles[t].positions) out.insert({p.x, p.y, p.z});
     for (const auto& e : fr.frame.elements)
@@ -251,8 +259,8 @@ void check_set_and_plane(const geometric_tile_set& set, int nh, int nv) {
   for (std::size_t i = 0; i < v.size(); ++i) v[i] = int((i / 2) % std::size_t(nv));
   for (index_t r = 0; r < rows; ++r)
     for (index_t col = 0; col < cols; ++col)
-      c.colors.push_back({h[std::size_t(r * cols + col)], v[std::size_t(r * (cols + 1) + col + 1)], h[std::size_t((r + 1) * cols + col)],
-                          v[std::size_t(r * (cols + 1) + col)]});
+      c.colors.push_back({h[std::size_t(r * cols + col)], v[std::size_t(r * (cols + 1) + col + 1)],
+                          h[std::size_t((r + 1) * cols + col)], v[std::size_t(r * (cols + 1) + col)]});
   const auto plane = tile_geometric_plane(set, c, cols, rows);
   REQUIRE(plane.ok());
   const double w = set.tile_size;
@@ -280,11 +288,13 @@ void build_and_check(const tessera::tri_mesh& exemplar, int nh, int nv, double t
 }
 }  // namespace
 
-TEST_CASE("geometric Wang tiles from stones: set and plane are closed, manifold, disjoint, matching", "[geometric_wang]") {
+TEST_CASE("geometric Wang tiles from stones: set and plane are closed, manifold, disjoint, matching",
+          "[geometric_wang]") {
   build_and_check(*make_stone_exemplar({.size = 7, .subdivisions = 1, .seed = 5}), 2, 1, 3.6);
 }
 
-TEST_CASE("geometric Wang tiles from a weave: set and plane are closed, manifold, disjoint, matching", "[geometric_wang]") {
+TEST_CASE("geometric Wang tiles from a weave: set and plane are closed, manifold, disjoint, matching",
+          "[geometric_wang]") {
   build_and_check(*make_weave_exemplar({.size = 7, .segments_per_spacing = 4, .around = 4}), 1, 2, 3.0);
 }
 
@@ -296,15 +306,17 @@ TEST_CASE("geometric Wang tiles reject absurd tile counts and cell sizes before 
   REQUIRE(many.error().code() == status_code::size_overflow);
   REQUIRE(many.error().message().find("2^26") != std::string::npos);
   o.horizontal_colors = o.vertical_colors = 2;
-  const auto tiny = prepare_quilt_exemplar(*make_ring_exemplar({.size = 8, .spacing = 2.0, .ring_segments = 12, .tube_segments = 5, .seed = 3}),
-                                           {.cell_size = 1e-9});
+  const auto tiny = prepare_quilt_exemplar(
+      *make_ring_exemplar({.size = 8, .spacing = 2.0, .ring_segments = 12, .tube_segments = 5, .seed = 3}),
+      {.cell_size = 1e-9});
   REQUIRE(tiny.ok());
   const auto r = build_geometric_wang_tiles(*tiny, o);
   REQUIRE(r.error().code() == status_code::size_overflow);
   REQUIRE(r.error().message().find("cell_size 1e-09") != std::string::npos);
 }
 
-TEST_CASE("tile frames merge a free strip element into a border element it hits, the tile border fixed", "[geometric_wang]") {
+TEST_CASE("tile frames merge a free strip element into a border element it hits, the tile border fixed",
+          "[geometric_wang]") {
   // south strip: a border element, the half of a pebble cut by the south side y = 0 (its triangles
   // on the side fixed); west strip: a free pebble that reaches into it near the south-west corner
   const double w = 4, hh = 0.8;
@@ -343,7 +355,8 @@ TEST_CASE("tile frames merge a free strip element into a border element it hits,
   REQUIRE(m.box.max.y > 0.9);  // it reaches up into the free pebble's top
   std::set<std::array<double, 3>> fixed_before, fixed_after;
   for (std::size_t i = 0; i < border.fixed.size(); ++i)
-    if (border.fixed[i]) fixed_before.insert({border.mesh.positions[i].x, border.mesh.positions[i].y, border.mesh.positions[i].z});
+    if (border.fixed[i])
+      fixed_before.insert({border.mesh.positions[i].x, border.mesh.positions[i].y, border.mesh.positions[i].z});
   for (std::size_t i = 0; i < m.fixed.size(); ++i)
     if (m.fixed[i]) fixed_after.insert({m.mesh.positions[i].x, m.mesh.positions[i].y, m.mesh.positions[i].z});
   REQUIRE(fixed_after == fixed_before);

@@ -36,7 +36,8 @@ TEST_CASE("translation ICP recovers a small translation", "[icp]") {
     const vec3 p = m.positions[std::size_t(v)];
     if (p.x > 1 && p.x < 3 && p.y > 1 && p.y < 3) pts.push_back(p + t);
   }
-  const auto r = icp_translation(pts, bvh, {}, {.max_iterations = 500, .tolerance = 1e-6, .free_axes = {true, true, false}});
+  const auto r =
+      icp_translation(pts, bvh, {}, {.max_iterations = 500, .tolerance = 1e-6, .free_axes = {true, true, false}});
   REQUIRE(r.ok());
   INFO(r->iterations << " " << r->translation.x << " " << r->translation.y);
   REQUIRE(r->converged);

@@ -35,7 +35,8 @@ TEST_CASE("cotangent Laplacian: rows sum to zero, linear precision on a flat mes
   }
   const auto L = laplacian_matrix(m);
   Eigen::VectorXd f(m.num_vertices());
-  for (index_t v = 0; v < m.num_vertices(); ++v) f(v) = 2 * m.positions[std::size_t(v)].x - 3 * m.positions[std::size_t(v)].y;
+  for (index_t v = 0; v < m.num_vertices(); ++v)
+    f(v) = 2 * m.positions[std::size_t(v)].x - 3 * m.positions[std::size_t(v)].y;
   const Eigen::VectorXd lf = L * f;
   for (int y = 1; y < 6; ++y)
     for (int x = 1; x < 6; ++x) REQUIRE(std::abs(lf(y * 7 + x)) < 1e-12);

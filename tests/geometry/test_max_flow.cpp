@@ -20,7 +20,8 @@ struct problem {
 };
 double cut_value(const problem& p, const std::vector<bool>& in_s) {
   double c = 0;
-  for (int i = 0; i < p.n; ++i) c += in_s[static_cast<std::size_t>(i)] ? p.snk[static_cast<std::size_t>(i)] : p.src[static_cast<std::size_t>(i)];
+  for (int i = 0; i < p.n; ++i)
+    c += in_s[static_cast<std::size_t>(i)] ? p.snk[static_cast<std::size_t>(i)] : p.src[static_cast<std::size_t>(i)];
   for (const edge& e : p.edges) {
     const bool sa = in_s[static_cast<std::size_t>(e.a)], sb = in_s[static_cast<std::size_t>(e.b)];
     if (sa && !sb) c += e.ab;
@@ -44,7 +45,8 @@ problem random_problem(std::uint64_t seed, bool with_infinite) {
   for (int e = 0; e < m; ++e) {
     const auto a = static_cast<index_t>(rng.below(static_cast<std::uint64_t>(p.n), e, 7));
     const auto b = static_cast<index_t>(rng.below(static_cast<std::uint64_t>(p.n), e, 8));
-    double ab = std::floor(rng.uniform(e, 9) * 8), ba = rng.uniform(e, 10) < 0.5 ? 0.0 : std::floor(rng.uniform(e, 11) * 8);
+    double ab = std::floor(rng.uniform(e, 9) * 8),
+           ba = rng.uniform(e, 10) < 0.5 ? 0.0 : std::floor(rng.uniform(e, 11) * 8);
     if (with_infinite && rng.uniform(e, 12) < 0.1) ab = inf;
     p.edges.push_back({a, b, ab, ba});
   }
@@ -57,7 +59,8 @@ TEST_CASE("max flow equals the brute-force minimum cut on small random graphs", 
     const bool with_inf = seed % 3 == 0;
     const problem p = random_problem(seed, with_inf);
     max_flow_graph g(p.n);
-    for (int i = 0; i < p.n; ++i) g.add_terminal(i, p.src[static_cast<std::size_t>(i)], p.snk[static_cast<std::size_t>(i)]);
+    for (int i = 0; i < p.n; ++i)
+      g.add_terminal(i, p.src[static_cast<std::size_t>(i)], p.snk[static_cast<std::size_t>(i)]);
     for (const edge& e : p.edges) g.add_edge(e.a, e.b, e.ab, e.ba);
     const auto flow = g.solve();
     REQUIRE(flow.ok());

@@ -11,7 +11,8 @@ using namespace tessera;
 namespace {
 double volume(const tri_mesh& m) {
   double v = 0;
-  for (const auto& f : m.faces) v += dot(m.positions[std::size_t(f[0])], cross(m.positions[std::size_t(f[1])], m.positions[std::size_t(f[2])])) / 6;
+  for (const auto& f : m.faces)
+    v += dot(m.positions[std::size_t(f[0])], cross(m.positions[std::size_t(f[1])], m.positions[std::size_t(f[2])])) / 6;
   return v;
 }
 double area(const tri_mesh& m) {
@@ -146,7 +147,8 @@ TEST_CASE("ear clipping triangulates a non-convex polygon", "[elements]") {
   REQUIRE(tris.size() == 3);
   double a = 0;
   for (const auto& t : tris) {
-    const double s = cross(poly[std::size_t(t[1])] - poly[std::size_t(t[0])], poly[std::size_t(t[2])] - poly[std::size_t(t[0])]) / 2;
+    const double s =
+        cross(poly[std::size_t(t[1])] - poly[std::size_t(t[0])], poly[std::size_t(t[2])] - poly[std::size_t(t[0])]) / 2;
     REQUIRE(s > 0);  // same winding as the polygon
     a += s;
   }

@@ -23,7 +23,9 @@ void require_closed_oriented_disjoint(const tri_mesh& m) {
   for (const auto& el : *elems) {
     double vol = 0;
     for (const auto& f : el.mesh.faces)
-      vol += dot(el.mesh.positions[std::size_t(f[0])], cross(el.mesh.positions[std::size_t(f[1])], el.mesh.positions[std::size_t(f[2])])) / 6;
+      vol += dot(el.mesh.positions[std::size_t(f[0])],
+                 cross(el.mesh.positions[std::size_t(f[1])], el.mesh.positions[std::size_t(f[2])])) /
+             6;
     REQUIRE(vol > 0);
     REQUIRE(el.box.min.z >= 0);
   }
@@ -32,9 +34,7 @@ void require_closed_oriented_disjoint(const tri_mesh& m) {
   const triangle_bvh bvh(m);
   index_t bad = 0;
   bvh.for_each_self_intersection(
-      [&](index_t f, index_t g) {
-        return comp.face_component[std::size_t(f)] == comp.face_component[std::size_t(g)];
-      },
+      [&](index_t f, index_t g) { return comp.face_component[std::size_t(f)] == comp.face_component[std::size_t(g)]; },
       [&](index_t, index_t) { ++bad; });
   REQUIRE(bad == 0);
 }
@@ -55,7 +55,8 @@ TEST_CASE("ring exemplar: closed, oriented, disjoint tori in the paper's vertex 
 }
 
 TEST_CASE("ring exemplar: chain mail interlocks without intersecting", "[exemplars]") {
-  const auto m = make_ring_exemplar({.size = 4, .minor_radius = 0.08, .ring_segments = 20, .tube_segments = 6, .chain_mail = true});
+  const auto m = make_ring_exemplar(
+      {.size = 4, .minor_radius = 0.08, .ring_segments = 20, .tube_segments = 6, .chain_mail = true});
   REQUIRE(m.ok());
   require_closed_oriented_disjoint(*m);
   // interlocked: count how often the tube centre circle of one ring pierces the disk of another

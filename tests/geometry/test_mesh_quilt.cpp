@@ -117,7 +117,8 @@ TEST_CASE("the normal term of eq. 1 (lambda) changes the chosen translation", "[
   const double cell = 0.5;
   auto ring = [](tri_mesh& m, vec3 c, double tilt_deg, double tube) {
     const double a = tilt_deg * 3.14159265358979323846 / 180;
-    detail::add_torus(m, c, {std::cos(a), 0, std::sin(a)}, {0, 1, 0}, {-std::sin(a), 0, std::cos(a)}, 0.5, tube, 32, 12);
+    detail::add_torus(m, c, {std::cos(a), 0, std::sin(a)}, {0, 1, 0}, {-std::sin(a), 0, std::cos(a)}, 0.5, tube, 32,
+                      12);
   };
   tri_mesh exm;
   ring(exm, {1.5, 1.5, 0.2}, 0, 0.15);   // A
@@ -145,7 +146,8 @@ TEST_CASE("the normal term of eq. 1 (lambda) changes the chosen translation", "[
       double best = (1 + cell) * (1 + lambda);
       for (index_t f = 0; f < ex->mesh().num_faces(); ++f) {
         const auto& tri = ex->mesh().faces[std::size_t(f)];
-        const auto h = detail::closest_point_on_triangle(x, ex->mesh().positions[std::size_t(tri[0])], ex->mesh().positions[std::size_t(tri[1])],
+        const auto h = detail::closest_point_on_triangle(x, ex->mesh().positions[std::size_t(tri[0])],
+                                                         ex->mesh().positions[std::size_t(tri[1])],
                                                          ex->mesh().positions[std::size_t(tri[2])]);
         const double d = norm(h.point - x);
         if (d > cell) continue;
@@ -187,9 +189,9 @@ TEST_CASE("mesh quilting merges elements, and most merges succeed", "[mesh_quilt
   REQUIRE(s.elements_added > 0);
   REQUIRE(s.icp_iterations > 0);
   // the failure counters add up, and at least half the merges succeed
-  REQUIRE(s.merges_attempted == s.merges_succeeded + s.merge_fail_correspondence + s.merge_fail_deform + s.merge_fail_cut +
-                                    s.merge_fail_loops + s.merge_fail_check);
-  INFO("merges " << s.merges_succeeded << " / " << s.merges_attempted << ", elements merged " << s.elements_merged << ", dropped "
-                 << s.elements_dropped);
+  REQUIRE(s.merges_attempted == s.merges_succeeded + s.merge_fail_correspondence + s.merge_fail_deform +
+                                    s.merge_fail_cut + s.merge_fail_loops + s.merge_fail_check);
+  INFO("merges " << s.merges_succeeded << " / " << s.merges_attempted << ", elements merged " << s.elements_merged
+                 << ", dropped " << s.elements_dropped);
   REQUIRE(2 * s.merges_succeeded >= s.merges_attempted);
 }

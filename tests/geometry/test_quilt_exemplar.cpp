@@ -34,6 +34,8 @@ TEST_CASE("prepared exemplar rejects bad exemplars", "[quilt_exemplar]") {
   flat.add_face(0, 1, 2), flat.add_face(0, 2, 1), flat.add_face(0, 1, 3), flat.add_face(1, 2, 3);
   REQUIRE_FALSE(prepare_quilt_exemplar(flat, {}).ok());
   REQUIRE_FALSE(prepare_quilt_exemplar(*make_ring_exemplar({.size = 3}), {.cell_size = -1}).ok());
-  REQUIRE(prepare_quilt_exemplar(*make_ring_exemplar({.size = 3}), {.cell_size = 5}).error().message().find("two grid cells") !=
-          std::string::npos);
+  REQUIRE(prepare_quilt_exemplar(*make_ring_exemplar({.size = 3}), {.cell_size = 5})
+              .error()
+              .message()
+              .find("two grid cells") != std::string::npos);
 }

@@ -20,7 +20,9 @@ struct user_rgb16 {
   index_t width() const { return w; }
   index_t height() const { return h; }
   std::array<std::uint16_t, 3> read(index_t x, index_t y) const { return px[static_cast<std::size_t>(y * w + x)]; }
-  void write(index_t x, index_t y, const std::array<std::uint16_t, 3>& p) { px[static_cast<std::size_t>(y * w + x)] = p; }
+  void write(index_t x, index_t y, const std::array<std::uint16_t, 3>& p) {
+    px[static_cast<std::size_t>(y * w + x)] = p;
+  }
 };
 
 /// A user image of any claimed size holding no pixels (reads are constant, writes ignored): lets
@@ -49,7 +51,8 @@ double mean_gradient(const tessera::image_buffer<T, C>& img) {
         const index_t x2 = x + (d == 0), y2 = y + (d == 1);
         if (x2 >= img.width() || y2 >= img.height()) continue;
         for (int c = 0; c < C; ++c)
-          s += std::abs(tessera::channel_to_unit(img.pixel_ptr(x, y)[c]) - tessera::channel_to_unit(img.pixel_ptr(x2, y2)[c]));
+          s += std::abs(tessera::channel_to_unit(img.pixel_ptr(x, y)[c]) -
+                        tessera::channel_to_unit(img.pixel_ptr(x2, y2)[c]));
         n += C;
       }
   return s / static_cast<double>(n);

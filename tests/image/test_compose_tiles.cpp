@@ -30,7 +30,9 @@ tessera::wang_tile_set<std::uint16_t, 3> labelled_set(int nh, int nv, index_t ts
       for (index_t x = 0; x < ts; ++x) img.write(x, y, {std::uint16_t(t), std::uint16_t(x), std::uint16_t(y)});
     tiles.push_back(img);
   }
-  return tessera::wang_tile_set<std::uint16_t, 3>::create(tessera::tile_set_edges::create(nh, nv, edges).value(), ts, tiles).value();
+  return tessera::wang_tile_set<std::uint16_t, 3>::create(tessera::tile_set_edges::create(nh, nv, edges).value(), ts,
+                                                          tiles)
+      .value();
 }
 
 template <class Coloring, class Image>
@@ -42,8 +44,10 @@ void check_composition(const tessera::wang_tile_set<std::uint16_t, 3>& set, cons
       const index_t px = o.x + x, py = o.y + y, c = tessera::floor_div(px, ts), r = tessera::floor_div(py, ts);
       const index_t t = tessera::tile_at_cell(set.edges(), tessera::cell_edges(coloring, c, r), o.seed, c, r);
       REQUIRE(set.edges()[t] == tessera::cell_edges(coloring, c, r));
-      const auto p = tessera::convert_pixel<std::array<std::uint16_t, 3>>(tessera::image_traits<Image>::read(out, x, y));
-      REQUIRE(p == std::array<std::uint16_t, 3>{std::uint16_t(t), std::uint16_t(px - c * ts), std::uint16_t(py - r * ts)});
+      const auto p =
+          tessera::convert_pixel<std::array<std::uint16_t, 3>>(tessera::image_traits<Image>::read(out, x, y));
+      REQUIRE(p ==
+              std::array<std::uint16_t, 3>{std::uint16_t(t), std::uint16_t(px - c * ts), std::uint16_t(py - r * ts)});
     }
 }
 }  // namespace
@@ -58,7 +62,8 @@ TEST_CASE("compose tiles: every pixel is the right tile's pixel (grid and plane 
   REQUIRE(tessera::compose_tiles(set, *scan, window, inside).ok());
   check_composition(set, *scan, window, inside);
   auto plane = tessera::hash_coloring::create(2, 3, 77);
-  for (const tessera::compose_options o : {tessera::compose_options{.x = -45, .y = -3}, tessera::compose_options{.x = 1'000'003, .y = -77}}) {
+  for (const tessera::compose_options o :
+       {tessera::compose_options{.x = -45, .y = -3}, tessera::compose_options{.x = 1'000'003, .y = -77}}) {
     tessera::image_buffer<std::uint16_t, 3> out(31, 29), pooled(31, 29);
     REQUIRE(tessera::compose_tiles(set, *plane, out, o).ok());
     check_composition(set, *plane, out, o);
@@ -92,14 +97,18 @@ TEST_CASE("compose tiles: variants are drawn per cell, outlines mark tile border
     for (index_t x = 0; x < 80; x += 4) ++used[out.read(x, y)[0]];
   REQUIRE(used.size() == 3u);
   tessera::image_buffer<std::uint8_t, 3> lines(20, 20);
-  const auto grey = tessera::build_wang_tiles(quilt_test::exemplar(tessera::exemplar_kind::sand, 32), {.tile_size = 8, .horizontal_colors = 1, .vertical_colors = 1});
+  const auto grey = tessera::build_wang_tiles(quilt_test::exemplar(tessera::exemplar_kind::sand, 32),
+                                              {.tile_size = 8, .horizontal_colors = 1, .vertical_colors = 1});
   REQUIRE(grey.ok());
-  REQUIRE(tessera::compose_tiles(*grey, *plane, lines, {.x = 3, .y = 2, .outline = true, .outline_color = {0, 0, 1, 1}}).ok());
+  REQUIRE(tessera::compose_tiles(*grey, *plane, lines, {.x = 3, .y = 2, .outline = true, .outline_color = {0, 0, 1, 1}})
+              .ok());
   for (index_t y = 0; y < 20; ++y)
     for (index_t x = 0; x < 20; ++x) {
       const bool border = (x + 3) % 8 == 0 || (y + 2) % 8 == 0;
-      if (border) REQUIRE(lines.read(x, y) == std::array<std::uint8_t, 3>{0, 0, 255});
-      else REQUIRE(lines.read(x, y) == grey->tile(0).read((x + 3) % 8, (y + 2) % 8));
+      if (border)
+        REQUIRE(lines.read(x, y) == std::array<std::uint8_t, 3>{0, 0, 255});
+      else
+        REQUIRE(lines.read(x, y) == grey->tile(0).read((x + 3) % 8, (y + 2) % 8));
     }
 }
 
@@ -154,7 +163,8 @@ TEST_CASE("compose tiles: bad input", "[wang]") {
   };
   static_assert(tessera::GridTileColoring<lying_grid>);
   tessera::image_buffer<std::uint16_t, 3> big(40, 40);
-  for (const lying_grid g : {lying_grid{&stored, 8, 4}, lying_grid{&stored, 4, 8}, lying_grid{&stored, 0, 16}, lying_grid{&stored, -4, -4}}) {
+  for (const lying_grid g : {lying_grid{&stored, 8, 4}, lying_grid{&stored, 4, 8}, lying_grid{&stored, 0, 16},
+                             lying_grid{&stored, -4, -4}}) {
     auto s = tessera::compose_tiles(set, g, big);
     REQUIRE(s.code() == tessera::status_code::invalid_argument);
     REQUIRE_THAT(s.message(), Catch::Contains("does not match num_faces() = 16"));

@@ -36,14 +36,15 @@ tessera::image_buffer<std::uint8_t, 1> make_mask(int kind, index_t w, index_t h)
 }
 }  // namespace
 
-TEMPLATE_TEST_CASE("constrained quilt: pixels outside the mask are untouched bit for bit, the hole is filled", "[quilt]",
-                   std::uint8_t, std::uint16_t, float) {
+TEMPLATE_TEST_CASE("constrained quilt: pixels outside the mask are untouched bit for bit, the hole is filled",
+                   "[quilt]", std::uint8_t, std::uint16_t, float) {
   const auto ex = quilt_test::exemplar<TestType, 4>(tessera::exemplar_kind::grass, 48, 7);
   const auto base = quilt_test::exemplar<TestType, 4>(tessera::exemplar_kind::grass, 64, 8);
   for (int kind = 0; kind < 4; ++kind) {
     const auto mask = make_mask(kind, 64, 56);
     tessera::image_buffer<TestType, 4> image(64, 56), out(64, 56);
-    const auto sentinel = tessera::convert_pixel<tessera::pixel<TestType, 4>>(tessera::pixel<float, 4>{1.0f, 0.0f, 1.0f, 0.5f});
+    const auto sentinel =
+        tessera::convert_pixel<tessera::pixel<TestType, 4>>(tessera::pixel<float, 4>{1.0f, 0.0f, 1.0f, 0.5f});
     for (index_t y = 0; y < 56; ++y)
       for (index_t x = 0; x < 64; ++x) image.write(x, y, mask.read(x, y)[0] ? sentinel : base.read(x, y));
     REQUIRE(tessera::constrained_quilt(ex, image, mask, out, {.patch_size = 12, .overlap = 3, .seed = 2}).ok());
@@ -130,7 +131,8 @@ TEST_CASE("constrained quilt: bad input", "[quilt]") {
   REQUIRE_THAT(s.message(), Catch::Contains("mask is 40 x 39") && Catch::Contains("image is 40 x 40"));
   REQUIRE(tessera::constrained_quilt(ex, image, mask, wrong_out).code() == tessera::status_code::invalid_argument);
   REQUIRE(tessera::constrained_quilt(image, wrong, out).code() == tessera::status_code::invalid_argument);
-  REQUIRE(tessera::constrained_quilt(ex, image, mask, out, {.patch_size = 33}).code() == tessera::status_code::invalid_argument);
+  REQUIRE(tessera::constrained_quilt(ex, image, mask, out, {.patch_size = 33}).code() ==
+          tessera::status_code::invalid_argument);
   const auto tiny = quilt_test::exemplar(tessera::exemplar_kind::sand, 12);
   tessera::image_buffer<std::uint8_t, 1> tiny_mask(12, 12);
   tessera::image_buffer<std::uint8_t, 3> tiny_out(12, 12);
@@ -145,11 +147,14 @@ TEST_CASE("constrained quilt: bad input", "[quilt]") {
   auto fimg = quilt_test::exemplar<float, 3>(tessera::exemplar_kind::sand, 40);
   tessera::image_buffer<float, 3> fout(40, 40);
   fimg.write(39, 0, {0.5f, 0.5f, std::numeric_limits<float>::infinity()});
-  REQUIRE_THAT(tessera::constrained_quilt(fex, fimg, mask, fout).message(), Catch::Contains("image: pixel (39, 0) channel 2 is inf"));
-  REQUIRE_THAT(tessera::constrained_quilt(fimg, mask, fout).message(), Catch::Contains("image: pixel (39, 0) channel 2 is inf"));
+  REQUIRE_THAT(tessera::constrained_quilt(fex, fimg, mask, fout).message(),
+               Catch::Contains("image: pixel (39, 0) channel 2 is inf"));
+  REQUIRE_THAT(tessera::constrained_quilt(fimg, mask, fout).message(),
+               Catch::Contains("image: pixel (39, 0) channel 2 is inf"));
   fimg.write(39, 0, {0.5f, 0.5f, 0.5f});
   fex.write(0, 31, {std::numeric_limits<float>::quiet_NaN(), 0.5f, 0.5f});
-  REQUIRE_THAT(tessera::constrained_quilt(fex, fimg, mask, fout).message(), Catch::Contains("exemplar: pixel (0, 31) channel 0 is nan"));
+  REQUIRE_THAT(tessera::constrained_quilt(fex, fimg, mask, fout).message(),
+               Catch::Contains("exemplar: pixel (0, 31) channel 0 is nan"));
   const quilt_test::huge_rgb8 huge{1 << 15, (1 << 13) + 1};
   quilt_test::huge_rgb8 huge_out = huge;
   auto big = tessera::constrained_quilt(ex, huge, huge, huge_out);
@@ -157,7 +162,8 @@ TEST_CASE("constrained quilt: bad input", "[quilt]") {
   REQUIRE_THAT(big.message(), Catch::Contains("image: 32768 x 8193 pixels exceed max_quilt_pixels"));
   const quilt_test::huge_rgb8 self{1 << 13, (1 << 13) + 1};  // inpainting from itself: the exemplar cap applies
   quilt_test::huge_rgb8 self_out = self;
-  REQUIRE_THAT(tessera::constrained_quilt(self, self, self_out).message(), Catch::Contains("exceed max_quilt_exemplar_pixels"));
+  REQUIRE_THAT(tessera::constrained_quilt(self, self, self_out).message(),
+               Catch::Contains("exceed max_quilt_exemplar_pixels"));
   // an empty mask copies the image
   tessera::image_buffer<std::uint8_t, 1> nothing(40, 40);
   REQUIRE(tessera::constrained_quilt(ex, image, nothing, out).ok());

@@ -105,7 +105,8 @@ TEST_CASE("neighborhood_energy: pixel types and channel conversion", "[metrics]"
   const auto out8 = exemplar(tessera::exemplar_kind::sand, 24, 9);
   user_image out16{24, 24, {}};
   for (index_t y = 0; y < 24; ++y)
-    for (index_t x = 0; x < 24; ++x) out16.px.push_back(tessera::convert_pixel<std::array<std::uint16_t, 3>>(out8.read(x, y)));
+    for (index_t x = 0; x < 24; ++x)
+      out16.px.push_back(tessera::convert_pixel<std::array<std::uint16_t, 3>>(out8.read(x, y)));
   const double e8 = tessera::neighborhood_energy(out8, ex8).value();
   CHECK(tessera::neighborhood_energy(out16, exf).value() == Approx(e8).epsilon(1e-5));
   CHECK(tessera::neighborhood_energy(out8.cview(), exf).value() == Approx(e8).epsilon(1e-5));
@@ -198,7 +199,8 @@ TEST_CASE("histogram_distance: identities and bounds", "[metrics]") {
   // the same image in another pixel type and twice as large (2x2 replicated) has the same histogram
   tessera::image_buffer<float, 3> big(64, 64);
   for (index_t y = 0; y < 64; ++y)
-    for (index_t x = 0; x < 64; ++x) big.write(x, y, tessera::convert_pixel<tessera::pixel<float, 3>>(a.read(x / 2, y / 2)));
+    for (index_t x = 0; x < 64; ++x)
+      big.write(x, y, tessera::convert_pixel<tessera::pixel<float, 3>>(a.read(x / 2, y / 2)));
   CHECK(tessera::histogram_distance(a, big, 16).value() == Approx(0).margin(1e-12));
   tessera::image_buffer<std::uint8_t, 1> black(4, 4, {0}), white(5, 3, {255});
   CHECK(tessera::histogram_distance(black, white).value() == Approx(2.0));

@@ -63,14 +63,18 @@ TEST_CASE("patch_model: exact compatible sets equal a brute-force top-k", "[patc
   SECTION("uint8 RGBA view") {
     auto ex = exemplar<std::uint8_t, 4>(tessera::exemplar_kind::grass, 40);
     const tessera::image_view<const std::uint8_t, 4> view = ex.cview();
-    const auto m = tessera::build_patch_model(view, {.patch_width = 12, .patch_height = 10, .overlap = 3, .exact_sets = true}).value();
+    const auto m =
+        tessera::build_patch_model(view, {.patch_width = 12, .patch_height = 10, .overlap = 3, .exact_sets = true})
+            .value();
     CHECK(m.num_patches() == (40 - 15 + 1) * (40 - 13 + 1));
     check_exact_sets(m, 7);
   }
   SECTION("float RGB buffer, other PCA sizes") {
     const auto ex = exemplar<float, 3>(tessera::exemplar_kind::cells, 36);
     const auto m =
-        tessera::build_patch_model(ex, {.patch_width = 10, .patch_height = 10, .overlap = 4, .candidates = 5, .exact_sets = true, .pca_dims = 3})
+        tessera::build_patch_model(
+            ex,
+            {.patch_width = 10, .patch_height = 10, .overlap = 4, .candidates = 5, .exact_sets = true, .pca_dims = 3})
             .value();
     CHECK(m.candidates() == 5);
     check_exact_sets(m, 5);
@@ -79,16 +83,21 @@ TEST_CASE("patch_model: exact compatible sets equal a brute-force top-k", "[patc
     const auto ex8 = exemplar(tessera::exemplar_kind::bricks, 32);
     user_image u{32, 32, {}};
     for (index_t y = 0; y < 32; ++y)
-      for (index_t x = 0; x < 32; ++x) u.px.push_back(tessera::convert_pixel<std::array<std::uint16_t, 3>>(ex8.read(x, y)));
-    const auto m = tessera::build_patch_model(u, {.patch_width = 8, .patch_height = 8, .overlap = 2, .exact_sets = true}).value();
+      for (index_t x = 0; x < 32; ++x)
+        u.px.push_back(tessera::convert_pixel<std::array<std::uint16_t, 3>>(ex8.read(x, y)));
+    const auto m =
+        tessera::build_patch_model(u, {.patch_width = 8, .patch_height = 8, .overlap = 2, .exact_sets = true}).value();
     check_exact_sets(m, 3);
   }
   SECTION("ties: a tiled exemplar has many identical strips") {
     const auto tile = exemplar(tessera::exemplar_kind::rock, 8);
     tessera::image_buffer<std::uint8_t, 1> tiled(32, 32);
     for (index_t y = 0; y < 32; ++y)
-      for (index_t x = 0; x < 32; ++x) tiled.write(x, y, tessera::convert_pixel<tessera::pixel<std::uint8_t, 1>>(tile.read(x % 8, y % 8)));
-    const auto m = tessera::build_patch_model(tiled, {.patch_width = 8, .patch_height = 8, .overlap = 2, .exact_sets = true}).value();
+      for (index_t x = 0; x < 32; ++x)
+        tiled.write(x, y, tessera::convert_pixel<tessera::pixel<std::uint8_t, 1>>(tile.read(x % 8, y % 8)));
+    const auto m =
+        tessera::build_patch_model(tiled, {.patch_width = 8, .patch_height = 8, .overlap = 2, .exact_sets = true})
+            .value();
     check_exact_sets(m, 11);
     CHECK(m.compatible_errors(0, patch_side::east)[7] == 0.0f);  // at least 8 perfect continuations
   }
@@ -118,7 +127,8 @@ TEST_CASE("patch_model: approximate sets (kd-tree + coherence) are close to exac
         }
         CHECK(m.overlap_error(a, got[0], side) <= 1.2 * expected[0].first);
       }
-    INFO(tessera::to_string(kind) << ": recall " << double(found) / double(total) << ", error ratio " << exact_sum / approx_sum);
+    INFO(tessera::to_string(kind) << ": recall " << double(found) / double(total) << ", error ratio "
+                                  << exact_sum / approx_sum);
     CHECK(approx_sum <= 1.1 * exact_sum + 1);
     CHECK(double(found) / double(total) > 0.7);
   }
@@ -150,7 +160,8 @@ TEST_CASE("patch_model: patches grouped by phase", "[patch_model]") {
 
 TEST_CASE("patch_model: precomputed seams are minimum-error cuts", "[patch_model]") {
   const auto ex = exemplar(tessera::exemplar_kind::bricks, 40);
-  const auto m = tessera::build_patch_model(ex, {.patch_width = 12, .patch_height = 10, .overlap = 4, .seams = true}).value();
+  const auto m =
+      tessera::build_patch_model(ex, {.patch_width = 12, .patch_height = 10, .overlap = 4, .seams = true}).value();
   REQUIRE(m.has_seams());
   CHECK(m.seam_length(patch_side::east) == 14);
   CHECK(m.seam_length(patch_side::south) == 16);
@@ -184,7 +195,8 @@ TEST_CASE("patch_model: precomputed seams are minimum-error cuts", "[patch_model
         for (std::size_t t = 1; t < seam.size(); ++t) {
           std::vector<double> next(4);
           for (index_t c = 0; c < 4; ++c)
-            next[c] = err(static_cast<index_t>(t), c) + std::min({best[c], best[std::max<index_t>(c - 1, 0)], best[std::min<index_t>(c + 1, 3)]});
+            next[c] = err(static_cast<index_t>(t), c) +
+                      std::min({best[c], best[std::max<index_t>(c - 1, 0)], best[std::min<index_t>(c + 1, 3)]});
           best = next;
         }
         CHECK(cost == *std::min_element(best.begin(), best.end()));
@@ -249,7 +261,8 @@ TEST_CASE("patch_model: bad input and cancellation", "[patch_model]") {
   // k larger than the number of patches is clamped
   const auto small = tessera::build_patch_model(ex, {.patch_width = 12, .patch_height = 12, .overlap = 4}).value();
   CHECK(small.num_patches() == 17 * 17);
-  const auto two = tessera::build_patch_model(ex, {.patch_width = 16, .patch_height = 17, .overlap = 15, .candidates = 8});
+  const auto two =
+      tessera::build_patch_model(ex, {.patch_width = 16, .patch_height = 17, .overlap = 15, .candidates = 8});
   REQUIRE(two.ok());
   CHECK(two->num_patches() == 2);
   CHECK(two->candidates() == 2);
@@ -291,7 +304,8 @@ TEST_CASE("patch_model: exact overlap errors on rows longer than 65536 channel v
 
 TEST_CASE("patch_model: elongated exemplars", "[patch_model]") {
   // automatic size on a 256 x 12 strip (the periodicity analysis keeps 8 pixels across)
-  const auto strip = tessera::make_exemplar<std::uint8_t, 3>(tessera::exemplar_kind::bricks, {.width = 256, .height = 12}).value();
+  const auto strip =
+      tessera::make_exemplar<std::uint8_t, 3>(tessera::exemplar_kind::bricks, {.width = 256, .height = 12}).value();
   const auto m = tessera::build_patch_model(strip).value();
   CHECK(m.patch_height() >= 3);
   CHECK(m.patch_height() <= 6);

@@ -33,7 +33,8 @@ TEST_CASE("analyze_patch_size: candidates span a quarter to a half of the exempl
     CHECK(a.sizes[i].height == sides[i / 9]);
   }
   // the 1/4-1/2 range follows the smaller exemplar side on both axes
-  const auto wide = tessera::make_exemplar<std::uint8_t, 3>(tessera::exemplar_kind::rock, {.width = 96, .height = 40}).value();
+  const auto wide =
+      tessera::make_exemplar<std::uint8_t, 3>(tessera::exemplar_kind::rock, {.width = 96, .height = 40}).value();
   const auto w = tessera::analyze_patch_size(wide, {.candidates_per_axis = 3}).value();
   REQUIRE(w.sizes.size() == 9);
   CHECK(w.sizes.front().width == 10);
@@ -60,8 +61,10 @@ namespace {
 
 // The documented ranking: paper measures passed, then alignment level (steps of 0.05, none below
 // min_alignment), then the smaller area, then the first shape.
-std::tuple<int, double, index_t> rank_key(const tessera::patch_size_measure& m, const tessera::patch_size_options& o = {}) {
-  const int passed = (m.containment >= o.containment_fraction ? 1 : 0) + (m.periodicity_hits >= o.periodicity_hits ? 1 : 0);
+std::tuple<int, double, index_t> rank_key(const tessera::patch_size_measure& m,
+                                          const tessera::patch_size_options& o = {}) {
+  const int passed =
+      (m.containment >= o.containment_fraction ? 1 : 0) + (m.periodicity_hits >= o.periodicity_hits ? 1 : 0);
   const double level = m.alignment >= o.min_alignment ? std::floor(m.alignment * 20.0) : 0.0;
   return {passed, level, -m.width * m.height};
 }
@@ -74,8 +77,10 @@ void check_choice(const tessera::patch_size_analysis& a, const tessera::patch_si
   for (auto it = a.sizes.begin(); it != a.sizes.end(); ++it) {
     INFO(it->width << " x " << it->height << " against the chosen " << a.patch_width << " x " << a.patch_height);
     CHECK(it->qualified == (it->containment >= o.containment_fraction && it->periodicity_hits >= o.periodicity_hits));
-    if (it < chosen) CHECK(rank_key(*it, o) < rank_key(*chosen, o));
-    else CHECK(!(rank_key(*chosen, o) < rank_key(*it, o)));
+    if (it < chosen)
+      CHECK(rank_key(*it, o) < rank_key(*chosen, o));
+    else
+      CHECK(!(rank_key(*chosen, o) < rank_key(*it, o)));
   }
 }
 
@@ -102,7 +107,8 @@ TEST_CASE("analyze_patch_size: the paper's two measures rank first, alignment br
   });
   CHECK(chosen.qualified);
   CHECK(chosen.alignment > 0.8);
-  CHECK(std::any_of(bricks.sizes.begin(), bricks.sizes.end(), [](const auto& m) { return !m.qualified && m.alignment > 0.8; }));
+  CHECK(std::any_of(bricks.sizes.begin(), bricks.sizes.end(),
+                    [](const auto& m) { return !m.qualified && m.alignment > 0.8; }));
   // a looser periodicity rule admits more shapes and ranks by it
   const tessera::patch_size_options loose{.periodicity_hits = 0.5};
   check_choice(tessera::analyze_patch_size(exemplar(tessera::exemplar_kind::grass, 48), loose).value(), loose);
@@ -132,7 +138,8 @@ TEST_CASE("analyze_patch_size: periodic exemplars align with a multiple of their
   CHECK(a.patch_width % 8 == 0);
   CHECK(a.patch_height % 8 == 0);
   // a stochastic exemplar has no such alignment
-  const auto sand = tessera::analyze_patch_size(exemplar(tessera::exemplar_kind::sand, 64), {.rectangular = false}).value();
+  const auto sand =
+      tessera::analyze_patch_size(exemplar(tessera::exemplar_kind::sand, 64), {.rectangular = false}).value();
   for (const auto& m : sand.sizes) CHECK(m.alignment < 0.5);
 }
 
@@ -217,14 +224,16 @@ tessera::image_buffer<float, 1> grey_of(const I& img) {
 
 // Containment by brute force (§2.1.1): normalized grey histograms of patches every max(1, min(w, h) / 8)
 // pixels against the exemplar's, L2 distance relative to the exemplar histogram's norm.
-std::pair<double, double> brute_containment(const tessera::image_buffer<float, 1>& g, index_t w, index_t h, int bins, double tolerance) {
+std::pair<double, double> brute_containment(const tessera::image_buffer<float, 1>& g, index_t w, index_t h, int bins,
+                                            double tolerance) {
   auto bin = [&](index_t x, index_t y) {
     const double u = std::clamp(static_cast<double>(g.read(x, y)[0]), 0.0, 1.0);
     return std::min<index_t>(bins - 1, static_cast<index_t>(u * bins));
   };
   std::vector<double> global(static_cast<std::size_t>(bins), 0.0);
   for (index_t y = 0; y < g.height(); ++y)
-    for (index_t x = 0; x < g.width(); ++x) global[static_cast<std::size_t>(bin(x, y))] += 1.0 / double(g.width() * g.height());
+    for (index_t x = 0; x < g.width(); ++x)
+      global[static_cast<std::size_t>(bin(x, y))] += 1.0 / double(g.width() * g.height());
   double norm = 0;
   for (double v : global) norm += v * v;
   norm = std::sqrt(norm);
@@ -240,7 +249,8 @@ std::pair<double, double> brute_containment(const tessera::image_buffer<float, 1
       dist.push_back(std::sqrt(d2) / norm);
     }
   std::sort(dist.begin(), dist.end());
-  const double within = double(std::upper_bound(dist.begin(), dist.end(), tolerance) - dist.begin()) / double(dist.size());
+  const double within =
+      double(std::upper_bound(dist.begin(), dist.end(), tolerance) - dist.begin()) / double(dist.size());
   return {within, dist[std::min(dist.size() - 1, static_cast<std::size_t>(0.9 * double(dist.size())))]};
 }
 
@@ -279,7 +289,8 @@ TEST_CASE("analyze_patch_size: containment and alignment equal brute force", "[p
   }
 }
 
-TEST_CASE("analyze_patch_size: periodicity counts copies, finds none in noise, everything in a flat image", "[patch_size]") {
+TEST_CASE("analyze_patch_size: periodicity counts copies, finds none in noise, everything in a flat image",
+          "[patch_size]") {
   // a tiled exemplar of period 16: a reference block has an exact copy every 16 pixels
   const auto tile = exemplar(tessera::exemplar_kind::rock, 16);
   tessera::image_buffer<std::uint8_t, 3> tiled(64, 64);
@@ -321,7 +332,8 @@ TEST_CASE("analyze_patch_size: elongated exemplars give defined measures", "[pat
   tessera::thread_pool_executor pool(2);
   for (auto [w, h] : {std::pair<index_t, index_t>{16, 1024}, {8, 1024}, {1024, 8}, {9, 300}}) {
     INFO(w << " x " << h);
-    const auto ex = tessera::make_exemplar<std::uint8_t, 1>(tessera::exemplar_kind::grass, {.width = w, .height = h}).value();
+    const auto ex =
+        tessera::make_exemplar<std::uint8_t, 1>(tessera::exemplar_kind::grass, {.width = w, .height = h}).value();
     const auto a = tessera::analyze_patch_size(ex).value();
     const index_t lo = std::max<index_t>(2, std::min(w, h) / 4), hi = std::min(w, h) / 2;
     for (const auto& m : a.sizes) {

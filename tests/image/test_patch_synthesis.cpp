@@ -27,7 +27,9 @@ struct user_image {
   index_t width() const { return w; }
   index_t height() const { return h; }
   std::array<std::uint16_t, 3> read(index_t x, index_t y) const { return px[static_cast<std::size_t>(y * w + x)]; }
-  void write(index_t x, index_t y, const std::array<std::uint16_t, 3>& p) { px[static_cast<std::size_t>(y * w + x)] = p; }
+  void write(index_t x, index_t y, const std::array<std::uint16_t, 3>& p) {
+    px[static_cast<std::size_t>(y * w + x)] = p;
+  }
 };
 
 template <class T = std::uint8_t, int C = 3>
@@ -75,7 +77,8 @@ TEST_CASE("synthesize: windows of the infinite texture are bit-identical to one 
     // far from the origin, negative coordinates
     tessera::image_buffer<std::uint8_t, 3> far1(40, 30), far2(20, 30);
     REQUIRE(tessera::synthesize(m, far1, {.origin = {-(index_t{1} << 40), 123456789}, .seed = 11, .seams = mode}).ok());
-    REQUIRE(tessera::synthesize(m, far2, {.origin = {-(index_t{1} << 40) + 20, 123456789}, .seed = 11, .seams = mode}).ok());
+    REQUIRE(tessera::synthesize(m, far2, {.origin = {-(index_t{1} << 40) + 20, 123456789}, .seed = 11, .seams = mode})
+                .ok());
     CHECK(far2 == crop(far1, 20, 0, 20, 30));
   }
 }
@@ -111,7 +114,8 @@ TEST_CASE("synthesize: checkerboard counts and intersections", "[patch_synthesis
   CHECK(s.phase_group >= 16);
   // when every set holds every patch, the four sets always intersect
   const auto ex = exemplar(tessera::exemplar_kind::sand, 16);
-  const auto all = tessera::build_patch_model(ex, {.patch_width = 8, .patch_height = 8, .overlap = 2, .candidates = 64}).value();
+  const auto all =
+      tessera::build_patch_model(ex, {.patch_width = 8, .patch_height = 8, .overlap = 2, .candidates = 64}).value();
   REQUIRE(all.candidates() == all.num_patches());
   const auto t = tessera::synthesize(all, out, {.seed = 1}).value();
   CHECK(t.empty_intersections == 0);
@@ -119,12 +123,14 @@ TEST_CASE("synthesize: checkerboard counts and intersections", "[patch_synthesis
   // (2 radius + 1 would overflow: the radius is clamped)
   tessera::image_buffer<std::uint8_t, 3> all_phases(40, 30), huge_radius(40, 30);
   const auto r12 = tessera::synthesize(m, all_phases, {.seed = 5, .phase_radius = 12}).value();
-  const auto rmax = tessera::synthesize(m, huge_radius, {.seed = 5, .phase_radius = std::numeric_limits<index_t>::max()}).value();
+  const auto rmax =
+      tessera::synthesize(m, huge_radius, {.seed = 5, .phase_radius = std::numeric_limits<index_t>::max()}).value();
   CHECK(r12.phase_group == m.num_patches());
   CHECK(rmax.phase_group == m.num_patches());
   CHECK(all_phases == huge_radius);
   for (index_t radius : {index_t{1} << 62, std::numeric_limits<index_t>::max() / 2 + 1})
-    CHECK(tessera::synthesize(m, huge_radius, {.seed = 5, .phase_radius = radius}).value().phase_group == m.num_patches());
+    CHECK(tessera::synthesize(m, huge_radius, {.seed = 5, .phase_radius = radius}).value().phase_group ==
+          m.num_patches());
 }
 
 TEST_CASE("synthesize: quality invariants", "[patch_synthesis]") {
@@ -207,8 +213,10 @@ TEST_CASE("synthesize_aligned: several maps from one model", "[patch_synthesis]"
       for (index_t x = 0; x < 64; ++x)
         for (int c = 0; c < 3; ++c) {
           const float a = tessera::channel_to_unit(out.read(x, y)[c]), b = out_f.read(x, y)[c];
-          if (mode == seam_mode::cut) CHECK(a == Approx(b).margin(1e-6));  // same pixels exactly
-          else CHECK(a == Approx(b).margin(1.0 / 255.0));                  // same weights, other rounding
+          if (mode == seam_mode::cut)
+            CHECK(a == Approx(b).margin(1e-6));  // same pixels exactly
+          else
+            CHECK(a == Approx(b).margin(1.0 / 255.0));  // same weights, other rounding
         }
     // the aligned grey map follows the same patches
     tessera::image_buffer<std::uint16_t, 1> grey(64, 48);
@@ -265,12 +273,15 @@ TEST_CASE("synthesize: bad input and cancellation", "[patch_synthesis]") {
   CHECK(far.error().message().find("origin") != std::string::npos);
   CHECK(!tessera::synthesize(m, out, {.origin = {0, -(index_t{1} << 53)}}));
   CHECK(tessera::synthesize(m, out, {.phase_radius = -2}).error().message().find("phase_radius") != std::string::npos);
-  CHECK(tessera::synthesize(m, out, {.min_phase_group = 0}).error().message().find("min_phase_group") != std::string::npos);
+  CHECK(tessera::synthesize(m, out, {.min_phase_group = 0}).error().message().find("min_phase_group") !=
+        std::string::npos);
   tessera::image_buffer<std::uint16_t, 1> one(4, 4);
   CHECK(tessera::synthesize_source_map(m, one).error().message().find("2 channels") != std::string::npos);
   // uint8 source maps cannot address exemplars wider than 256 pixels
-  const auto wide = tessera::make_exemplar<std::uint8_t, 1>(tessera::exemplar_kind::sand, {.width = 300, .height = 14}).value();
-  const auto wm = tessera::build_patch_model(wide, {.patch_width = 8, .patch_height = 8, .overlap = 2, .candidates = 2}).value();
+  const auto wide =
+      tessera::make_exemplar<std::uint8_t, 1>(tessera::exemplar_kind::sand, {.width = 300, .height = 14}).value();
+  const auto wm =
+      tessera::build_patch_model(wide, {.patch_width = 8, .patch_height = 8, .overlap = 2, .candidates = 2}).value();
   tessera::image_buffer<std::uint8_t, 2> small(4, 4);
   CHECK(tessera::synthesize_source_map(wm, small).error().message().find("channel type") != std::string::npos);
   tessera::image_buffer<std::uint16_t, 2> ok(4, 4);
@@ -295,7 +306,8 @@ namespace {
 template <class T, int C>
 void check_copies_exemplar(tessera::exemplar_kind kind) {
   const auto ex = exemplar<T, C>(kind, 32);
-  const auto m = tessera::build_patch_model(ex, {.patch_width = 10, .patch_height = 8, .overlap = 3, .candidates = 4}).value();
+  const auto m =
+      tessera::build_patch_model(ex, {.patch_width = 10, .patch_height = 8, .overlap = 3, .candidates = 4}).value();
   const tessera::patch_synthesis_options o{.origin = {-5, 11}, .seed = 2, .seams = seam_mode::cut};
   tessera::image_buffer<T, C> out(37, 23);
   tessera::image_buffer<std::uint16_t, 2> src(37, 23);
@@ -393,7 +405,8 @@ struct cell_grid {
 };
 
 template <class M>
-cell_grid recover_cells(const M& m, const tessera::patch_synthesis_options& o, index_t i0, index_t j0, index_t ni, index_t nj) {
+cell_grid recover_cells(const M& m, const tessera::patch_synthesis_options& o, index_t i0, index_t j0, index_t ni,
+                        index_t nj) {
   const index_t pw = m.patch_width(), ph = m.patch_height(), v = m.overlap();
   tessera::image_buffer<std::uint16_t, 2> src(ni * pw, nj * ph);
   auto window = o;
@@ -424,7 +437,8 @@ cell_grid recover_cells(const M& m, const tessera::patch_synthesis_options& o, i
 // four facing sets, or the patch in the most sets, then the smallest estimated error (errors in the sets
 // holding it, the set's k-th error otherwise, summed west, east, north, south), then the smallest index.
 template <class M>
-std::pair<std::vector<index_t>, index_t> brute_fill(const M& m, index_t west, index_t east, index_t north, index_t south) {
+std::pair<std::vector<index_t>, index_t> brute_fill(const M& m, index_t west, index_t east, index_t north,
+                                                    index_t south) {
   using tessera::patch_side;
   const index_t owners[4] = {west, east, north, south};
   const patch_side facing[4] = {patch_side::east, patch_side::west, patch_side::south, patch_side::north};
@@ -443,26 +457,31 @@ std::pair<std::vector<index_t>, index_t> brute_fill(const M& m, index_t west, in
       const auto errors = m.compatible_errors(owners[s], facing[s]);
       const auto it = std::find(set.begin(), set.end(), static_cast<std::uint32_t>(q));
       count += it != set.end();
-      error += static_cast<double>(it != set.end() ? errors[static_cast<std::size_t>(it - set.begin())] : m.kth_error(owners[s], facing[s]));
+      error += static_cast<double>(it != set.end() ? errors[static_cast<std::size_t>(it - set.begin())]
+                                                   : m.kth_error(owners[s], facing[s]));
     }
     if (count == 4) inter.push_back(q);
-    if (count > best_count || (count == best_count && error < best_error)) best = q, best_count = count, best_error = error;
+    if (count > best_count || (count == best_count && error < best_error))
+      best = q, best_count = count, best_error = error;
   }
   return {inter, best};
 }
 
 }  // namespace
 
-TEST_CASE("synthesize: a vacant cell's patch is in its neighbours' set intersection, else the paper's fallback", "[patch_synthesis]") {
+TEST_CASE("synthesize: a vacant cell's patch is in its neighbours' set intersection, else the paper's fallback",
+          "[patch_synthesis]") {
   // k = 8 on bricks mostly intersects; k = 2 on sand mostly does not: both branches are checked
   const auto sand = exemplar(tessera::exemplar_kind::sand, 40);
-  const auto small_k = tessera::build_patch_model(sand, {.patch_width = 10, .patch_height = 10, .overlap = 3, .candidates = 2}).value();
+  const auto small_k =
+      tessera::build_patch_model(sand, {.patch_width = 10, .patch_height = 10, .overlap = 3, .candidates = 2}).value();
   auto check = [](const auto& m, std::uint64_t seed) {
     const tessera::patch_synthesis_options o{.seed = seed};
     const index_t ci0 = -3, cj0 = 5, nci = 6, ncj = 5;
     const auto g = recover_cells(m, o, ci0 - 2, cj0 - 2, nci + 3, ncj + 3);
     tessera::image_buffer<std::uint8_t, 3> out(nci * m.patch_width(), ncj * m.patch_height());
-    const auto stats = tessera::synthesize(m, out, {.origin = {ci0 * m.patch_width(), cj0 * m.patch_height()}, .seed = seed}).value();
+    const auto stats =
+        tessera::synthesize(m, out, {.origin = {ci0 * m.patch_width(), cj0 * m.patch_height()}, .seed = seed}).value();
     // the plan's cells: [ci0 - 1, ci0 + nci) x [cj0 - 1, cj0 + ncj) (the left and top ones overlap the window)
     index_t empty = 0, intersected = 0;
     for (index_t j = cj0 - 1; j < cj0 + ncj; ++j)
@@ -494,7 +513,9 @@ TEST_CASE("synthesize: distributed cells draw from their phase group", "[patch_s
   // (r = -1) phases in phase_similarity() order, those at least 0.9 similar, then more up to min_group
   auto group_of = [&](index_t cx, index_t cy, index_t r, index_t min_group) {
     std::vector<std::pair<index_t, index_t>> phases;
-    auto add = [&](index_t dx, index_t dy) { phases.push_back({((cx + dx) % pw + pw) % pw, ((cy + dy) % ph + ph) % ph}); };
+    auto add = [&](index_t dx, index_t dy) {
+      phases.push_back({((cx + dx) % pw + pw) % pw, ((cy + dy) % ph + ph) % ph});
+    };
     index_t size = 0;
     if (r >= 0) {
       for (index_t dy = -r; dy <= r; ++dy)
@@ -560,11 +581,13 @@ TEST_CASE("synthesize: feathered overlaps are the paper's linear blend of the tw
     for (index_t y = 0; y < out.height(); ++y)
       for (index_t x = 0; x < out.width(); ++x) {
         const index_t X = o.origin.x + x, Y = o.origin.y + y;
-        const index_t i = tessera::detail::floor_div(X, pw), j = tessera::detail::floor_div(Y, ph), lx = X - i * pw, ly = Y - j * ph;
+        const index_t i = tessera::detail::floor_div(X, pw), j = tessera::detail::floor_div(Y, ph), lx = X - i * pw,
+                      ly = Y - j * ph;
         const double wx = (lx + 0.5) / double(v), wy = (ly + 0.5) / double(v);
         for (int c = 0; c < 3; ++c) {
           auto row = [&](index_t jj, index_t ry) {  // the horizontally blended row of cell row jj at patch row ry
-            return lx >= v ? source(i, jj, lx, ry, c) : (1 - wx) * source(i - 1, jj, lx + pw, ry, c) + wx * source(i, jj, lx, ry, c);
+            return lx >= v ? source(i, jj, lx, ry, c)
+                           : (1 - wx) * source(i - 1, jj, lx + pw, ry, c) + wx * source(i, jj, lx, ry, c);
           };
           const double expected = ly >= v ? row(j, ly) : (1 - wy) * row(j - 1, ly + ph) + wy * row(j, ly);
           double& worst = lx < v && ly < v ? worst_corner : worst_edge;
@@ -576,20 +599,24 @@ TEST_CASE("synthesize: feathered overlaps are the paper's linear blend of the tw
   };
   check(bricks_model(), 1.0, 2.0);  // 8-bit fixed point: weight and result rounding
   const auto exf = exemplar<float, 3>(tessera::exemplar_kind::grass, 40);
-  check(tessera::build_patch_model(exf, {.patch_width = 11, .patch_height = 9, .overlap = 4, .candidates = 4}).value(), 1e-5, 1e-5);
+  check(tessera::build_patch_model(exf, {.patch_width = 11, .patch_height = 9, .overlap = 4, .candidates = 4}).value(),
+        1e-5, 1e-5);
 }
 
-TEST_CASE("synthesize: seam cuts keep a structured texture closer to its exemplar than feathering", "[patch_synthesis]") {
+TEST_CASE("synthesize: seam cuts keep a structured texture closer to its exemplar than feathering",
+          "[patch_synthesis]") {
   // bricks of 12 x 6 pixels (48-pixel exemplar) and patches of one and a half bricks: feathering ghosts
   // mortar lines across the overlaps, the cuts keep bricks whole (docs/patch_synthesis.md, picture)
   const auto ex = exemplar(tessera::exemplar_kind::bricks, 48);
-  const auto m = tessera::build_patch_model(ex, {.patch_width = 18, .patch_height = 18, .overlap = 8, .seams = true}).value();
+  const auto m =
+      tessera::build_patch_model(ex, {.patch_width = 18, .patch_height = 18, .overlap = 8, .seams = true}).value();
   for (std::uint64_t seed : {5u, 6u}) {
     tessera::image_buffer<std::uint8_t, 3> feather(96, 96), cut(96, 96);
     REQUIRE(tessera::synthesize(m, feather, {.seed = seed}).ok());
     REQUIRE(tessera::synthesize(m, cut, {.seed = seed, .seams = seam_mode::cut}).ok());
     const tessera::neighborhood_energy_options eo{.window = 5, .sample_step = 3};
-    const double e_feather = tessera::neighborhood_energy(feather, ex, eo).value(), e_cut = tessera::neighborhood_energy(cut, ex, eo).value();
+    const double e_feather = tessera::neighborhood_energy(feather, ex, eo).value(),
+                 e_cut = tessera::neighborhood_energy(cut, ex, eo).value();
     INFO("seed " << seed << ", neighbourhood energy: feather " << e_feather << ", cut " << e_cut);
     CHECK(e_cut < 0.7 * e_feather);
   }

@@ -81,7 +81,8 @@ TEST_CASE("quilt: overlap errors equal a brute-force SSD, selection stays within
     for (index_t u = 0; u < U; ++u) {
       double ssd = 0;
       for (const auto& e : brute) {
-        const double d = tessera::channel_to_unit(ex.read(u + index_t(e[0]), v + index_t(e[1]))[std::size_t(e[2])]) - e[3];
+        const double d =
+            tessera::channel_to_unit(ex.read(u + index_t(e[0]), v + index_t(e[1]))[std::size_t(e[2])]) - e[3];
         ssd += e[4] * d * d;
       }
       REQUIRE(err[static_cast<std::size_t>(v * U + u)] == Approx(ssd).epsilon(1e-5).margin(1e-5));
@@ -159,8 +160,8 @@ dt::site_window random_window(index_t p, const index_t band[4], const tessera::c
   win.error.assign(static_cast<std::size_t>(p * p), 0.0);
   for (index_t j = 0; j < p; ++j)
     for (index_t i = 0; i < p; ++i) {
-      const bool known = i < band[tessera::side_west] || j < band[tessera::side_north] || p - 1 - i < band[tessera::side_east] ||
-                         p - 1 - j < band[tessera::side_south];
+      const bool known = i < band[tessera::side_west] || j < band[tessera::side_north] ||
+                         p - 1 - i < band[tessera::side_east] || p - 1 - j < band[tessera::side_south];
       if (!known) continue;
       const double u = rng.uniform(trial, i, j, 1);
       const std::size_t k = win.idx(i, j);
@@ -202,7 +203,8 @@ TEST_CASE("quilt: every single-side cut is the minimum-error path (brute force: 
         for (index_t a = 0; a < p; ++a) {
           const dt::window_xy q = dt::side_pixel(side, p, a, b);
           const std::size_t k = win.idx(q.i, q.j);
-          REQUIRE(bool(is_new[k]) == (a >= path[static_cast<std::size_t>(b)] || win.state[k] == dt::pixel_state::empty));
+          REQUIRE(bool(is_new[k]) ==
+                  (a >= path[static_cast<std::size_t>(b)] || win.state[k] == dt::pixel_state::empty));
         }
     }
 }
@@ -234,8 +236,8 @@ TEST_CASE("quilt: the L-shaped cut meets at the cheapest point (brute force), ea
     double best = std::numeric_limits<double>::infinity();
     for (index_t y = 0; y < Sn; ++y)
       for (index_t x = 0; x < Sw; ++x)
-        best = std::min(best, brute_path(win, tessera::side_west, Sw, y, x) + brute_path(win, tessera::side_north, Sn, x, y) -
-                                  win.error[win.idx(x, y)]);
+        best = std::min(best, brute_path(win, tessera::side_west, Sw, y, x) +
+                                  brute_path(win, tessera::side_north, Sn, x, y) - win.error[win.idx(x, y)]);
     REQUIRE(chosen == Approx(best));
     for (int s : {tessera::side_east, tessera::side_south}) {
       REQUIRE(plan.active[s] == (band[s] > 0));
@@ -252,8 +254,10 @@ TEST_CASE("quilt: the L-shaped cut meets at the cheapest point (brute force), ea
         bool expect = !(i < plan.mx && j < plan.my);
         if (j >= plan.my) expect = expect && i >= plan.path[tessera::side_west][static_cast<std::size_t>(j)];
         if (i >= plan.mx) expect = expect && j >= plan.path[tessera::side_north][static_cast<std::size_t>(i)];
-        if (band[tessera::side_east]) expect = expect && p - 1 - i >= plan.path[tessera::side_east][static_cast<std::size_t>(j)];
-        if (band[tessera::side_south]) expect = expect && p - 1 - j >= plan.path[tessera::side_south][static_cast<std::size_t>(i)];
+        if (band[tessera::side_east])
+          expect = expect && p - 1 - i >= plan.path[tessera::side_east][static_cast<std::size_t>(j)];
+        if (band[tessera::side_south])
+          expect = expect && p - 1 - j >= plan.path[tessera::side_south][static_cast<std::size_t>(i)];
         const std::size_t k = win.idx(i, j);
         REQUIRE(bool(is_new[k]) == (expect || win.state[k] == dt::pixel_state::empty));
       }
@@ -273,7 +277,8 @@ TEST_CASE("quilt: an empty pixel in the L-cut's corner region is labelled new", 
       if (i < 3 || j < 3) win.state[win.idx(i, j)] = dt::pixel_state::filled;
   win.state[win.idx(0, 0)] = dt::pixel_state::empty;
   win.error[win.idx(0, 0)] = 0;
-  for (index_t k = 2; k < 8; ++k) win.error[win.idx(2, k)] = win.error[win.idx(k, 2)] = 0.0;  // the cheap L through (2, 2)
+  for (index_t k = 2; k < 8; ++k)
+    win.error[win.idx(2, k)] = win.error[win.idx(k, 2)] = 0.0;  // the cheap L through (2, 2)
   const index_t band[4] = {3, 0, 0, 3};
   dt::cut_plan plan;
   dt::plan_cuts(win, band, plan);
@@ -282,8 +287,8 @@ TEST_CASE("quilt: an empty pixel in the L-cut's corner region is labelled new", 
   REQUIRE(plan.my == 2);
   std::vector<std::uint8_t> is_new;
   dt::labels_from_plan(win, plan, is_new);
-  REQUIRE(is_new[win.idx(0, 0)] == 1);   // the hole is filled by this patch
-  REQUIRE(is_new[win.idx(1, 1)] == 0);   // its known neighbours in the corner region stay old
+  REQUIRE(is_new[win.idx(0, 0)] == 1);  // the hole is filled by this patch
+  REQUIRE(is_new[win.idx(1, 1)] == 0);  // its known neighbours in the corner region stay old
   REQUIRE(is_new[win.idx(1, 0)] == 0);
 }
 
@@ -323,7 +328,8 @@ TEST_CASE("quilt: bad input", "[quilt]") {
   tessera::image_buffer<std::uint8_t, 3> out(40, 40);
   auto code = [&](const quilt_options& o) { return tessera::quilt(ex, out, o).code(); };
   REQUIRE(code({.patch_size = 33}) == tessera::status_code::invalid_argument);
-  REQUIRE_THAT(tessera::quilt(ex, out, {.patch_size = 33}).message(), Catch::Contains("patch_size 33") && Catch::Contains("32 x 32"));
+  REQUIRE_THAT(tessera::quilt(ex, out, {.patch_size = 33}).message(),
+               Catch::Contains("patch_size 33") && Catch::Contains("32 x 32"));
   REQUIRE(code({.patch_size = 1}) == tessera::status_code::invalid_argument);
   REQUIRE(code({.patch_size = -4}) == tessera::status_code::invalid_argument);
   REQUIRE(code({.patch_size = 16, .overlap = 9}) == tessera::status_code::invalid_argument);
@@ -332,7 +338,8 @@ TEST_CASE("quilt: bad input", "[quilt]") {
   REQUIRE(code({.boundary_weight = 0.5}) == tessera::status_code::invalid_argument);
   REQUIRE(code({.tolerance = std::numeric_limits<double>::quiet_NaN()}) == tessera::status_code::invalid_argument);
   tessera::image_buffer<std::uint8_t, 3> small(10, 40);
-  REQUIRE(tessera::quilt(ex, small, {.patch_size = 16, .seamless = true}).code() == tessera::status_code::invalid_argument);
+  REQUIRE(tessera::quilt(ex, small, {.patch_size = 16, .seamless = true}).code() ==
+          tessera::status_code::invalid_argument);
   REQUIRE(tessera::quilt(ex, small, {.patch_size = 16}).ok());  // non-seamless output may be smaller than a patch
   tessera::image_view<std::uint8_t, 3> empty;
   REQUIRE(tessera::quilt(ex, empty).code() == tessera::status_code::invalid_argument);
@@ -353,7 +360,8 @@ TEST_CASE("quilt: bad input", "[quilt]") {
   REQUIRE(big.code() == tessera::status_code::size_overflow);
   REQUIRE_THAT(big.message(), Catch::Contains("output: 32768 x 8193 pixels exceed max_quilt_pixels"));
   const quilt_test::huge_rgb8 huge_ex{1 << 13, (1 << 13) + 1};
-  REQUIRE_THAT(tessera::quilt(huge_ex, out).message(), Catch::Contains("exemplar: 8192 x 8193 pixels exceed max_quilt_exemplar_pixels"));
+  REQUIRE_THAT(tessera::quilt(huge_ex, out).message(),
+               Catch::Contains("exemplar: 8192 x 8193 pixels exceed max_quilt_exemplar_pixels"));
   tessera::cancellation_token stop;
   stop.cancel();
   quilt_options cancelled{.patch_size = 8};

@@ -30,8 +30,9 @@ struct mip_texture {
       for (index_t y = 0; y < next.height(); ++y)
         for (index_t x = 0; x < next.width(); ++x)
           for (int c = 0; c < 3; ++c)
-            next.pixel_ptr(x, y)[c] = 0.25f * (prev.pixel_ptr(2 * x, 2 * y)[c] + prev.pixel_ptr(2 * x + 1, 2 * y)[c] +
-                                               prev.pixel_ptr(2 * x, 2 * y + 1)[c] + prev.pixel_ptr(2 * x + 1, 2 * y + 1)[c]);
+            next.pixel_ptr(x, y)[c] =
+                0.25f * (prev.pixel_ptr(2 * x, 2 * y)[c] + prev.pixel_ptr(2 * x + 1, 2 * y)[c] +
+                         prev.pixel_ptr(2 * x, 2 * y + 1)[c] + prev.pixel_ptr(2 * x + 1, 2 * y + 1)[c]);
       levels.push_back(std::move(next));
     }
   }
@@ -71,8 +72,8 @@ TEST_CASE("wang atlas: Wei's edge ordering is a bijection along a cycle of match
       }
     for (std::size_t i = 0; i < order.size(); ++i) REQUIRE(order[i].second == order[(i + 1) % order.size()].first);
   }
-  static_assert(tessera::edge_order_index(0, 0) == 0 && tessera::edge_order_index(0, 1) == 1 && tessera::edge_order_index(1, 1) == 2 &&
-                tessera::edge_order_index(1, 0) == 3);
+  static_assert(tessera::edge_order_index(0, 0) == 0 && tessera::edge_order_index(0, 1) == 1 &&
+                tessera::edge_order_index(1, 1) == 2 && tessera::edge_order_index(1, 0) == 3);
 }
 
 TEST_CASE("wang atlas: edge-ordered neighbours match across every border, wrapping", "[wang]") {
@@ -85,7 +86,8 @@ TEST_CASE("wang atlas: edge-ordered neighbours match across every border, wrappi
   REQUIRE(atlas->image.height() == 9 * 8);  // nh² rows
   std::vector<index_t> at(36, -1);
   for (index_t t = 0; t < set->size(); ++t) {
-    const std::size_t slot = static_cast<std::size_t>(atlas->slot_row[static_cast<std::size_t>(t)] * 4 + atlas->slot_col[static_cast<std::size_t>(t)]);
+    const std::size_t slot = static_cast<std::size_t>(atlas->slot_row[static_cast<std::size_t>(t)] * 4 +
+                                                      atlas->slot_col[static_cast<std::size_t>(t)]);
     REQUIRE(at[slot] == -1);
     at[slot] = t;
     for (index_t y = 0; y < 8; ++y)
@@ -102,7 +104,8 @@ TEST_CASE("wang atlas: edge-ordered neighbours match across every border, wrappi
     }
 }
 
-TEST_CASE("wang atlas: default options sample exactly across tile borders and corners at every promised mip level", "[wang]") {
+TEST_CASE("wang atlas: default options sample exactly across tile borders and corners at every promised mip level",
+          "[wang]") {
   // A model of GPU texturing (box-filtered mips, bilinear, REPEAT) applied to the composed plane is
   // the ground truth. Both layouts, built with default options from a set built with default
   // options, promise 3 levels for tiles of 32 (shared border 4): every sample of the tiles' area,
@@ -143,12 +146,16 @@ TEST_CASE("wang atlas: default options sample exactly across tile borders and co
         const auto expect = truth.sample(px, py, level);
         const tessera::vec2 a = tessera::atlas_coordinates(*ordered, *plane, px, py);
         const tessera::vec2 b = tessera::atlas_coordinates(*padded, *plane, px, py);
-        worst_ordered[level] = std::max(worst_ordered[level], max_difference(ordered_tex.sample(a.x, a.y, level), expect));
+        worst_ordered[level] =
+            std::max(worst_ordered[level], max_difference(ordered_tex.sample(a.x, a.y, level), expect));
         worst_padded[level] = std::max(worst_padded[level], max_difference(padded_tex.sample(b.x, b.y, level), expect));
-        const index_t col = tessera::floor_div(index_t(std::floor(px)), ts), row = tessera::floor_div(index_t(std::floor(py)), ts);
+        const index_t col = tessera::floor_div(index_t(std::floor(px)), ts),
+                      row = tessera::floor_div(index_t(std::floor(py)), ts);
         const index_t t = set->edges().find(tessera::cell_edges(*plane, col, row));
         const double fx = px - double(col * ts), fy = py - double(row * ts);
-        worst_naive = std::max(worst_naive, max_difference(naive_tex.sample(double((t % 4) * ts) + fx, double((t / 4) * ts) + fy, level), expect));
+        worst_naive = std::max(
+            worst_naive,
+            max_difference(naive_tex.sample(double((t % 4) * ts) + fx, double((t / 4) * ts) + fy, level), expect));
         const bool near_x = std::min(fx, ts - fx) < texel, near_y = std::min(fy, ts - fy) < texel;
         corner_samples += near_x && near_y;
       }
@@ -234,7 +241,8 @@ TEST_CASE("wang atlas: bad input", "[wang]") {
   REQUIRE(set->exact_mip_levels() == 2);
   auto deep = tessera::build_wang_atlas(*set, {.layout = tessera::atlas_layout::padded, .mip_levels = 3});
   REQUIRE(deep.error().code() == tessera::status_code::invalid_argument);
-  REQUIRE_THAT(deep.error().message(), Catch::Contains("shared border is 2") && Catch::Contains("wang_tile_options::mip_levels = 3"));
+  REQUIRE_THAT(deep.error().message(),
+               Catch::Contains("shared border is 2") && Catch::Contains("wang_tile_options::mip_levels = 3"));
   auto odd = tessera::build_wang_atlas(*set, {.layout = tessera::atlas_layout::padded, .mip_levels = 2, .padding = 3});
   REQUIRE_THAT(odd.error().message(), Catch::Contains("padding 3 serves 1 exact mip levels"));
   REQUIRE(tessera::build_wang_atlas(*set, {.layout = tessera::atlas_layout::padded, .padding = 3})->mip_levels == 1);
@@ -244,7 +252,8 @@ TEST_CASE("wang atlas: bad input", "[wang]") {
   auto atlas = tessera::build_wang_atlas(*set, {.layout = tessera::atlas_layout::padded});
   auto complete_plane = tessera::hash_coloring::create(2, 2, 1);
   bool missing = false;
-  for (int i = 0; i < 50 && !missing; ++i) missing = tessera::atlas_coordinates(*atlas, *complete_plane, 16.0 * i + 1, 3.0).x < 0;
+  for (int i = 0; i < 50 && !missing; ++i)
+    missing = tessera::atlas_coordinates(*atlas, *complete_plane, 16.0 * i + 1, 3.0).x < 0;
   REQUIRE(missing);
   REQUIRE(tessera::atlas_coordinates(*atlas, *complete_plane, std::nan(""), 3.0).x == -1);
   REQUIRE(tessera::atlas_coordinates(*atlas, *complete_plane, 1e300, 3.0).x == -1);

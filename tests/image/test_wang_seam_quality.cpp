@@ -68,7 +68,8 @@ TEST_CASE("wang seam quality: every pair that can touch, seams as smooth as the 
     }
     REQUIRE(report->max_ratio == Approx(max_ratio).epsilon(1e-6));
     REQUIRE(report->mean_ratio == Approx(sum / double(expected.size())).epsilon(1e-6));
-    REQUIRE(expected.at({report->worst.vertical, report->worst.first, report->worst.second}) == Approx(max_ratio).epsilon(1e-6));
+    REQUIRE(expected.at({report->worst.vertical, report->worst.first, report->worst.second}) ==
+            Approx(max_ratio).epsilon(1e-6));
     CAPTURE(to_string(kind), report->mean_ratio, report->max_ratio);
     REQUIRE(report->mean_ratio < 1.0);
     REQUIRE(report->max_ratio < 1.6);
@@ -103,12 +104,14 @@ TEST_CASE("wang seam quality: tile border seams and bad input", "[wang]") {
   REQUIRE(tessera::tile_border_seams(10, 10, 0).empty());
   tessera::wang_tile_set<std::uint8_t, 3> empty;
   REQUIRE_FALSE(tessera::wang_seam_quality(empty, quilt_test::exemplar(tessera::exemplar_kind::sand, 16)).ok());
-  auto set = tessera::build_wang_tiles(quilt_test::exemplar(tessera::exemplar_kind::sand, 32), {.tile_size = 8, .horizontal_colors = 1, .vertical_colors = 1});
+  auto set = tessera::build_wang_tiles(quilt_test::exemplar(tessera::exemplar_kind::sand, 32),
+                                       {.tile_size = 8, .horizontal_colors = 1, .vertical_colors = 1});
   tessera::image_buffer<std::uint8_t, 3> flat(16, 16, {9, 9, 9});
   REQUIRE(tessera::wang_seam_quality(*set, flat).error().code() == tessera::status_code::invalid_argument);
   tessera::image_buffer<float, 3> nan(16, 16, {0.5f, 0.5f, 0.5f});
   nan.write(2, 3, {0.5f, 0.5f, std::nanf("")});
-  REQUIRE_THAT(tessera::wang_seam_quality(*set, nan).error().message(), Catch::Contains("pixel (2, 3) channel 2 is nan"));
+  REQUIRE_THAT(tessera::wang_seam_quality(*set, nan).error().message(),
+               Catch::Contains("pixel (2, 3) channel 2 is nan"));
   // the complete set for 7 x 7 colours (2401 tiles of 1 pixel) has 1.6 million touching pairs
   auto many = tessera::tile_set_edges::complete(7, 7);
   std::vector<tessera::image_buffer<std::uint8_t, 3>> dots(2401, tessera::image_buffer<std::uint8_t, 3>(1, 1));

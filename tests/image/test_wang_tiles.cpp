@@ -19,7 +19,8 @@ using tessera::wang_tile_options;
 
 namespace {
 template <class T, int C>
-bool same_pixels(const tessera::wang_tile_set<T, C>& set, index_t a, index_t ax, index_t ay, index_t b, index_t bx, index_t by) {
+bool same_pixels(const tessera::wang_tile_set<T, C>& set, index_t a, index_t ax, index_t ay, index_t b, index_t bx,
+                 index_t by) {
   return std::memcmp(set.tile(a).pixel_ptr(ax, ay), set.tile(b).pixel_ptr(bx, by), sizeof(T) * C) == 0;
 }
 }  // namespace
@@ -45,9 +46,11 @@ TEST_CASE("wang tiles: the complete set, in complete-index order, edges shared w
       for (index_t k = 0; k < ts; ++k)
         for (index_t depth = 0; depth < border; ++depth) {
           if (set->edges()[a].north == set->edges()[b].north) REQUIRE(same_pixels(*set, a, k, depth, b, k, depth));
-          if (set->edges()[a].south == set->edges()[b].south) REQUIRE(same_pixels(*set, a, k, ts - 1 - depth, b, k, ts - 1 - depth));
+          if (set->edges()[a].south == set->edges()[b].south)
+            REQUIRE(same_pixels(*set, a, k, ts - 1 - depth, b, k, ts - 1 - depth));
           if (set->edges()[a].west == set->edges()[b].west) REQUIRE(same_pixels(*set, a, depth, k, b, depth, k));
-          if (set->edges()[a].east == set->edges()[b].east) REQUIRE(same_pixels(*set, a, ts - 1 - depth, k, b, ts - 1 - depth, k));
+          if (set->edges()[a].east == set->edges()[b].east)
+            REQUIRE(same_pixels(*set, a, ts - 1 - depth, k, b, ts - 1 - depth, k));
         }
   // ... while tiles with different colours differ there (each colour is its own sample)
   REQUIRE_FALSE(same_pixels(*set, 0, ts / 2, 0, tessera::complete_tile_index({1, 0, 0, 0}, 2, 3), ts / 2, 0));
@@ -88,7 +91,8 @@ TEST_CASE("wang tiles: all four tiles meeting at a corner show the same exemplar
   for (index_t y = 0; y + 2 * d <= 64 && !in_exemplar; ++y)
     for (index_t x = 0; x + 2 * d <= 64 && !in_exemplar; ++x) {
       bool all = true;
-      for (index_t k = 0; k < 4 * d * d && all; ++k) all = ex.read(x + k % (2 * d), y + k / (2 * d)) == reference[static_cast<std::size_t>(k)];
+      for (index_t k = 0; k < 4 * d * d && all; ++k)
+        all = ex.read(x + k % (2 * d), y + k / (2 * d)) == reference[static_cast<std::size_t>(k)];
       in_exemplar = all;
     }
   REQUIRE(in_exemplar);
@@ -109,14 +113,17 @@ TEST_CASE("wang tiles: mip_levels sets the shared border", "[wang]") {
   REQUIRE_THAT(odd.error().message(), Catch::Contains("tile_size 36 must be a multiple of 2^(mip_levels - 1) = 8"));
   auto thin = tessera::build_wang_tiles(ex, {.tile_size = 32, .mip_levels = 3, .border = 2});
   REQUIRE_THAT(thin.error().message(), Catch::Contains("border 2 is smaller than the 2^(mip_levels - 1) = 4"));
-  REQUIRE(tessera::build_wang_tiles(ex, {.tile_size = 32, .mip_levels = -1}).error().code() == tessera::status_code::invalid_argument);
-  REQUIRE(tessera::build_wang_tiles(ex, {.tile_size = 32, .mip_levels = 17}).error().code() == tessera::status_code::invalid_argument);
+  REQUIRE(tessera::build_wang_tiles(ex, {.tile_size = 32, .mip_levels = -1}).error().code() ==
+          tessera::status_code::invalid_argument);
+  REQUIRE(tessera::build_wang_tiles(ex, {.tile_size = 32, .mip_levels = 17}).error().code() ==
+          tessera::status_code::invalid_argument);
 }
 
 TEST_CASE("wang tiles: subsets, odd sizes, pixel types, executors", "[wang]") {
   const auto ex = quilt_test::exemplar<float, 3>(tessera::exemplar_kind::cells, 56, 2);
   auto cohen = tessera::tile_set_edges::modular_subset(2, 2, 2);
-  wang_tile_options o{.tile_size = 27, .tiles = std::vector<wang_edges>(cohen->tiles().begin(), cohen->tiles().end()), .seed = 8};
+  wang_tile_options o{
+      .tile_size = 27, .tiles = std::vector<wang_edges>(cohen->tiles().begin(), cohen->tiles().end()), .seed = 8};
   auto serial = tessera::build_wang_tiles(ex, o);
   REQUIRE(serial.ok());
   REQUIRE(serial->size() == 8);
@@ -150,8 +157,10 @@ TEST_CASE("wang tiles: wang_tile_set::create checks the images", "[wang]") {
   static_assert(!std::is_constructible_v<set3, tessera::tile_set_edges, index_t>);
   static_assert(std::is_same_v<decltype(std::declval<const set3&>().tile_row(0, 0)), const std::uint8_t*>);
   // sizes are checked before anything is allocated
-  REQUIRE(tessera::detail::validate_tile_set_extent(index_t{1} << 24, 32, 3).code() == tessera::status_code::size_overflow);
-  REQUIRE(tessera::detail::validate_tile_set_extent(16, index_t{1} << 40, 3).code() == tessera::status_code::size_overflow);
+  REQUIRE(tessera::detail::validate_tile_set_extent(index_t{1} << 24, 32, 3).code() ==
+          tessera::status_code::size_overflow);
+  REQUIRE(tessera::detail::validate_tile_set_extent(16, index_t{1} << 40, 3).code() ==
+          tessera::status_code::size_overflow);
   REQUIRE(tessera::detail::validate_tile_set_extent(16, 64, 4).ok());
   // a set made from arbitrary images measures its shared border: one tile, so everything is shared
   REQUIRE(ok->shared_border() == 4);
@@ -169,7 +178,8 @@ TEST_CASE("wang tiles: wang_tile_set::create checks the images", "[wang]") {
   REQUIRE(set3::create(*pair, 16, two)->exact_mip_levels() == 0);
   // two tiles sharing no colour: only their corner squares are compared
   auto apart = tessera::tile_set_edges::create(2, 2, {{0, 0, 0, 0}, {1, 1, 1, 1}});
-  std::vector<tessera::image_buffer<std::uint8_t, 3>> corners(2, tessera::image_buffer<std::uint8_t, 3>(16, 16, {1, 2, 3}));
+  std::vector<tessera::image_buffer<std::uint8_t, 3>> corners(
+      2, tessera::image_buffer<std::uint8_t, 3>(16, 16, {1, 2, 3}));
   corners[1].write(12, 14, {9, 9, 9});  // south-east corner square, 3 from the east side and 1 from the south
   REQUIRE(set3::create(*apart, 16, corners)->shared_border() == 3);
   REQUIRE(set3::create(*apart, 16, corners)->exact_mip_levels() == 2);
@@ -183,7 +193,8 @@ TEST_CASE("wang tiles: bad input", "[wang]") {
   REQUIRE_THAT(big.error().message(), Catch::Contains("tile_size 64 is larger than the 48 x 48 exemplar"));
   REQUIRE(code({.tile_size = 3}) == tessera::status_code::invalid_argument);
   REQUIRE(code({.tile_size = 32, .horizontal_colors = 0}) == tessera::status_code::invalid_argument);
-  REQUIRE_THAT(tessera::build_wang_tiles(ex, {.tile_size = 32, .vertical_colors = -1}).error().message(), Catch::Contains("got -1"));
+  REQUIRE_THAT(tessera::build_wang_tiles(ex, {.tile_size = 32, .vertical_colors = -1}).error().message(),
+               Catch::Contains("got -1"));
   REQUIRE(code({.tile_size = 32, .tiles = {{0, 0, 2, 0}}}) == tessera::status_code::out_of_range);
   REQUIRE(code({.tile_size = 32, .overlap = 10, .patch_size = 12}) == tessera::status_code::invalid_argument);
   REQUIRE(code({.tile_size = 32, .overlap = 4, .border = 4}) == tessera::status_code::invalid_argument);
@@ -204,7 +215,8 @@ TEST_CASE("wang tiles: bad input", "[wang]") {
   REQUIRE(nan.error().code() == tessera::status_code::invalid_argument);
   REQUIRE_THAT(nan.error().message(), Catch::Contains("exemplar: pixel (7, 11) channel 1 is nan"));
   bad.write(7, 11, {0.5f, 0.5f, std::numeric_limits<float>::infinity()});
-  REQUIRE_THAT(tessera::build_wang_tiles(bad, {.tile_size = 16}).error().message(), Catch::Contains("channel 2 is inf"));
+  REQUIRE_THAT(tessera::build_wang_tiles(bad, {.tile_size = 16}).error().message(),
+               Catch::Contains("channel 2 is inf"));
   tessera::cancellation_token stop;
   stop.cancel();
   wang_tile_options cancelled{.tile_size = 16};

@@ -73,7 +73,10 @@ TEST_CASE("mesh_file: errors name the file", "[mesh_file]") {
   const auto missing = tessera::read_mesh(samples::out_path("missing.ply"));
   REQUIRE(missing.error().code() == status_code::io_error);
   REQUIRE(missing.error().message().find("missing.ply") != std::string::npos);
-  REQUIRE(tessera::detail::write_file(samples::out_path("garbage.obj"), std::string("\x7f" "ELF\0\0\0", 7)).ok());
+  REQUIRE(tessera::detail::write_file(samples::out_path("garbage.obj"), std::string("\x7f"
+                                                                                    "ELF\0\0\0",
+                                                                                    7))
+              .ok());
   const auto g = tessera::read_mesh(samples::out_path("garbage.obj"));
   REQUIRE(g.error().code() == status_code::parse_error);
   REQUIRE(g.error().message().find("garbage.obj, line 1") != std::string::npos);

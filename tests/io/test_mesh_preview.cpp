@@ -24,7 +24,8 @@ TEST_CASE("mesh preview renders a shaded mesh on the background", "[mesh_preview
   thread_pool_executor pool(3);
   REQUIRE(render_mesh_preview(*m, {.width = 160, .height = 120}, pool)->data()[5000] == img->data()[5000]);
   const auto top = render_mesh_preview(*m, {.width = 160, .height = 120, .elevation_degrees = 90});
-  REQUIRE(std::vector<std::uint8_t>(top->data(), top->data() + 160 * 120 * 3) != std::vector<std::uint8_t>(img->data(), img->data() + 160 * 120 * 3));
+  REQUIRE(std::vector<std::uint8_t>(top->data(), top->data() + 160 * 120 * 3) !=
+          std::vector<std::uint8_t>(img->data(), img->data() + 160 * 120 * 3));
   // grid overlay draws red lines
   const auto grid = render_mesh_preview(*m, {.width = 160, .height = 120, .elevation_degrees = 90, .grid_spacing = 2});
   index_t red = 0;
@@ -33,7 +34,9 @@ TEST_CASE("mesh preview renders a shaded mesh on the background", "[mesh_preview
     red += p[0] > 200 && p[1] < 60 && p[2] < 60;
   }
   REQUIRE(red > 100);
-  REQUIRE(write_mesh_preview(std::string(TESSERA_TEST_OUTPUT_DIR) + "/preview_rings.png", *m, {.width = 64, .height = 48}).ok());
+  REQUIRE(
+      write_mesh_preview(std::string(TESSERA_TEST_OUTPUT_DIR) + "/preview_rings.png", *m, {.width = 64, .height = 48})
+          .ok());
 }
 
 TEST_CASE("mesh preview rejects bad input", "[mesh_preview]") {

@@ -38,7 +38,7 @@ TEST_CASE("obj: the statements and layouts found in real files", "[obj]") {
       "mtllib x.mtl\r\n"
       "o thing\r\n"
       "\r\n"
-      "v 0 0 0 1.0\r\n"           // homogeneous w: ignored
+      "v 0 0 0 1.0\r\n"             // homogeneous w: ignored
       "v 1 0 0 0.5 0.25 0.125\r\n"  // vertex colour: ignored
       "v\t1 1 0\r\n"
       "v 0 1 0  # trailing comment\r\n"
@@ -77,7 +77,8 @@ TEST_CASE("obj: malformed files name the file and the line", "[obj]") {
   require_error_at_line(tessera::parse_obj(v3 + "f -1 -2 -4\n", "a.obj"), "a.obj", 4, "'-4'");
   require_error_at_line(tessera::parse_obj(v3 + "f 1 2 x\n", "a.obj"), "a.obj", 4, "'x'");
   require_error_at_line(tessera::parse_obj(v3 + "f 1 2 3.5\n", "a.obj"), "a.obj", 4, "'3.5'");
-  require_error_at_line(tessera::parse_obj(v3 + "vt 0 0\nf 1/1 2/2 3/1\n", "a.obj"), "a.obj", 5, "texture coordinate outside 1..1");
+  require_error_at_line(tessera::parse_obj(v3 + "vt 0 0\nf 1/1 2/2 3/1\n", "a.obj"), "a.obj", 5,
+                        "texture coordinate outside 1..1");
   require_error_at_line(tessera::parse_obj(v3 + "vt 0 0\nf 1/1 2 3/1\n", "a.obj"), "a.obj", 5, "mixes");
   require_error_at_line(tessera::parse_obj(v3 + "f 1 2\n", "a.obj"), "a.obj", 4, "at least three corners");
   require_error_at_line(tessera::parse_obj(v3 + "f 1 2 2\n", "a.obj"), "a.obj", 4, "degenerate");

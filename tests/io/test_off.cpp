@@ -72,7 +72,8 @@ TEST_CASE("off: malformed files name the file and the line", "[off]") {
                         "expected 2 faces, the file ends after 1");
   require_error_at_line(tessera::parse_off("OFF\n3 1 0\n0 0\n1 0 0\n0 1 0\n3 0 1 2\n" + pad, "e.off"), "e.off", 3,
                         "three coordinates");
-  require_error_at_line(tessera::parse_off("OFF\n3 1 0\n0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n", "e.off"), "e.off", 4, "'nan'");
+  require_error_at_line(tessera::parse_off("OFF\n3 1 0\n0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n", "e.off"), "e.off", 4,
+                        "'nan'");
   require_error_at_line(tessera::parse_off("OFF\n3 1 0\n" + v3 + "2 0 1 0 0 0 0\n", "e.off"), "e.off", 6, "at least 3");
   require_error_at_line(tessera::parse_off("OFF\n3 1 0\n" + v3 + "3 0 1 3\n", "e.off"), "e.off", 6, "outside 0..2");
   require_error_at_line(tessera::parse_off("OFF\n3 1 0\n" + v3 + "3 0 1 -1\n", "e.off"), "e.off", 6, "'-1'");
@@ -105,5 +106,6 @@ TEST_CASE("off: write errors", "[off]") {
   const auto s = tessera::write_off(samples::out_path("bad.off"), bad);
   REQUIRE(s.code() == status_code::invalid_argument);
   REQUIRE(s.message().find("non-finite") != std::string::npos);
-  REQUIRE(tessera::write_off(samples::out_path("no/dir.off"), samples::grid(1, 1, false)).code() == status_code::io_error);
+  REQUIRE(tessera::write_off(samples::out_path("no/dir.off"), samples::grid(1, 1, false)).code() ==
+          status_code::io_error);
 }

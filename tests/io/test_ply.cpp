@@ -27,8 +27,10 @@ struct body {
     if (binary) {
       tessera::detail::put_binary(out, v, big);
     } else {
-      if constexpr (sizeof(T) == 1 && std::is_integral_v<T>) tessera::detail::append_number(out, int(v));
-      else tessera::detail::append_number(out, v);
+      if constexpr (sizeof(T) == 1 && std::is_integral_v<T>)
+        tessera::detail::append_number(out, int(v));
+      else
+        tessera::detail::append_number(out, v);
       out += ' ';
     }
     return *this;
@@ -85,11 +87,16 @@ TEMPLATE_TEST_CASE("ply: every scalar type for positions, counts and indices", "
       const int coords[5][3] = {{0, 0, 0}, {3, 0, 0}, {3, 3, 0}, {0, 3, 1}, {9, 9, 9}};
       for (const auto& c : coords) {
         for (int k = 0; k < 3; ++k) {
-          if (pt == "float") b.put(static_cast<float>(c[k]));
-          else if (pt == "double") b.put(static_cast<double>(c[k]));
-          else if (pt == "int8") b.put(static_cast<std::int8_t>(c[k]));
-          else if (pt == "uint16") b.put(static_cast<std::uint16_t>(c[k]));
-          else b.put(static_cast<std::int32_t>(c[k]));
+          if (pt == "float")
+            b.put(static_cast<float>(c[k]));
+          else if (pt == "double")
+            b.put(static_cast<double>(c[k]));
+          else if (pt == "int8")
+            b.put(static_cast<std::int8_t>(c[k]));
+          else if (pt == "uint16")
+            b.put(static_cast<std::uint16_t>(c[k]));
+          else
+            b.put(static_cast<std::int32_t>(c[k]));
         }
         b.put(std::uint8_t{200}).endl();
       }
@@ -116,7 +123,12 @@ TEST_CASE("ply: texture coordinates per face corner or per vertex, other element
     body b{e.binary, e.big, {}};
     for (int v = 0; v < 3; ++v) b.put(float(v)).put(float(v == 2)).put(0.0f).put(0.5f * v).put(0.25f).endl();
     b.put(std::int32_t{3}).put(std::uint8_t{'a'}).put(std::uint8_t{'b'}).put(std::uint8_t{'c'}).put(0.5).endl();
-    b.put(std::uint8_t{3}).put(std::uint32_t{0}).put(std::uint32_t{1}).put(std::uint32_t{2}).put(std::uint8_t{7}).endl();
+    b.put(std::uint8_t{3})
+        .put(std::uint32_t{0})
+        .put(std::uint32_t{1})
+        .put(std::uint32_t{2})
+        .put(std::uint8_t{7})
+        .endl();
     b.put(std::int32_t{0}).put(std::int32_t{1}).endl().put(std::int32_t{1}).put(std::int32_t{2}).endl();
     const auto r = tessera::parse_ply(header + b.out, "uv.ply");
     REQUIRE(r.ok());
@@ -152,41 +164,51 @@ TEST_CASE("ply: malformed headers name the line", "[ply]") {
   require_error_at_line(tessera::parse_ply("OFF\n", "h.ply"), "h.ply", 1, "not a PLY file");
   require_error_at_line(tessera::parse_ply("ply\nelement vertex 0\n", "h.ply"), "h.ply", 2, "no end_header");
   require_error_at_line(tessera::parse_ply("ply\nend_header\n", "h.ply"), "h.ply", 2, "no format line");
-  require_error_at_line(tessera::parse_ply("ply\nformat binary 1.0\nend_header\n", "h.ply"), "h.ply", 2, "unknown format");
+  require_error_at_line(tessera::parse_ply("ply\nformat binary 1.0\nend_header\n", "h.ply"), "h.ply", 2,
+                        "unknown format");
   require_error_at_line(tessera::parse_ply("ply\nformat ascii 2.0\nend_header\n", "h.ply"), "h.ply", 2, "version");
   require_error_at_line(tessera::parse_ply("ply\n" + f + f + "end_header\n", "h.ply"), "h.ply", 3, "second format");
   require_error_at_line(tessera::parse_ply("ply\n" + f + "property float x\nend_header\n", "h.ply"), "h.ply", 3,
                         "before any element");
   require_error_at_line(tessera::parse_ply("ply\n" + f + "element vertex -1\nend_header\n", "h.ply"), "h.ply", 3,
                         "non-negative");
-  require_error_at_line(tessera::parse_ply("ply\n" + f + "element vertex 1\nproperty float128 x\nend_header\n", "h.ply"),
-                        "h.ply", 4, "unknown type 'float128'");
+  require_error_at_line(
+      tessera::parse_ply("ply\n" + f + "element vertex 1\nproperty float128 x\nend_header\n", "h.ply"), "h.ply", 4,
+      "unknown type 'float128'");
   require_error_at_line(
       tessera::parse_ply("ply\n" + f + "element face 1\nproperty list float int vertex_indices\nend_header\n", "h.ply"),
       "h.ply", 4, "count type");
-  require_error_at_line(tessera::parse_ply("ply\n" + f + "elephant 1\nend_header\n", "h.ply"), "h.ply", 3, "unknown header keyword");
-  require_error_at_line(tessera::parse_ply("ply\n" + f + "element vertex 1\nproperty float x\nend_header\n0\n", "h.ply"),
-                        "h.ply", 3, "x, y and z");
+  require_error_at_line(tessera::parse_ply("ply\n" + f + "elephant 1\nend_header\n", "h.ply"), "h.ply", 3,
+                        "unknown header keyword");
+  require_error_at_line(
+      tessera::parse_ply("ply\n" + f + "element vertex 1\nproperty float x\nend_header\n0\n", "h.ply"), "h.ply", 3,
+      "x, y and z");
+  require_error_at_line(
+      tessera::parse_ply("ply\n" + f +
+                             "element vertex 0\nproperty float x\nproperty float y\nproperty float z\n"
+                             "element face 0\nproperty int vertex_indices\nend_header\n",
+                         "h.ply"),
+      "h.ply", 7, "list property vertex_indices");
   require_error_at_line(tessera::parse_ply("ply\n" + f +
-                                               "element vertex 0\nproperty float x\nproperty float y\nproperty float z\n"
-                                               "element face 0\nproperty int vertex_indices\nend_header\n",
-                                           "h.ply"),
-                        "h.ply", 7, "list property vertex_indices");
-  require_error_at_line(tessera::parse_ply("ply\n" + f + "element face 1\nproperty list uchar int vertex_indices\n"
-                                                         "end_header\n3 0 1 2\n",
+                                               "element face 1\nproperty list uchar int vertex_indices\n"
+                                               "end_header\n3 0 1 2\n",
                                            "h.ply"),
                         "h.ply", 3, "without a vertex element");
   // counts the data cannot hold: refused before any allocation
-  require_error_at_line(tessera::parse_ply("ply\n" + f + "element vertex 4000000000\nproperty float x\nproperty float y\n"
-                                                         "property float z\nend_header\n0 0 0\n",
+  require_error_at_line(tessera::parse_ply("ply\n" + f +
+                                               "element vertex 4000000000\nproperty float x\nproperty float y\n"
+                                               "property float z\nend_header\n0 0 0\n",
                                            "h.ply"),
                         "h.ply", 3, "declares 4000000000 'vertex' elements");
 }
 
 TEST_CASE("ply: malformed data names the line (ASCII) or byte (binary)", "[ply]") {
-  const std::string head = "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
-                           "element face 1\nproperty list int int vertex_indices\nend_header\n";
-  auto ascii = [&](const std::string& data) { return tessera::parse_ply("ply\nformat ascii 1.0\n" + head + data, "d.ply"); };
+  const std::string head =
+      "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+      "element face 1\nproperty list int int vertex_indices\nend_header\n";
+  auto ascii = [&](const std::string& data) {
+    return tessera::parse_ply("ply\nformat ascii 1.0\n" + head + data, "d.ply");
+  };
   using samples::require_error_at_line;
   const std::string v = "0 0 0\n1 0 0\n0 1 0\n";
   require_error_at_line(ascii(v + "3 0 1 3\n"), "d.ply", 13, "vertex index 3 outside 0..2");
@@ -223,10 +245,13 @@ TEST_CASE("ply: malformed data names the line (ASCII) or byte (binary)", "[ply]"
   REQUIRE(r.error().message().rfind("d.ply, byte " + std::to_string(bin_head.size() + 16) + ":", 0) == 0);
   REQUIRE(r.error().message().find("not a finite number") != std::string::npos);
   // texcoord lists that do not match the corners
-  const std::string tex_head = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-                               "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
-                               "property list uchar float texcoord\nend_header\n" + v;
-  require_error_at_line(tessera::parse_ply(tex_head + "3 0 1 2 4 0 0 1 0\n", "t.ply"), "t.ply", 14, "2 uv pairs for 3 corners");
+  const std::string tex_head =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+      "property list uchar float texcoord\nend_header\n" +
+      v;
+  require_error_at_line(tessera::parse_ply(tex_head + "3 0 1 2 4 0 0 1 0\n", "t.ply"), "t.ply", 14,
+                        "2 uv pairs for 3 corners");
   require_error_at_line(tessera::parse_ply(tex_head + "3 0 1 2 5 0 0 1 0 1\n", "t.ply"), "t.ply", 14, "odd number");
   REQUIRE(tessera::read_ply(samples::out_path("missing.ply")).error().code() == status_code::io_error);
 }
@@ -257,7 +282,8 @@ TEST_CASE("ply: write errors", "[ply]") {
   tri_mesh bad = samples::grid(1, 1, false);
   bad.faces[0] = {0, 0, 1};
   REQUIRE(tessera::write_ply(samples::out_path("bad.ply"), bad).code() == status_code::invalid_argument);
-  REQUIRE(tessera::write_ply(samples::out_path("no/dir.ply"), samples::grid(1, 1, false)).code() == status_code::io_error);
+  REQUIRE(tessera::write_ply(samples::out_path("no/dir.ply"), samples::grid(1, 1, false)).code() ==
+          status_code::io_error);
 }
 
 TEST_CASE("ply: an element without properties holds no data, whatever count it declares", "[ply][bad_input]") {

@@ -23,8 +23,10 @@ image_buffer<T, C> noise(index_t w, index_t h, std::uint64_t seed) {
   image_buffer<T, C> b(w, h);
   const tessera::counter_rng rng(seed);
   for (index_t i = 0; i < w * h * C; ++i) {
-    if constexpr (std::is_same_v<T, float>) b.data()[i] = static_cast<float>(rng.uniform(i));
-    else b.data()[i] = static_cast<T>(rng.below(std::uint64_t{std::numeric_limits<T>::max()} + 1, i));
+    if constexpr (std::is_same_v<T, float>)
+      b.data()[i] = static_cast<float>(rng.uniform(i));
+    else
+      b.data()[i] = static_cast<T>(rng.below(std::uint64_t{std::numeric_limits<T>::max()} + 1, i));
   }
   return b;
 }
@@ -45,7 +47,8 @@ std::vector<unsigned char> handmade_png(std::uint32_t w, std::uint32_t h, int de
   put_png_chunk(file, "IHDR", ihdr.data(), ihdr.size());
   for (const auto& [type, data] : extra) put_png_chunk(file, type.c_str(), data.data(), data.size());
   int zlen = 0;
-  unsigned char* z = stbi_zlib_compress(const_cast<unsigned char*>(filtered.data()), static_cast<int>(filtered.size()), &zlen, 8);
+  unsigned char* z =
+      stbi_zlib_compress(const_cast<unsigned char*>(filtered.data()), static_cast<int>(filtered.size()), &zlen, 8);
   put_png_chunk(file, "IDAT", z, static_cast<std::size_t>(zlen));
   std::free(z);
   put_png_chunk(file, "IEND", nullptr, 0);
@@ -62,7 +65,8 @@ void fix_crc(std::vector<unsigned char>& png, std::size_t chunk_start) {
 TEMPLATE_TEST_CASE("png: lossless round trips for every channel type and count", "[png]", std::uint8_t, std::uint16_t) {
   auto check = [&]<int C>() {
     const auto img = noise<TestType, C>(7, 5, C);
-    const std::string path = out_path("roundtrip_" + std::to_string(sizeof(TestType)) + "_" + std::to_string(C) + ".png");
+    const std::string path =
+        out_path("roundtrip_" + std::to_string(sizeof(TestType)) + "_" + std::to_string(C) + ".png");
     REQUIRE(tessera::write_png(path, img).ok());
     const auto info = tessera::read_png_info(path);
     REQUIRE(info.ok());
@@ -205,7 +209,8 @@ TEST_CASE("png: corrupt compressed data with valid checksums never crashes", "[p
     bad[idat + 8 + i] ^= 0x5a;
     fix_crc(bad, idat);
     const auto r = tessera::decode_png<std::uint8_t, 3>(bad.data(), bad.size(), "evil.png");
-    if (r.ok()) ++decoded;
+    if (r.ok())
+      ++decoded;
     else {
       ++rejected;
       REQUIRE(r.error().code() == status_code::parse_error);

@@ -48,7 +48,9 @@ TEST_CASE("wang tile io: missing and mismatched files are named", "[wang]") {
   const auto dir = scratch("broken");
   REQUIRE(tessera::save_wang_tiles(dir, *set).ok());
   // a tile of the wrong size
-  REQUIRE(tessera::write_png((std::filesystem::path(dir) / "tile_1.png").string(), tessera::image_buffer<std::uint8_t, 3>(9, 8)).ok());
+  REQUIRE(tessera::write_png((std::filesystem::path(dir) / "tile_1.png").string(),
+                             tessera::image_buffer<std::uint8_t, 3>(9, 8))
+              .ok());
   auto wrong = tessera::load_wang_tiles<std::uint8_t, 3>(dir);
   REQUIRE(wrong.error().code() == tessera::status_code::invalid_argument);
   REQUIRE_THAT(wrong.error().message(), Catch::Contains("tile_1.png is 9 x 8") && Catch::Contains("tile_size 8"));
@@ -61,7 +63,8 @@ TEST_CASE("wang tile io: missing and mismatched files are named", "[wang]") {
   REQUIRE(missing.error().code() == tessera::status_code::io_error);
   REQUIRE_THAT(missing.error().message(), Catch::Contains("tile_2.png"));
   // no directory at all
-  REQUIRE(tessera::load_wang_tiles<std::uint8_t, 3>(scratch("nothing")).error().code() == tessera::status_code::io_error);
+  REQUIRE(tessera::load_wang_tiles<std::uint8_t, 3>(scratch("nothing")).error().code() ==
+          tessera::status_code::io_error);
   // a malformed manifest
   std::ofstream(std::filesystem::path(dir) / "tiles.json") << "{\"tile_size\": 8,";
   auto malformed = tessera::load_wang_tiles<std::uint8_t, 3>(dir);

@@ -30,8 +30,7 @@ struct EngineMesh : OpenMesh::TriMesh_ArrayKernelT<DoubleTraits> {};
 template <class M>
 void add_cube(M& m, double shift = 0.0) {
   std::vector<typename M::VertexHandle> v;
-  for (int i = 0; i < 8; ++i)
-    v.push_back(m.add_vertex(typename M::Point(shift + (i & 1), (i >> 1) & 1, (i >> 2) & 1)));
+  for (int i = 0; i < 8; ++i) v.push_back(m.add_vertex(typename M::Point(shift + (i & 1), (i >> 1) & 1, (i >> 2) & 1)));
   const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
   for (const auto& q : quads) {
     m.add_face(v[q[0]], v[q[1]], v[q[2]]);
@@ -128,8 +127,9 @@ TEST_CASE("non-triangle faces are reported until the mesh is triangulated") {
   PolyMesh m = quad_cube();
   const auto s = tessera::validate_openmesh(m, "cube");
   CHECK(s.code() == tessera::status_code::invalid_argument);
-  CHECK(s.message() == "cube: face 0 has 4 vertices; tessera reads triangle meshes (call triangulate() on the "
-                       "OpenMesh mesh first)");
+  CHECK(s.message() ==
+        "cube: face 0 has 4 vertices; tessera reads triangle meshes (call triangulate() on the "
+        "OpenMesh mesh first)");
   // validate_mesh and to_tri_mesh run the same check, so a quad is never read as a triangle.
   CHECK(tessera::validate_mesh(m).message().find("face 0 has 4 vertices") != std::string::npos);
   CHECK_FALSE(tessera::to_tri_mesh(m).ok());

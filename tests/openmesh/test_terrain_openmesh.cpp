@@ -55,7 +55,8 @@ TEST_CASE("prepare_terrain_mesh: an OpenMesh terrain gives the same faces and ad
     }
   }
   // and the per-frame pipeline runs on it
-  const auto cam = tessera::make_camera_preset(tessera::camera_preset::oblique, tessera::bounding_box(b), 96, 64).value();
+  const auto cam =
+      tessera::make_camera_preset(tessera::camera_preset::oblique, tessera::bounding_box(b), 96, 64).value();
   const auto proj = tessera::project_mesh(b, cam).value();
   REQUIRE(proj.num_visible() == b.num_faces());
   const auto field = tessera::assign_scale_field(b, proj).value();
@@ -81,7 +82,8 @@ TEST_CASE("prepare_terrain_mesh: OpenMesh meshes with deleted elements or polygo
 
   OpenMesh::PolyMesh_ArrayKernelT<> quad;
   std::vector<OpenMesh::PolyMesh_ArrayKernelT<>::VertexHandle> v;
-  for (int i = 0; i < 4; ++i) v.push_back(quad.add_vertex({static_cast<float>(i & 1), static_cast<float>(i >> 1), 0.0f}));
+  for (int i = 0; i < 4; ++i)
+    v.push_back(quad.add_vertex({static_cast<float>(i & 1), static_cast<float>(i >> 1), 0.0f}));
   quad.add_face(std::vector<OpenMesh::PolyMesh_ArrayKernelT<>::VertexHandle>{v[0], v[1], v[3], v[2]});
   REQUIRE_FALSE(tessera::prepare_terrain_mesh(quad));
 }

@@ -68,11 +68,14 @@ std::vector<raster_triangle> jittered_grid(int cells_x, int cells_y, double cell
     for (int i = 0; i < cells_x; ++i) {
       const auto a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
       std::array<std::array<std::array<double, 2>, 3>, 2> q;
-      if (rng.below(2, i, j, 7) == 0) q = {{{a, b, c}, {a, c, d}}};
-      else q = {{{a, b, d}, {b, c, d}}};
+      if (rng.below(2, i, j, 7) == 0)
+        q = {{{a, b, c}, {a, c, d}}};
+      else
+        q = {{{a, b, d}, {b, c, d}}};
       for (auto& t : q) {
         if (rng.below(2, i, j, 9) == 0) std::swap(t[1], t[2]);
-        tris.push_back({raster_vertex{t[0][0], t[0][1]}, raster_vertex{t[1][0], t[1][1]}, raster_vertex{t[2][0], t[2][1]}});
+        tris.push_back(
+            {raster_vertex{t[0][0], t[0][1]}, raster_vertex{t[1][0], t[1][1]}, raster_vertex{t[2][0], t[2][1]}});
       }
     }
   return tris;
@@ -98,7 +101,8 @@ TEST_CASE("rasterizer: a jittered triangulation covers every pixel exactly once"
     const pixel_rect clip{0, 0, 70, 50};
     std::vector<int> hits(static_cast<std::size_t>(clip.width() * clip.height()), 0);
     for (const auto& t : tris)
-      REQUIRE(tessera::rasterize_triangle(t, clip, [&](const fragment& f) { ++hits[static_cast<std::size_t>(f.y * 70 + f.x)]; }));
+      REQUIRE(tessera::rasterize_triangle(
+          t, clip, [&](const fragment& f) { ++hits[static_cast<std::size_t>(f.y * 70 + f.x)]; }));
     for (index_t y = 0; y < clip.y1; ++y)
       for (index_t x = 0; x < clip.x1; ++x) {
         const bool inside = x < cx * cell && y < cy * cell;
@@ -141,14 +145,16 @@ TEST_CASE("rasterizer: vertex order changes neither coverage nor corner weights"
     (void)tessera::rasterize_triangle(t, clip, [&](const fragment& f) { ref[{f.x, f.y}] = f; });
     std::array<int, 3> perm = {0, 1, 2};
     do {
-      const raster_triangle p = {t[static_cast<std::size_t>(perm[0])], t[static_cast<std::size_t>(perm[1])], t[static_cast<std::size_t>(perm[2])]};
+      const raster_triangle p = {t[static_cast<std::size_t>(perm[0])], t[static_cast<std::size_t>(perm[1])],
+                                 t[static_cast<std::size_t>(perm[2])]};
       std::size_t n = 0;
       (void)tessera::rasterize_triangle(p, clip, [&](const fragment& f) {
         ++n;
         auto it = ref.find({f.x, f.y});
         REQUIRE(it != ref.end());
         for (int k = 0; k < 3; ++k)
-          REQUIRE(f.bary[static_cast<std::size_t>(k)] == Approx(it->second.bary[static_cast<std::size_t>(perm[static_cast<std::size_t>(k)])]).margin(1e-12));
+          REQUIRE(f.bary[static_cast<std::size_t>(k)] ==
+                  Approx(it->second.bary[static_cast<std::size_t>(perm[static_cast<std::size_t>(k)])]).margin(1e-12));
         REQUIRE(f.depth == Approx(it->second.depth).margin(1e-12));
       });
       REQUIRE(n == ref.size());
@@ -158,7 +164,8 @@ TEST_CASE("rasterizer: vertex order changes neither coverage nor corner weights"
 
 TEST_CASE("rasterizer: screen-linear weights reproduce the pixel centre and depth", "[rasterizer]") {
   // vertices on the 1/256 grid, so snapping is exact
-  const raster_triangle t = {raster_vertex{1.25, 2.5, 0.0}, raster_vertex{37.75, 9.0, 1.0}, raster_vertex{12.5, 30.125, 0.5}};
+  const raster_triangle t = {raster_vertex{1.25, 2.5, 0.0}, raster_vertex{37.75, 9.0, 1.0},
+                             raster_vertex{12.5, 30.125, 0.5}};
   std::size_t n = 0;
   REQUIRE(tessera::rasterize_triangle(t, {0, 0, 40, 40}, [&](const fragment& f) {
     ++n;
@@ -192,8 +199,10 @@ struct camera_fixture {
     return c;
   }
   // ray through the pixel centre intersected with the triangle's plane: weights and view depth
-  bool ray_cast(const std::array<glm::dvec3, 3>& w, index_t px, index_t py, std::array<double, 3>& bary, double& depth) const {
-    const double nx = (static_cast<double>(px) + 0.5) / vp.width * 2 - 1, ny = 1 - (static_cast<double>(py) + 0.5) / vp.height * 2;
+  bool ray_cast(const std::array<glm::dvec3, 3>& w, index_t px, index_t py, std::array<double, 3>& bary,
+                double& depth) const {
+    const double nx = (static_cast<double>(px) + 0.5) / vp.width * 2 - 1,
+                 ny = 1 - (static_cast<double>(py) + 0.5) / vp.height * 2;
     const glm::dmat4 inv = glm::inverse(proj * view);
     glm::dvec4 a = inv * glm::dvec4(nx, ny, -1, 1), b = inv * glm::dvec4(nx, ny, 1, 1);
     const glm::dvec3 o = glm::dvec3(a) / a.w, d = glm::normalize(glm::dvec3(b) / b.w - o);
@@ -250,7 +259,8 @@ TEST_CASE("rasterizer: triangles crossing the near plane are clipped, not mirror
     for (index_t x = 0; x < 64; ++x) {
       std::array<double, 3> b;
       double depth = 0;
-      const bool solid = cam.ray_cast(w, x, y, b, depth) && std::min({b[0], b[1], b[2]}) > 1e-2 && depth > 0.5 * 1.01 && depth < 99;
+      const bool solid =
+          cam.ray_cast(w, x, y, b, depth) && std::min({b[0], b[1], b[2]}) > 1e-2 && depth > 0.5 * 1.01 && depth < 99;
       if (solid) REQUIRE(hits[static_cast<std::size_t>(y * 64 + x)] == 1);
       REQUIRE(hits[static_cast<std::size_t>(y * 64 + x)] <= 1);
       covered += hits[static_cast<std::size_t>(y * 64 + x)];
@@ -265,7 +275,8 @@ TEST_CASE("rasterizer: triangles crossing the near plane are clipped, not mirror
 
 TEST_CASE("rasterizer: zero-to-one clip depth maps the near plane to 0", "[rasterizer]") {
   // w = 2, z = 0 is the near plane in the 0..1 convention and the middle of the range in OpenGL's
-  const clip_triangle t = {tessera::clip_vertex{-2, -2, 0, 2}, tessera::clip_vertex{2, -2, 0, 2}, tessera::clip_vertex{0, 2, 0, 2}};
+  const clip_triangle t = {tessera::clip_vertex{-2, -2, 0, 2}, tessera::clip_vertex{2, -2, 0, 2},
+                           tessera::clip_vertex{0, 2, 0, 2}};
   double d_zo = -1, d_gl = -1;
   REQUIRE(tessera::rasterize_clip_triangle(t, {0, 0, 8, 8, tessera::clip_depth::zero_to_one}, {0, 0, 8, 8},
                                            [&](const fragment& f) { d_zo = f.depth; }));
@@ -275,7 +286,8 @@ TEST_CASE("rasterizer: zero-to-one clip depth maps the near plane to 0", "[raste
 }
 
 TEST_CASE("rasterizer: huge coordinates are clipped to the guard band exactly", "[rasterizer]") {
-  const raster_triangle t = {raster_vertex{-3e9, -1e9, 0.0}, raster_vertex{4e9, -2e9, 1.0}, raster_vertex{1e7, 5e9, 0.5}};
+  const raster_triangle t = {raster_vertex{-3e9, -1e9, 0.0}, raster_vertex{4e9, -2e9, 1.0},
+                             raster_vertex{1e7, 5e9, 0.5}};
   std::vector<int> hits(32 * 32, 0);
   REQUIRE(tessera::rasterize_triangle(t, {0, 0, 32, 32}, [&](const fragment& f) {
     ++hits[static_cast<std::size_t>(f.y * 32 + f.x)];
@@ -293,8 +305,10 @@ TEST_CASE("rasterizer: degenerate, non-finite and culled triangles produce nothi
   auto count = [&](const fragment&) { ++n; };
   REQUIRE(tessera::rasterize_triangle({raster_vertex{1, 1}, raster_vertex{5, 5}, raster_vertex{9, 9}}, clip, count));
   REQUIRE(tessera::rasterize_triangle({raster_vertex{1, 1}, raster_vertex{NAN, 5}, raster_vertex{9, 2}}, clip, count));
-  REQUIRE(tessera::rasterize_triangle({raster_vertex{1, 1, 0, 0}, raster_vertex{9, 1}, raster_vertex{1, 9}}, clip, count));
-  REQUIRE(tessera::rasterize_triangle({raster_vertex{1, 1, 0, -1}, raster_vertex{9, 1}, raster_vertex{1, 9}}, clip, count));
+  REQUIRE(
+      tessera::rasterize_triangle({raster_vertex{1, 1, 0, 0}, raster_vertex{9, 1}, raster_vertex{1, 9}}, clip, count));
+  REQUIRE(
+      tessera::rasterize_triangle({raster_vertex{1, 1, 0, -1}, raster_vertex{9, 1}, raster_vertex{1, 9}}, clip, count));
   REQUIRE(n == 0);
   // (1,1) -> (9,1) -> (1,9) turns clockwise on a y-down screen
   const raster_triangle cw = {raster_vertex{1, 1}, raster_vertex{9, 1}, raster_vertex{1, 9}};
@@ -322,7 +336,10 @@ TEST_CASE("rasterizer: bad arguments return a status naming them", "[rasterizer]
   s = tessera::rasterize_clip_triangle(c, {0, 0, 0, 8}, {0, 0, 8, 8}, none);
   REQUIRE(s.message().find("viewport") != std::string::npos);
   REQUIRE_FALSE(tessera::rasterize_clip_triangle(c, {0, 0, NAN, 8}, {0, 0, 8, 8}, none));
-  auto get = [&](index_t, raster_triangle& out) { out = t; return true; };
+  auto get = [&](index_t, raster_triangle& out) {
+    out = t;
+    return true;
+  };
   auto fn = [](index_t, const fragment&) {};
   s = tessera::rasterize_triangles(-1, {0, 0, 8, 8}, get, fn);
   REQUIRE(s.message().find("count") != std::string::npos);
@@ -362,7 +379,8 @@ TEST_CASE("rasterizer: batches give identical fragments for every executor and t
   for (std::size_t i = 0; i < tris.size(); ++i)
     if (i % 17 != 5)
       (void)tessera::rasterize_triangle(tris[i], clip, [&](const fragment& f) {
-        ref[static_cast<std::size_t>(f.y * w + f.x)].push_back({static_cast<index_t>(i), {f.bary[0], f.bary[1], f.bary[2], f.depth}});
+        ref[static_cast<std::size_t>(f.y * w + f.x)].push_back(
+            {static_cast<index_t>(i), {f.bary[0], f.bary[1], f.bary[2], f.depth}});
       });
   REQUIRE(run(tessera::serial_executor{}, 64) == ref);
   tessera::thread_pool_executor pool(3);
@@ -378,18 +396,24 @@ TEST_CASE("rasterizer: clip-space batches match single calls", "[rasterizer]") {
   for (int i = 0; i < 80; ++i) {
     std::array<glm::dvec3, 3> w;
     for (int k = 0; k < 3; ++k)
-      w[static_cast<std::size_t>(k)] = {rng.uniform(i, k, 0) * 12 - 6, rng.uniform(i, k, 1) * 4 - 2, rng.uniform(i, k, 2) * -30 + 3};
+      w[static_cast<std::size_t>(k)] = {rng.uniform(i, k, 0) * 12 - 6, rng.uniform(i, k, 1) * 4 - 2,
+                                        rng.uniform(i, k, 2) * -30 + 3};
     tris.push_back(cam.to_clip(w));
   }
   std::vector<std::vector<index_t>> ref(64 * 48), got(64 * 48);
   for (std::size_t i = 0; i < tris.size(); ++i)
-    (void)tessera::rasterize_clip_triangle(tris[i], cam.vp, {0, 0, 64, 48},
-                                           [&](const fragment& f) { ref[static_cast<std::size_t>(f.y * 64 + f.x)].push_back(static_cast<index_t>(i)); });
+    (void)tessera::rasterize_clip_triangle(tris[i], cam.vp, {0, 0, 64, 48}, [&](const fragment& f) {
+      ref[static_cast<std::size_t>(f.y * 64 + f.x)].push_back(static_cast<index_t>(i));
+    });
   tessera::thread_pool_executor pool(2);
   REQUIRE(tessera::rasterize_clip_triangles(
       static_cast<index_t>(tris.size()), cam.vp, {0, 0, 64, 48},
-      [&](index_t i, clip_triangle& out) { out = tris[static_cast<std::size_t>(i)]; return true; },
-      [&](index_t i, const fragment& f) { got[static_cast<std::size_t>(f.y * 64 + f.x)].push_back(i); }, {.tile_size = 16}, pool));
+      [&](index_t i, clip_triangle& out) {
+        out = tris[static_cast<std::size_t>(i)];
+        return true;
+      },
+      [&](index_t i, const fragment& f) { got[static_cast<std::size_t>(f.y * 64 + f.x)].push_back(i); },
+      {.tile_size = 16}, pool));
   REQUIRE(got == ref);
 }
 
@@ -408,7 +432,8 @@ TEST_CASE("depth_buffer: the nearest fragment wins whatever the drawing order", 
   for (std::size_t i = 0; i < tris.size(); ++i)
     (void)tessera::rasterize_triangle(tris[i], clip, [&](const fragment& f) {
       const auto p = static_cast<std::size_t>(f.y * 40 + f.x);
-      if (static_cast<float>(f.depth) < best[p]) best[p] = static_cast<float>(f.depth), expect[p] = static_cast<index_t>(i);
+      if (static_cast<float>(f.depth) < best[p])
+        best[p] = static_cast<float>(f.depth), expect[p] = static_cast<index_t>(i);
     });
   for (int order = 0; order < 2; ++order) {
     auto db = tessera::depth_buffer::create(40, 40);
@@ -418,9 +443,13 @@ TEST_CASE("depth_buffer: the nearest fragment wins whatever the drawing order", 
     tessera::thread_pool_executor pool(2);
     REQUIRE(tessera::rasterize_triangles(
         n, db->rect(),
-        [&](index_t i, raster_triangle& out) { out = tris[static_cast<std::size_t>(order == 0 ? i : n - 1 - i)]; return true; },
+        [&](index_t i, raster_triangle& out) {
+          out = tris[static_cast<std::size_t>(order == 0 ? i : n - 1 - i)];
+          return true;
+        },
         [&](index_t i, const fragment& f) {
-          if (db->test_and_set(f.x, f.y, f.depth)) id[static_cast<std::size_t>(f.y * 40 + f.x)] = order == 0 ? i : n - 1 - i;
+          if (db->test_and_set(f.x, f.y, f.depth))
+            id[static_cast<std::size_t>(f.y * 40 + f.x)] = order == 0 ? i : n - 1 - i;
         },
         {.tile_size = 8}, pool));
     REQUIRE(id == expect);

@@ -143,7 +143,8 @@ static_assert(channels_v<engine::Texture> == 4);
 static_assert(WritableImage<eigen_image_view<Eigen::MatrixXf>>);
 static_assert(WritableImage<eigen_image_view<Eigen::Matrix<std::uint8_t, -1, -1, Eigen::RowMajor>>>);
 static_assert(WritableImage<eigen_image_view<Eigen::Map<Eigen::MatrixXf>>>);
-static_assert(Image<eigen_image_view<const Eigen::MatrixXf>> && !WritableImage<eigen_image_view<const Eigen::MatrixXf>>);
+static_assert(Image<eigen_image_view<const Eigen::MatrixXf>> &&
+              !WritableImage<eigen_image_view<const Eigen::MatrixXf>>);
 static_assert(Image<eigen_image_view<Eigen::Map<const Eigen::MatrixXf>>> &&
               !WritableImage<eigen_image_view<Eigen::Map<const Eigen::MatrixXf>>>);
 static_assert(std::is_same_v<pixel_t<eigen_image_view<Eigen::MatrixXd>>, float>);
@@ -161,7 +162,8 @@ static_assert(!Image<tri_mesh>);
 // --- Pixel ---------------------------------------------------------------------------------------
 static_assert(Pixel<std::uint8_t> && Pixel<std::uint16_t> && Pixel<float>);
 static_assert(Pixel<pixel<std::uint8_t, 1>> && Pixel<pixel<float, 4>>);
-static_assert(Pixel<Eigen::Matrix<std::uint8_t, 4, 1>> && Pixel<Eigen::Vector3f> && Pixel<Eigen::Array<std::uint16_t, 2, 1>>);
+static_assert(Pixel<Eigen::Matrix<std::uint8_t, 4, 1>> && Pixel<Eigen::Vector3f> &&
+              Pixel<Eigen::Array<std::uint16_t, 2, 1>>);
 static_assert(Pixel<glm::u8vec4> && Pixel<glm::vec3> && Pixel<glm::u16vec1>);
 static_assert(!Pixel<double> && !Pixel<int> && !Pixel<bool>);
 static_assert(!Pixel<std::array<std::uint8_t, 5>> && !Pixel<std::array<double, 3>>);

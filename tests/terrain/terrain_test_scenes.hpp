@@ -15,25 +15,28 @@ inline tessera::terrain_mesh prepared_terrain(tessera::index_t cells, std::uint6
   return tessera::prepare_terrain_mesh(m.value()).value();
 }
 
-inline tessera::terrain_camera preset_camera(const tessera::terrain_mesh& m, tessera::camera_preset p, tessera::index_t w = 160,
-                                             tessera::index_t h = 90) {
+inline tessera::terrain_camera preset_camera(const tessera::terrain_mesh& m, tessera::camera_preset p,
+                                             tessera::index_t w = 160, tessera::index_t h = 90) {
   return tessera::make_camera_preset(p, tessera::bounding_box(m), w, h).value();
 }
 
 /// A low eye over the 100 x 100 ground of a coarse terrain (make it with a few cells), looking
 /// ahead and slightly down: the large faces under the eye reach behind it and cross the near plane.
 inline tessera::terrain_camera low_camera(tessera::index_t w, tessera::index_t h) {
-  return tessera::make_camera({.eye = {3, -10, 9}, .target = {0, 40, 0}, .fov_y_degrees = 70, .near = 0.05, .far = 400}, w, h).value();
+  return tessera::make_camera({.eye = {3, -10, 9}, .target = {0, 40, 0}, .fov_y_degrees = 70, .near = 0.05, .far = 400},
+                              w, h)
+      .value();
 }
 
 /// A random camera somewhere above the terrain looking at a random point of it.
-inline tessera::terrain_camera random_camera(const tessera::terrain_mesh& m, std::uint64_t seed, tessera::index_t w = 120,
-                                             tessera::index_t h = 80) {
+inline tessera::terrain_camera random_camera(const tessera::terrain_mesh& m, std::uint64_t seed,
+                                             tessera::index_t w = 120, tessera::index_t h = 80) {
   const tessera::counter_rng rng(seed);
   const tessera::aabb b = tessera::bounding_box(m);
   const tessera::vec3 e = b.extent();
   tessera::look_at_camera l;
-  l.eye = {b.min.x + e.x * rng.uniform(0), b.min.y + e.y * rng.uniform(1), b.max.z + (0.02 + 0.5 * rng.uniform(2)) * e.x};
+  l.eye = {b.min.x + e.x * rng.uniform(0), b.min.y + e.y * rng.uniform(1),
+           b.max.z + (0.02 + 0.5 * rng.uniform(2)) * e.x};
   l.target = {b.min.x + e.x * rng.uniform(3), b.min.y + e.y * rng.uniform(4), b.min.z};
   l.fov_y_degrees = 30 + 60 * rng.uniform(5);
   l.near = 0.01;

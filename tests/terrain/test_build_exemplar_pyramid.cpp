@@ -27,7 +27,8 @@ struct wave_image {
 }  // namespace
 
 TEST_CASE("exemplar pyramid: finely spaced levels from 1 to min_scale", "[terrain][pyramid]") {
-  const auto ex = tessera::make_exemplar<std::uint8_t, 3>(tessera::exemplar_kind::rock, {.width = 64, .height = 48}).value();
+  const auto ex =
+      tessera::make_exemplar<std::uint8_t, 3>(tessera::exemplar_kind::rock, {.width = 64, .height = 48}).value();
   const auto p = tessera::build_exemplar_pyramid(ex).value();
   REQUIRE(p.num_levels() == 64);  // (1 - 0.5) / 0.008 = 62.5 steps -> 63 steps
   REQUIRE(p.scale(0) == 1.0);
@@ -44,7 +45,8 @@ TEST_CASE("exemplar pyramid: finely spaced levels from 1 to min_scale", "[terrai
   REQUIRE(tessera::build_exemplar_pyramid(ex, {.min_scale = 1.0}).value().num_levels() == 1);
 }
 
-TEST_CASE("exemplar pyramid: low-pass resampling (constants stay, detail above Nyquist is removed)", "[terrain][pyramid]") {
+TEST_CASE("exemplar pyramid: low-pass resampling (constants stay, detail above Nyquist is removed)",
+          "[terrain][pyramid]") {
   // constant
   const tessera::image_buffer<float, 1> flat(40, 40, {0.3f});
   const auto pf = tessera::build_exemplar_pyramid(flat, {.min_scale = 0.5, .levels = 5}).value();
@@ -77,7 +79,8 @@ TEST_CASE("exemplar pyramid: low-pass resampling (constants stay, detail above N
 }
 
 TEST_CASE("exemplar pyramid: sampling at a scale", "[terrain][pyramid]") {
-  const auto ex = tessera::make_exemplar<std::uint8_t, 4>(tessera::exemplar_kind::sand, {.width = 32, .height = 32}).value();
+  const auto ex =
+      tessera::make_exemplar<std::uint8_t, 4>(tessera::exemplar_kind::sand, {.width = 32, .height = 32}).value();
   const tessera::image_view<const std::uint8_t, 4> view(ex.data(), 32, 32);
   const auto p = tessera::build_exemplar_pyramid(view, {.min_scale = 0.5, .levels = 3}).value();
   // scale 1, pixel centres: the exemplar itself
@@ -91,7 +94,8 @@ TEST_CASE("exemplar pyramid: sampling at a scale", "[terrain][pyramid]") {
   const auto a = p.sample(0.75, 10.5, 7.5);
   REQUIRE(a[0] == Approx(l1.read(10, 7)[0] / 255.0f).margin(1e-6));
   const double s = 0.875;
-  const auto m = p.sample(s, 9.0 * s, 5.0 * s), c0 = p.sample(1.0, 9.0, 5.0), c1 = p.sample(0.75, 9.0 * 0.75, 5.0 * 0.75);
+  const auto m = p.sample(s, 9.0 * s, 5.0 * s), c0 = p.sample(1.0, 9.0, 5.0),
+             c1 = p.sample(0.75, 9.0 * 0.75, 5.0 * 0.75);
   REQUIRE(m[1] == Approx(0.5f * (c0[1] + c1[1])).margin(1e-5));
   REQUIRE(p.level_position(0.875) == Approx(0.5));
 }
@@ -99,11 +103,13 @@ TEST_CASE("exemplar pyramid: sampling at a scale", "[terrain][pyramid]") {
 TEST_CASE("exemplar pyramid: bad options, cancellation, executors", "[terrain][pyramid]") {
   const auto ex = tessera::make_exemplar<float, 3>(tessera::exemplar_kind::grass, {.width = 40, .height = 40}).value();
   for (double s : {0.0, 1.2, -1.0, std::nan("")})
-    REQUIRE(tessera::build_exemplar_pyramid(ex, {.min_scale = s}).error().message().find("min_scale") != std::string::npos);
+    REQUIRE(tessera::build_exemplar_pyramid(ex, {.min_scale = s}).error().message().find("min_scale") !=
+            std::string::npos);
   REQUIRE(tessera::build_exemplar_pyramid(ex, {.levels = -1}).error().message().find("levels") != std::string::npos);
   REQUIRE(tessera::build_exemplar_pyramid(ex, {.levels = 5000}).error().message().find("levels") != std::string::npos);
   REQUIRE(tessera::build_exemplar_pyramid(ex, {.max_step = 0}).error().message().find("max_step") != std::string::npos);
-  REQUIRE(tessera::build_exemplar_pyramid(ex, {.min_scale = 0.001, .max_step = 1e-4}).error().message().find("4096") != std::string::npos);
+  REQUIRE(tessera::build_exemplar_pyramid(ex, {.min_scale = 0.001, .max_step = 1e-4}).error().message().find("4096") !=
+          std::string::npos);
   REQUIRE_FALSE(tessera::build_exemplar_pyramid(tessera::image_buffer<float, 3>{}));
   int calls = 0;
   tessera::exemplar_pyramid_options stop{.levels = 10};

@@ -23,8 +23,8 @@ using tessera::index_t;
 
 namespace {
 std::uint32_t le32(const std::vector<unsigned char>& b, std::size_t at) {
-  return static_cast<std::uint32_t>(b[at]) | static_cast<std::uint32_t>(b[at + 1]) << 8 | static_cast<std::uint32_t>(b[at + 2]) << 16 |
-         static_cast<std::uint32_t>(b[at + 3]) << 24;
+  return static_cast<std::uint32_t>(b[at]) | static_cast<std::uint32_t>(b[at + 1]) << 8 |
+         static_cast<std::uint32_t>(b[at + 2]) << 16 | static_cast<std::uint32_t>(b[at + 3]) << 24;
 }
 float lef32(const std::vector<unsigned char>& b, std::size_t at) {
   const std::uint32_t v = le32(b, at);
@@ -40,7 +40,8 @@ TEST_CASE("terrain uv file: what --uv-out writes reads back and textures every v
   const auto cam = terrain_test::low_camera(64, 40);
   const auto proj = tessera::project_mesh(mesh, cam).value();
   REQUIRE(proj.near_clipped > 0);
-  const auto ex = tessera::make_exemplar<std::uint8_t, 3>(tessera::exemplar_kind::sand, {.width = 40, .height = 32}).value();
+  const auto ex =
+      tessera::make_exemplar<std::uint8_t, 3>(tessera::exemplar_kind::sand, {.width = 40, .height = 32}).value();
   const auto pyramid = tessera::build_exemplar_pyramid(ex, {.min_scale = 0.5, .levels = 8}).value();
   const auto field = tessera::assign_scale_field(mesh, proj, {.min_scale = 0.5, .max_levels = 8}).value();
   const auto syn = tessera::synthesize_triangles(mesh, proj, field, 40, 32).value();
@@ -119,7 +120,8 @@ TEST_CASE("terrain uv file: what --uv-out writes reads back and textures every v
       if (f < 0) continue;
       const auto fi = static_cast<std::size_t>(f);
       const double s = back.scale[fi];
-      const double u = static_cast<double>(x) + 0.5 + back.offset[fi][0], v = static_cast<double>(y) + 0.5 + back.offset[fi][1];
+      const double u = static_cast<double>(x) + 0.5 + back.offset[fi][0],
+                   v = static_cast<double>(y) + 0.5 + back.offset[fi][1];
       const auto c = pyramid.sample(s, u + 0.5 * static_cast<double>(back.exemplar_width) * s,
                                     v + 0.5 * static_cast<double>(back.exemplar_height) * s);
       for (std::size_t k = 0; k < 3; ++k) REQUIRE(frame.read(x, y)[k] == Approx(c[k]).margin(1e-4));
@@ -130,7 +132,8 @@ TEST_CASE("terrain uv file: what --uv-out writes reads back and textures every v
   // damaged files are refused with a reason
   std::vector<unsigned char> bad = raw;
   bad.pop_back();
-  REQUIRE(tessera::decode_terrain_uvs(bad.data(), bad.size()).error().message().find("do not hold") != std::string::npos);
+  REQUIRE(tessera::decode_terrain_uvs(bad.data(), bad.size()).error().message().find("do not hold") !=
+          std::string::npos);
   bad = raw;
   bad[4] = 1;
   REQUIRE(tessera::decode_terrain_uvs(bad.data(), bad.size()).error().message().find("version 1") != std::string::npos);

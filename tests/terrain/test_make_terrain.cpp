@@ -15,7 +15,8 @@ TEST_CASE("make_terrain: grid, orientation, relief", "[terrain][scene]") {
   REQUIRE(b.min.z >= 0);
   REQUIRE(b.max.z <= 8 + 1e-9);
   REQUIRE(b.max.z - b.min.z > 1);  // there is relief
-  for (index_t f = 0; f < m.num_faces(); ++f) REQUIRE(tessera::face_area_normal(m, f).z > 0);  // counter-clockwise from above
+  for (index_t f = 0; f < m.num_faces(); ++f)
+    REQUIRE(tessera::face_area_normal(m, f).z > 0);  // counter-clockwise from above
   const auto flat = tessera::make_terrain({.cells_x = 5, .cells_y = 5, .height = 0}).value();
   for (const auto& p : flat.positions) REQUIRE(p.z == 0);
 }
@@ -41,7 +42,8 @@ TEST_CASE("make_terrain: bad options", "[terrain][scene]") {
   REQUIRE(msg({.height = 1e300}).find("height") != std::string::npos);
   // the extreme accepted values give finite positions
   for (const double fs : {1e-6, 1e6}) {
-    const auto m = tessera::make_terrain({.cells_x = 3, .cells_y = 3, .size_x = 1e15, .size_y = 1e15, .feature_size = fs, .octaves = 16});
+    const auto m = tessera::make_terrain(
+        {.cells_x = 3, .cells_y = 3, .size_x = 1e15, .size_y = 1e15, .feature_size = fs, .octaves = 16});
     REQUIRE(m);
     for (const auto& p : m->positions) REQUIRE(tessera::is_finite(p));
   }

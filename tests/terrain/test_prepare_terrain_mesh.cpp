@@ -39,13 +39,16 @@ TEST_CASE("prepare_terrain_mesh: adjacency of a heightfield matches the core ora
   REQUIRE(t.interior_edges == 3 * 108 / 2 - 15);
   for (index_t f = 0; f < t.num_faces(); ++f) {
     const auto& fv = t.faces[static_cast<std::size_t>(f)];
-    const tessera::vec3 c = (m.positions[static_cast<std::size_t>(fv[0])] + m.positions[static_cast<std::size_t>(fv[1])] +
-                             m.positions[static_cast<std::size_t>(fv[2])]) / 3.0;
+    const tessera::vec3 c =
+        (m.positions[static_cast<std::size_t>(fv[0])] + m.positions[static_cast<std::size_t>(fv[1])] +
+         m.positions[static_cast<std::size_t>(fv[2])]) /
+        3.0;
     REQUIRE(tessera::norm(c - t.centroids[static_cast<std::size_t>(f)]) < 1e-12);
   }
 }
 
-TEST_CASE("prepare_terrain_mesh: random soups with boundary, non-manifold and mixed-orientation edges", "[terrain][prepare]") {
+TEST_CASE("prepare_terrain_mesh: random soups with boundary, non-manifold and mixed-orientation edges",
+          "[terrain][prepare]") {
   const tessera::counter_rng rng(5);
   for (int trial = 0; trial < 20; ++trial) {
     tessera::tri_mesh m;
@@ -91,8 +94,10 @@ TEST_CASE("prepare_terrain_mesh: invalid meshes return a status naming the probl
   REQUIRE(tessera::prepare_terrain_mesh(m).error().message().find("non-finite") != std::string::npos);
 }
 
-TEST_CASE("validate_terrain_mesh: a terrain_mesh filled by hand is checked before any stage indexes through it", "[terrain][prepare]") {
-  const tessera::terrain_mesh good = tessera::prepare_terrain_mesh(tessera::make_terrain({.cells_x = 3, .cells_y = 3}).value()).value();
+TEST_CASE("validate_terrain_mesh: a terrain_mesh filled by hand is checked before any stage indexes through it",
+          "[terrain][prepare]") {
+  const tessera::terrain_mesh good =
+      tessera::prepare_terrain_mesh(tessera::make_terrain({.cells_x = 3, .cells_y = 3}).value()).value();
   REQUIRE(tessera::validate_terrain_mesh(good));
   const auto cam = tessera::make_camera({.eye = {0, -80, 40}, .target = {0, 0, 0}}, 64, 48).value();
   REQUIRE(tessera::project_mesh(good, cam));
@@ -134,7 +139,8 @@ TEST_CASE("validate_terrain_mesh: a terrain_mesh filled by hand is checked befor
   m.neighbors.resize(3);
   REQUIRE(tessera::assign_scale_field(m, proj).error().message().find("neighbour triples") != std::string::npos);
   const auto field = tessera::assign_scale_field(good, proj).value();
-  REQUIRE(tessera::synthesize_triangles(m, proj, field, 64, 64).error().message().find("neighbour triples") != std::string::npos);
+  REQUIRE(tessera::synthesize_triangles(m, proj, field, 64, 64).error().message().find("neighbour triples") !=
+          std::string::npos);
   m = good;
   for (auto& nb : m.neighbors) nb = {1000, 2000, 3000};  // out of range: ignored as "no neighbour", no read
   const auto f2 = tessera::assign_scale_field(m, proj).value();

@@ -22,8 +22,9 @@ tessera::terrain_mesh triangles(std::initializer_list<std::array<tessera::vec3, 
 }
 // eye at the origin looking down -y... along +y, z up; 90 degree fov, 100 x 100 pixels
 tessera::terrain_camera simple_camera() {
-  return tessera::make_camera({.eye = {0, 0, 0}, .target = {0, 1, 0}, .up = {0, 0, 1}, .fov_y_degrees = 90, .near = 0.1, .far = 100},
-                              100, 100)
+  return tessera::make_camera(
+             {.eye = {0, 0, 0}, .target = {0, 1, 0}, .up = {0, 0, 1}, .fov_y_degrees = 90, .near = 0.1, .far = 100},
+             100, 100)
       .value();
 }
 }  // namespace
@@ -49,12 +50,12 @@ TEST_CASE("project_mesh: screen positions follow projection * view and the viewp
 
 TEST_CASE("project_mesh: culling, partial visibility and the near plane", "[terrain][project]") {
   const auto mesh = triangles({
-      {{{-1, 5, -1}, {1, 5, -1}, {0, 5, 1}}},           // 0: in front, inside
-      {{{-1, -5, -1}, {1, -5, -1}, {0, -5, 1}}},        // 1: behind the eye
-      {{{20, 5, -1}, {22, 5, -1}, {21, 5, 1}}},         // 2: far to the right, outside
-      {{{4, 5, -1}, {6, 5, -1}, {5, 5, 1}}},            // 3: straddles the right border: kept whole
-      {{{-3, -4, -1}, {3, -4, -1}, {0, 30, -1}}},       // 4: ground passing under and behind the eye
-      {{{-1, 500, -1}, {1, 500, -1}, {0, 500, 1}}},     // 5: beyond the far plane
+      {{{-1, 5, -1}, {1, 5, -1}, {0, 5, 1}}},        // 0: in front, inside
+      {{{-1, -5, -1}, {1, -5, -1}, {0, -5, 1}}},     // 1: behind the eye
+      {{{20, 5, -1}, {22, 5, -1}, {21, 5, 1}}},      // 2: far to the right, outside
+      {{{4, 5, -1}, {6, 5, -1}, {5, 5, 1}}},         // 3: straddles the right border: kept whole
+      {{{-3, -4, -1}, {3, -4, -1}, {0, 30, -1}}},    // 4: ground passing under and behind the eye
+      {{{-1, 500, -1}, {1, 500, -1}, {0, 500, 1}}},  // 5: beyond the far plane
   });
   const auto proj = tessera::project_mesh(mesh, simple_camera()).value();
   auto st = [&](index_t f) { return static_cast<face_visibility>(proj.state[static_cast<std::size_t>(f)]); };

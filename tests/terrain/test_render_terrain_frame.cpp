@@ -29,16 +29,18 @@ struct frame_scene {
   tessera::exemplar_pyramid<std::uint8_t, 3> pyramid;
 };
 frame_scene make_frame_scene(tessera::terrain_mesh mesh, const tessera::terrain_camera& cam);
-frame_scene make_frame_scene(tessera::camera_preset p = tessera::camera_preset::grazing, index_t cells = 32, index_t w = 160,
-                             index_t h = 90) {
-  return make_frame_scene(terrain_test::prepared_terrain(cells), terrain_test::preset_camera(terrain_test::prepared_terrain(cells), p, w, h));
+frame_scene make_frame_scene(tessera::camera_preset p = tessera::camera_preset::grazing, index_t cells = 32,
+                             index_t w = 160, index_t h = 90) {
+  return make_frame_scene(terrain_test::prepared_terrain(cells),
+                          terrain_test::preset_camera(terrain_test::prepared_terrain(cells), p, w, h));
 }
 frame_scene make_frame_scene(tessera::terrain_mesh mesh, const tessera::terrain_camera& cam) {
   frame_scene s;
   s.mesh = std::move(mesh);
   s.cam = cam;
   s.proj = tessera::project_mesh(s.mesh, s.cam).value();
-  const auto ex = tessera::make_exemplar<std::uint8_t, 3>(tessera::exemplar_kind::grass, {.width = 48, .height = 48}).value();
+  const auto ex =
+      tessera::make_exemplar<std::uint8_t, 3>(tessera::exemplar_kind::grass, {.width = 48, .height = 48}).value();
   s.pyramid = tessera::build_exemplar_pyramid(ex, {.min_scale = 0.5, .levels = 16}).value();
   s.field = tessera::assign_scale_field(s.mesh, s.proj, {.min_scale = 0.5, .max_levels = 16}).value();
   s.syn = tessera::synthesize_triangles(s.mesh, s.proj, s.field, 48, 48).value();
@@ -61,12 +63,14 @@ std::array<float, 3> expected_colour(const frame_scene& s, std::int32_t f, index
 // clip-space depth lies inside [-w, w] (between the near and far planes) wins. The answer counts
 // only where the centre and four points 0.03 px around it agree (the rasterizer snaps vertices to
 // 1/256 px, so pixel centres closer than that to an edge may go either way); -2 marks those.
-std::int32_t oracle_face(const tessera::terrain_mesh& mesh, const tessera::terrain_camera& cam, double px, double py, int& hits) {
+std::int32_t oracle_face(const tessera::terrain_mesh& mesh, const tessera::terrain_camera& cam, double px, double py,
+                         int& hits) {
   const glm::dmat4 vp = cam.projection * cam.view, inv = glm::inverse(vp);
   const tessera::vec3 eye = tessera::camera_eye(cam);
   std::int32_t answer = -3;
   for (const auto& [dx, dy] : {std::pair{0.0, 0.0}, {0.03, 0.03}, {-0.03, 0.03}, {0.03, -0.03}, {-0.03, -0.03}}) {
-    const double nx = 2 * (px + dx) / static_cast<double>(cam.width) - 1, ny = 1 - 2 * (py + dy) / static_cast<double>(cam.height);
+    const double nx = 2 * (px + dx) / static_cast<double>(cam.width) - 1,
+                 ny = 1 - 2 * (py + dy) / static_cast<double>(cam.height);
     const glm::dvec4 q = inv * glm::dvec4(nx, ny, 0.5, 1.0);
     const tessera::vec3 dir = tessera::normalized(tessera::vec3{q.x / q.w, q.y / q.w, q.z / q.w} - eye);
     double best = INFINITY;
@@ -90,8 +94,10 @@ std::int32_t oracle_face(const tessera::terrain_mesh& mesh, const tessera::terra
       hits += dx == 0 && dy == 0 ? 1 : 0;
     }
     if (edge) return -2;
-    if (answer == -3) answer = face;
-    else if (answer != face) return -2;
+    if (answer == -3)
+      answer = face;
+    else if (answer != face)
+      return -2;
   }
   return answer;
 }
@@ -102,19 +108,26 @@ struct rgba_canvas {
   rgba_canvas(index_t w_, index_t h_) : w(w_), h(h_), px(static_cast<std::size_t>(w_ * h_)) {}
   [[nodiscard]] index_t width() const { return w; }
   [[nodiscard]] index_t height() const { return h; }
-  [[nodiscard]] std::array<std::uint16_t, 4> read(index_t x, index_t y) const { return px[static_cast<std::size_t>(y * w + x)]; }
-  void write(index_t x, index_t y, const std::array<std::uint16_t, 4>& p) { px[static_cast<std::size_t>(y * w + x)] = p; }
+  [[nodiscard]] std::array<std::uint16_t, 4> read(index_t x, index_t y) const {
+    return px[static_cast<std::size_t>(y * w + x)];
+  }
+  void write(index_t x, index_t y, const std::array<std::uint16_t, 4>& p) {
+    px[static_cast<std::size_t>(y * w + x)] = p;
+  }
 };
 }  // namespace
 
-TEST_CASE("render_terrain_frame: every pixel shows the nearest face's texture (brute-force ray casting oracle)", "[terrain][render]") {
+TEST_CASE("render_terrain_frame: every pixel shows the nearest face's texture (brute-force ray casting oracle)",
+          "[terrain][render]") {
   // small frames, every face of the mesh tested against every pixel: a low view over a coarse
   // terrain has large faces under and behind the eye (clipped at the near plane), the oblique one
   // hills hiding each other
   for (const int view : {0, 1}) {
-    const frame_scene s = view == 0 ? make_frame_scene(terrain_test::prepared_terrain(6, 1, 6), terrain_test::low_camera(64, 40))
-                                    : make_frame_scene(terrain_test::prepared_terrain(12, 2, 30),
-                                                       tessera::make_camera({.eye = {-50, -50, 24}, .target = {10, 10, 8}}, 64, 40).value());
+    const frame_scene s =
+        view == 0
+            ? make_frame_scene(terrain_test::prepared_terrain(6, 1, 6), terrain_test::low_camera(64, 40))
+            : make_frame_scene(terrain_test::prepared_terrain(12, 2, 30),
+                               tessera::make_camera({.eye = {-50, -50, 24}, .target = {10, 10, 8}}, 64, 40).value());
     tessera::image_buffer<float, 3> out(64, 40);
     REQUIRE(tessera::render_terrain_frame(s.mesh, s.proj, s.field, s.syn, s.pyramid, out, {.feather = 0}));
     const auto vb = visibility(s);
@@ -122,9 +135,10 @@ TEST_CASE("render_terrain_frame: every pixel shows the nearest face's texture (b
     for (index_t y = 0; y < 40; ++y)
       for (index_t x = 0; x < 64; ++x) {
         int hits = 0;
-        const std::int32_t f = oracle_face(s.mesh, s.cam, static_cast<double>(x) + 0.5, static_cast<double>(y) + 0.5, hits);
+        const std::int32_t f =
+            oracle_face(s.mesh, s.cam, static_cast<double>(x) + 0.5, static_cast<double>(y) + 0.5, hits);
         hidden += hits > 1 ? 1 : 0;  // the ray passes through a hill in front of the face it shows
-        if (f == -2) continue;  // an edge within 0.03 px of the pixel centre
+        if (f == -2) continue;       // an edge within 0.03 px of the pixel centre
         ++checked;
         INFO("view " << view << " pixel " << x << ", " << y << " oracle face " << f);
         REQUIRE(vb.face[static_cast<std::size_t>(y * 64 + x)] == f);
@@ -147,7 +161,8 @@ TEST_CASE("render_terrain_frame: every pixel shows the nearest face's texture (b
   }
 }
 
-TEST_CASE("render_terrain_frame: every pixel shows its triangle's texture at its scale and coordinates", "[terrain][render]") {
+TEST_CASE("render_terrain_frame: every pixel shows its triangle's texture at its scale and coordinates",
+          "[terrain][render]") {
   const frame_scene s = make_frame_scene();
   const auto vb = visibility(s);
   tessera::image_buffer<float, 3> out(160, 90);
@@ -176,7 +191,9 @@ TEST_CASE("render_terrain_frame: feathering blends only near seams and softens t
   REQUIRE(tessera::render_terrain_frame(s.mesh, s.proj, s.field, s.syn, s.pyramid, soft, {.feather = 3}));
   auto label = [&](index_t x, index_t y) -> std::int64_t {
     const std::int32_t f = vb.face[static_cast<std::size_t>(y * 160 + x)];
-    return f < 0 ? -1 : std::int64_t{s.syn.region[static_cast<std::size_t>(f)]} * 65536 + s.field.level[static_cast<std::size_t>(f)];
+    return f < 0 ? -1
+                 : std::int64_t{s.syn.region[static_cast<std::size_t>(f)]} * 65536 +
+                       s.field.level[static_cast<std::size_t>(f)];
   };
   // label pairs that meet across a mesh edge (the only ones blended)
   std::set<std::pair<std::int64_t, std::int64_t>> adjacent;
@@ -201,7 +218,8 @@ TEST_CASE("render_terrain_frame: feathering blends only near seams and softens t
       for (index_t dy = -3; dy <= 3; ++dy)
         for (index_t dx = -3; dx <= 3; ++dx) {
           const index_t xx = x + dx, yy = y + dy;
-          if (xx >= 0 && yy >= 0 && xx < 160 && yy < 90 && label(xx, yy) >= 0 && label(xx, yy) != label(x, y)) near_boundary = true;
+          if (xx >= 0 && yy >= 0 && xx < 160 && yy < 90 && label(xx, yy) >= 0 && label(xx, yy) != label(x, y))
+            near_boundary = true;
         }
       const bool differs = hard.read(x, y) != soft.read(x, y);
       if (differs) {
@@ -210,8 +228,8 @@ TEST_CASE("render_terrain_frame: feathering blends only near seams and softens t
       }
       // contrast across horizontal pixel pairs straddling a coordinate seam between exactly two adjacent labels
       if (x + 1 < 160 && label(x + 1, y) >= 0 && label(x + 1, y) / 65536 != label(x, y) / 65536 &&
-          adjacent.count({label(x, y), label(x + 1, y)}) &&
-          labels_around(x, y).size() == 2 && labels_around(x + 1, y).size() == 2) {
+          adjacent.count({label(x, y), label(x + 1, y)}) && labels_around(x, y).size() == 2 &&
+          labels_around(x + 1, y).size() == 2) {
         ++pairs;
         for (std::size_t k = 0; k < 3; ++k) {
           diff_hard += std::abs(hard.read(x, y)[k] - hard.read(x + 1, y)[k]);
@@ -248,8 +266,10 @@ TEST_CASE("render_terrain_frame: diagnostic shadings", "[terrain][render]") {
   const frame_scene s = make_frame_scene();
   const auto vb = visibility(s);
   tessera::image_buffer<float, 3> scale(160, 90), regions(160, 90);
-  REQUIRE(tessera::render_terrain_frame(s.mesh, s.proj, s.field, s.syn, s.pyramid, scale, {.shading = tessera::terrain_shading::scale_field}));
-  REQUIRE(tessera::render_terrain_frame(s.mesh, s.proj, s.field, s.syn, s.pyramid, regions, {.shading = tessera::terrain_shading::regions}));
+  REQUIRE(tessera::render_terrain_frame(s.mesh, s.proj, s.field, s.syn, s.pyramid, scale,
+                                        {.shading = tessera::terrain_shading::scale_field}));
+  REQUIRE(tessera::render_terrain_frame(s.mesh, s.proj, s.field, s.syn, s.pyramid, regions,
+                                        {.shading = tessera::terrain_shading::regions}));
   std::map<float, std::array<float, 3>> by_scale;
   std::map<std::int32_t, std::array<float, 3>> by_region;
   for (index_t y = 0; y < 90; ++y)
@@ -271,11 +291,14 @@ TEST_CASE("render_terrain_frame: diagnostic shadings", "[terrain][render]") {
 TEST_CASE("render_terrain_frame: bad input and an empty view", "[terrain][render]") {
   frame_scene s = make_frame_scene(tessera::camera_preset::oblique, 8);
   tessera::image_buffer<float, 3> wrong(10, 10), out(160, 90);
-  REQUIRE(tessera::render_terrain_frame(s.mesh, s.proj, s.field, s.syn, s.pyramid, wrong).message().find("viewport") != std::string::npos);
-  REQUIRE(tessera::render_terrain_frame(s.mesh, s.proj, s.field, s.syn, s.pyramid, out, {.feather = -1}).message().find("feather") !=
+  REQUIRE(tessera::render_terrain_frame(s.mesh, s.proj, s.field, s.syn, s.pyramid, wrong).message().find("viewport") !=
           std::string::npos);
+  REQUIRE(tessera::render_terrain_frame(s.mesh, s.proj, s.field, s.syn, s.pyramid, out, {.feather = -1})
+              .message()
+              .find("feather") != std::string::npos);
   REQUIRE_FALSE(tessera::render_terrain_frame(s.mesh, s.proj, s.field, s.syn, s.pyramid, out, {.tile_size = 2}));
-  REQUIRE_FALSE(tessera::render_terrain_frame(s.mesh, s.proj, s.field, s.syn, tessera::exemplar_pyramid<std::uint8_t, 3>{}, out));
+  REQUIRE_FALSE(
+      tessera::render_terrain_frame(s.mesh, s.proj, s.field, s.syn, tessera::exemplar_pyramid<std::uint8_t, 3>{}, out));
   std::fill(s.proj.state.begin(), s.proj.state.end(), std::uint8_t{0});
   s.proj.visible.clear();
   s.field = tessera::assign_scale_field(s.mesh, s.proj).value();
@@ -290,7 +313,8 @@ TEST_CASE("render_terrain_frame: flat Lambert lighting from a sun direction", "[
   const auto vb = visibility(s);
   tessera::image_buffer<float, 3> unlit(160, 90), lit(160, 90);
   REQUIRE(tessera::render_terrain_frame(s.mesh, s.proj, s.field, s.syn, s.pyramid, unlit));
-  REQUIRE(tessera::render_terrain_frame(s.mesh, s.proj, s.field, s.syn, s.pyramid, lit, {.sun = {0, 0, 2}, .ambient = 0.25}));
+  REQUIRE(tessera::render_terrain_frame(s.mesh, s.proj, s.field, s.syn, s.pyramid, lit,
+                                        {.sun = {0, 0, 2}, .ambient = 0.25}));
   for (index_t y = 0; y < 90; y += 3)
     for (index_t x = 0; x < 160; x += 3) {
       const std::int32_t f = vb.face[static_cast<std::size_t>(y * 160 + x)];
@@ -302,20 +326,25 @@ TEST_CASE("render_terrain_frame: flat Lambert lighting from a sun direction", "[
       const tessera::vec3 n = tessera::normalized(tessera::cross(s.mesh.position(fv[1]) - s.mesh.position(fv[0]),
                                                                  s.mesh.position(fv[2]) - s.mesh.position(fv[0])));
       const double light = 0.25 + 0.75 * std::abs(n.z);  // heightfield faces look up, towards the eye
-      for (std::size_t k = 0; k < 3; ++k) REQUIRE(lit.read(x, y)[k] == Approx(unlit.read(x, y)[k] * light).margin(1e-5));
+      for (std::size_t k = 0; k < 3; ++k)
+        REQUIRE(lit.read(x, y)[k] == Approx(unlit.read(x, y)[k] * light).margin(1e-5));
     }
-  REQUIRE(tessera::render_terrain_frame(s.mesh, s.proj, s.field, s.syn, s.pyramid, lit, {.ambient = 2}).message().find("ambient") !=
-          std::string::npos);
+  REQUIRE(tessera::render_terrain_frame(s.mesh, s.proj, s.field, s.syn, s.pyramid, lit, {.ambient = 2})
+              .message()
+              .find("ambient") != std::string::npos);
 }
 
-TEST_CASE("render_terrain_frame: empty and fully culled meshes run the whole pipeline to a background frame", "[terrain][render]") {
+TEST_CASE("render_terrain_frame: empty and fully culled meshes run the whole pipeline to a background frame",
+          "[terrain][render]") {
   // documented behaviour: nothing visible is not an error; every stage succeeds with empty output
-  const auto ex = tessera::make_exemplar<std::uint8_t, 3>(tessera::exemplar_kind::sand, {.width = 32, .height = 32}).value();
+  const auto ex =
+      tessera::make_exemplar<std::uint8_t, 3>(tessera::exemplar_kind::sand, {.width = 32, .height = 32}).value();
   const auto pyramid = tessera::build_exemplar_pyramid(ex, {.min_scale = 0.5, .levels = 4}).value();
   const auto tex = tessera::prepare_tiled_texture(ex).value();
   const auto terrain = terrain_test::prepared_terrain(6);
   // a camera on the terrain looking straight up, away from it: every face is behind or outside
-  const auto away = tessera::make_camera({.eye = {50, 50, 200}, .target = {50, 50, 400}, .up = {0, 1, 0}}, 80, 60).value();
+  const auto away =
+      tessera::make_camera({.eye = {50, 50, 200}, .target = {50, 50, 400}, .up = {0, 1, 0}}, 80, 60).value();
   const auto any = tessera::make_camera({.eye = {0, 0, 5}, .target = {0, 10, 0}}, 80, 60).value();
   const std::pair<tessera::terrain_mesh, tessera::terrain_camera> cases[] = {
       {tessera::prepare_terrain_mesh(tessera::tri_mesh{}).value(), any}, {terrain, away}};
@@ -338,12 +367,15 @@ TEST_CASE("render_terrain_frame: empty and fully culled meshes run the whole pip
   }
 }
 
-TEST_CASE("render_terrain_frame: a field, synthesis or pyramid from elsewhere is rejected before any pixel", "[terrain][render]") {
+TEST_CASE("render_terrain_frame: a field, synthesis or pyramid from elsewhere is rejected before any pixel",
+          "[terrain][render]") {
   // faces culled in another projection arrive with scale 0 / level -1 / region -1: sampling them
   // would divide by a zero scale and cast NaN to an index
   frame_scene s = make_frame_scene(tessera::camera_preset::oblique, 16);
-  const auto other = tessera::project_mesh(s.mesh, tessera::make_camera({.eye = {-60, -60, 30}, .target = {-40, -40, 0}}, 160, 90).value())
-                         .value();
+  const auto other =
+      tessera::project_mesh(s.mesh,
+                            tessera::make_camera({.eye = {-60, -60, 30}, .target = {-40, -40, 0}}, 160, 90).value())
+          .value();
   REQUIRE(other.num_visible() < s.proj.num_visible());
   const auto other_field = tessera::assign_scale_field(s.mesh, other, {.min_scale = 0.5, .max_levels = 16}).value();
   const auto other_syn = tessera::synthesize_triangles(s.mesh, other, other_field, 48, 48).value();
@@ -351,22 +383,30 @@ TEST_CASE("render_terrain_frame: a field, synthesis or pyramid from elsewhere is
   const auto field_msg = tessera::render_terrain_frame(s.mesh, s.proj, other_field, s.syn, s.pyramid, out).message();
   REQUIRE(field_msg.find("must come from this projection") != std::string::npos);
   REQUIRE(field_msg.find("level -1") != std::string::npos);
-  REQUIRE(tessera::render_terrain_frame(s.mesh, s.proj, s.field, other_syn, s.pyramid, out).message().find("region -1") !=
-          std::string::npos);
+  REQUIRE(
+      tessera::render_terrain_frame(s.mesh, s.proj, s.field, other_syn, s.pyramid, out).message().find("region -1") !=
+      std::string::npos);
   // the synthesis and the export refuse the foreign field / synthesis too
-  REQUIRE(tessera::synthesize_triangles(s.mesh, s.proj, other_field, 48, 48).error().message().find("scale 0 and level -1") !=
+  REQUIRE(tessera::synthesize_triangles(s.mesh, s.proj, other_field, 48, 48)
+              .error()
+              .message()
+              .find("scale 0 and level -1") != std::string::npos);
+  REQUIRE(tessera::export_corner_uvs(s.mesh, s.proj, s.field, other_syn).error().message().find("region -1") !=
           std::string::npos);
-  REQUIRE(tessera::export_corner_uvs(s.mesh, s.proj, s.field, other_syn).error().message().find("region -1") != std::string::npos);
   // a pyramid that does not reach the field's smallest scale
-  const auto ex = tessera::make_exemplar<std::uint8_t, 3>(tessera::exemplar_kind::grass, {.width = 48, .height = 48}).value();
+  const auto ex =
+      tessera::make_exemplar<std::uint8_t, 3>(tessera::exemplar_kind::grass, {.width = 48, .height = 48}).value();
   const auto shallow = tessera::build_exemplar_pyramid(ex, {.min_scale = 0.75, .levels = 8}).value();
-  REQUIRE(tessera::render_terrain_frame(s.mesh, s.proj, s.field, s.syn, shallow, out).message().find("min_scale") != std::string::npos);
+  REQUIRE(tessera::render_terrain_frame(s.mesh, s.proj, s.field, s.syn, shallow, out).message().find("min_scale") !=
+          std::string::npos);
   // a visible list naming a face the projection culled, or no face at all
   auto bad = s.proj;
   bad.visible.back() = static_cast<std::int32_t>(s.mesh.num_faces());
-  REQUIRE(tessera::render_terrain_frame(s.mesh, bad, s.field, s.syn, s.pyramid, out).message().find("is not a visible face") !=
+  REQUIRE(tessera::render_terrain_frame(s.mesh, bad, s.field, s.syn, s.pyramid, out)
+              .message()
+              .find("is not a visible face") != std::string::npos);
+  REQUIRE(tessera::assign_scale_field(s.mesh, bad).error().message().find("is not a visible face") !=
           std::string::npos);
-  REQUIRE(tessera::assign_scale_field(s.mesh, bad).error().message().find("is not a visible face") != std::string::npos);
   REQUIRE(tessera::synthesize_triangles(s.mesh, bad, s.field, 48, 48).error().message().find("is not a visible face") !=
           std::string::npos);
   // a scale field with NaN scales (hand-made) is refused, and sampling at NaN never indexes with it

@@ -14,12 +14,17 @@ using tessera::index_t;
 TEST_CASE("render_tiled_frame: the exemplar repeats over the ground every `repeat` units", "[terrain][tiled]") {
   // a flat plane seen straight down: 16 world units over 128 pixels, so a repeat of 2 is 16 pixels
   const auto mesh = terrain_test::prepared_terrain(8, 1, 0.0);
-  const auto cam = tessera::make_camera({.eye = {0.1, 0.05, 8}, .target = {0.1, 0.05, 0}, .up = {0, 1, 0}, .fov_y_degrees = 90,
-                                         .near = 0.5, .far = 20},
+  const auto cam = tessera::make_camera({.eye = {0.1, 0.05, 8},
+                                         .target = {0.1, 0.05, 0},
+                                         .up = {0, 1, 0},
+                                         .fov_y_degrees = 90,
+                                         .near = 0.5,
+                                         .far = 20},
                                         128, 128)
                        .value();
   const auto proj = tessera::project_mesh(mesh, cam).value();
-  const auto ex = tessera::make_exemplar<std::uint8_t, 3>(tessera::exemplar_kind::cells, {.width = 32, .height = 32}).value();
+  const auto ex =
+      tessera::make_exemplar<std::uint8_t, 3>(tessera::exemplar_kind::cells, {.width = 32, .height = 32}).value();
   const auto tex = tessera::prepare_tiled_texture(ex).value();
   REQUIRE(tex.num_levels() == 6);
   REQUIRE(tex.level(5).width() == 1);
@@ -41,8 +46,10 @@ TEST_CASE("render_tiled_frame: the exemplar repeats over the ground every `repea
 
 TEST_CASE("render_tiled_frame: executors, errors", "[terrain][tiled]") {
   const auto mesh = terrain_test::prepared_terrain(16);
-  const auto proj = tessera::project_mesh(mesh, terrain_test::preset_camera(mesh, tessera::camera_preset::grazing)).value();
-  const auto ex = tessera::make_exemplar<std::uint8_t, 3>(tessera::exemplar_kind::rock, {.width = 32, .height = 32}).value();
+  const auto proj =
+      tessera::project_mesh(mesh, terrain_test::preset_camera(mesh, tessera::camera_preset::grazing)).value();
+  const auto ex =
+      tessera::make_exemplar<std::uint8_t, 3>(tessera::exemplar_kind::rock, {.width = 32, .height = 32}).value();
   const auto tex = tessera::prepare_tiled_texture(ex).value();
   tessera::image_buffer<std::uint8_t, 3> a(160, 90), b(160, 90);
   REQUIRE(tessera::render_tiled_frame(mesh, proj, tex, a));
@@ -51,8 +58,10 @@ TEST_CASE("render_tiled_frame: executors, errors", "[terrain][tiled]") {
   REQUIRE(a == b);
   tessera::image_buffer<std::uint8_t, 3> wrong(16, 16);
   REQUIRE(tessera::render_tiled_frame(mesh, proj, tex, wrong).message().find("viewport") != std::string::npos);
-  REQUIRE(tessera::render_tiled_frame(mesh, proj, tex, a, {.repeat = -1}).message().find("repeat") != std::string::npos);
-  REQUIRE(tessera::render_tiled_frame(mesh, proj, tex, a, {.sun = {0, 0, NAN}}).message().find("sun") != std::string::npos);
+  REQUIRE(tessera::render_tiled_frame(mesh, proj, tex, a, {.repeat = -1}).message().find("repeat") !=
+          std::string::npos);
+  REQUIRE(tessera::render_tiled_frame(mesh, proj, tex, a, {.sun = {0, 0, NAN}}).message().find("sun") !=
+          std::string::npos);
   tessera::image_buffer<std::uint8_t, 3> lit(160, 90);
   REQUIRE(tessera::render_tiled_frame(mesh, proj, tex, lit, {.sun = {1, 0, 0.2}, .ambient = 0.1}));
   long darker = 0;

@@ -26,7 +26,8 @@ scene make_scene(index_t cells, tessera::camera_preset p, index_t w = 320, index
 
 bool fits(const scene& s, std::int32_t f, tessera::vec2 o, double W, double H, double m) {
   const auto& b = s.proj.bounds[static_cast<std::size_t>(f)];
-  const double hw = 0.5 * W * s.field.scale[static_cast<std::size_t>(f)] - m, hh = 0.5 * H * s.field.scale[static_cast<std::size_t>(f)] - m;
+  const double hw = 0.5 * W * s.field.scale[static_cast<std::size_t>(f)] - m,
+               hh = 0.5 * H * s.field.scale[static_cast<std::size_t>(f)] - m;
   return b[0] + o.x >= -hw && b[2] + o.x <= hw && b[1] + o.y >= -hh && b[3] + o.y <= hh;
 }
 
@@ -51,7 +52,8 @@ void check_rules(const scene& s, const tessera::triangle_synthesis& r, double W,
     const auto fi = static_cast<std::size_t>(f);
     std::vector<std::int32_t> earlier, fitting;
     for (std::int32_t n : s.mesh.neighbors[fi])
-      if (n >= 0 && pos[static_cast<std::size_t>(n)] >= 0 && pos[static_cast<std::size_t>(n)] < static_cast<index_t>(i)) {
+      if (n >= 0 && pos[static_cast<std::size_t>(n)] >= 0 &&
+          pos[static_cast<std::size_t>(n)] < static_cast<index_t>(i)) {
         earlier.push_back(n);
         if (fits(s, f, r.offset[static_cast<std::size_t>(n)], W, H, m)) fitting.push_back(n);
       }
@@ -65,8 +67,10 @@ void check_rules(const scene& s, const tessera::triangle_synthesis& r, double W,
       REQUIRE(r.offset[fi] == r.offset[static_cast<std::size_t>(oldest)]);
     } else {  // a new placement, inside the level image unless the face is too big for it
       REQUIRE(r.region[fi] == next_region++);
-      if (earlier.empty()) ++starts;
-      else ++restarts;
+      if (earlier.empty())
+        ++starts;
+      else
+        ++restarts;
       // it keeps the offset along an axis where the oldest neighbouring placement still fits
       std::int32_t oldest = -1;
       int axis = -1;
@@ -75,12 +79,15 @@ void check_rules(const scene& s, const tessera::triangle_synthesis& r, double W,
         const auto& b = s.proj.bounds[fi];
         const double hw = 0.5 * W * s.field.scale[fi] - m, hh = 0.5 * H * s.field.scale[fi] - m;
         const bool fx = b[0] + o.x >= -hw && b[2] + o.x <= hw, fy = b[1] + o.y >= -hh && b[3] + o.y <= hh;
-        if ((fx || fy) && (oldest < 0 || r.region[static_cast<std::size_t>(n)] < r.region[static_cast<std::size_t>(oldest)]))
+        if ((fx || fy) &&
+            (oldest < 0 || r.region[static_cast<std::size_t>(n)] < r.region[static_cast<std::size_t>(oldest)]))
           oldest = n, axis = fx ? 0 : 1;
       }
       if (keep_axis && oldest >= 0) {
-        if (axis == 0) REQUIRE(r.offset[fi].x == r.offset[static_cast<std::size_t>(oldest)].x);
-        else REQUIRE(r.offset[fi].y == r.offset[static_cast<std::size_t>(oldest)].y);
+        if (axis == 0)
+          REQUIRE(r.offset[fi].x == r.offset[static_cast<std::size_t>(oldest)].x);
+        else
+          REQUIRE(r.offset[fi].y == r.offset[static_cast<std::size_t>(oldest)].y);
         ++kept_axis;
       }
       if (!fits(s, f, r.offset[fi], W, H, m)) ++oversized;
@@ -118,28 +125,36 @@ TEST_CASE("synthesize_triangles: every rule of §2.3 holds on the recorded order
   for (auto preset : {tessera::camera_preset::grazing, tessera::camera_preset::oblique}) {
     const scene s = make_scene(40, preset);
     for (auto placement : {tessera::placement_strategy::uniform, tessera::placement_strategy::away_from_neighbors}) {
-      const auto r = tessera::synthesize_triangles(s.mesh, s.proj, s.field, 64, 64, {.seed = 3, .placement = placement}).value();
+      const auto r =
+          tessera::synthesize_triangles(s.mesh, s.proj, s.field, 64, 64, {.seed = 3, .placement = placement}).value();
       check_rules(s, r, 64, 64, 1.0);
       REQUIRE(r.restarts > 0);
       REQUIRE(r.components == 1);
-      const auto literal = tessera::synthesize_triangles(
-          s.mesh, s.proj, s.field, 64, 64, {.seed = 3, .placement = placement, .continuation = tessera::continuation_rule::first_neighbor}).value();
+      const auto literal =
+          tessera::synthesize_triangles(
+              s.mesh, s.proj, s.field, 64, 64,
+              {.seed = 3, .placement = placement, .continuation = tessera::continuation_rule::first_neighbor})
+              .value();
       check_rules(s, literal, 64, 64, 1.0, tessera::continuation_rule::first_neighbor);
       // the paper's immediate restarts: a strictly depth-first order
       const auto immediate = tessera::synthesize_triangles(s.mesh, s.proj, s.field, 64, 64,
-                                                           {.seed = 3, .placement = placement, .defer_restarts = false}).value();
+                                                           {.seed = 3, .placement = placement, .defer_restarts = false})
+                                 .value();
       REQUIRE(immediate.deferred == 0);
       check_rules(s, immediate, 64, 64, 1.0, tessera::continuation_rule::oldest_placement, true);
       REQUIRE(r.deferred > 0);
       REQUIRE(r.restarts < immediate.restarts);  // waiting saves placements
-      const auto both_random = tessera::synthesize_triangles(s.mesh, s.proj, s.field, 64, 64,
-                                                             {.seed = 3, .placement = placement, .keep_fitting_axis = false}).value();
+      const auto both_random =
+          tessera::synthesize_triangles(s.mesh, s.proj, s.field, 64, 64,
+                                        {.seed = 3, .placement = placement, .keep_fitting_axis = false})
+              .value();
       check_rules(s, both_random, 64, 64, 1.0, tessera::continuation_rule::oldest_placement, false, false);
     }
   }
 }
 
-TEST_CASE("synthesize_triangles: corner coordinates are congruent copies of the screen triangle", "[terrain][synthesis]") {
+TEST_CASE("synthesize_triangles: corner coordinates are congruent copies of the screen triangle",
+          "[terrain][synthesis]") {
   const scene s = make_scene(24, tessera::camera_preset::oblique);
   const auto r = tessera::synthesize_triangles(s.mesh, s.proj, s.field, 128, 128).value();
   const auto uv = tessera::export_corner_uvs(s.mesh, s.proj, s.field, r).value();
@@ -165,7 +180,8 @@ TEST_CASE("synthesize_triangles: corner coordinates are congruent copies of the 
 
 TEST_CASE("synthesize_triangles: at least 95 % continuous edges on the default scenes", "[terrain][synthesis]") {
   // the CLI's defaults: a 128 x 128-cell terrain, a 960 x 540 viewport, a 256 x 256 exemplar
-  for (auto preset : {tessera::camera_preset::grazing, tessera::camera_preset::oblique, tessera::camera_preset::overview}) {
+  for (auto preset :
+       {tessera::camera_preset::grazing, tessera::camera_preset::oblique, tessera::camera_preset::overview}) {
     const scene s = make_scene(128, preset, 960, 540);
     const auto r = tessera::synthesize_triangles(s.mesh, s.proj, s.field, 256, 256).value();
     INFO("preset " << static_cast<int>(preset) << " restarts " << r.restarts);
@@ -216,8 +232,10 @@ TEST_CASE("synthesize_triangles: the same synthesis with a thread pool of any si
     REQUIRE(b.min_area_face == a.min_area_face);
     REQUIRE(b.min_area_ratio == a.min_area_ratio);
     // and the whole per-frame pipeline before it
-    const auto proj = tessera::project_mesh(s.mesh, terrain_test::preset_camera(s.mesh, tessera::camera_preset::overview, 320, 180), {},
-                                            pool).value();
+    const auto proj =
+        tessera::project_mesh(s.mesh, terrain_test::preset_camera(s.mesh, tessera::camera_preset::overview, 320, 180),
+                              {}, pool)
+            .value();
     REQUIRE(proj.visible == s.proj.visible);
     REQUIRE(proj.bounds == s.proj.bounds);
     const auto field = tessera::assign_scale_field(s.mesh, proj, {.min_scale = 0.5}, pool).value();
@@ -240,9 +258,11 @@ TEST_CASE("synthesize_triangles: exemplars too small for the triangles give a wa
 
 TEST_CASE("synthesize_triangles: bad input, nothing visible, cancellation", "[terrain][synthesis]") {
   const scene s = make_scene(10, tessera::camera_preset::oblique);
-  REQUIRE(tessera::synthesize_triangles(s.mesh, s.proj, s.field, 0, 64).error().message().find("exemplar size") != std::string::npos);
-  REQUIRE(tessera::synthesize_triangles(s.mesh, s.proj, s.field, 64, 64, {.margin = -1}).error().message().find("margin") !=
+  REQUIRE(tessera::synthesize_triangles(s.mesh, s.proj, s.field, 0, 64).error().message().find("exemplar size") !=
           std::string::npos);
+  REQUIRE(
+      tessera::synthesize_triangles(s.mesh, s.proj, s.field, 64, 64, {.margin = -1}).error().message().find("margin") !=
+      std::string::npos);
   const auto other = terrain_test::prepared_terrain(11);
   REQUIRE_FALSE(tessera::synthesize_triangles(other, s.proj, s.field, 64, 64));
   scene none = s;
@@ -255,5 +275,6 @@ TEST_CASE("synthesize_triangles: bad input, nothing visible, cancellation", "[te
   REQUIRE(r.continuous_fraction == 1.0);
   tessera::triangle_synthesis_options stop;
   stop.progress.callback = [](double, std::string_view) { return false; };
-  REQUIRE(tessera::synthesize_triangles(s.mesh, s.proj, s.field, 64, 64, stop).error().code() == tessera::status_code::cancelled);
+  REQUIRE(tessera::synthesize_triangles(s.mesh, s.proj, s.field, 64, 64, stop).error().code() ==
+          tessera::status_code::cancelled);
 }

@@ -11,7 +11,8 @@
 using tessera::index_t;
 
 TEST_CASE("make_camera: builds GLM look-at and perspective matrices", "[terrain][camera]") {
-  tessera::look_at_camera l{.eye = {1, 2, 3}, .target = {4, 6, 3}, .up = {0, 0, 1}, .fov_y_degrees = 70, .near = 0.5, .far = 50};
+  tessera::look_at_camera l{
+      .eye = {1, 2, 3}, .target = {4, 6, 3}, .up = {0, 0, 1}, .fov_y_degrees = 70, .near = 0.5, .far = 50};
   const auto cam = tessera::make_camera(l, 320, 200).value();
   REQUIRE(cam.width == 320);
   REQUIRE(cam.height == 200);

@@ -39,14 +39,16 @@ TEST_CASE("complete tile set: wang_edges sides and equality", "[tiling]") {
   auto all = tessera::complete_tile_set_edges(2, 3);
   REQUIRE(all.ok());
   REQUIRE(all->size() == 36u);
-  for (std::size_t i = 0; i < all->size(); ++i) REQUIRE((*all)[i] == tessera::complete_tile_edges(static_cast<index_t>(i), 2, 3));
+  for (std::size_t i = 0; i < all->size(); ++i)
+    REQUIRE((*all)[i] == tessera::complete_tile_edges(static_cast<index_t>(i), 2, 3));
 }
 
 TEST_CASE("complete tile set: bad input", "[tiling]") {
   auto zero = tessera::validate_color_counts(0, 2);
   REQUIRE(zero.code() == tessera::status_code::invalid_argument);
   REQUIRE_THAT(zero.message(), Catch::Contains("horizontal") && Catch::Contains("got 0"));
-  REQUIRE_THAT(tessera::validate_color_counts(2, -3).message(), Catch::Contains("vertical") && Catch::Contains("got -3"));
+  REQUIRE_THAT(tessera::validate_color_counts(2, -3).message(),
+               Catch::Contains("vertical") && Catch::Contains("got -3"));
   REQUIRE_FALSE(tessera::validate_color_counts(tessera::max_wang_colors + 1, 1).ok());
   REQUIRE(tessera::validate_color_counts(1, 1).ok());
   REQUIRE(tessera::validate_complete_tile(16, 2, 2).code() == tessera::status_code::out_of_range);

@@ -28,7 +28,8 @@ TEST_CASE("hash colouring: neighbours agree everywhere, windows are views of the
     auto overlap = plane->window(-5, -2, 4, 4);
     for (index_t r = 0; r < 5; ++r)
       for (index_t c = 0; c < 5; ++c)
-        for (int s = 0; s < 4; ++s) REQUIRE(far->edge_color_at(c, r, s) == plane->edge_color_at(1'000'000'000 + c, -2'000'000'000 + r, s));
+        for (int s = 0; s < 4; ++s)
+          REQUIRE(far->edge_color_at(c, r, s) == plane->edge_color_at(1'000'000'000 + c, -2'000'000'000 + r, s));
     for (index_t r = 0; r < 4; ++r)
       for (index_t c = 0; c < 4; ++c) REQUIRE(overlap->edges_at(c, r) == w->edges_at(c + 2, r + 1));
     // the extreme cells of the index range are defined too (coordinates wrap as hash keys): a window
@@ -90,5 +91,6 @@ TEST_CASE("hash colouring: bad input", "[tiling]") {
   auto plane = hash_coloring::create(2, 2);
   REQUIRE_FALSE(plane->window(0, 0, 0, 3).ok());
   REQUIRE_FALSE(plane->with_period(0, 3).ok());
-  REQUIRE(plane->window(0, 0, index_t{1} << 20, index_t{1} << 13).error().code() == tessera::status_code::size_overflow);
+  REQUIRE(plane->window(0, 0, index_t{1} << 20, index_t{1} << 13).error().code() ==
+          tessera::status_code::size_overflow);
 }

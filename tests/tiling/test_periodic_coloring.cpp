@@ -16,7 +16,8 @@ TEST_CASE("periodic colouring: repeats, is toroidal-consistent, uses the set", "
   sets.push_back(tile_set_edges::complete(2, 2));
   sets.push_back(tile_set_edges::modular_subset(2, 2, 2));
   // an arbitrary subset (not hashable): found by search
-  sets.push_back(tile_set_edges::create(2, 2, {{0, 0, 0, 0}, {0, 1, 1, 0}, {1, 0, 1, 1}, {1, 1, 0, 1}, {0, 1, 0, 0}, {1, 0, 0, 1}}));
+  sets.push_back(tile_set_edges::create(
+      2, 2, {{0, 0, 0, 0}, {0, 1, 1, 0}, {1, 0, 1, 1}, {1, 1, 0, 1}, {0, 1, 0, 0}, {1, 0, 0, 1}}));
   REQUIRE(sets[2]->hash_modulus() == 0);
   for (auto& set : sets) {
     REQUIRE(set.ok());
@@ -59,5 +60,6 @@ TEST_CASE("periodic colouring: bad input", "[tiling]") {
   REQUIRE_THAT(grid.error().message(), Catch::Contains("max_coloring_cells"));
   // a search budget too small reports not_converged
   auto arbitrary = tile_set_edges::create(2, 2, {{0, 0, 1, 0}, {1, 0, 0, 0}, {0, 1, 1, 1}, {1, 1, 0, 1}});
-  REQUIRE(periodic_coloring::create(*arbitrary, 4, 4, 4, 4, 1, 3).error().code() == tessera::status_code::not_converged);
+  REQUIRE(periodic_coloring::create(*arbitrary, 4, 4, 4, 4, 1, 3).error().code() ==
+          tessera::status_code::not_converged);
 }

@@ -45,7 +45,7 @@ TEST_CASE("scanline colouring: free edges are uniform over the complete set", "[
     const auto e = c->edges_at(f % 64, f / 64);
     ++counts[tessera::complete_tile_index(e, 2, 2)];
   }
-  REQUIRE(counts.size() == 16u);  // every tile occurs
+  REQUIRE(counts.size() == 16u);                              // every tile occurs
   for (auto& [tile, n] : counts) REQUIRE(n > 4096 / 16 / 2);  // and none is rare (expected 256)
 }
 

@@ -24,7 +24,8 @@ TEST_CASE("tile lookup: cell edges of grid and plane colourings", "[tiling]") {
   auto plane = tessera::hash_coloring::create(2, 3, 4);
   auto window = plane->window(-3, 5, 6, 4);
   for (index_t r = 0; r < 4; ++r)
-    for (index_t c = 0; c < 6; ++c) REQUIRE(tessera::cell_edges(*window, c, r) == tessera::cell_edges(*plane, c - 3, r + 5));
+    for (index_t c = 0; c < 6; ++c)
+      REQUIRE(tessera::cell_edges(*window, c, r) == tessera::cell_edges(*plane, c - 3, r + 5));
   auto scan = tessera::scanline_coloring::create(2, 2, 5, 3, 1);
   const tessera::stored_tile_coloring stored = tessera::store_coloring(*scan);
   const tessera::grid_coloring_view<tessera::stored_tile_coloring> view{&stored, 5};

@@ -32,7 +32,8 @@ TEST_CASE("tile set edges: lookups agree with brute force", "[tiling]") {
     for (int w = 0; w < 2; ++w) {
       std::vector<index_t> expect;
       for (index_t i = 0; i < 6; ++i)
-        if (tiles[static_cast<std::size_t>(i)].north == n && tiles[static_cast<std::size_t>(i)].west == w) expect.push_back(i);
+        if (tiles[static_cast<std::size_t>(i)].north == n && tiles[static_cast<std::size_t>(i)].west == w)
+          expect.push_back(i);
       auto got = set->matching(n, w);
       REQUIRE(std::vector<index_t>(got.begin(), got.end()) == expect);
     }
@@ -53,7 +54,7 @@ TEST_CASE("tile set edges: modular subsets (Cohen's 8 tiles) and hash moduli", "
   for (int n = 0; n < 2; ++n)
     for (int w = 0; w < 2; ++w) {
       REQUIRE(cohen->matching(n, w).size() == 2);  // two tiles for every (north, west) pair, as in Cohen et al.
-      int south_east_pairs = 0;                     // and every (south, east) pair also twice
+      int south_east_pairs = 0;                    // and every (south, east) pair also twice
       for (const auto& t : cohen->tiles()) south_east_pairs += t.south == n && t.east == w;
       REQUIRE(south_east_pairs == 2);
     }

@@ -45,20 +45,20 @@ struct eigen_pixel_traits {
 /// uint8, uint16, float; other vectors (Eigen::Vector3d, 5 channels) are known but do not model
 /// Pixel, so explain_image() names the problem.
 template <class T, int C, int Options, int MaxRows, int MaxCols>
-  requires std::is_arithmetic_v<T> && (C >= 1)
-struct pixel_traits<Eigen::Matrix<T, C, 1, Options, MaxRows, MaxCols>>
-    : detail::eigen_pixel_traits<Eigen::Matrix<T, C, 1, Options, MaxRows, MaxCols>, T, C> {};
+requires std::is_arithmetic_v<T> &&(C >= 1) struct pixel_traits<Eigen::Matrix<T, C, 1, Options, MaxRows, MaxCols>>
+    : detail::eigen_pixel_traits<Eigen::Matrix<T, C, 1, Options, MaxRows, MaxCols>, T, C> {
+};
 
 template <class T, int C, int Options, int MaxRows, int MaxCols>
-  requires std::is_arithmetic_v<T> && (C >= 1)
-struct pixel_traits<Eigen::Array<T, C, 1, Options, MaxRows, MaxCols>>
-    : detail::eigen_pixel_traits<Eigen::Array<T, C, 1, Options, MaxRows, MaxCols>, T, C> {};
+requires std::is_arithmetic_v<T> &&(C >= 1) struct pixel_traits<Eigen::Array<T, C, 1, Options, MaxRows, MaxCols>>
+    : detail::eigen_pixel_traits<Eigen::Array<T, C, 1, Options, MaxRows, MaxCols>, T, C> {
+};
 
 /// Eigen vectors (column or row, fixed or dynamic size) as points: coordinates past the vector's
 /// size read as 0, so an Eigen::Vector2f position is (x, y, 0) rather than an out-of-bounds read.
 template <class T, int R, int C, int Options, int MaxRows, int MaxCols>
-  requires std::is_arithmetic_v<T> && (R == 1 || C == 1)
-struct point_traits<Eigen::Matrix<T, R, C, Options, MaxRows, MaxCols>> {
+requires std::is_arithmetic_v<T> &&
+    (R == 1 || C == 1) struct point_traits<Eigen::Matrix<T, R, C, Options, MaxRows, MaxCols>> {
   static double get(const Eigen::Matrix<T, R, C, Options, MaxRows, MaxCols>& p, int i) noexcept {
     return i < p.size() ? static_cast<double>(p[i]) : 0.0;
   }
@@ -84,12 +84,16 @@ class eigen_holder {
   explicit eigen_holder(const X& x) requires(!eigen_is_plain<X>) : value_(x) {}
 
   [[nodiscard]] X& get() noexcept {
-    if constexpr (eigen_is_plain<X>) return *ptr_;
-    else return value_;
+    if constexpr (eigen_is_plain<X>)
+      return *ptr_;
+    else
+      return value_;
   }
   [[nodiscard]] const X& get() const noexcept {
-    if constexpr (eigen_is_plain<X>) return *ptr_;
-    else return value_;
+    if constexpr (eigen_is_plain<X>)
+      return *ptr_;
+    else
+      return value_;
   }
 
  private:
@@ -127,9 +131,7 @@ class eigen_mesh_view {
 
   [[nodiscard]] index_t num_vertices() const noexcept { return static_cast<index_t>(v_.get().rows()); }
   [[nodiscard]] index_t num_faces() const noexcept { return static_cast<index_t>(f_.get().rows()); }
-  [[nodiscard]] index_t face_vertex(index_t f, int k) const noexcept {
-    return static_cast<index_t>(f_.get()(f, k));
-  }
+  [[nodiscard]] index_t face_vertex(index_t f, int k) const noexcept { return static_cast<index_t>(f_.get()(f, k)); }
   [[nodiscard]] std::array<v_scalar, 3> position(index_t v) const noexcept {
     const auto& V = v_.get();
     return {V(v, 0), V(v, 1), V(v, 2)};
@@ -146,9 +148,9 @@ class eigen_mesh_view {
 /// matrix is reported as probably transposed). Plain matrices must be lvalues that outlive the view;
 /// Maps and Refs may be temporaries. O(1): element checks are validate_mesh()'s job.
 template <class VArg, class FArg>
-  requires detail::eigen_dense<VArg> && detail::eigen_dense<FArg>
-result<eigen_mesh_view<std::remove_reference_t<VArg>, std::remove_reference_t<FArg>>> make_eigen_mesh_view(VArg&& V,
-                                                                                                         FArg&& F) {
+requires detail::eigen_dense<VArg> && detail::eigen_dense<FArg>
+    result<eigen_mesh_view<std::remove_reference_t<VArg>, std::remove_reference_t<FArg>>> make_eigen_mesh_view(
+        VArg&& V, FArg&& F) {
   static_assert(std::is_lvalue_reference_v<VArg> || !detail::eigen_is_plain<VArg>,
                 "make_eigen_mesh_view: V is a temporary matrix; the view would dangle. Pass a named matrix.");
   static_assert(std::is_lvalue_reference_v<FArg> || !detail::eigen_is_plain<FArg>,
@@ -187,7 +189,8 @@ class eigen_image_view {
   /// Views a named matrix (referenced) or a Map / Ref / Block (copied: it is a view itself).
   explicit eigen_image_view(M& m) : m_(m) {}
   explicit eigen_image_view(M&& m) requires(!detail::eigen_is_plain<M>) : m_(m) {}
-  eigen_image_view(M&& m) requires detail::eigen_is_plain<M> = delete;  // would dangle: name the matrix
+  eigen_image_view(M&& m) requires detail::eigen_is_plain<M>
+  = delete;  // would dangle: name the matrix
 
   [[nodiscard]] index_t width() const noexcept { return static_cast<index_t>(m_.get().cols()); }
   [[nodiscard]] index_t height() const noexcept { return static_cast<index_t>(m_.get().rows()); }
@@ -195,9 +198,7 @@ class eigen_image_view {
     TESSERA_ASSERT(x >= 0 && x < width() && y >= 0 && y < height());
     return static_cast<pixel_type>(m_.get()(y, x));
   }
-  void write(index_t x, index_t y, const pixel_type& v) noexcept
-    requires writable
-  {
+  void write(index_t x, index_t y, const pixel_type& v) noexcept requires writable {
     TESSERA_ASSERT(x >= 0 && x < width() && y >= 0 && y < height());
     m_.get()(y, x) = static_cast<scalar_type>(v);
   }

@@ -23,7 +23,7 @@ TESSERA_NAMESPACE_BEGIN
 /// uint16, float; glm::dvec3 or glm::ivec4 are known here but do not model Pixel, so
 /// explain_image() names the problem.
 template <glm::length_t C, class T, glm::qualifier Q>
-  requires std::is_arithmetic_v<T>
+requires std::is_arithmetic_v<T>
 struct pixel_traits<glm::vec<C, T, Q>> {
   using channel_type = T;
   static constexpr int channels = static_cast<int>(C);

@@ -39,7 +39,9 @@ namespace detail {
 /// An OpenMesh halfedge mesh with vertex positions.
 template <class M>
 concept openmesh_mesh = std::derived_from<M, OpenMesh::PolyConnectivity> &&
-                        requires(const M& m, typename M::VertexHandle v) { m.point(v); };
+    requires(const M& m, typename M::VertexHandle v) {
+  m.point(v);
+};
 
 /// The halfedge of face f pointing to its corner k (corner 0 is the target of the face's halfedge).
 template <openmesh_mesh M>
@@ -89,16 +91,14 @@ status validate_openmesh(const M& m, std::string_view what = "mesh") {
 
 /// OpenMesh meshes as tessera meshes (see the top of this file).
 template <class M>
-  requires detail::openmesh_mesh<M>
+requires detail::openmesh_mesh<M>
 struct mesh_traits<M> {
   static index_t num_vertices(const M& m) noexcept { return static_cast<index_t>(m.n_vertices()); }
   static index_t num_faces(const M& m) noexcept { return static_cast<index_t>(m.n_faces()); }
   static index_t face_vertex(const M& m, index_t f, int k) {
     return static_cast<index_t>(m.to_vertex_handle(detail::openmesh_corner(m, f, k)).idx());
   }
-  static decltype(auto) position(const M& m, index_t v) {
-    return m.point(m.vertex_handle(static_cast<unsigned>(v)));
-  }
+  static decltype(auto) position(const M& m, index_t v) { return m.point(m.vertex_handle(static_cast<unsigned>(v))); }
   static bool has_uvs(const M& m) noexcept { return m.has_halfedge_texcoords2D() || m.has_vertex_texcoords2D(); }
   static auto corner_uv(const M& m, index_t f, int k) {
     const auto h = detail::openmesh_corner(m, f, k);
@@ -114,21 +114,20 @@ struct mesh_traits<M> {
 /// with opposite orientation; a face OpenMesh still refuses (two fans meeting at one vertex) is
 /// reported by index (OpenMesh also prints its own message to omerr()). O(F log F).
 template <class OM = OpenMesh::TriMesh_ArrayKernelT<>, Mesh M>
-  requires detail::openmesh_mesh<OM>
-result<OM> to_openmesh(const M& m, std::string_view what = "mesh") {
+requires detail::openmesh_mesh<OM> result<OM> to_openmesh(const M& m, std::string_view what = "mesh") {
   if (auto s = validate_mesh(m, what); !s) return s;
   for (const mesh_edge& e : mesh_edges(m)) {
     if (!e.is_manifold())
-      return status::invalid_argument(detail::cat(what, ": edge (", e.v0, ", ", e.v1, ") is shared by ",
-                                                  e.faces.size(), " faces; OpenMesh needs a manifold mesh"));
+      return status::invalid_argument(detail::cat(what, ": edge (", e.v0, ", ", e.v1, ") is shared by ", e.faces.size(),
+                                                  " faces; OpenMesh needs a manifold mesh"));
     if (e.faces.size() == 2) {
       const auto [f0, k0] = e.faces[0];
       const auto [f1, k1] = e.faces[1];
       const index_t from = face_vertex(m, f0, static_cast<int>(k0));
       if (from == face_vertex(m, f1, static_cast<int>(k1)))
-        return status::invalid_argument(detail::cat(what, ": faces ", f0, " and ", f1, " are inconsistently oriented (both run ",
-                                                    "edge (", e.v0, ", ", e.v1, ") from vertex ", from,
-                                                    "); OpenMesh needs a consistently oriented mesh"));
+        return status::invalid_argument(
+            detail::cat(what, ": faces ", f0, " and ", f1, " are inconsistently oriented (both run ", "edge (", e.v0,
+                        ", ", e.v1, ") from vertex ", from, "); OpenMesh needs a consistently oriented mesh"));
     }
   }
   using scalar = typename OM::Point::value_type;
@@ -155,7 +154,8 @@ result<OM> to_openmesh(const M& m, std::string_view what = "mesh") {
       for (index_t f = 0; f < nf; ++f)
         for (int k = 0; k < 3; ++k) {
           const vec2 uv = to_vec2(mesh_traits<M>::corner_uv(m, f, k));
-          out.set_texcoord2D(detail::openmesh_corner(out, f, k), tex(static_cast<tscalar>(uv.x), static_cast<tscalar>(uv.y)));
+          out.set_texcoord2D(detail::openmesh_corner(out, f, k),
+                             tex(static_cast<tscalar>(uv.x), static_cast<tscalar>(uv.y)));
         }
     }
   }

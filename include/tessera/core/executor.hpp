@@ -26,7 +26,9 @@ TESSERA_NAMESPACE_BEGIN
 /// fn(i) exactly once for each i in [begin, end), in any order, on any threads, and returns when all
 /// calls have returned. Algorithms take one as their last argument (default serial_executor).
 template <class E>
-concept Executor = requires(E& e, index_t n, void (*fn)(index_t)) { e.parallel_for(index_t{0}, n, fn); };
+concept Executor = requires(E& e, index_t n, void (*fn)(index_t)) {
+  e.parallel_for(index_t{0}, n, fn);
+};
 
 /// Runs every loop on the calling thread, in index order.
 struct serial_executor {

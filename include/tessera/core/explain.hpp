@@ -25,13 +25,21 @@ template <class>
 inline constexpr bool dependent_false = false;
 
 template <class I>
-concept traits_has_width = requires(const I& i) { image_traits<I>::width(i); };
+concept traits_has_width = requires(const I& i) {
+  image_traits<I>::width(i);
+};
 template <class I>
-concept traits_has_height = requires(const I& i) { image_traits<I>::height(i); };
+concept traits_has_height = requires(const I& i) {
+  image_traits<I>::height(i);
+};
 template <class I>
-concept traits_has_read = requires(const I& i) { image_traits<I>::read(i, index_t{0}, index_t{0}); };
+concept traits_has_read = requires(const I& i) {
+  image_traits<I>::read(i, index_t{0}, index_t{0});
+};
 template <class P>
-concept has_pixel_traits = requires { typename pixel_traits<P>::channel_type; };
+concept has_pixel_traits = requires {
+  typename pixel_traits<P>::channel_type;
+};
 
 /// The first requirement of Image / WritableImage a type misses, in the order explain_image checks.
 enum class image_problem {
@@ -53,28 +61,41 @@ concept member_size_ok = requires(const I& i) {
   { i.height() } -> std::convertible_to<index_t>;
 };
 template <class I>
-concept member_has_read = requires(const I& i) { i.read(index_t{0}, index_t{0}); };
+concept member_has_read = requires(const I& i) {
+  i.read(index_t{0}, index_t{0});
+};
 
 template <class T>
 constexpr image_problem image_problem_of() {
   if constexpr (!(traits_has_width<T> && traits_has_height<T> && traits_has_read<T>)) {
-    if constexpr (traits_has_width<T> && traits_has_height<T>) return image_problem::no_read;  // partial traits
-    else if constexpr (!member_size_ok<T>) return image_problem::no_size;
-    else if constexpr (!member_has_read<T>) return image_problem::no_read;
-    else return image_problem::no_size;  // unreachable: the members would make image_traits complete
-  } else if constexpr (!has_pixel_traits<pixel_t<T>>) return image_problem::unknown_pixel;
-  else if constexpr (!Channel<typename pixel_traits<pixel_t<T>>::channel_type>) return image_problem::bad_channel_type;
+    if constexpr (traits_has_width<T> && traits_has_height<T>)
+      return image_problem::no_read;  // partial traits
+    else if constexpr (!member_size_ok<T>)
+      return image_problem::no_size;
+    else if constexpr (!member_has_read<T>)
+      return image_problem::no_read;
+    else
+      return image_problem::no_size;  // unreachable: the members would make image_traits complete
+  } else if constexpr (!has_pixel_traits<pixel_t<T>>)
+    return image_problem::unknown_pixel;
+  else if constexpr (!Channel<typename pixel_traits<pixel_t<T>>::channel_type>)
+    return image_problem::bad_channel_type;
   else if constexpr (pixel_traits<pixel_t<T>>::channels < 1 || pixel_traits<pixel_t<T>>::channels > max_channels)
     return image_problem::bad_channel_count;
-  else if constexpr (!Image<T>) return image_problem::incomplete_pixel_traits;
-  else return image_problem::none;
+  else if constexpr (!Image<T>)
+    return image_problem::incomplete_pixel_traits;
+  else
+    return image_problem::none;
 }
 
 template <class T>
 constexpr image_problem writable_image_problem_of() {
-  if constexpr (image_problem_of<T>() != image_problem::none) return image_problem_of<T>();
-  else if constexpr (!WritableImage<T>) return image_problem::not_writable;
-  else return image_problem::none;
+  if constexpr (image_problem_of<T>() != image_problem::none)
+    return image_problem_of<T>();
+  else if constexpr (!WritableImage<T>)
+    return image_problem::not_writable;
+  else
+    return image_problem::none;
 }
 
 template <class M>
@@ -83,9 +104,13 @@ concept traits_has_counts = requires(const M& m) {
   mesh_traits<M>::num_faces(m);
 };
 template <class M>
-concept traits_has_face_vertex = requires(const M& m) { mesh_traits<M>::face_vertex(m, index_t{0}, 0); };
+concept traits_has_face_vertex = requires(const M& m) {
+  mesh_traits<M>::face_vertex(m, index_t{0}, 0);
+};
 template <class M>
-concept traits_has_position = requires(const M& m) { mesh_traits<M>::position(m, index_t{0}); };
+concept traits_has_position = requires(const M& m) {
+  mesh_traits<M>::position(m, index_t{0});
+};
 template <class M>
 concept traits_has_uvs = requires(const M& m) {
   mesh_traits<M>::has_uvs(m);
@@ -110,32 +135,48 @@ concept member_has_counts = requires(const M& m) {
   m.num_faces();
 };
 template <class M>
-concept member_has_face_vertex = requires(const M& m) { m.face_vertex(index_t{0}, 0); };
+concept member_has_face_vertex = requires(const M& m) {
+  m.face_vertex(index_t{0}, 0);
+};
 template <class M>
-concept member_has_position = requires(const M& m) { m.position(index_t{0}); };
+concept member_has_position = requires(const M& m) {
+  m.position(index_t{0});
+};
 
 template <class T>
 constexpr mesh_problem mesh_problem_of() {
   if constexpr (!traits_has_counts<T>) {
     // mesh_traits' primary template offers nothing unless every member fits: look at the members
-    if constexpr (!member_has_counts<T>) return mesh_problem::no_counts;
-    else if constexpr (!member_has_face_vertex<T>) return mesh_problem::no_face_vertex;
-    else if constexpr (!member_has_position<T>) return mesh_problem::no_position;
-    else return mesh_problem::incomplete;  // all present, but counts or indices are not integers
-  } else if constexpr (!traits_has_face_vertex<T>) return mesh_problem::no_face_vertex;
-  else if constexpr (!traits_has_position<T>) return mesh_problem::no_position;
+    if constexpr (!member_has_counts<T>)
+      return mesh_problem::no_counts;
+    else if constexpr (!member_has_face_vertex<T>)
+      return mesh_problem::no_face_vertex;
+    else if constexpr (!member_has_position<T>)
+      return mesh_problem::no_position;
+    else
+      return mesh_problem::incomplete;  // all present, but counts or indices are not integers
+  } else if constexpr (!traits_has_face_vertex<T>)
+    return mesh_problem::no_face_vertex;
+  else if constexpr (!traits_has_position<T>)
+    return mesh_problem::no_position;
   else if constexpr (!Point<decltype(mesh_traits<T>::position(std::declval<const T&>(), index_t{0}))>)
     return mesh_problem::bad_point;
-  else if constexpr (!Mesh<T>) return mesh_problem::incomplete;
-  else return mesh_problem::none;
+  else if constexpr (!Mesh<T>)
+    return mesh_problem::incomplete;
+  else
+    return mesh_problem::none;
 }
 
 template <class T>
 constexpr mesh_problem uv_mesh_problem_of() {
-  if constexpr (mesh_problem_of<T>() != mesh_problem::none) return mesh_problem_of<T>();
-  else if constexpr (!traits_has_uvs<T>) return mesh_problem::no_uvs;
-  else if constexpr (!UVMesh<T>) return mesh_problem::bad_uv_point;
-  else return mesh_problem::none;
+  if constexpr (mesh_problem_of<T>() != mesh_problem::none)
+    return mesh_problem_of<T>();
+  else if constexpr (!traits_has_uvs<T>)
+    return mesh_problem::no_uvs;
+  else if constexpr (!UVMesh<T>)
+    return mesh_problem::bad_uv_point;
+  else
+    return mesh_problem::none;
 }
 }  // namespace detail
 

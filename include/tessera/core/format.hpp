@@ -40,9 +40,9 @@ constexpr int channel_size(channel_type t) noexcept {
 
 /// The channel_type of a compile-time channel type.
 template <Channel T>
-inline constexpr channel_type channel_type_of =
-    std::is_same_v<T, std::uint8_t> ? channel_type::uint8
-    : std::is_same_v<T, std::uint16_t> ? channel_type::uint16 : channel_type::float32;
+inline constexpr channel_type channel_type_of = std::is_same_v<T, std::uint8_t>    ? channel_type::uint8
+                                                : std::is_same_v<T, std::uint16_t> ? channel_type::uint16
+                                                                                   : channel_type::float32;
 
 /// A pixel format known at run time.
 struct pixel_format {
@@ -86,8 +86,7 @@ status dispatch_count(int channels, F&& f) {
     case 2: return call.template operator()<2>();
     case 3: return call.template operator()<3>();
     case 4: return call.template operator()<4>();
-    default:
-      return status::invalid_argument(detail::cat("pixel format: channel count must be 1 to 4, got ", channels));
+    default: return status::invalid_argument(detail::cat("pixel format: channel count must be 1 to 4, got ", channels));
   }
 }
 }  // namespace detail

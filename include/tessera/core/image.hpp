@@ -81,7 +81,7 @@ template <class P>
 struct pixel_traits;
 
 template <class T>
-  requires std::is_arithmetic_v<T>
+requires std::is_arithmetic_v<T>
 struct pixel_traits<T> {
   using channel_type = T;
   static constexpr int channels = 1;
@@ -104,8 +104,9 @@ concept Pixel = requires(const P& p, P& q, typename pixel_traits<P>::channel_typ
   { pixel_traits<P>::channels } -> std::convertible_to<int>;
   { pixel_traits<P>::get(p, 0) } -> std::convertible_to<typename pixel_traits<P>::channel_type>;
   pixel_traits<P>::set(q, 0, v);
-} && Channel<typename pixel_traits<P>::channel_type> && (pixel_traits<P>::channels >= 1) &&
-                (pixel_traits<P>::channels <= max_channels) && std::default_initializable<P>;
+}
+&&Channel<typename pixel_traits<P>::channel_type> && (pixel_traits<P>::channels >= 1) &&
+    (pixel_traits<P>::channels <= max_channels) && std::default_initializable<P>;
 
 /// tessera's own pixel: C channels of T.
 template <Channel T, int C>
@@ -119,10 +120,14 @@ template <Pixel P>
 constexpr unit_rgba to_unit_rgba(const P& p) noexcept {
   using T = pixel_traits<P>;
   auto u = [&](int c) { return channel_to_unit(T::get(p, c)); };
-  if constexpr (T::channels == 1) return {u(0), u(0), u(0), 1.0f};
-  else if constexpr (T::channels == 2) return {u(0), u(0), u(0), u(1)};
-  else if constexpr (T::channels == 3) return {u(0), u(1), u(2), 1.0f};
-  else return {u(0), u(1), u(2), u(3)};
+  if constexpr (T::channels == 1)
+    return {u(0), u(0), u(0), 1.0f};
+  else if constexpr (T::channels == 2)
+    return {u(0), u(0), u(0), u(1)};
+  else if constexpr (T::channels == 3)
+    return {u(0), u(1), u(2), 1.0f};
+  else
+    return {u(0), u(1), u(2), u(3)};
 }
 template <Pixel P>
 constexpr P from_unit_rgba(const unit_rgba& q) noexcept {
@@ -133,7 +138,11 @@ constexpr P from_unit_rgba(const unit_rgba& q) noexcept {
   const float luma = 0.299f * q.r + 0.587f * q.g + 0.114f * q.b;  // Rec. 601
   if constexpr (T::channels <= 2) set(0, luma);
   if constexpr (T::channels == 2) set(1, q.a);
-  if constexpr (T::channels >= 3) { set(0, q.r); set(1, q.g); set(2, q.b); }
+  if constexpr (T::channels >= 3) {
+    set(0, q.r);
+    set(1, q.g);
+    set(2, q.b);
+  }
   if constexpr (T::channels == 4) set(3, q.a);
   return out;
 }
@@ -148,8 +157,7 @@ constexpr To convert_pixel(const From& p) noexcept {
   using TT = pixel_traits<To>;
   if constexpr (FT::channels == TT::channels) {
     To out{};
-    for (int c = 0; c < TT::channels; ++c)
-      TT::set(out, c, convert_channel<typename TT::channel_type>(FT::get(p, c)));
+    for (int c = 0; c < TT::channels; ++c) TT::set(out, c, convert_channel<typename TT::channel_type>(FT::get(p, c)));
     return out;
   } else {
     return detail::from_unit_rgba<To>(detail::to_unit_rgba(p));
@@ -167,10 +175,10 @@ concept member_image = requires(const I& i, index_t x, index_t y) {
   i.read(x, y);
 };
 template <class I>
-concept member_writable_image =
-    member_image<I> && requires(I& i, index_t x, index_t y, const std::remove_cvref_t<decltype(std::declval<const I&>().read(0, 0))>& p) {
-      i.write(x, y, p);
-    };
+concept member_writable_image = member_image<I> &&
+    requires(I& i, index_t x, index_t y, const std::remove_cvref_t<decltype(std::declval<const I&>().read(0, 0))>& p) {
+  i.write(x, y, p);
+};
 }  // namespace detail
 
 /// Reaches an image type. The primary template forwards to members; specialize it for foreign types
@@ -196,7 +204,8 @@ concept Image = requires(const I& img, index_t x, index_t y) {
   { image_traits<I>::width(img) } -> std::convertible_to<index_t>;
   { image_traits<I>::height(img) } -> std::convertible_to<index_t>;
   image_traits<I>::read(img, x, y);
-} && Pixel<pixel_t<I>>;
+}
+&&Pixel<pixel_t<I>>;
 
 /// An image tessera can also write pixels of its own pixel type into.
 template <class I>

@@ -50,8 +50,8 @@ class image_buffer {
     try {
       return image_buffer(width, height, fill);
     } catch (const std::bad_alloc&) {
-      return status::size_overflow(detail::cat("image_buffer: cannot allocate ", width, " x ", height, " x ", C, " x ",
-                                               sizeof(T), " bytes"));
+      return status::size_overflow(
+          detail::cat("image_buffer: cannot allocate ", width, " x ", height, " x ", C, " x ", sizeof(T), " bytes"));
     }
 #else
     return image_buffer(width, height, fill);

@@ -37,8 +37,7 @@ class image_view {
 
   /// A read-only view converts implicitly from a writable one.
   operator image_view<const value_type, C>() const noexcept  // NOLINT(google-explicit-constructor)
-    requires(!std::is_const_v<T>)
-  {
+      requires(!std::is_const_v<T>) {
     return {data_, width_, height_, stride_};
   }
 
@@ -57,9 +56,7 @@ class image_view {
     for (int c = 0; c < C; ++c) out[static_cast<std::size_t>(c)] = p[c];
     return out;
   }
-  void write(index_t x, index_t y, const pixel_type& v) const noexcept
-    requires(!std::is_const_v<T>)
-  {
+  void write(index_t x, index_t y, const pixel_type& v) const noexcept requires(!std::is_const_v<T>) {
     TESSERA_ASSERT(x >= 0 && x < width_ && y >= 0 && y < height_);
     T* p = pixel_ptr(x, y);
     for (int c = 0; c < C; ++c) p[c] = v[static_cast<std::size_t>(c)];

@@ -30,11 +30,18 @@ concept member_xy_point = requires(const P& p) {
 /// Eigen fixed-size vectors, glm vectors); -1 when unknown.
 template <class P>
 constexpr int static_point_size() noexcept {
-  if constexpr (requires { std::tuple_size<P>::value; }) return static_cast<int>(std::tuple_size<P>::value);
-  else if constexpr (requires { { P::SizeAtCompileTime } -> std::convertible_to<int>; })
+  if constexpr (requires { std::tuple_size<P>::value; })
+    return static_cast<int>(std::tuple_size<P>::value);
+  else if constexpr (requires {
+                       { P::SizeAtCompileTime } -> std::convertible_to<int>;
+                     })
     return P::SizeAtCompileTime > 0 ? static_cast<int>(P::SizeAtCompileTime) : -1;
-  else if constexpr (requires { { P::length() } -> std::convertible_to<int>; }) return static_cast<int>(P::length());
-  else return -1;
+  else if constexpr (requires {
+                       { P::length() } -> std::convertible_to<int>;
+                     })
+    return static_cast<int>(P::length());
+  else
+    return -1;
 }
 }  // namespace detail
 
@@ -43,9 +50,7 @@ constexpr int static_point_size() noexcept {
 /// neither `p[i]` nor `x, y, z` members.
 template <class P>
 struct point_traits {
-  static double get(const P& p, int i)
-    requires detail::subscript_point<P> || detail::member_xy_point<P>
-  {
+  static double get(const P& p, int i) requires detail::subscript_point<P> || detail::member_xy_point<P> {
     if constexpr (detail::subscript_point<P>) {
       constexpr int size = detail::static_point_size<P>();
       if (size >= 0 && i >= size) return 0.0;
@@ -98,7 +103,9 @@ concept member_uv_mesh = member_mesh<M> && requires(const M& m, index_t f, int k
 /// it can make (a polygon mesh's non-triangle faces); validate_mesh() calls it before its own checks.
 template <class M>
 struct mesh_traits {
-  static index_t num_vertices(const M& m) requires detail::member_mesh<M> { return static_cast<index_t>(m.num_vertices()); }
+  static index_t num_vertices(const M& m) requires detail::member_mesh<M> {
+    return static_cast<index_t>(m.num_vertices());
+  }
   static index_t num_faces(const M& m) requires detail::member_mesh<M> { return static_cast<index_t>(m.num_faces()); }
   static index_t face_vertex(const M& m, index_t f, int k) requires detail::member_mesh<M> {
     return static_cast<index_t>(m.face_vertex(f, k));
@@ -128,16 +135,24 @@ concept UVMesh = Mesh<M> && requires(const M& m, index_t f, int k) {
 
 /// Number of vertices of any Mesh (through mesh_traits).
 template <Mesh M>
-index_t num_vertices(const M& m) { return mesh_traits<M>::num_vertices(m); }
+index_t num_vertices(const M& m) {
+  return mesh_traits<M>::num_vertices(m);
+}
 /// Number of triangle faces of any Mesh.
 template <Mesh M>
-index_t num_faces(const M& m) { return mesh_traits<M>::num_faces(m); }
+index_t num_faces(const M& m) {
+  return mesh_traits<M>::num_faces(m);
+}
 /// Vertex index of corner k (0..2) of face f. Not range-checked: validate_mesh checks every index once.
 template <Mesh M>
-index_t face_vertex(const M& m, index_t f, int k) { return mesh_traits<M>::face_vertex(m, f, k); }
+index_t face_vertex(const M& m, index_t f, int k) {
+  return mesh_traits<M>::face_vertex(m, f, k);
+}
 /// Position of vertex v as a vec3 (double), whatever the mesh stores.
 template <Mesh M>
-vec3 vertex_position(const M& m, index_t v) { return to_vec3(mesh_traits<M>::position(m, v)); }
+vec3 vertex_position(const M& m, index_t v) {
+  return to_vec3(mesh_traits<M>::position(m, v));
+}
 
 namespace detail {
 /// True when all three corners of face f name a vertex in [0, nv): the guard of the whole-mesh
@@ -154,11 +169,15 @@ bool face_in_range(const M& m, index_t f, index_t nv) {
 /// True when the mesh carries per-corner uvs (always false for a Mesh that is not a UVMesh).
 template <Mesh M>
 bool has_uvs(const M& m) {
-  if constexpr (UVMesh<M>) return mesh_traits<M>::has_uvs(m);
-  else return false;
+  if constexpr (UVMesh<M>)
+    return mesh_traits<M>::has_uvs(m);
+  else
+    return false;
 }
 /// Texture coordinate of corner k of face f. Precondition: has_uvs(m).
 template <UVMesh M>
-vec2 corner_uv(const M& m, index_t f, int k) { return to_vec2(mesh_traits<M>::corner_uv(m, f, k)); }
+vec2 corner_uv(const M& m, index_t f, int k) {
+  return to_vec2(mesh_traits<M>::corner_uv(m, f, k));
+}
 
 TESSERA_NAMESPACE_END

@@ -132,7 +132,8 @@ std::vector<std::array<index_t, 2>> boundary_edges(const M& m) {
 template <Mesh M>
 index_t count_nonmanifold_edges(const M& m) {
   index_t n = 0;
-  detail::for_each_edge_group(detail::sorted_half_edges(m), [&](std::size_t, std::size_t count) { n += count > 2 ? 1 : 0; });
+  detail::for_each_edge_group(detail::sorted_half_edges(m),
+                              [&](std::size_t, std::size_t count) { n += count > 2 ? 1 : 0; });
   return n;
 }
 

@@ -20,16 +20,22 @@ TESSERA_NAMESPACE_BEGIN
 /// std::span). Never copies or modifies the buffers.
 template <class Scalar = float, class Index = std::uint32_t>
 class mesh_view {
-  static_assert(std::is_same_v<Scalar, float> || std::is_same_v<Scalar, double>, "mesh_view positions are float or double");
-  static_assert(std::is_same_v<Index, std::uint32_t> || std::is_same_v<Index, std::int32_t>, "mesh_view indices are 32-bit");
+  static_assert(std::is_same_v<Scalar, float> || std::is_same_v<Scalar, double>,
+                "mesh_view positions are float or double");
+  static_assert(std::is_same_v<Index, std::uint32_t> || std::is_same_v<Index, std::int32_t>,
+                "mesh_view indices are 32-bit");
 
  public:
   mesh_view() = default;
   /// Unchecked: use make_mesh_view() to validate caller-supplied buffers.
   mesh_view(const Scalar* positions, index_t vertex_count, const Index* indices, index_t face_count,
             const float* corner_uvs = nullptr, index_t position_stride = 3) noexcept
-      : positions_(positions), indices_(indices), uvs_(corner_uvs), num_vertices_(vertex_count),
-        num_faces_(face_count), stride_(position_stride) {}
+      : positions_(positions),
+        indices_(indices),
+        uvs_(corner_uvs),
+        num_vertices_(vertex_count),
+        num_faces_(face_count),
+        stride_(position_stride) {}
 
   [[nodiscard]] index_t num_vertices() const noexcept { return num_vertices_; }
   [[nodiscard]] index_t num_faces() const noexcept { return num_faces_; }
@@ -67,14 +73,15 @@ result<mesh_view<Scalar, Index>> make_mesh_view(const Scalar* positions, index_t
                                                 index_t face_count, const float* corner_uvs = nullptr,
                                                 index_t position_stride = 3) {
   if (vertex_count < 0 || face_count < 0)
-    return status::invalid_argument(
-        detail::cat("mesh_view: counts must be non-negative, got ", vertex_count, " vertices and ", face_count, " faces"));
+    return status::invalid_argument(detail::cat("mesh_view: counts must be non-negative, got ", vertex_count,
+                                                " vertices and ", face_count, " faces"));
   if (position_stride < 3)
-    return status::invalid_argument(detail::cat("mesh_view: position_stride must be at least 3, got ", position_stride));
+    return status::invalid_argument(
+        detail::cat("mesh_view: position_stride must be at least 3, got ", position_stride));
   constexpr auto index_limit = static_cast<index_t>(std::numeric_limits<Index>::max());
   if (vertex_count > index_limit)
-    return status::size_overflow(
-        detail::cat("mesh_view: ", vertex_count, " vertices exceed what 32-bit indices can address (", index_limit, ")"));
+    return status::size_overflow(detail::cat("mesh_view: ", vertex_count,
+                                             " vertices exceed what 32-bit indices can address (", index_limit, ")"));
   if (vertex_count > std::numeric_limits<index_t>::max() / position_stride)
     return status::size_overflow(
         detail::cat("mesh_view: ", vertex_count, " vertices x position_stride ", position_stride, " overflows"));

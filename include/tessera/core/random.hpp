@@ -39,7 +39,7 @@ constexpr std::uint64_t stream_id(std::string_view name) noexcept {
 /// and 2^64 - 1 are the same key). The order of keys matters: (a, b) and (b, a) differ.
 template <class... Keys>
 constexpr std::uint64_t hash_keys(std::uint64_t seed, Keys... keys) noexcept {
-  static_assert(((std::is_integral_v<Keys> || std::is_enum_v<Keys>) && ...),
+  static_assert(((std::is_integral_v<Keys> || std::is_enum_v<Keys>)&&...),
                 "random keys must be integers or enums (convert coordinates to integer cells first)");
   std::uint64_t h = mix64(seed ^ 0x6a09e667f3bcc909ULL);
   ((h = mix64(h ^ mix64(static_cast<std::uint64_t>(keys) + 0x9e3779b97f4a7c15ULL))), ...);
@@ -47,9 +47,7 @@ constexpr std::uint64_t hash_keys(std::uint64_t seed, Keys... keys) noexcept {
 }
 
 /// Turns 64 random bits into a double in [0, 1) with 53 bits of precision.
-constexpr double bits_to_unit(std::uint64_t bits) noexcept {
-  return static_cast<double>(bits >> 11) * 0x1.0p-53;
-}
+constexpr double bits_to_unit(std::uint64_t bits) noexcept { return static_cast<double>(bits >> 11) * 0x1.0p-53; }
 
 /// Maps 64 random bits to [0, n) by a multiply-high (Lemire; bias below n / 2^64, no rejection loop
 /// so the result stays a pure function of the bits). n must be > 0; n == 0 yields 0.
@@ -107,7 +105,9 @@ class counter_rng {
     return random_sequence(bits(keys...));
   }
   /// An independent generator for a sub-stream.
-  [[nodiscard]] constexpr counter_rng substream(std::uint64_t stream) const noexcept { return counter_rng(base_, stream); }
+  [[nodiscard]] constexpr counter_rng substream(std::uint64_t stream) const noexcept {
+    return counter_rng(base_, stream);
+  }
 
  private:
   std::uint64_t base_;

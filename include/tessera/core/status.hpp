@@ -87,7 +87,9 @@ template <class T>
 class [[nodiscard]] result {
  public:
   using value_type = T;
-  result(T value) : has_value_(true) { ::new (static_cast<void*>(&value_)) T(std::move(value)); }  // NOLINT(google-explicit-constructor)
+  result(T value) : has_value_(true) {
+    ::new (static_cast<void*>(&value_)) T(std::move(value));
+  }  // NOLINT(google-explicit-constructor)
   /// Holds a failure. An ok status carries no value, so it is turned into an internal_error rather
   /// than producing a result that is neither a value nor an error.
   result(status error) : error_(std::move(error)) {  // NOLINT(google-explicit-constructor)
@@ -98,7 +100,8 @@ class [[nodiscard]] result {
   result(const result& o) requires std::copy_constructible<T> : has_value_(o.has_value_), error_(o.error_) {
     if (has_value_) ::new (static_cast<void*>(&value_)) T(o.value_);
   }
-  result(result&& o) noexcept(std::is_nothrow_move_constructible_v<T>) : has_value_(o.has_value_), error_(std::move(o.error_)) {
+  result(result&& o) noexcept(std::is_nothrow_move_constructible_v<T>)
+      : has_value_(o.has_value_), error_(std::move(o.error_)) {
     if (has_value_) ::new (static_cast<void*>(&value_)) T(std::move(o.value_));
   }
   result& operator=(const result& o) requires std::copy_constructible<T> {
@@ -121,9 +124,18 @@ class [[nodiscard]] result {
   [[nodiscard]] const status& error() const noexcept { return error_; }
 
   /// The value. Precondition: ok() (checked by TESSERA_ASSERT; test first, or use value_or).
-  [[nodiscard]] T& value() & { TESSERA_ASSERT(ok()); return value_; }
-  [[nodiscard]] const T& value() const& { TESSERA_ASSERT(ok()); return value_; }
-  [[nodiscard]] T&& value() && { TESSERA_ASSERT(ok()); return std::move(value_); }
+  [[nodiscard]] T& value() & {
+    TESSERA_ASSERT(ok());
+    return value_;
+  }
+  [[nodiscard]] const T& value() const& {
+    TESSERA_ASSERT(ok());
+    return value_;
+  }
+  [[nodiscard]] T&& value() && {
+    TESSERA_ASSERT(ok());
+    return std::move(value_);
+  }
   T& operator*() & { return value(); }
   const T& operator*() const& { return value(); }
   T&& operator*() && { return std::move(*this).value(); }
@@ -158,8 +170,7 @@ inline void append_to(std::string& out, const std::string& s) { out += s; }
 inline void append_to(std::string& out, char c) { out += c; }
 inline void append_to(std::string& out, bool b) { out += b ? "true" : "false"; }
 template <class T>
-  requires std::integral<T> && (!std::same_as<T, bool>) && (!std::same_as<T, char>)
-void append_to(std::string& out, T v) {
+requires std::integral<T> &&(!std::same_as<T, bool>)&&(!std::same_as<T, char>)void append_to(std::string& out, T v) {
   char buf[32];
   auto r = std::to_chars(buf, buf + sizeof buf, v);
   out.append(buf, r.ptr);
@@ -171,10 +182,8 @@ void append_to(std::string& out, T v) {
   out.append(buf, static_cast<std::size_t>(n > 0 ? n : 0));
 }
 template <class T>
-  requires std::is_enum_v<T>
-void append_to(std::string& out, T v) {
-  append_to(out, static_cast<std::underlying_type_t<T>>(v));
-}
+requires std::is_enum_v<T>
+void append_to(std::string& out, T v) { append_to(out, static_cast<std::underlying_type_t<T>>(v)); }
 
 /// Concatenates strings and numbers into a message: cat("width must be > 0, got ", w).
 template <class... Args>

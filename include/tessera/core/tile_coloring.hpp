@@ -47,7 +47,9 @@ struct stored_tile_coloring {
   std::vector<std::array<int, 4>> colors;
 
   [[nodiscard]] index_t num_faces() const noexcept { return static_cast<index_t>(colors.size()); }
-  [[nodiscard]] int num_colors(int side) const noexcept { return is_horizontal_side(side) ? horizontal_colors : vertical_colors; }
+  [[nodiscard]] int num_colors(int side) const noexcept {
+    return is_horizontal_side(side) ? horizontal_colors : vertical_colors;
+  }
   [[nodiscard]] int edge_color(index_t face, int side) const noexcept {
     return colors[static_cast<std::size_t>(face)][static_cast<std::size_t>(side)];
   }
@@ -135,7 +137,8 @@ status check_grid_coloring(const C& c, index_t cols, index_t rows, bool toroidal
   if (cols <= 0 || rows <= 0)
     return status::invalid_argument(detail::cat("tile colouring: grid must be positive, got ", cols, " x ", rows));
   if (cols > std::numeric_limits<index_t>::max() / rows)
-    return status::size_overflow(detail::cat("tile colouring: a ", cols, " x ", rows, " grid overflows the index type"));
+    return status::size_overflow(
+        detail::cat("tile colouring: a ", cols, " x ", rows, " grid overflows the index type"));
   if (c.num_faces() != cols * rows)
     return status::invalid_argument(detail::cat("tile colouring: has ", c.num_faces(), " faces, a ", cols, " x ", rows,
                                                 " grid needs ", cols * rows));

@@ -61,8 +61,8 @@ struct tri_mesh {
   /// has uvs when every face of both meshes has them (a mesh without faces does not count); otherwise
   /// all uvs are dropped, since uvs must cover every face.
   void append(const tri_mesh& other, vec3 offset = {}) {
-    const bool keep_uvs = (has_uvs() || faces.empty()) && (other.has_uvs() || other.faces.empty()) &&
-                          (has_uvs() || other.has_uvs());
+    const bool keep_uvs =
+        (has_uvs() || faces.empty()) && (other.has_uvs() || other.faces.empty()) && (has_uvs() || other.has_uvs());
     if (!keep_uvs) uvs.clear();
     const index_t base = num_vertices();
     positions.reserve(positions.size() + other.positions.size());
@@ -82,7 +82,9 @@ struct tri_mesh {
 /// runs first. Returns invalid_argument, or out_of_range for a bad index. O(V + F).
 template <Mesh M>
 status validate_mesh(const M& m, std::string_view what = "mesh") {
-  if constexpr (requires { { mesh_traits<M>::validate(m, what) } -> std::same_as<status>; }) {
+  if constexpr (requires {
+                  { mesh_traits<M>::validate(m, what) } -> std::same_as<status>;
+                }) {
     if (auto s = mesh_traits<M>::validate(m, what); !s) return s;
   }
   const index_t nv = tessera::num_vertices(m), nf = tessera::num_faces(m);
@@ -96,8 +98,8 @@ status validate_mesh(const M& m, std::string_view what = "mesh") {
   for (index_t v = 0; v < nv; ++v) {
     const vec3 p = tessera::vertex_position(m, v);
     if (!is_finite(p))
-      return status::invalid_argument(detail::cat(what, ": vertex ", v, " has a non-finite position (", p.x, ", ", p.y,
-                                                  ", ", p.z, ")"));
+      return status::invalid_argument(
+          detail::cat(what, ": vertex ", v, " has a non-finite position (", p.x, ", ", p.y, ", ", p.z, ")"));
   }
   for (index_t f = 0; f < nf; ++f) {
     index_t idx[3];
@@ -109,8 +111,8 @@ status validate_mesh(const M& m, std::string_view what = "mesh") {
       idx[k] = v;
     }
     if (idx[0] == idx[1] || idx[1] == idx[2] || idx[0] == idx[2])
-      return status::invalid_argument(detail::cat(what, ": face ", f, " is degenerate (vertices ", idx[0], ", ", idx[1],
-                                                  ", ", idx[2], ")"));
+      return status::invalid_argument(
+          detail::cat(what, ": face ", f, " is degenerate (vertices ", idx[0], ", ", idx[1], ", ", idx[2], ")"));
   }
   if constexpr (UVMesh<M>) {
     if (mesh_traits<M>::has_uvs(m))
@@ -132,13 +134,15 @@ result<tri_mesh> to_tri_mesh(const M& m, std::string_view what = "mesh") {
   for (index_t v = 0; v < nv; ++v) out.positions[static_cast<std::size_t>(v)] = tessera::vertex_position(m, v);
   out.faces.resize(static_cast<std::size_t>(nf));
   for (index_t f = 0; f < nf; ++f)
-    for (int k = 0; k < 3; ++k) out.faces[static_cast<std::size_t>(f)][static_cast<std::size_t>(k)] = tessera::face_vertex(m, f, k);
+    for (int k = 0; k < 3; ++k)
+      out.faces[static_cast<std::size_t>(f)][static_cast<std::size_t>(k)] = tessera::face_vertex(m, f, k);
   if constexpr (UVMesh<M>) {
     if (mesh_traits<M>::has_uvs(m)) {
       out.uvs.resize(static_cast<std::size_t>(nf));
       for (index_t f = 0; f < nf; ++f)
         for (int k = 0; k < 3; ++k)
-          out.uvs[static_cast<std::size_t>(f)][static_cast<std::size_t>(k)] = to_vec2(mesh_traits<M>::corner_uv(m, f, k));
+          out.uvs[static_cast<std::size_t>(f)][static_cast<std::size_t>(k)] =
+              to_vec2(mesh_traits<M>::corner_uv(m, f, k));
     }
   }
   return out;
@@ -147,7 +151,8 @@ result<tri_mesh> to_tri_mesh(const M& m, std::string_view what = "mesh") {
 /// The three corner positions of face f. Precondition: f in [0, F) and the face's vertices in range.
 template <Mesh M>
 std::array<vec3, 3> face_corners(const M& m, index_t f) {
-  return {tessera::vertex_position(m, tessera::face_vertex(m, f, 0)), tessera::vertex_position(m, tessera::face_vertex(m, f, 1)),
+  return {tessera::vertex_position(m, tessera::face_vertex(m, f, 0)),
+          tessera::vertex_position(m, tessera::face_vertex(m, f, 1)),
           tessera::vertex_position(m, tessera::face_vertex(m, f, 2))};
 }
 

@@ -22,9 +22,21 @@ struct vec2 {
   friend constexpr vec2 operator*(vec2 a, double s) noexcept { return {a.x * s, a.y * s}; }
   friend constexpr vec2 operator*(double s, vec2 a) noexcept { return {a.x * s, a.y * s}; }
   friend constexpr vec2 operator/(vec2 a, double s) noexcept { return {a.x / s, a.y / s}; }
-  constexpr vec2& operator+=(vec2 b) noexcept { x += b.x; y += b.y; return *this; }
-  constexpr vec2& operator-=(vec2 b) noexcept { x -= b.x; y -= b.y; return *this; }
-  constexpr vec2& operator*=(double s) noexcept { x *= s; y *= s; return *this; }
+  constexpr vec2& operator+=(vec2 b) noexcept {
+    x += b.x;
+    y += b.y;
+    return *this;
+  }
+  constexpr vec2& operator-=(vec2 b) noexcept {
+    x -= b.x;
+    y -= b.y;
+    return *this;
+  }
+  constexpr vec2& operator*=(double s) noexcept {
+    x *= s;
+    y *= s;
+    return *this;
+  }
   friend constexpr bool operator==(vec2, vec2) = default;
 };
 
@@ -39,9 +51,24 @@ struct vec3 {
   friend constexpr vec3 operator*(vec3 a, double s) noexcept { return {a.x * s, a.y * s, a.z * s}; }
   friend constexpr vec3 operator*(double s, vec3 a) noexcept { return {a.x * s, a.y * s, a.z * s}; }
   friend constexpr vec3 operator/(vec3 a, double s) noexcept { return {a.x / s, a.y / s, a.z / s}; }
-  constexpr vec3& operator+=(vec3 b) noexcept { x += b.x; y += b.y; z += b.z; return *this; }
-  constexpr vec3& operator-=(vec3 b) noexcept { x -= b.x; y -= b.y; z -= b.z; return *this; }
-  constexpr vec3& operator*=(double s) noexcept { x *= s; y *= s; z *= s; return *this; }
+  constexpr vec3& operator+=(vec3 b) noexcept {
+    x += b.x;
+    y += b.y;
+    z += b.z;
+    return *this;
+  }
+  constexpr vec3& operator-=(vec3 b) noexcept {
+    x -= b.x;
+    y -= b.y;
+    z -= b.z;
+    return *this;
+  }
+  constexpr vec3& operator*=(double s) noexcept {
+    x *= s;
+    y *= s;
+    z *= s;
+    return *this;
+  }
   friend constexpr bool operator==(vec3, vec3) = default;
 };
 

@@ -86,8 +86,10 @@ class json_parser {
   status fail(std::string_view what) const {
     int line = 1, col = 1;
     for (std::size_t i = 0; i < pos_ && i < text_.size(); ++i) {
-      if (text_[i] == '\n') ++line, col = 1;
-      else ++col;
+      if (text_[i] == '\n')
+        ++line, col = 1;
+      else
+        ++col;
     }
     return status::parse_error(cat(name_, ":", line, ":", col, ": ", what));
   }
@@ -122,14 +124,26 @@ class json_parser {
       out.type = json_value::kind::string;
       return string(out.string);
     }
-    if (literal("true")) { out.type = json_value::kind::boolean; out.boolean = true; return {}; }
-    if (literal("false")) { out.type = json_value::kind::boolean; out.boolean = false; return {}; }
-    if (literal("null")) { out.type = json_value::kind::null; return {}; }
+    if (literal("true")) {
+      out.type = json_value::kind::boolean;
+      out.boolean = true;
+      return {};
+    }
+    if (literal("false")) {
+      out.type = json_value::kind::boolean;
+      out.boolean = false;
+      return {};
+    }
+    if (literal("null")) {
+      out.type = json_value::kind::null;
+      return {};
+    }
     return number(out);
   }
   status number(json_value& out) {
     const std::size_t start = pos_;
-    while (pos_ < text_.size() && (std::string_view("+-.eE0123456789").find(text_[pos_]) != std::string_view::npos)) ++pos_;
+    while (pos_ < text_.size() && (std::string_view("+-.eE0123456789").find(text_[pos_]) != std::string_view::npos))
+      ++pos_;
     if (pos_ == start) return fail(cat("unexpected character '", text_[pos_], "'"));
     const std::string token(text_.substr(start, pos_ - start));
     char* end = nullptr;
@@ -165,10 +179,14 @@ class json_parser {
     for (int i = 0; i < 4; ++i) {
       const char h = text_[pos_++];
       cp <<= 4;
-      if (h >= '0' && h <= '9') cp |= static_cast<std::uint32_t>(h - '0');
-      else if (h >= 'a' && h <= 'f') cp |= static_cast<std::uint32_t>(h - 'a' + 10);
-      else if (h >= 'A' && h <= 'F') cp |= static_cast<std::uint32_t>(h - 'A' + 10);
-      else return false;
+      if (h >= '0' && h <= '9')
+        cp |= static_cast<std::uint32_t>(h - '0');
+      else if (h >= 'a' && h <= 'f')
+        cp |= static_cast<std::uint32_t>(h - 'a' + 10);
+      else if (h >= 'A' && h <= 'F')
+        cp |= static_cast<std::uint32_t>(h - 'A' + 10);
+      else
+        return false;
     }
     return true;
   }
@@ -216,14 +234,23 @@ class json_parser {
     out.type = json_value::kind::array;
     for (;;) {
       skip();
-      if (pos_ < text_.size() && text_[pos_] == ']') { ++pos_; return {}; }  // also after a trailing comma
+      if (pos_ < text_.size() && text_[pos_] == ']') {
+        ++pos_;
+        return {};
+      }  // also after a trailing comma
       json_value v;
       if (auto s = value(v, depth + 1); !s) return s;
       out.array.push_back(std::move(v));
       skip();
       if (pos_ >= text_.size()) return fail("unexpected end of file inside an array");
-      if (text_[pos_] == ',') { ++pos_; continue; }
-      if (text_[pos_] == ']') { ++pos_; return {}; }
+      if (text_[pos_] == ',') {
+        ++pos_;
+        continue;
+      }
+      if (text_[pos_] == ']') {
+        ++pos_;
+        return {};
+      }
       return fail("expected ',' or ']' in an array");
     }
   }
@@ -232,7 +259,10 @@ class json_parser {
     out.type = json_value::kind::object;
     for (;;) {
       skip();
-      if (pos_ < text_.size() && text_[pos_] == '}') { ++pos_; return {}; }
+      if (pos_ < text_.size() && text_[pos_] == '}') {
+        ++pos_;
+        return {};
+      }
       if (pos_ >= text_.size() || text_[pos_] != '"') return fail("expected a member name in quotes");
       std::string key;
       if (auto s = string(key); !s) return s;
@@ -244,8 +274,14 @@ class json_parser {
       out.object.push_back({std::move(key), std::move(v)});
       skip();
       if (pos_ >= text_.size()) return fail("unexpected end of file inside an object");
-      if (text_[pos_] == ',') { ++pos_; continue; }
-      if (text_[pos_] == '}') { ++pos_; return {}; }
+      if (text_[pos_] == ',') {
+        ++pos_;
+        continue;
+      }
+      if (text_[pos_] == '}') {
+        ++pos_;
+        return {};
+      }
       return fail("expected ',' or '}' in an object");
     }
   }
@@ -256,7 +292,9 @@ class json_parser {
 };
 
 /// Parses JSON text; errors are parse_error statuses "NAME:LINE:COL: what".
-inline result<json_value> parse_json(std::string_view text, std::string_view name) { return json_parser(text, name).parse(); }
+inline result<json_value> parse_json(std::string_view text, std::string_view name) {
+  return json_parser(text, name).parse();
+}
 
 /// A JSON string literal for `s` (quotes and escapes added).
 inline std::string json_quote(std::string_view s) {

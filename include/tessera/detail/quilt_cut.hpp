@@ -28,7 +28,7 @@ enum class pixel_state : std::uint8_t { empty = 0, filled = 1, fixed = 2 };
 /// marked `outside`).
 struct site_window {
   index_t p = 0;
-  std::vector<double> error;         // (old − new)² summed over channels; 0 where not known
+  std::vector<double> error;  // (old − new)² summed over channels; 0 where not known
   std::vector<pixel_state> state;
   std::vector<std::uint8_t> outside;  // 1 where the window leaves a non-wrapping canvas
   [[nodiscard]] std::size_t idx(index_t i, index_t j) const noexcept { return static_cast<std::size_t>(j * p + i); }
@@ -89,7 +89,8 @@ void side_cut(const site_window& win, int side, index_t width, std::vector<doubl
 /// Traces the cheapest path through `cum` starting at (b0, x0), towards b = p − 1; positions before
 /// b0 are set to 0. Ties go to the smallest depth.
 template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
-void trace_cut(const std::vector<double>& cum, index_t p, index_t width, index_t b0, index_t x0, std::vector<index_t>& pos) {
+void trace_cut(const std::vector<double>& cum, index_t p, index_t width, index_t b0, index_t x0,
+               std::vector<index_t>& pos) {
   const index_t S = width;
   pos.assign(static_cast<std::size_t>(p), 0);
   index_t x = x0;
@@ -109,11 +110,11 @@ void trace_cut(const std::vector<double>& cum, index_t p, index_t width, index_t
 
 /// The cuts of one patch window.
 struct cut_plan {
-  index_t band[4] = {0, 0, 0, 0};  ///< band width per side, clamped to [0, p − 1]
+  index_t band[4] = {0, 0, 0, 0};                 ///< band width per side, clamped to [0, p − 1]
   bool active[4] = {false, false, false, false};  ///< the band holds a known pixel
-  bool meet = false;               ///< west and north both active: L-shaped cut
-  index_t mx = 0, my = 0;          ///< L-cut meeting point (window coordinates)
-  std::vector<index_t> path[4];    ///< per active side, the first new depth of each line
+  bool meet = false;                              ///< west and north both active: L-shaped cut
+  index_t mx = 0, my = 0;                         ///< L-cut meeting point (window coordinates)
+  std::vector<index_t> path[4];                   ///< per active side, the first new depth of each line
 };
 
 /// Finds the cut of every active side (see the header comment). `band_in` as in quilt_site.

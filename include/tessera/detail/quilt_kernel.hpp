@@ -34,8 +34,8 @@ namespace detail {
 template <Channel T, int C>
 struct quilt_source {
   image_buffer<T, C> pixels;
-  std::vector<float> planes;            // C planes of width · height
-  std::vector<std::uint8_t> allowed;    // (w - p + 1) · (h - p + 1) flags for patch size `allowed_patch`; empty = all
+  std::vector<float> planes;          // C planes of width · height
+  std::vector<std::uint8_t> allowed;  // (w - p + 1) · (h - p + 1) flags for patch size `allowed_patch`; empty = all
   index_t allowed_patch = 0;
 
   explicit quilt_source(image_buffer<T, C> px) : pixels(std::move(px)) {
@@ -59,10 +59,9 @@ struct quilt_source {
     std::vector<std::uint32_t> sat(static_cast<std::size_t>((w + 1) * (h + 1)), 0);
     for (index_t y = 0; y < h; ++y)
       for (index_t x = 0; x < w; ++x)
-        sat[static_cast<std::size_t>((y + 1) * (w + 1) + x + 1)] = bad[static_cast<std::size_t>(y * w + x)] +
-                                                                    sat[static_cast<std::size_t>(y * (w + 1) + x + 1)] +
-                                                                    sat[static_cast<std::size_t>((y + 1) * (w + 1) + x)] -
-                                                                    sat[static_cast<std::size_t>(y * (w + 1) + x)];
+        sat[static_cast<std::size_t>((y + 1) * (w + 1) + x + 1)] =
+            bad[static_cast<std::size_t>(y * w + x)] + sat[static_cast<std::size_t>(y * (w + 1) + x + 1)] +
+            sat[static_cast<std::size_t>((y + 1) * (w + 1) + x)] - sat[static_cast<std::size_t>(y * (w + 1) + x)];
     auto at = [&](index_t x, index_t y) { return sat[static_cast<std::size_t>(y * (w + 1) + x)]; };
     for (index_t v = 0; v < V; ++v)
       for (index_t u = 0; u < U; ++u)
@@ -85,8 +84,12 @@ struct quilt_canvas {
   quilt_canvas(index_t w, index_t h) : pixels(w, h), state(static_cast<std::size_t>(w * h), pixel_state::empty) {}
   [[nodiscard]] index_t width() const noexcept { return pixels.width(); }
   [[nodiscard]] index_t height() const noexcept { return pixels.height(); }
-  [[nodiscard]] pixel_state& at(index_t x, index_t y) noexcept { return state[static_cast<std::size_t>(y * width() + x)]; }
-  [[nodiscard]] pixel_state at(index_t x, index_t y) const noexcept { return state[static_cast<std::size_t>(y * width() + x)]; }
+  [[nodiscard]] pixel_state& at(index_t x, index_t y) noexcept {
+    return state[static_cast<std::size_t>(y * width() + x)];
+  }
+  [[nodiscard]] pixel_state at(index_t x, index_t y) const noexcept {
+    return state[static_cast<std::size_t>(y * width() + x)];
+  }
 };
 
 /// One patch placement: window top-left (x, y) in canvas coordinates (may wrap) and the width of
@@ -100,9 +103,9 @@ struct quilt_params {
   index_t patch = 32;
   double tolerance = 0.1;
   counter_rng rng{1};
-  std::uint64_t key = 0;  // distinguishes independent fills (e.g. one per Wang tile)
+  std::uint64_t key = 0;         // distinguishes independent fills (e.g. one per Wang tile)
   float frontier_weight = 1.0f;  // overlap-error weight of fixed pixels touching an empty one
-  index_t min_candidates = 1;     // draw among at least this many best candidates
+  index_t min_candidates = 1;    // draw among at least this many best candidates
 };
 
 /// Positions of windows of size p covering [lo, hi) of an axis of length `size` with overlaps of at
@@ -131,9 +134,10 @@ std::vector<index_t> plan_axis(index_t lo, index_t hi, index_t p, index_t ov, in
 /// with the first one.
 template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
 std::vector<quilt_site> plan_sites(index_t x0, index_t y0, index_t x1, index_t y1, index_t p, index_t ov, index_t w,
-                                          index_t h, bool wrap_x, bool wrap_y) {
+                                   index_t h, bool wrap_x, bool wrap_y) {
   const std::vector<index_t> xs = plan_axis(x0, x1, p, ov, w, wrap_x), ys = plan_axis(y0, y1, p, ov, h, wrap_y);
-  auto bands = [&](const std::vector<index_t>& v, std::size_t i, index_t size, bool wrap, index_t& before, index_t& after) {
+  auto bands = [&](const std::vector<index_t>& v, std::size_t i, index_t size, bool wrap, index_t& before,
+                   index_t& after) {
     before = i > 0 ? v[i - 1] + p - v[i] : ov;
     after = wrap && i + 1 == v.size() ? v[i] + p - size - v[0] : ov;
     before = std::clamp<index_t>(before, 0, p - 1);
@@ -183,8 +187,10 @@ TESSERA_DETAIL_ALWAYS_INLINE void overlap_row_pass(float* __restrict acc, const 
     const float w0 = el[k].weight, w1 = el[k + 1].weight, w2 = el[k + 2].weight, w3 = el[k + 3].weight;
     for (index_t u = 0; u < U; ++u) {
       const float d0 = r0[u] - t0, d1 = r1[u] - t1, d2 = r2[u] - t2, d3 = r3[u] - t3;
-      if constexpr (Weighted) acc[u] += (w0 * (d0 * d0) + w1 * (d1 * d1)) + (w2 * (d2 * d2) + w3 * (d3 * d3));
-      else acc[u] += (d0 * d0 + d1 * d1) + (d2 * d2 + d3 * d3);
+      if constexpr (Weighted)
+        acc[u] += (w0 * (d0 * d0) + w1 * (d1 * d1)) + (w2 * (d2 * d2) + w3 * (d3 * d3));
+      else
+        acc[u] += (d0 * d0 + d1 * d1) + (d2 * d2 + d3 * d3);
     }
   }
   for (; k < n; ++k) {
@@ -196,14 +202,17 @@ TESSERA_DETAIL_ALWAYS_INLINE void overlap_row_pass(float* __restrict acc, const 
     }
   }
 }
-TESSERA_DETAIL_ALWAYS_INLINE void overlap_row_body(float* acc, const float* base, const template_element* el, std::size_t n,
-                                                   index_t U, bool weighted) {
-  if (weighted) overlap_row_pass<true>(acc, base, el, n, U);
-  else overlap_row_pass<false>(acc, base, el, n, U);
+TESSERA_DETAIL_ALWAYS_INLINE void overlap_row_body(float* acc, const float* base, const template_element* el,
+                                                   std::size_t n, index_t U, bool weighted) {
+  if (weighted)
+    overlap_row_pass<true>(acc, base, el, n, U);
+  else
+    overlap_row_pass<false>(acc, base, el, n, U);
 }
 #undef TESSERA_DETAIL_ALWAYS_INLINE
 
-inline void overlap_row_generic(float* acc, const float* base, const template_element* el, std::size_t n, index_t U, bool weighted) {
+inline void overlap_row_generic(float* acc, const float* base, const template_element* el, std::size_t n, index_t U,
+                                bool weighted) {
   overlap_row_body(acc, base, el, n, U, weighted);
 }
 
@@ -251,8 +260,8 @@ void overlap_errors(const quilt_source<T, C>& src, const std::vector<template_el
 /// Draws one candidate among those whose error is within (1 + tolerance) of the best (Efros &
 /// Freeman's selection rule) or, when that leaves fewer, among the `at_least` best (finite ones);
 /// keyed by the site, candidates in index order.
-inline index_t pick_candidate(const std::vector<float>& err, double tolerance, const counter_rng& rng, std::uint64_t key,
-                              index_t site_x, index_t site_y, index_t at_least = 1) {
+inline index_t pick_candidate(const std::vector<float>& err, double tolerance, const counter_rng& rng,
+                              std::uint64_t key, index_t site_x, index_t site_y, index_t at_least = 1) {
   float best = std::numeric_limits<float>::infinity();
   for (float e : err) best = std::min(best, e);
   double limit = static_cast<double>(best) * (1.0 + tolerance);
@@ -285,8 +294,8 @@ struct quilt_scratch {
 /// Places one patch at `site`: overlap search, candidate choice, cuts, write. Returns false (and
 /// writes nothing) when the window holds no empty pixel.
 template <Channel T, int C, class X>
-bool place_patch(const quilt_source<T, C>& src, quilt_canvas<T, C>& canvas, const quilt_site& site, const quilt_params& prm,
-                 quilt_scratch& s, X& exec) {
+bool place_patch(const quilt_source<T, C>& src, quilt_canvas<T, C>& canvas, const quilt_site& site,
+                 const quilt_params& prm, quilt_scratch& s, X& exec) {
   const index_t p = prm.patch, W = canvas.width(), H = canvas.height(), plane = src.width() * src.height();
   auto canvas_xy = [&](index_t i, index_t j, index_t& cx, index_t& cy) {
     cx = site.x + i;
@@ -370,19 +379,25 @@ bool place_patch(const quilt_source<T, C>& src, quilt_canvas<T, C>& canvas, cons
 /// `overlap` (the whole canvas when it wraps), in raster order. Reports progress after each row of
 /// sites through `prog` (may be null) mapped into [from, to]; returns cancelled when told to stop.
 template <Channel T, int C, class X>
-status fill_canvas(const quilt_source<T, C>& src, quilt_canvas<T, C>& canvas, const quilt_params& prm, index_t overlap, X& exec,
-                   const progress* prog = nullptr, double from = 0, double to = 1) {
+status fill_canvas(const quilt_source<T, C>& src, quilt_canvas<T, C>& canvas, const quilt_params& prm, index_t overlap,
+                   X& exec, const progress* prog = nullptr, double from = 0, double to = 1) {
   const index_t W = canvas.width(), H = canvas.height();
   index_t x0 = W, y0 = H, x1 = 0, y1 = 0;
   for (index_t y = 0; y < H; ++y)
     for (index_t x = 0; x < W; ++x)
-      if (canvas.at(x, y) == pixel_state::empty) x0 = std::min(x0, x), x1 = std::max(x1, x + 1), y0 = std::min(y0, y), y1 = std::max(y1, y + 1);
+      if (canvas.at(x, y) == pixel_state::empty)
+        x0 = std::min(x0, x), x1 = std::max(x1, x + 1), y0 = std::min(y0, y), y1 = std::max(y1, y + 1);
   if (x1 <= x0) return {};
-  if (canvas.wrap_x) x0 = 0, x1 = W;
-  else x0 = std::max<index_t>(0, x0 - overlap), x1 = std::min(W, x1 + overlap);
-  if (canvas.wrap_y) y0 = 0, y1 = H;
-  else y0 = std::max<index_t>(0, y0 - overlap), y1 = std::min(H, y1 + overlap);
-  const std::vector<quilt_site> sites = plan_sites(x0, y0, x1, y1, prm.patch, overlap, W, H, canvas.wrap_x, canvas.wrap_y);
+  if (canvas.wrap_x)
+    x0 = 0, x1 = W;
+  else
+    x0 = std::max<index_t>(0, x0 - overlap), x1 = std::min(W, x1 + overlap);
+  if (canvas.wrap_y)
+    y0 = 0, y1 = H;
+  else
+    y0 = std::max<index_t>(0, y0 - overlap), y1 = std::min(H, y1 + overlap);
+  const std::vector<quilt_site> sites =
+      plan_sites(x0, y0, x1, y1, prm.patch, overlap, W, H, canvas.wrap_x, canvas.wrap_y);
   quilt_scratch scratch;
   for (std::size_t k = 0; k < sites.size(); ++k) {
     place_patch(src, canvas, sites[k], prm, scratch, exec);

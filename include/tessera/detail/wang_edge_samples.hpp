@@ -52,9 +52,12 @@ struct wang_frame_samples {
 /// set follow its phase: placed where a structured texture (a weave, bricks) is calm, the edge
 /// rows stay as smooth as the exemplar.
 template <Channel T, int C>
-void choose_corner(const quilt_source<T, C>& src, index_t d, double tolerance, const counter_rng& rng, index_t& ox, index_t& oy) {
+void choose_corner(const quilt_source<T, C>& src, index_t d, double tolerance, const counter_rng& rng, index_t& ox,
+                   index_t& oy) {
   const index_t w = src.width(), h = src.height(), k = 2 * d, U = w - k + 1, V = h - k + 1;
-  auto at = [&](int c, index_t x, index_t y) { return static_cast<double>(src.planes[static_cast<std::size_t>((c * h + y) * w + x)]); };
+  auto at = [&](int c, index_t x, index_t y) {
+    return static_cast<double>(src.planes[static_cast<std::size_t>((c * h + y) * w + x)]);
+  };
   std::vector<double> cost(static_cast<std::size_t>(U * V), 0.0);
   for (index_t y = 0; y < V; ++y)
     for (index_t x = 0; x < U; ++x) {
@@ -88,14 +91,18 @@ void choose_corner(const quilt_source<T, C>& src, index_t d, double tolerance, c
 /// sample's ends and the corner sample they will be joined to (a lighter weight keeps the edges
 /// calm; over seven textures and three seeds it gives the lowest seam ratios).
 template <Channel T, int C>
-strip_origin choose_strip(const quilt_source<T, C>& src, const image_buffer<T, C>& corner, index_t ts, index_t ov, index_t d,
-                          const std::vector<strip_origin>& same, int colour, bool horizontal, double tolerance,
-                          const counter_rng& rng) {
+strip_origin choose_strip(const quilt_source<T, C>& src, const image_buffer<T, C>& corner, index_t ts, index_t ov,
+                          index_t d, const std::vector<strip_origin>& same, int colour, bool horizontal,
+                          double tolerance, const counter_rng& rng) {
   const index_t w = horizontal ? ts : 2 * ov, h = horizontal ? 2 * ov : ts;
   const index_t U = src.width() - w + 1, V = src.height() - h + 1;
-  auto at = [&](int c, index_t x, index_t y) { return static_cast<double>(src.planes[static_cast<std::size_t>((c * src.height() + y) * src.width() + x)]); };
+  auto at = [&](int c, index_t x, index_t y) {
+    return static_cast<double>(src.planes[static_cast<std::size_t>((c * src.height() + y) * src.width() + x)]);
+  };
   // (along, across) strip coordinates -> exemplar offsets from the origin
-  auto ex = [&](index_t along, index_t across, index_t& x, index_t& y) { x = horizontal ? along : across, y = horizontal ? across : along; };
+  auto ex = [&](index_t along, index_t across, index_t& x, index_t& y) {
+    x = horizontal ? along : across, y = horizontal ? across : along;
+  };
   std::vector<double> cost(static_cast<std::size_t>(U * V));
   std::vector<std::uint8_t> distinct(cost.size(), 1);
   bool any_distinct = false;
@@ -159,7 +166,8 @@ status build_frame_samples(const quilt_source<T, C>& src, index_t ts, index_t ov
   choose_corner(src, d, tolerance, prm.rng.substream(7), kx, ky);
   out.corner = image_buffer<T, C>(2 * d, 2 * d);
   for (index_t y = 0; y < 2 * d; ++y)
-    std::memcpy(out.corner.pixel_ptr(0, y), src.pixels.pixel_ptr(kx, ky + y), static_cast<std::size_t>(2 * d * C) * sizeof(T));
+    std::memcpy(out.corner.pixel_ptr(0, y), src.pixels.pixel_ptr(kx, ky + y),
+                static_cast<std::size_t>(2 * d * C) * sizeof(T));
   // exemplar samples, chosen in order (distinct per direction)
   std::vector<strip_origin> h_origin, v_origin;
   for (int c = 0; c < nh; ++c)
@@ -171,7 +179,8 @@ status build_frame_samples(const quilt_source<T, C>& src, index_t ts, index_t ov
   std::vector<status> failures(static_cast<std::size_t>(nh + nv));
   exec.parallel_for(0, static_cast<index_t>(nh + nv), [&](index_t k) {
     const bool horizontal = k < nh;
-    const strip_origin o = horizontal ? h_origin[static_cast<std::size_t>(k)] : v_origin[static_cast<std::size_t>(k - nh)];
+    const strip_origin o =
+        horizontal ? h_origin[static_cast<std::size_t>(k)] : v_origin[static_cast<std::size_t>(k - nh)];
     quilt_canvas<T, C> canvas(horizontal ? ts : 2 * ov, horizontal ? 2 * ov : ts);
     auto xy = [&](index_t along, index_t across, index_t& x, index_t& y) {
       x = horizontal ? along : across, y = horizontal ? across : along;
@@ -188,10 +197,10 @@ status build_frame_samples(const quilt_source<T, C>& src, index_t ts, index_t ov
         index_t sx = 0, sy = 0, ex = 0, ey = 0;
         xy(a, ov - d + b, sx, sy);
         xy(ts - d + a, ov - d + b, ex, ey);
-        std::memcpy(canvas.pixels.pixel_ptr(sx, sy), horizontal ? out.corner.pixel_ptr(d + a, b) : out.corner.pixel_ptr(b, d + a),
-                    sizeof(T) * C);
-        std::memcpy(canvas.pixels.pixel_ptr(ex, ey), horizontal ? out.corner.pixel_ptr(a, b) : out.corner.pixel_ptr(b, a),
-                    sizeof(T) * C);
+        std::memcpy(canvas.pixels.pixel_ptr(sx, sy),
+                    horizontal ? out.corner.pixel_ptr(d + a, b) : out.corner.pixel_ptr(b, d + a), sizeof(T) * C);
+        std::memcpy(canvas.pixels.pixel_ptr(ex, ey),
+                    horizontal ? out.corner.pixel_ptr(a, b) : out.corner.pixel_ptr(b, a), sizeof(T) * C);
         canvas.at(sx, sy) = canvas.at(ex, ey) = pixel_state::fixed;
       }
     quilt_params local = prm;
@@ -227,10 +236,14 @@ void write_tile_frame(const wang_frame_samples<T, C>& f, const wang_edges& e, qu
       const bool corner = std::min(dn, ds) < ov && std::min(dw, de) < ov;
       if (corner && d >= border) continue;
       const T* px = nullptr;
-      if (dn == d) px = strip(f.horizontal, e.north).pixel_ptr(i, ov + j);
-      else if (ds == d) px = strip(f.horizontal, e.south).pixel_ptr(i, j - (ts - ov));
-      else if (dw == d) px = strip(f.vertical, e.west).pixel_ptr(ov + i, j);
-      else px = strip(f.vertical, e.east).pixel_ptr(i - (ts - ov), j);
+      if (dn == d)
+        px = strip(f.horizontal, e.north).pixel_ptr(i, ov + j);
+      else if (ds == d)
+        px = strip(f.horizontal, e.south).pixel_ptr(i, j - (ts - ov));
+      else if (dw == d)
+        px = strip(f.vertical, e.west).pixel_ptr(ov + i, j);
+      else
+        px = strip(f.vertical, e.east).pixel_ptr(i - (ts - ov), j);
       std::memcpy(canvas.pixels.pixel_ptr(i, j), px, sizeof(T) * C);
       canvas.at(i, j) = d < border ? pixel_state::fixed : pixel_state::filled;
     }

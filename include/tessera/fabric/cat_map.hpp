@@ -52,9 +52,9 @@ enum class cat_map_strategy {
 };
 
 struct cat_map_options {
-  cat_map_family family = {};                         ///< [1 a; b ab+1]; a = b = 1 is the paper's map
+  cat_map_family family = {};  ///< [1 a; b ab+1]; a = b = 1 is the paper's map
   non_square_mode non_square = non_square_mode::reject;
-  index_t tile_size = 0;                              ///< square_tiles: tile side; 0 = gcd(width, height)
+  index_t tile_size = 0;  ///< square_tiles: tile side; 0 = gcd(width, height)
   cat_map_strategy strategy = cat_map_strategy::automatic;
 };
 
@@ -90,8 +90,8 @@ inline result<std::vector<square_region>> cat_regions(index_t w, index_t h, cons
       return regions;
     }
   }
-  return status::invalid_argument(cat(what, ": options.non_square has an unknown value ",
-                                      static_cast<int>(o.non_square)));
+  return status::invalid_argument(
+      cat(what, ": options.non_square has an unknown value ", static_cast<int>(o.non_square)));
 }
 
 /// Validates, then runs kernel(src_square, dst_square) on every region, on tessera's own memory when
@@ -99,7 +99,8 @@ inline result<std::vector<square_region>> cat_regions(index_t w, index_t h, cons
 template <Image I, WritableImage O, class Kernel>
 status run_cat_regions(const I& in, O& out, const cat_map_options& o, const char* what, Kernel&& kernel) {
   if (auto s = validate_image(in, "input"); !s) return status(s.code(), cat(what, ": ", s.message()));
-  if (auto s = validate_same_size(in, "input", out, "output"); !s) return status(s.code(), cat(what, ": ", s.message()));
+  if (auto s = validate_same_size(in, "input", out, "output"); !s)
+    return status(s.code(), cat(what, ": ", s.message()));
   auto regions = cat_regions(width_of(in), height_of(in), o, what);
   if (!regions) return regions.error();
   using T = channel_t<O>;
@@ -169,8 +170,8 @@ template <Image I, WritableImage O, Executor E = serial_executor>
 /// Same behaviour, parameters and errors as the form above.
 template <Image I, Executor E = serial_executor>
 [[nodiscard]] result<image_buffer<channel_t<I>, channels_v<I>>> cat_map(const I& in, std::int64_t steps,
-                                                                         const cat_map_options& options = {},
-                                                                         E&& exec = {}) {
+                                                                        const cat_map_options& options = {},
+                                                                        E&& exec = {}) {
   if (auto s = validate_image(in, "input"); !s) return status(s.code(), detail::cat("cat_map: ", s.message()));
   auto out = image_buffer<channel_t<I>, channels_v<I>>::create(width_of(in), height_of(in));
   if (!out) return status(out.error().code(), detail::cat("cat_map: ", out.error().message()));
@@ -189,7 +190,7 @@ template <Image I, WritableImage O, Executor E = serial_executor>
     using V = decltype(dst);
     const auto n = static_cast<detail::u64>(src.width());
     detail::scatter_step<typename V::value_type, V::channels>(src, dst, detail::reduce_signed(options.family.a, n),
-                                                            detail::reduce_signed(options.family.b, n), exec);
+                                                              detail::reduce_signed(options.family.b, n), exec);
   });
 }
 

@@ -78,8 +78,8 @@ struct life_perturbation_options {
   int dead_count = 6;      ///< N of §1.3 (§1.2's K), in [1, 8]: darken when at least N are dead
   int crowding_count = 0;  ///< §1.2's N, in [1, 8]: darken when at least this many are live; 0 = off
   life_test live_test = life_test::brighter_than_pixel;
-  float threshold = 0.5f;  ///< above_threshold: the lightness in [0, 1] a live neighbour exceeds
-  std::uint64_t seed = 1;  ///< the random factors r
+  float threshold = 0.5f;           ///< above_threshold: the lightness in [0, 1] a live neighbour exceeds
+  std::uint64_t seed = 1;           ///< the random factors r
   tessera::progress progress = {};  ///< reported once per generation; may cancel
 };
 
@@ -91,7 +91,8 @@ inline status check_life_options(const life_perturbation_options& o) {
   if (o.generations < 0) return bad("generations", o.generations, ">= 0");
   if (o.live_count < 0 || o.live_count > 8) return bad("live_count (K)", o.live_count, "in [0, 8]");
   if (o.dead_count < 1 || o.dead_count > 8) return bad("dead_count (N)", o.dead_count, "in [1, 8]");
-  if (o.crowding_count < 0 || o.crowding_count > 8) return bad("crowding_count", o.crowding_count, "0 (off) or in [1, 8]");
+  if (o.crowding_count < 0 || o.crowding_count > 8)
+    return bad("crowding_count", o.crowding_count, "0 (off) or in [1, 8]");
   if (!(o.threshold >= 0.0f && o.threshold <= 1.0f)) return bad("threshold", o.threshold, "in [0, 1]");
   if (o.live_test != life_test::brighter_than_pixel && o.live_test != life_test::above_threshold)
     return bad("live_test", static_cast<int>(o.live_test), "brighter_than_pixel or above_threshold");
@@ -148,11 +149,13 @@ void life_first_generation(image_view<const T, C> src, image_view<T, C> dst, std
   constexpr V low = (V{1} << life_lane<T>::shift) - 1;
   constexpr float to_unit = 0.5f / static_cast<float>(std::numeric_limits<T>::max());
   const index_t w = src.width(), h = src.height();
-  const life_int_rule<V> rule{static_cast<V>(o.live_count), static_cast<V>(o.dead_count),
+  const life_int_rule<V> rule{static_cast<V>(o.live_count),
+                              static_cast<V>(o.dead_count),
                               static_cast<V>(o.crowding_count > 0 ? o.crowding_count : 9),
                               static_cast<V>(std::floor(static_cast<double>(o.threshold) * 2.0 *
                                                         static_cast<double>(std::numeric_limits<T>::max()))),
-                              o.live_exact, o.live_test == life_test::above_threshold};
+                              o.live_exact,
+                              o.live_test == life_test::above_threshold};
   const life_random random(rng, 0);
   const bool last = o.generations == 1;
   // neighbours' rows are read from the image unless one generation is written over it: then from a
@@ -179,11 +182,15 @@ void life_first_generation(image_view<const T, C> src, image_view<T, C> dst, std
     life_int_scratch<T> scratch(w);
     const index_t y0 = b * band, y1 = std::min(h, (b + 1) * band);
     if (plane.empty()) {
-      life_int_band<T>(w, h, y0, y1, rule, random, scratch, [&](index_t y, V* row) { life_q_row<T, C>(src.row(y), w, row); }, emit);
+      life_int_band<T>(
+          w, h, y0, y1, rule, random, scratch, [&](index_t y, V* row) { life_q_row<T, C>(src.row(y), w, row); }, emit);
     } else {
-      life_int_band<T>(w, h, y0, y1, rule, random, scratch, [&](index_t y, V* row) {
-        std::memcpy(row, plane.data() + y * (w + 2), sizeof(V) * static_cast<std::size_t>(w + 2));
-      }, emit);
+      life_int_band<T>(
+          w, h, y0, y1, rule, random, scratch,
+          [&](index_t y, V* row) {
+            std::memcpy(row, plane.data() + y * (w + 2), sizeof(V) * static_cast<std::size_t>(w + 2));
+          },
+          emit);
     }
   });
 }
@@ -203,8 +210,9 @@ status life_views(image_view<const T, C> src, image_view<T, C> dst, const life_p
     copy_view<T, C>(src, copy->view());
     return life_views<T, C>(copy->cview(), dst, o, exec);
   }
-  const life_rule rule{o.live_count, o.live_exact, o.dead_count, o.crowding_count,
-                       o.live_test == life_test::above_threshold, o.threshold};
+  const life_rule rule{
+      o.live_count, o.live_exact, o.dead_count, o.crowding_count, o.live_test == life_test::above_threshold,
+      o.threshold};
   const counter_rng rng(o.seed, stream_id("fabric.life"));
   std::vector<float> cur, next;
   int first = 0;  // the first generation done in float
@@ -255,7 +263,8 @@ status life_views(image_view<const T, C> src, image_view<T, C> dst, const life_p
       const T* in = src.row(y);
       T* out = dst.row(y);
       if (o.generations > 1) {  // earlier generations may have changed any pixel
-        for (index_t x = 0; x < w; ++x) relight_pixel<T, C>(in + x * C, out + x * C, pixel_lightness<T, C>(in + x * C), l_new[x]);
+        for (index_t x = 0; x < w; ++x)
+          relight_pixel<T, C>(in + x * C, out + x * C, pixel_lightness<T, C>(in + x * C), l_new[x]);
         return;
       }
       if (in != out) std::memcpy(out, in, sizeof(T) * static_cast<std::size_t>(w * C));
@@ -267,8 +276,10 @@ status life_views(image_view<const T, C> src, image_view<T, C> dst, const life_p
     exec.parallel_for(0, bands, [&](index_t b) {
       life_scratch scratch(w);
       const index_t y0 = b * band, y1 = std::min(h, (b + 1) * band);
-      if (on_the_fly) life_band(w, h, y0, y1, rule, random, scratch, fill_from_image, emit);
-      else life_band(w, h, y0, y1, rule, random, scratch, fill_from_field, emit);
+      if (on_the_fly)
+        life_band(w, h, y0, y1, rule, random, scratch, fill_from_image, emit);
+      else
+        life_band(w, h, y0, y1, rule, random, scratch, fill_from_field, emit);
     });
     if (!last) cur.swap(next);
   }
@@ -288,13 +299,15 @@ status life_views(image_view<const T, C> src, image_view<T, C> dst, const life_p
 /// separate output (lightness is read straight from the image), else one or two float fields of W H.
 /// Output is a pure function of (in, options): bit-identical for every executor and thread count.
 template <Image I, WritableImage O, Executor E = serial_executor>
-[[nodiscard]] status life_perturbation(const I& in, O& out, const life_perturbation_options& options = {}, E&& exec = {}) {
+[[nodiscard]] status life_perturbation(const I& in, O& out, const life_perturbation_options& options = {},
+                                       E&& exec = {}) {
   if (auto s = validate_image(in, "life_perturbation: input"); !s) return s;
   if (auto s = validate_same_size(in, "life_perturbation: input", out, "life_perturbation: output"); !s) return s;
   if (auto s = detail::check_life_options(options); !s) return s;
   using T = channel_t<O>;
   constexpr int C = channels_v<O>;
-  if constexpr (detail::raw_image_v<I> && detail::raw_image_v<O> && std::is_same_v<channel_t<I>, T> && channels_v<I> == C) {
+  if constexpr (detail::raw_image_v<I> && detail::raw_image_v<O> && std::is_same_v<channel_t<I>, T> &&
+                channels_v<I> == C) {
     return detail::life_views<T, C>(detail::const_view_of(in), detail::mutable_view_of(out), options, exec);
   } else {
     auto src = to_buffer<T, C>(in, "life_perturbation: input");

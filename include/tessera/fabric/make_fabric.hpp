@@ -46,18 +46,19 @@ enum class source_fit {
 };
 
 struct fabric_options {
-  std::int64_t iterations = 60;  ///< cat-map steps n (negative: inverse map)
-  cat_map_family family = {};    ///< [1 a; b ab+1]; a = b = 1 is the paper's map
+  std::int64_t iterations = 60;                                 ///< cat-map steps n (negative: inverse map)
+  cat_map_family family = {};                                   ///< [1 a; b ab+1]; a = b = 1 is the paper's map
   life_perturbation_options perturbation = {.generations = 0};  ///< generations > 0 perturbs (tweed)
-  index_t tile_size = 0;  ///< side N of the periodic square; 0 = max(width, height) of the output
+  index_t tile_size = 0;                ///< side N of the periodic square; 0 = max(width, height) of the output
   source_fit fit = source_fit::reject;  ///< a source image that is not N x N (make_fabric(source, ...) only)
-  tessera::progress progress = {};  ///< stages "source", "cat_map", "perturbation"; may cancel
+  tessera::progress progress = {};      ///< stages "source", "cat_map", "perturbation"; may cancel
 };
 
 namespace detail {
 inline status check_fabric_size(index_t w, index_t h, int channels, const fabric_options& o, index_t& n) {
   if (o.tile_size < 0)
-    return status::invalid_argument(cat("make_fabric: options.tile_size must be >= 0 (0 = output size), got ", o.tile_size));
+    return status::invalid_argument(
+        cat("make_fabric: options.tile_size must be >= 0 (0 = output size), got ", o.tile_size));
   n = o.tile_size > 0 ? o.tile_size : std::max(w, h);
   return validate_image_extent(n, n, std::max(channels, 3), "make_fabric: tile");
 }
@@ -82,7 +83,8 @@ status finish_fabric(image_buffer<T, C>& square, O& out, const fabric_options& o
   }
   const index_t n = mapped.width(), w = width_of(out), h = height_of(out);
   for (index_t y = 0; y < h; ++y)
-    for (index_t x = 0; x < w; ++x) image_traits<O>::write(out, x, y, convert_pixel<pixel_t<O>>(mapped.read(x % n, y % n)));
+    for (index_t x = 0; x < w; ++x)
+      image_traits<O>::write(out, x, y, convert_pixel<pixel_t<O>>(mapped.read(x % n, y % n)));
   o.progress.report(1.0, "done");
   return {};
 }
@@ -119,13 +121,15 @@ template <Image S, WritableImage O, Executor E = serial_executor>
     case source_fit::centered_square: {
       n = std::min(sw, sh);
       if (options.tile_size != 0 && options.tile_size != n)
-        return status::invalid_argument(detail::cat("make_fabric: options.fit = centered_square maps the source's largest "
-                                                    "centred square at its own side ", n, "; options.tile_size must be 0 or ",
-                                                    n, ", got ", options.tile_size));
+        return status::invalid_argument(
+            detail::cat("make_fabric: options.fit = centered_square maps the source's largest "
+                        "centred square at its own side ",
+                        n, "; options.tile_size must be 0 or ", n, ", got ", options.tile_size));
       break;
     }
     default:
-      return status::invalid_argument(detail::cat("make_fabric: options.fit has an unknown value ", static_cast<int>(options.fit)));
+      return status::invalid_argument(
+          detail::cat("make_fabric: options.fit has an unknown value ", static_cast<int>(options.fit)));
   }
   if (!options.progress.report(0.0, "source")) return status::cancelled();
   using T = channel_t<O>;
@@ -175,15 +179,16 @@ constexpr std::string_view to_string(fabric_preset p) noexcept {
 inline result<fabric_preset> parse_fabric_preset(std::string_view name) {
   for (fabric_preset p : all_fabric_presets)
     if (to_string(p) == name) return p;
-  return status::invalid_argument(detail::cat("unknown fabric preset '", name, "' (expected flannel, twill, linen or tweed)"));
+  return status::invalid_argument(
+      detail::cat("unknown fabric preset '", name, "' (expected flannel, twill, linen or tweed)"));
 }
 
 /// Everything a preset does: a palette source (tones + layout) or a procedural "photo", and the
 /// pipeline options. Edit a recipe to vary a preset.
 struct fabric_recipe {
-  palette tones;                          ///< empty when `photo` is the source
-  source_image_options source;            ///< layout of the palette source
-  std::optional<exemplar_kind> photo;     ///< a procedural exemplar standing in for a scanned photo
+  palette tones;                       ///< empty when `photo` is the source
+  source_image_options source;         ///< layout of the palette source
+  std::optional<exemplar_kind> photo;  ///< a procedural exemplar standing in for a scanned photo
   fabric_options options;
 };
 
@@ -209,7 +214,9 @@ inline fabric_recipe fabric_preset_recipe(fabric_preset preset, std::uint64_t se
       r.options.iterations = 80;
       break;
     case fabric_preset::tweed:  // figures 8-9: wool tones, cat map, game-of-life perturbation
-      r.tones = {{{0.30f, 0.22f, 0.16f}, 0.40}, {{0.55f, 0.45f, 0.33f}, 0.30}, {{0.78f, 0.72f, 0.60f}, 0.20},
+      r.tones = {{{0.30f, 0.22f, 0.16f}, 0.40},
+                 {{0.55f, 0.45f, 0.33f}, 0.30},
+                 {{0.78f, 0.72f, 0.60f}, 0.20},
                  {{0.60f, 0.25f, 0.15f}, 0.10}};
       r.source.layout = source_layout::blocks;
       r.options.iterations = 45;
@@ -228,7 +235,8 @@ struct fabric_preset_options {
 /// Makes a preset fabric (the recipe of fabric_preset_recipe) into `out`, of any size.
 /// Errors and complexity as make_fabric; output is a pure function of (preset, size, options).
 template <WritableImage O, Executor E = serial_executor>
-[[nodiscard]] status make_fabric(fabric_preset preset, O& out, const fabric_preset_options& options = {}, E&& exec = {}) {
+[[nodiscard]] status make_fabric(fabric_preset preset, O& out, const fabric_preset_options& options = {},
+                                 E&& exec = {}) {
   if (auto s = validate_image(out, "make_fabric: output"); !s) return s;
   if (to_string(preset) == "unknown")
     return status::invalid_argument(detail::cat("make_fabric: unknown preset value ", static_cast<int>(preset)));

@@ -67,16 +67,18 @@ inline result<std::vector<double>> normalized_proportions(const palette& tones) 
   for (std::size_t i = 0; i < tones.size(); ++i) {
     for (float c : tones[i].color)
       if (!(c >= 0.0f && c <= 1.0f))
-        return status::invalid_argument(detail::cat("palette: tone ", i, " has a colour channel ", c, " outside [0, 1]"));
+        return status::invalid_argument(
+            detail::cat("palette: tone ", i, " has a colour channel ", c, " outside [0, 1]"));
     const double p = tones[i].proportion;
     if (!(p >= 0.0) || !std::isfinite(p))
-      return status::invalid_argument(detail::cat("palette: tone ", i, " has proportion ", p, "; it must be >= 0 and finite"));
+      return status::invalid_argument(
+          detail::cat("palette: tone ", i, " has proportion ", p, "; it must be >= 0 and finite"));
     sum += p;
   }
   if (!(sum > 0.0)) return status::invalid_argument("palette: the proportions sum to 0");
   if (!std::isfinite(sum))
-    return status::invalid_argument(detail::cat("palette: the proportions sum to ", sum,
-                                                " (overflow); give relative weights of a sane size"));
+    return status::invalid_argument(
+        detail::cat("palette: the proportions sum to ", sum, " (overflow); give relative weights of a sane size"));
   std::vector<double> out;
   for (const tone& t : tones) out.push_back(t.proportion / sum);
   return out;
@@ -105,8 +107,10 @@ inline result<palette> parse_palette(std::string_view text) {
       int v = 0;
       for (int k = 0; k < 2; ++k) {
         const char ch = hex[static_cast<std::size_t>(2 * c + k)];
-        const int d = ch >= '0' && ch <= '9' ? ch - '0' : ch >= 'a' && ch <= 'f' ? ch - 'a' + 10
-                      : ch >= 'A' && ch <= 'F' ? ch - 'A' + 10 : -1;
+        const int d = ch >= '0' && ch <= '9'   ? ch - '0'
+                      : ch >= 'a' && ch <= 'f' ? ch - 'a' + 10
+                      : ch >= 'A' && ch <= 'F' ? ch - 'A' + 10
+                                               : -1;
         if (d < 0) return bad("not a hex digit in the colour");
         v = v * 16 + d;
       }
@@ -146,7 +150,8 @@ std::vector<index_t> apportion(const std::vector<double>& w, index_t total) {
 template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
 std::vector<int> shuffled_labels(const std::vector<index_t>& count, const counter_rng& rng) {
   std::vector<int> labels;
-  for (std::size_t i = 0; i < count.size(); ++i) labels.insert(labels.end(), static_cast<std::size_t>(count[i]), static_cast<int>(i));
+  for (std::size_t i = 0; i < count.size(); ++i)
+    labels.insert(labels.end(), static_cast<std::size_t>(count[i]), static_cast<int>(i));
   for (std::size_t i = labels.size(); i > 1; --i)
     std::swap(labels[i - 1], labels[static_cast<std::size_t>(rng.below(i, i))]);
   return labels;
@@ -172,7 +177,8 @@ std::vector<int> source_labels(index_t w, index_t h, const std::vector<double>& 
       for (index_t y = 0; y < h; ++y)
         for (index_t x = 0; x < w; ++x) {
           const index_t t = o.vertical ? x : y;
-          label[static_cast<std::size_t>(y * w + x)] = tone_at(p, (static_cast<double>(t % s) + 0.5) / static_cast<double>(s));
+          label[static_cast<std::size_t>(y * w + x)] =
+              tone_at(p, (static_cast<double>(t % s) + 0.5) / static_cast<double>(s));
         }
       break;
     }
@@ -190,8 +196,9 @@ std::vector<int> source_labels(index_t w, index_t h, const std::vector<double>& 
       std::vector<std::array<double, 2>> site(static_cast<std::size_t>(gw * gh));
       for (index_t j = 0; j < gh; ++j)
         for (index_t i = 0; i < gw; ++i)
-          site[static_cast<std::size_t>(j * gw + i)] = {(static_cast<double>(i) + 0.1 + 0.8 * rng.uniform(i, j, 0)) * static_cast<double>(s),
-                                                        (static_cast<double>(j) + 0.1 + 0.8 * rng.uniform(i, j, 1)) * static_cast<double>(s)};
+          site[static_cast<std::size_t>(j * gw + i)] = {
+              (static_cast<double>(i) + 0.1 + 0.8 * rng.uniform(i, j, 0)) * static_cast<double>(s),
+              (static_cast<double>(j) + 0.1 + 0.8 * rng.uniform(i, j, 1)) * static_cast<double>(s)};
       std::vector<index_t> owner(label.size()), area(site.size(), 0);
       for (index_t y = 0; y < h; ++y)
         for (index_t x = 0; x < w; ++x) {
@@ -211,7 +218,8 @@ std::vector<int> source_labels(index_t w, index_t h, const std::vector<double>& 
       // cells in seeded order; each goes to the tone furthest below its target area
       std::vector<index_t> order(site.size());
       std::iota(order.begin(), order.end(), 0);
-      for (std::size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[static_cast<std::size_t>(rng.below(i, i, 7))]);
+      for (std::size_t i = order.size(); i > 1; --i)
+        std::swap(order[i - 1], order[static_cast<std::size_t>(rng.below(i, i, 7))]);
       std::vector<double> deficit(p.size());
       for (std::size_t t = 0; t < p.size(); ++t) deficit[t] = p[t] * static_cast<double>(w * h);
       std::vector<int> cell_tone(site.size(), 0);
@@ -241,9 +249,12 @@ template <WritableImage O>
   if (!p) return p.error();
   if (auto s = validate_image(out, "make_source_image: output"); !s) return s;
   if (options.feature_size < 0)
-    return status::invalid_argument(detail::cat("make_source_image: options.feature_size must be >= 0, got ", options.feature_size));
-  if (options.layout != source_layout::stripes && options.layout != source_layout::blocks && options.layout != source_layout::cells)
-    return status::invalid_argument(detail::cat("make_source_image: unknown options.layout ", static_cast<int>(options.layout)));
+    return status::invalid_argument(
+        detail::cat("make_source_image: options.feature_size must be >= 0, got ", options.feature_size));
+  if (options.layout != source_layout::stripes && options.layout != source_layout::blocks &&
+      options.layout != source_layout::cells)
+    return status::invalid_argument(
+        detail::cat("make_source_image: unknown options.layout ", static_cast<int>(options.layout)));
   const index_t w = width_of(out), h = height_of(out);
   const std::vector<int> label = detail::source_labels(w, h, *p, options);
   std::vector<pixel_t<O>> colors;

@@ -96,7 +96,8 @@ template <Image I>
   if (auto s = validate_image(img, "dominant_tones: image"); !s) return s;
   if (k < 1) return status::invalid_argument(detail::cat("dominant_tones: k must be >= 1, got ", k));
   if (options.max_iterations < 0)
-    return status::invalid_argument(detail::cat("dominant_tones: options.max_iterations must be >= 0, got ", options.max_iterations));
+    return status::invalid_argument(
+        detail::cat("dominant_tones: options.max_iterations must be >= 0, got ", options.max_iterations));
   using vec = std::array<double, 3>;
   // bin the pixels: weight and colour sum per occupied bin
   std::vector<double> bin_w(32768, 0.0);
@@ -106,7 +107,8 @@ template <Image I>
     for (index_t x = 0; x < w; ++x) {
       const auto px = detail::tone_pixel(img, x, y, "dominant_tones");
       if (!px) return px.error();
-      const float r = std::clamp(px->r, 0.0f, 1.0f), g = std::clamp(px->g, 0.0f, 1.0f), b = std::clamp(px->b, 0.0f, 1.0f);
+      const float r = std::clamp(px->r, 0.0f, 1.0f), g = std::clamp(px->g, 0.0f, 1.0f),
+                  b = std::clamp(px->b, 0.0f, 1.0f);
       auto b5 = [](float v) { return std::min(31, static_cast<int>(v * 32.0f)); };
       const auto bin = static_cast<std::size_t>((b5(r) << 10) | (b5(g) << 5) | b5(b));
       bin_w[bin] += 1;
@@ -155,7 +157,8 @@ template <Image I>
     std::vector<vec> sum(kk, vec{0, 0, 0});
     std::vector<double> cw(kk, 0.0);
     for (std::size_t i = 0; i < pts.size(); ++i) {
-      for (int c = 0; c < 3; ++c) sum[assign[i]][static_cast<std::size_t>(c)] += wt[i] * pts[i][static_cast<std::size_t>(c)];
+      for (int c = 0; c < 3; ++c)
+        sum[assign[i]][static_cast<std::size_t>(c)] += wt[i] * pts[i][static_cast<std::size_t>(c)];
       cw[assign[i]] += wt[i];
     }
     for (std::size_t c = 0; c < kk; ++c)

@@ -47,7 +47,8 @@ class triangle_bvh {
   explicit triangle_bvh(const M& m) {
     std::vector<std::array<vec3, 3>> tris(static_cast<std::size_t>(tessera::num_faces(m)));
     for (index_t f = 0; f < tessera::num_faces(m); ++f)
-      for (int k = 0; k < 3; ++k) tris[static_cast<std::size_t>(f)][static_cast<std::size_t>(k)] = vertex_position(m, face_vertex(m, f, k));
+      for (int k = 0; k < 3; ++k)
+        tris[static_cast<std::size_t>(f)][static_cast<std::size_t>(k)] = vertex_position(m, face_vertex(m, f, k));
     build(std::move(tris));
   }
   /// Builds over explicit triangles; face ids are their indices.
@@ -63,7 +64,8 @@ class triangle_bvh {
   [[nodiscard]] aabb bounds() const noexcept { return nodes_.empty() ? aabb{} : nodes_[0].box; }
 
   /// Closest point on any triangle to p, within sqrt(max_squared_distance).
-  [[nodiscard]] bvh_closest_hit closest_point(vec3 p, double max_squared_distance = std::numeric_limits<double>::infinity()) const {
+  [[nodiscard]] bvh_closest_hit closest_point(
+      vec3 p, double max_squared_distance = std::numeric_limits<double>::infinity()) const {
     bvh_closest_hit best;
     best.squared_distance = max_squared_distance;
     if (nodes_.empty()) return best;
@@ -72,7 +74,8 @@ class triangle_bvh {
           const auto& t = tris_[static_cast<std::size_t>(slot)];
           const auto c = detail::closest_point_on_triangle(p, t[0], t[1], t[2]);
           const double d2 = squared_norm(c.point - p);
-          if (d2 < best.squared_distance || (d2 == best.squared_distance && face_of_[static_cast<std::size_t>(slot)] < best.face)) {
+          if (d2 < best.squared_distance ||
+              (d2 == best.squared_distance && face_of_[static_cast<std::size_t>(slot)] < best.face)) {
             best = {face_of_[static_cast<std::size_t>(slot)], c.point, c.bary, d2};
           }
           return best.squared_distance;
@@ -146,7 +149,8 @@ class triangle_bvh {
       if (!detail::boxes_overlap(n.box, box)) continue;
       if (n.count > 0) {
         for (index_t s = n.first; s < n.first + n.count; ++s)
-          if (detail::boxes_overlap(box_of(tris_[static_cast<std::size_t>(s)]), box)) fn(face_of_[static_cast<std::size_t>(s)]);
+          if (detail::boxes_overlap(box_of(tris_[static_cast<std::size_t>(s)]), box))
+            fn(face_of_[static_cast<std::size_t>(s)]);
       } else {
         stack[top++] = n.first;
         stack[top++] = n.first + 1;
@@ -254,10 +258,12 @@ class triangle_bvh {
       }
       const int axis = e.x >= e.y && e.x >= e.z ? 0 : e.y >= e.z ? 1 : 2;
       const index_t mid = (tk.begin + tk.end) / 2;
-      std::nth_element(order.begin() + tk.begin, order.begin() + mid, order.begin() + tk.end, [&](index_t a, index_t b) {
-        const double ca = centroid[static_cast<std::size_t>(a)][axis], cb = centroid[static_cast<std::size_t>(b)][axis];
-        return ca != cb ? ca < cb : a < b;
-      });
+      std::nth_element(order.begin() + tk.begin, order.begin() + mid, order.begin() + tk.end,
+                       [&](index_t a, index_t b) {
+                         const double ca = centroid[static_cast<std::size_t>(a)][axis],
+                                      cb = centroid[static_cast<std::size_t>(b)][axis];
+                         return ca != cb ? ca < cb : a < b;
+                       });
       const auto left = static_cast<index_t>(nodes_.size());
       nodes_.push_back({});
       nodes_.push_back({});
@@ -307,8 +313,8 @@ class triangle_bvh {
 
   std::vector<node> nodes_;
   std::vector<std::array<vec3, 3>> tris_;  // in leaf order
-  std::vector<index_t> face_of_;            // slot -> face
-  std::vector<index_t> slot_of_;            // face -> slot
+  std::vector<index_t> face_of_;           // slot -> face
+  std::vector<index_t> slot_of_;           // face -> slot
 };
 
 TESSERA_NAMESPACE_END

@@ -28,28 +28,32 @@ struct geometric_texture_report {
 /// `outer` (within `tolerance`; pass an empty rectangle to allow none). Errors: invalid mesh.
 /// O(F log F) plus the intersecting candidate pairs.
 template <Mesh M>
-result<geometric_texture_report> check_geometric_texture(const M& mesh, const xy_rect& outer = {}, double tolerance = 1e-9) {
+result<geometric_texture_report> check_geometric_texture(const M& mesh, const xy_rect& outer = {},
+                                                         double tolerance = 1e-9) {
   auto tm = to_tri_mesh(mesh, "check_geometric_texture: mesh");
   if (!tm) return tm.error();
   const tri_mesh& m = *tm;
   geometric_texture_report r;
   auto on_border = [&](vec3 p) {
     if (!(outer.x1 > outer.x0)) return false;
-    const bool in = p.x >= outer.x0 - tolerance && p.x <= outer.x1 + tolerance && p.y >= outer.y0 - tolerance && p.y <= outer.y1 + tolerance;
-    return in && (std::abs(p.x - outer.x0) <= tolerance || std::abs(p.x - outer.x1) <= tolerance || std::abs(p.y - outer.y0) <= tolerance ||
-                  std::abs(p.y - outer.y1) <= tolerance);
+    const bool in = p.x >= outer.x0 - tolerance && p.x <= outer.x1 + tolerance && p.y >= outer.y0 - tolerance &&
+                    p.y <= outer.y1 + tolerance;
+    return in && (std::abs(p.x - outer.x0) <= tolerance || std::abs(p.x - outer.x1) <= tolerance ||
+                  std::abs(p.y - outer.y0) <= tolerance || std::abs(p.y - outer.y1) <= tolerance);
   };
   for (const mesh_edge& e : mesh_edges(m)) {
     if (e.faces.size() > 2) ++r.nonmanifold_edges;
-    if (e.faces.size() == 1 &&
-        !(on_border(m.positions[static_cast<std::size_t>(e.v0)]) && on_border(m.positions[static_cast<std::size_t>(e.v1)])))
+    if (e.faces.size() == 1 && !(on_border(m.positions[static_cast<std::size_t>(e.v0)]) &&
+                                 on_border(m.positions[static_cast<std::size_t>(e.v1)])))
       ++r.open_edges_inside;
   }
   const mesh_components comp = connected_components(m);
   r.elements = comp.count;
   const triangle_bvh bvh(m);
   bvh.for_each_self_intersection(
-      [&](index_t f, index_t g) { return comp.face_component[static_cast<std::size_t>(f)] == comp.face_component[static_cast<std::size_t>(g)]; },
+      [&](index_t f, index_t g) {
+        return comp.face_component[static_cast<std::size_t>(f)] == comp.face_component[static_cast<std::size_t>(g)];
+      },
       [&](index_t, index_t) { ++r.intersecting_pairs; });
   return r;
 }

@@ -30,29 +30,33 @@ struct quilt_frame {
 /// size or vertices outside the domain, bad options, more than 2^26 grid cells; cancelled through
 /// options.progress. Runs the translation search through `exec`; output identical for any executor.
 template <Executor E = serial_executor>
-result<mesh_quilt_result> constrained_mesh_quilt(const quilt_exemplar& exemplar, const xy_rect& domain, quilt_frame frame,
-                                                 const mesh_quilt_options& options = {}, std::uint64_t stream = 0, E&& exec = {}) {
+result<mesh_quilt_result> constrained_mesh_quilt(const quilt_exemplar& exemplar, const xy_rect& domain,
+                                                 quilt_frame frame, const mesh_quilt_options& options = {},
+                                                 std::uint64_t stream = 0, E&& exec = {}) {
   if (!(domain.x1 > domain.x0) || !(domain.y1 > domain.y0) || !std::isfinite(domain.x0) || !std::isfinite(domain.x1) ||
       !std::isfinite(domain.y0) || !std::isfinite(domain.y1))
-    return status::invalid_argument(detail::cat("constrained_mesh_quilt: domain [", domain.x0, ", ", domain.x1, "] x [", domain.y0, ", ",
-                                                domain.y1, "] is empty or not finite"));
-  if (exemplar.num_elements() == 0) return status::invalid_argument("constrained_mesh_quilt: the exemplar is empty (not prepared)");
+    return status::invalid_argument(detail::cat("constrained_mesh_quilt: domain [", domain.x0, ", ", domain.x1, "] x [",
+                                                domain.y0, ", ", domain.y1, "] is empty or not finite"));
+  if (exemplar.num_elements() == 0)
+    return status::invalid_argument("constrained_mesh_quilt: the exemplar is empty (not prepared)");
   if (auto s = detail::check_quilt_options(options); !s) return s;
   const double cells = (domain.width() / exemplar.cell_size()) * (domain.height() / exemplar.cell_size());
-  if (cells > double(1 << 26)) return status::size_overflow(detail::cat("constrained_mesh_quilt: ", cells, " grid cells; at most 2^26"));
+  if (cells > double(1 << 26))
+    return status::size_overflow(detail::cat("constrained_mesh_quilt: ", cells, " grid cells; at most 2^26"));
   for (std::size_t i = 0; i < frame.elements.size(); ++i) {
     const auto& e = frame.elements[i];
     if (auto s = validate_mesh(e.mesh, "constrained_mesh_quilt: frame element"); !s) return s;
     if (!e.fixed.empty() && e.fixed.size() != e.mesh.positions.size())
-      return status::invalid_argument(detail::cat("constrained_mesh_quilt: frame element ", i, " has ", e.fixed.size(), " fixed flags for ",
-                                                  e.mesh.positions.size(), " vertices"));
+      return status::invalid_argument(detail::cat("constrained_mesh_quilt: frame element ", i, " has ", e.fixed.size(),
+                                                  " fixed flags for ", e.mesh.positions.size(), " vertices"));
     for (const vec3& p : e.mesh.positions)
       if (!domain.contains(p))
-        return status::invalid_argument(detail::cat("constrained_mesh_quilt: frame element ", i, " has a vertex (", p.x, ", ", p.y,
-                                                    ") outside the domain"));
+        return status::invalid_argument(detail::cat("constrained_mesh_quilt: frame element ", i, " has a vertex (", p.x,
+                                                    ", ", p.y, ") outside the domain"));
   }
-  detail::quilt_engine engine(exemplar, domain, detail::to_params(options, true, stream),
-                              [&exec](index_t n, const std::function<void(index_t)>& fn) { exec.parallel_for(0, n, fn); });
+  detail::quilt_engine engine(
+      exemplar, domain, detail::to_params(options, true, stream),
+      [&exec](index_t n, const std::function<void(index_t)>& fn) { exec.parallel_for(0, n, fn); });
   engine.add_frame(std::move(frame.elements), frame.occupied);
   if (auto s = engine.run(options.progress); !s) return s;
   return detail::finish_quilt(engine);

@@ -56,12 +56,14 @@ namespace detail {
 /// tiles.json of a geometric set: like parse_tile_manifest, but "tile_size" may be any positive
 /// number. Files of older versions (an integer "tile_size" rounded from "tile_world_size") read too:
 /// "tile_world_size", when present, wins.
-inline result<std::pair<tile_manifest, double>> parse_geometric_manifest(std::string_view text, const std::string& path) {
+inline result<std::pair<tile_manifest, double>> parse_geometric_manifest(std::string_view text,
+                                                                         const std::string& path) {
   auto json = parse_json(text, path);
   if (!json) return json.error();
   auto bad = [&](auto... what) { return status::parse_error(cat(path, ": ", what...)); };
   if (!json->is_object()) return bad("the manifest must be a JSON object");
-  auto integer = [&](const json_value& obj, std::string_view key, double lo, double hi, index_t& out, std::string_view where) -> status {
+  auto integer = [&](const json_value& obj, std::string_view key, double lo, double hi, index_t& out,
+                     std::string_view where) -> status {
     const json_value* v = obj.find(key);
     if (v == nullptr) return bad(where, "missing \"", key, "\"");
     if (!v->is_number() || v->number != std::floor(v->number) || !(v->number >= lo && v->number <= hi))
@@ -72,8 +74,10 @@ inline result<std::pair<tile_manifest, double>> parse_geometric_manifest(std::st
   const json_value* size = json->find("tile_size");
   if (size == nullptr || !size->is_number()) return bad("missing \"tile_size\" number");
   double tile_size = size->number;
-  if (const json_value* world = json->find("tile_world_size"); world != nullptr && world->is_number()) tile_size = world->number;
-  if (!(tile_size > 0) || !std::isfinite(tile_size)) return status::invalid_argument(cat(path, ": tile_size must be > 0, got ", tile_size));
+  if (const json_value* world = json->find("tile_world_size"); world != nullptr && world->is_number())
+    tile_size = world->number;
+  if (!(tile_size > 0) || !std::isfinite(tile_size))
+    return status::invalid_argument(cat(path, ": tile_size must be > 0, got ", tile_size));
   tile_manifest m;
   m.tile_size = 1;
   index_t nh = 0, nv = 0;
@@ -81,7 +85,8 @@ inline result<std::pair<tile_manifest, double>> parse_geometric_manifest(std::st
   if (auto s = integer(*json, "vertical_colors", 1, max_wang_colors, nv, ""); !s) return s;
   m.horizontal_colors = static_cast<int>(nh), m.vertical_colors = static_cast<int>(nv);
   for (const auto& [k, v] : json->object)
-    if (v.is_number() && k != "tile_size" && k != "horizontal_colors" && k != "vertical_colors") m.extra.push_back({k, v.number});
+    if (v.is_number() && k != "tile_size" && k != "horizontal_colors" && k != "vertical_colors")
+      m.extra.push_back({k, v.number});
   const json_value* tiles = json->find("tiles");
   if (tiles == nullptr || !tiles->is_array()) return bad("missing \"tiles\" array");
   for (std::size_t i = 0; i < tiles->array.size(); ++i) {
@@ -99,7 +104,8 @@ inline result<std::pair<tile_manifest, double>> parse_geometric_manifest(std::st
     int c[4] = {0, 0, 0, 0};
     for (std::size_t k = 0; k < 4; ++k) {
       const json_value& x = edges->array[k];
-      if (!x.is_number() || x.number != std::floor(x.number) || std::fabs(x.number) > 1e9) return bad(where, "edge colours must be integers");
+      if (!x.is_number() || x.number != std::floor(x.number) || std::fabs(x.number) > 1e9)
+        return bad(where, "edge colours must be integers");
       c[k] = static_cast<int>(x.number);
     }
     e.edges = {c[0], c[1], c[2], c[3]};
@@ -138,14 +144,16 @@ inline result<geometric_tile_set> load_geometric_tile_set(const std::string& dir
     if (!tile) return tile.error();
     for (const vec3& p : tile->positions)
       if (!(p.x >= 0 && p.x <= set.tile_size && p.y >= 0 && p.y <= set.tile_size))
-        return status::invalid_argument(detail::cat(file, ": vertex (", p.x, ", ", p.y, ") lies outside the tile [0, ", set.tile_size, "]^2"));
+        return status::invalid_argument(
+            detail::cat(file, ": vertex (", p.x, ", ", p.y, ") lies outside the tile [0, ", set.tile_size, "]^2"));
     set.tiles.push_back(std::move(*tile));
     set.edges.push_back(t.edges);
   }
   auto mismatch = tile_set_border_mismatch(set, tolerance);
   if (!mismatch) return status::invalid_argument(detail::cat(dir, ": ", mismatch.error().message()));
   if (*mismatch > 0)
-    return status::invalid_argument(detail::cat(dir, ": border_mismatch ", *mismatch, ": tile sides differ from the first side of their colour by more than ",
+    return status::invalid_argument(detail::cat(dir, ": border_mismatch ", *mismatch,
+                                                ": tile sides differ from the first side of their colour by more than ",
                                                 tolerance, "; the set would not tile continuously"));
   return set;
 }

@@ -30,11 +30,11 @@
 TESSERA_NAMESPACE_BEGIN
 
 struct geometric_wang_options {
-  int horizontal_colors = 2;     ///< nh: colours of north/south edges
-  int vertical_colors = 2;       ///< nv: colours of east/west edges
-  double tile_size = 0;          ///< w_T (required)
-  double edge_height = 0;        ///< h_E, strip height across an edge; 0 = 1.5 x the exemplar's element size
-  double corner_margin = -1;     ///< crossing elements keep this far from the tile corners; < 0 = 0.15 x element size
+  int horizontal_colors = 2;  ///< nh: colours of north/south edges
+  int vertical_colors = 2;    ///< nv: colours of east/west edges
+  double tile_size = 0;       ///< w_T (required)
+  double edge_height = 0;     ///< h_E, strip height across an edge; 0 = 1.5 x the exemplar's element size
+  double corner_margin = -1;  ///< crossing elements keep this far from the tile corners; < 0 = 0.15 x element size
   /// When the exemplar cannot hold a strip (smaller than w_T + ...), quilt a larger texture first and
   /// cut the strips from it (§3.1). When false, such exemplars are rejected.
   bool quilt_larger_source = true;
@@ -51,9 +51,9 @@ struct geometric_tile_set {
   int horizontal_colors = 0, vertical_colors = 0;
   std::vector<wang_edges> edges;
   std::vector<tri_mesh> tiles;
-  mesh_quilt_stats stats;           ///< summed over the tiles' interior synthesis
-  bool quilted_source = false;      ///< the strips came from a larger quilted texture
-  index_t crossing_elements = 0;    ///< elements split on an edge line, over all strips
+  mesh_quilt_stats stats;         ///< summed over the tiles' interior synthesis
+  bool quilted_source = false;    ///< the strips came from a larger quilted texture
+  index_t crossing_elements = 0;  ///< elements split on an edge line, over all strips
   /// Corner merging of the frames (§3.2), over all tiles: free strip elements that collided with
   /// another strip's elements, merge_pair calls, merged into the frame, dropped.
   index_t frame_merges_attempted = 0, frame_merged = 0, frame_dropped = 0;
@@ -78,32 +78,37 @@ result<wang_strip_plan> plan_wang_strips(const quilt_exemplar& exemplar, const g
     return status::invalid_argument(detail::cat("geometric wang tiles: ", s.message()));
   const index_t n = complete_tile_count(o.horizontal_colors, o.vertical_colors);
   if (n > (index_t{1} << 26))
-    return status::size_overflow(detail::cat("geometric wang tiles: ", o.horizontal_colors, " x ", o.vertical_colors, " colours make ", n,
-                                             " tiles, more than tessera builds (2^26)"));
+    return status::size_overflow(detail::cat("geometric wang tiles: ", o.horizontal_colors, " x ", o.vertical_colors,
+                                             " colours make ", n, " tiles, more than tessera builds (2^26)"));
   if (!(o.tile_size > 0) || !std::isfinite(o.tile_size))
     return status::invalid_argument(detail::cat("geometric wang tiles: tile_size must be > 0, got ", o.tile_size));
-  if (exemplar.num_elements() == 0) return status::invalid_argument("geometric wang tiles: the exemplar is empty (not prepared)");
+  if (exemplar.num_elements() == 0)
+    return status::invalid_argument("geometric wang tiles: the exemplar is empty (not prepared)");
   if (auto s = detail::check_quilt_options(o.quilt); !s) return s;
   if (!(o.edge_height >= 0) || !std::isfinite(o.edge_height))
     return status::invalid_argument(detail::cat("geometric wang tiles: edge_height must be >= 0, got ", o.edge_height));
   const double he = o.edge_height > 0 ? o.edge_height : 1.5 * exemplar.element_diameter();
   const vec3 ext = exemplar.bounds().extent();
   if (he > std::min(ext.x, ext.y))
-    return status::invalid_argument(detail::cat("geometric wang tiles: edge_height ", he, " is larger than the exemplar (", ext.x, " x ",
-                                                ext.y, ")"));
+    return status::invalid_argument(detail::cat("geometric wang tiles: edge_height ", he,
+                                                " is larger than the exemplar (", ext.x, " x ", ext.y, ")"));
   if (he > 0.5 * o.tile_size)
-    return status::invalid_argument(detail::cat("geometric wang tiles: edge_height ", he, " leaves no interior in a tile of size ",
-                                                o.tile_size, "; it must be at most half the tile"));
+    return status::invalid_argument(detail::cat("geometric wang tiles: edge_height ", he,
+                                                " leaves no interior in a tile of size ", o.tile_size,
+                                                "; it must be at most half the tile"));
   const double margin = o.corner_margin >= 0 ? o.corner_margin : 0.15 * exemplar.element_diameter();
   if (!std::isfinite(margin) || margin * 2 >= o.tile_size)
-    return status::invalid_argument(detail::cat("geometric wang tiles: corner_margin ", margin, " does not fit a tile of size ", o.tile_size));
+    return status::invalid_argument(
+        detail::cat("geometric wang tiles: corner_margin ", margin, " does not fit a tile of size ", o.tile_size));
   // grid sizes before any loop over them: a tile's quilting grid, the strip windows (step half a
   // cell over the exemplar or the larger source of 2 w_T + 2 h_E) and the larger source's grid
   const double cell = exemplar.cell_size(), src_side = std::max({ext.x, ext.y, 2 * o.tile_size + 2 * he});
-  const double tile_cells = (o.tile_size / cell) * (o.tile_size / cell), windows = (2 * src_side / cell + 1) * (2 * src_side / cell + 1);
+  const double tile_cells = (o.tile_size / cell) * (o.tile_size / cell),
+               windows = (2 * src_side / cell + 1) * (2 * src_side / cell + 1);
   if (tile_cells > double(1 << 26) || windows > double(1 << 24))
-    return status::size_overflow(detail::cat("geometric wang tiles: the exemplar's cell_size ", cell, " gives ", tile_cells,
-                                             " grid cells a tile and ", windows, " strip windows (at most 2^26 and 2^24); use a larger cell_size"));
+    return status::size_overflow(detail::cat("geometric wang tiles: the exemplar's cell_size ", cell, " gives ",
+                                             tile_cells, " grid cells a tile and ", windows,
+                                             " strip windows (at most 2^26 and 2^24); use a larger cell_size"));
   wang_strip_plan plan;
   plan.edge_height = he;
   plan.sp = {o.tile_size, 0.5 * he, margin, 1e-9 * o.tile_size};
@@ -113,8 +118,9 @@ result<wang_strip_plan> plan_wang_strips(const quilt_exemplar& exemplar, const g
     picked = choose_strips(exemplar, o.horizontal_colors, o.vertical_colors, plan.sp, o.quilt.seed, plan.hs, plan.vs);
   if (!picked) {
     if (!o.quilt_larger_source)
-      return status::invalid_argument(detail::cat("geometric wang tiles: the exemplar (", ext.x, " x ", ext.y, ") cannot hold the edge strips of a ",
-                                                  o.tile_size, " tile (", picked.message(), ") and quilt_larger_source is off"));
+      return status::invalid_argument(detail::cat("geometric wang tiles: the exemplar (", ext.x, " x ", ext.y,
+                                                  ") cannot hold the edge strips of a ", o.tile_size, " tile (",
+                                                  picked.message(), ") and quilt_larger_source is off"));
     const double size = 2 * o.tile_size + 2 * he;
     mesh_quilt_options qo = o.quilt;
     qo.progress = {};
@@ -125,7 +131,10 @@ result<wang_strip_plan> plan_wang_strips(const quilt_exemplar& exemplar, const g
     if (!bigger) return bigger.error();
     plan.quilted_source = true;
     plan.hs.clear(), plan.vs.clear();
-    if (auto s = choose_strips(*bigger, o.horizontal_colors, o.vertical_colors, plan.sp, o.quilt.seed, plan.hs, plan.vs); !s) return s;
+    if (auto s =
+            choose_strips(*bigger, o.horizontal_colors, o.vertical_colors, plan.sp, o.quilt.seed, plan.hs, plan.vs);
+        !s)
+      return s;
   }
   for (const auto& s : plan.hs) plan.crossing += s.crossing;
   for (const auto& s : plan.vs) plan.crossing += s.crossing;
@@ -144,7 +153,8 @@ result<wang_strip_plan> plan_wang_strips(const quilt_exemplar& exemplar, const g
 /// tile corners, bad quilt options; cancelled through options.progress. Time: dominated by
 /// nh^2 nv^2 constrained quilts of one tile.
 template <Executor E = serial_executor>
-result<geometric_tile_set> build_geometric_wang_tiles(const quilt_exemplar& exemplar, const geometric_wang_options& o, E&& exec = {}) {
+result<geometric_tile_set> build_geometric_wang_tiles(const quilt_exemplar& exemplar, const geometric_wang_options& o,
+                                                      E&& exec = {}) {
   auto plan = detail::plan_wang_strips(exemplar, o, exec);
   if (!plan) return plan.error();
   geometric_tile_set set;
@@ -195,7 +205,8 @@ result<geometric_tile_set> build_geometric_wang_tiles(const quilt_exemplar& exem
 /// build_geometric_wang_tiles for any Mesh exemplar (prepared with default options); rejects open or
 /// non-manifold exemplars and NaN vertices (see prepare_quilt_exemplar).
 template <Mesh M, Executor E = serial_executor>
-result<geometric_tile_set> build_geometric_wang_tiles(const M& exemplar, const geometric_wang_options& o, E&& exec = {}) {
+result<geometric_tile_set> build_geometric_wang_tiles(const M& exemplar, const geometric_wang_options& o,
+                                                      E&& exec = {}) {
   auto ex = prepare_quilt_exemplar(exemplar);
   if (!ex) return ex.error();
   return build_geometric_wang_tiles(*ex, o, exec);

@@ -43,14 +43,17 @@ inline result<icp_translation_result> icp_translation(std::span<const vec3> poin
                                                       vec3 initial, const icp_translation_options& options = {}) {
   if (target.empty()) return status::invalid_argument("icp_translation: the target has no triangles");
   if (options.max_iterations < 1)
-    return status::invalid_argument(detail::cat("icp_translation: max_iterations must be >= 1, got ", options.max_iterations));
+    return status::invalid_argument(
+        detail::cat("icp_translation: max_iterations must be >= 1, got ", options.max_iterations));
   if (!(options.tolerance > 0))
     return status::invalid_argument(detail::cat("icp_translation: tolerance must be > 0, got ", options.tolerance));
   if (!(options.max_distance > 0))
-    return status::invalid_argument(detail::cat("icp_translation: max_distance must be > 0, got ", options.max_distance));
+    return status::invalid_argument(
+        detail::cat("icp_translation: max_distance must be > 0, got ", options.max_distance));
   if (!is_finite(initial)) return status::invalid_argument("icp_translation: the initial translation is not finite");
   for (std::size_t i = 0; i < points.size(); ++i)
-    if (!is_finite(points[i])) return status::invalid_argument(detail::cat("icp_translation: point ", i, " is not finite"));
+    if (!is_finite(points[i]))
+      return status::invalid_argument(detail::cat("icp_translation: point ", i, " is not finite"));
 
   const double max_d2 = options.max_distance * options.max_distance;
   icp_translation_result r;

@@ -31,7 +31,8 @@ enum class laplacian_weighting {
 /// The Laplacian matrix L (V x V) with (L x)_i = sum_j w_ij (x_i - x_j), so rows sum to zero.
 /// Input must be valid (validate_mesh); O(F) time.
 template <Mesh M>
-Eigen::SparseMatrix<detail::dependent_t<double, M>> laplacian_matrix(const M& m, laplacian_weighting weighting = laplacian_weighting::cotangent) {
+Eigen::SparseMatrix<detail::dependent_t<double, M>> laplacian_matrix(
+    const M& m, laplacian_weighting weighting = laplacian_weighting::cotangent) {
   using sparse = Eigen::SparseMatrix<detail::dependent_t<double, M>>;  // see laplacian_deform
   const index_t nv = num_vertices(m);
   std::vector<Eigen::Triplet<typename sparse::Scalar>> t;
@@ -94,19 +95,23 @@ result<std::vector<vec3>> laplacian_deform(const M& mesh, std::span<const unsign
   if (auto s = validate_mesh(mesh, "laplacian_deform: mesh"); !s) return s;
   const index_t nv = num_vertices(mesh);
   if (!fixed.empty() && static_cast<index_t>(fixed.size()) != nv)
-    return status::invalid_argument(detail::cat("laplacian_deform: fixed has ", fixed.size(), " entries, the mesh has ", nv, " vertices"));
+    return status::invalid_argument(
+        detail::cat("laplacian_deform: fixed has ", fixed.size(), " entries, the mesh has ", nv, " vertices"));
   if (!(options.soft_weight >= 0) || !std::isfinite(options.soft_weight))
-    return status::invalid_argument(detail::cat("laplacian_deform: soft_weight must be finite and >= 0, got ", options.soft_weight));
+    return status::invalid_argument(
+        detail::cat("laplacian_deform: soft_weight must be finite and >= 0, got ", options.soft_weight));
   if (!(options.regularization >= 0) || !std::isfinite(options.regularization))
-    return status::invalid_argument(detail::cat("laplacian_deform: regularization must be finite and >= 0, got ", options.regularization));
+    return status::invalid_argument(
+        detail::cat("laplacian_deform: regularization must be finite and >= 0, got ", options.regularization));
   for (std::size_t c = 0; c < constraints.size(); ++c) {
     const auto& k = constraints[c];
     if (!is_finite(k.target))
       return status::invalid_argument(detail::cat("laplacian_deform: constraint ", c, " has a non-finite target"));
     for (int j = 0; j < 3; ++j) {
       if (k.vertices[static_cast<std::size_t>(j)] < -1 || k.vertices[static_cast<std::size_t>(j)] >= nv)
-        return status::out_of_range(detail::cat("laplacian_deform: constraint ", c, " names vertex ", k.vertices[static_cast<std::size_t>(j)],
-                                                " of a mesh with ", nv, " vertices"));
+        return status::out_of_range(detail::cat("laplacian_deform: constraint ", c, " names vertex ",
+                                                k.vertices[static_cast<std::size_t>(j)], " of a mesh with ", nv,
+                                                " vertices"));
       if (!std::isfinite(k.weights[static_cast<std::size_t>(j)]))
         return status::invalid_argument(detail::cat("laplacian_deform: constraint ", c, " has a non-finite weight"));
     }
@@ -138,8 +143,10 @@ result<std::vector<vec3>> laplacian_deform(const M& mesh, std::span<const unsign
   for (int k = 0; k < L.outerSize(); ++k)
     for (typename sparse::InnerIterator it(L, k); it; ++it) {
       const int c = col[static_cast<std::size_t>(it.col())];
-      if (c >= 0) lf.emplace_back(static_cast<int>(it.row()), c, it.value());
-      else rhs_l.row(static_cast<int>(it.row())) -= it.value() * X.row(static_cast<int>(it.col()));
+      if (c >= 0)
+        lf.emplace_back(static_cast<int>(it.row()), c, it.value());
+      else
+        rhs_l.row(static_cast<int>(it.row())) -= it.value() * X.row(static_cast<int>(it.col()));
     }
   sparse Lf(static_cast<int>(nv), nfree);
   Lf.setFromTriplets(lf.begin(), lf.end());
@@ -154,8 +161,10 @@ result<std::vector<vec3>> laplacian_deform(const M& mesh, std::span<const unsign
       if (v < 0) continue;
       const double w = k.weights[static_cast<std::size_t>(j)];
       const int cc = col[static_cast<std::size_t>(v)];
-      if (cc >= 0) cf.emplace_back(static_cast<int>(c), cc, w);
-      else r -= w * X.row(static_cast<int>(v));
+      if (cc >= 0)
+        cf.emplace_back(static_cast<int>(c), cc, w);
+      else
+        r -= w * X.row(static_cast<int>(v));
     }
     rhs_c.row(static_cast<int>(c)) = r;
   }

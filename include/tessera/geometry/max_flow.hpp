@@ -52,7 +52,8 @@ class max_flow_graph {
 
   /// Adds an arc a -> b with capacity cap_ab and its reverse with cap_ba.
   void add_edge(index_t a, index_t b, double cap_ab, double cap_ba) {
-    if (!check_node(a, "add_edge") || !check_node(b, "add_edge") || !check_cap(cap_ab, "cap_ab") || !check_cap(cap_ba, "cap_ba"))
+    if (!check_node(a, "add_edge") || !check_node(b, "add_edge") || !check_cap(cap_ab, "cap_ab") ||
+        !check_cap(cap_ba, "cap_ba"))
       return;
     if (a == b) return;  // a self loop never carries flow
     const auto ia = static_cast<index_t>(arcs_.size());
@@ -89,11 +90,11 @@ class max_flow_graph {
     index_t first = no_arc;   // first outgoing arc
     index_t parent = no_arc;  // arc to the parent in its tree, or terminal / orphan
     double source_cap = 0, sink_cap = 0;
-    double tr_cap = 0;        // residual terminal capacity: > 0 to SOURCE side, < 0 to SINK side
+    double tr_cap = 0;  // residual terminal capacity: > 0 to SOURCE side, < 0 to SINK side
     int tree = tree_free;
     bool active = false;
-    long long ts = 0;         // timestamp of the distance mark
-    long long dist = 0;       // distance to the terminal (valid when ts is current)
+    long long ts = 0;    // timestamp of the distance mark
+    long long dist = 0;  // distance to the terminal (valid when ts is current)
   };
   struct arc {
     index_t head;
@@ -105,7 +106,8 @@ class max_flow_graph {
   bool check_node(index_t n, const char* where) {
     if (n >= 0 && n < num_nodes()) return true;
     if (error_.ok())
-      error_ = status::out_of_range(detail::cat("max_flow_graph::", where, ": node ", n, " outside [0, ", num_nodes(), ")"));
+      error_ =
+          status::out_of_range(detail::cat("max_flow_graph::", where, ": node ", n, " outside [0, ", num_nodes(), ")"));
     return false;
   }
   bool check_cap(double c, const char* name) {
@@ -131,8 +133,10 @@ class max_flow_graph {
       if (n.source_cap == inf && n.sink_cap == inf) return inf;
       flow += std::min(n.source_cap, n.sink_cap);
       n.tr_cap = n.source_cap == inf ? inf : n.sink_cap == inf ? -inf : n.source_cap - n.sink_cap;
-      if (n.tr_cap > 0) n.tree = tree_source, n.parent = terminal, n.ts = 0, n.dist = 1, activate(i);
-      else if (n.tr_cap < 0) n.tree = tree_sink, n.parent = terminal, n.ts = 0, n.dist = 1, activate(i);
+      if (n.tr_cap > 0)
+        n.tree = tree_source, n.parent = terminal, n.ts = 0, n.dist = 1, activate(i);
+      else if (n.tr_cap < 0)
+        n.tree = tree_sink, n.parent = terminal, n.ts = 0, n.dist = 1, activate(i);
     }
     index_t current = no_arc;  // node being grown, kept across augmentations
     while (true) {
@@ -180,7 +184,8 @@ class max_flow_graph {
       ++time_;
       const index_t u = A(A(joint).sister).head, v = A(joint).head;
       double b = A(joint).cap;
-      for (index_t x = u; N(x).parent != terminal; x = A(N(x).parent).head) b = std::min(b, A(A(N(x).parent).sister).cap);
+      for (index_t x = u; N(x).parent != terminal; x = A(N(x).parent).head)
+        b = std::min(b, A(A(N(x).parent).sister).cap);
       index_t root_s = u;
       while (N(root_s).parent != terminal) root_s = A(N(root_s).parent).head;
       b = std::min(b, N(root_s).tr_cap);

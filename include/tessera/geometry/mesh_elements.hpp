@@ -25,7 +25,9 @@ struct xy_rect {
   double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
   [[nodiscard]] constexpr double width() const noexcept { return x1 - x0; }
   [[nodiscard]] constexpr double height() const noexcept { return y1 - y0; }
-  [[nodiscard]] constexpr bool contains(vec3 p) const noexcept { return p.x >= x0 && p.x <= x1 && p.y >= y0 && p.y <= y1; }
+  [[nodiscard]] constexpr bool contains(vec3 p) const noexcept {
+    return p.x >= x0 && p.x <= x1 && p.y >= y0 && p.y <= y1;
+  }
   [[nodiscard]] constexpr bool overlaps(const aabb& b) const noexcept {
     return b.min.x <= x1 && b.max.x >= x0 && b.min.y <= y1 && b.max.y >= y0;
   }
@@ -61,8 +63,10 @@ template <Mesh M>
 edge_defects count_edge_defects(const M& m) {
   edge_defects d;
   for (const mesh_edge& e : mesh_edges(m)) {
-    if (e.faces.size() == 1) ++d.open_edges;
-    else if (e.faces.size() > 2) ++d.nonmanifold_edges;
+    if (e.faces.size() == 1)
+      ++d.open_edges;
+    else if (e.faces.size() > 2)
+      ++d.nonmanifold_edges;
   }
   return d;
 }
@@ -108,8 +112,8 @@ result<std::vector<texture_element>> extract_elements(const M& mesh, const extra
         return status::invalid_argument(detail::cat(what, ": element ", i, " has ", d.nonmanifold_edges,
                                                     " non-manifold edges (shared by more than two faces)"));
       if (options.require_closed && d.open_edges > 0)
-        return status::invalid_argument(detail::cat(what, ": element ", i, " has ", d.open_edges,
-                                                    " open edges; elements must be closed surfaces"));
+        return status::invalid_argument(
+            detail::cat(what, ": element ", i, " has ", d.open_edges, " open edges; elements must be closed surfaces"));
     }
   }
   return out;
@@ -128,7 +132,8 @@ inline tri_mesh combine_elements(std::span<const texture_element> elements) {
 
 /// Border triangles of §3.3.5: faces of `e` that meet one of the tile sides in its border set B(C),
 /// taking each side as the vertical plane through that side of `domain` (within `tolerance`).
-inline std::vector<unsigned char> border_triangles(const texture_element& e, const xy_rect& domain, double tolerance = 0) {
+inline std::vector<unsigned char> border_triangles(const texture_element& e, const xy_rect& domain,
+                                                   double tolerance = 0) {
   std::vector<unsigned char> out(e.mesh.faces.size(), 0);
   if (e.border == 0) return out;
   for (std::size_t f = 0; f < e.mesh.faces.size(); ++f) {
@@ -138,7 +143,10 @@ inline std::vector<unsigned char> border_triangles(const texture_element& e, con
     for (int side = 0; side < 4 && !hit; ++side) {
       if (!(e.border & border_bit(side))) continue;
       const int axis = is_horizontal_side(side) ? 1 : 0;
-      const double line = side == side_north ? domain.y1 : side == side_east ? domain.x1 : side == side_south ? domain.y0 : domain.x0;
+      const double line = side == side_north   ? domain.y1
+                          : side == side_east  ? domain.x1
+                          : side == side_south ? domain.y0
+                                               : domain.x0;
       hit = b.min[axis] <= line + tolerance && b.max[axis] >= line - tolerance;
     }
     out[f] = hit ? 1 : 0;
@@ -147,7 +155,8 @@ inline std::vector<unsigned char> border_triangles(const texture_element& e, con
 }
 
 /// Border vertices of §3.3.5: the corners of the border triangles (held fixed during deformation).
-inline std::vector<unsigned char> border_vertices(const texture_element& e, const xy_rect& domain, double tolerance = 0) {
+inline std::vector<unsigned char> border_vertices(const texture_element& e, const xy_rect& domain,
+                                                  double tolerance = 0) {
   std::vector<unsigned char> out(e.mesh.positions.size(), 0);
   const auto tri = border_triangles(e, domain, tolerance);
   for (std::size_t f = 0; f < tri.size(); ++f)

@@ -24,8 +24,8 @@
 TESSERA_NAMESPACE_BEGIN
 
 struct ring_exemplar_options {
-  double size = 8.0;             ///< the exemplar covers [0, size]^2
-  double spacing = 1.6;          ///< distance between loose ring centres (density); chain mail uses a pitch of 1.3 major_radius
+  double size = 8.0;     ///< the exemplar covers [0, size]^2
+  double spacing = 1.6;  ///< distance between loose ring centres (density); chain mail uses a pitch of 1.3 major_radius
   double major_radius = 0.5;     ///< ring radius
   double minor_radius = 0.12;    ///< tube radius
   int ring_segments = 24;        ///< vertices around the ring (vertex count)
@@ -37,25 +37,25 @@ struct ring_exemplar_options {
 };
 
 struct stone_exemplar_options {
-  double size = 8.0;          ///< the exemplar covers [0, size]^2
-  double min_radius = 0.35;   ///< pebble radius range in XY
+  double size = 8.0;         ///< the exemplar covers [0, size]^2
+  double min_radius = 0.35;  ///< pebble radius range in XY
   double max_radius = 0.65;
-  double coverage = 0.55;     ///< fraction of the area the pebbles' footprints try to cover (density)
-  double flatness = 0.55;     ///< height / width of a pebble
-  double roughness = 0.12;    ///< relative amplitude of the shape noise
-  double gap = 0.06;          ///< minimum distance between pebbles
-  int subdivisions = 2;       ///< icosphere level: 2 = 162 vertices a pebble, 3 = 642 (vertex count)
+  double coverage = 0.55;   ///< fraction of the area the pebbles' footprints try to cover (density)
+  double flatness = 0.55;   ///< height / width of a pebble
+  double roughness = 0.12;  ///< relative amplitude of the shape noise
+  double gap = 0.06;        ///< minimum distance between pebbles
+  int subdivisions = 2;     ///< icosphere level: 2 = 162 vertices a pebble, 3 = 642 (vertex count)
   std::uint64_t seed = 1;
 };
 
 struct weave_exemplar_options {
-  double size = 8.0;          ///< the exemplar covers [0, size]^2
-  double spacing = 1.0;       ///< distance between parallel threads (density)
-  double width = 0.36;        ///< thread half-width, fraction of spacing
-  double thickness = 0.11;    ///< thread half-height, fraction of spacing
-  double amplitude = 0.2;     ///< over-under amplitude, fraction of spacing
+  double size = 8.0;             ///< the exemplar covers [0, size]^2
+  double spacing = 1.0;          ///< distance between parallel threads (density)
+  double width = 0.36;           ///< thread half-width, fraction of spacing
+  double thickness = 0.11;       ///< thread half-height, fraction of spacing
+  double amplitude = 0.2;        ///< over-under amplitude, fraction of spacing
   int segments_per_spacing = 8;  ///< vertices along a thread per spacing (vertex count)
-  int around = 8;             ///< vertices around a thread
+  int around = 8;                ///< vertices around a thread
   std::uint64_t seed = 1;
 };
 
@@ -73,8 +73,8 @@ inline void add_torus(tri_mesh& m, vec3 c, vec3 axis_u, vec3 axis_v, vec3 normal
   }
   for (int i = 0; i < nu; ++i)
     for (int j = 0; j < nv; ++j) {
-      const index_t a = base + i * nv + j, b = base + ((i + 1) % nu) * nv + j, cc = base + ((i + 1) % nu) * nv + (j + 1) % nv,
-                    d = base + i * nv + (j + 1) % nv;
+      const index_t a = base + i * nv + j, b = base + ((i + 1) % nu) * nv + j,
+                    cc = base + ((i + 1) % nu) * nv + (j + 1) % nv, d = base + i * nv + (j + 1) % nv;
       m.add_face(a, b, cc);
       m.add_face(a, cc, d);
     }
@@ -86,7 +86,8 @@ inline void add_tube(tri_mesh& m, const std::vector<vec3>& path, double w, doubl
   const index_t base = m.num_vertices();
   const auto n = static_cast<index_t>(path.size());
   for (index_t i = 0; i < n; ++i) {
-    const vec3 t = normalized(path[static_cast<std::size_t>(std::min(i + 1, n - 1))] - path[static_cast<std::size_t>(std::max<index_t>(i - 1, 0))]);
+    const vec3 t = normalized(path[static_cast<std::size_t>(std::min(i + 1, n - 1))] -
+                              path[static_cast<std::size_t>(std::max<index_t>(i - 1, 0))]);
     const vec3 side = normalized(cross(vec3{0, 0, 1}, t));
     const vec3 up = normalized(cross(t, side));
     for (int j = 0; j < around; ++j) {
@@ -96,8 +97,8 @@ inline void add_tube(tri_mesh& m, const std::vector<vec3>& path, double w, doubl
   }
   for (index_t i = 0; i + 1 < n; ++i)
     for (int j = 0; j < around; ++j) {
-      const index_t a = base + i * around + j, b = base + (i + 1) * around + j, c = base + (i + 1) * around + (j + 1) % around,
-                    d = base + i * around + (j + 1) % around;
+      const index_t a = base + i * around + j, b = base + (i + 1) * around + j,
+                    c = base + (i + 1) * around + (j + 1) % around, d = base + i * around + (j + 1) % around;
       m.add_face(a, d, c);
       m.add_face(a, c, b);
     }
@@ -111,12 +112,12 @@ inline void add_tube(tri_mesh& m, const std::vector<vec3>& path, double w, doubl
 inline tri_mesh icosphere(int level) {
   tri_mesh m;
   const double t = (1 + std::sqrt(5.0)) / 2;
-  for (vec3 p : {vec3{-1, t, 0}, vec3{1, t, 0}, vec3{-1, -t, 0}, vec3{1, -t, 0}, vec3{0, -1, t}, vec3{0, 1, t}, vec3{0, -1, -t},
-                 vec3{0, 1, -t}, vec3{t, 0, -1}, vec3{t, 0, 1}, vec3{-t, 0, -1}, vec3{-t, 0, 1}})
+  for (vec3 p : {vec3{-1, t, 0}, vec3{1, t, 0}, vec3{-1, -t, 0}, vec3{1, -t, 0}, vec3{0, -1, t}, vec3{0, 1, t},
+                 vec3{0, -1, -t}, vec3{0, 1, -t}, vec3{t, 0, -1}, vec3{t, 0, 1}, vec3{-t, 0, -1}, vec3{-t, 0, 1}})
     m.add_vertex(normalized(p));
-  const int f[20][3] = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+  const int f[20][3] = {{0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
                         {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-                        {3, 8, 9},  {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+                        {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
   for (const auto& x : f) m.add_face(x[0], x[1], x[2]);
   for (int l = 0; l < level; ++l) {
     tri_mesh n;
@@ -126,7 +127,8 @@ inline tri_mesh icosphere(int level) {
       const auto key = std::minmax(a, b);
       auto it = mid.find({key.first, key.second});
       if (it != mid.end()) return it->second;
-      const index_t id = n.add_vertex(normalized(n.positions[static_cast<std::size_t>(a)] + n.positions[static_cast<std::size_t>(b)]));
+      const index_t id =
+          n.add_vertex(normalized(n.positions[static_cast<std::size_t>(a)] + n.positions[static_cast<std::size_t>(b)]));
       mid[{key.first, key.second}] = id;
       return id;
     };
@@ -156,7 +158,8 @@ inline bool elements_disjoint(const tri_mesh& m, const std::vector<index_t>& ele
 }
 
 inline status check_size(double size, double feature, const char* what) {
-  if (!(size > 0) || !std::isfinite(size)) return status::invalid_argument(detail::cat(what, ": size must be > 0, got ", size));
+  if (!(size > 0) || !std::isfinite(size))
+    return status::invalid_argument(detail::cat(what, ": size must be > 0, got ", size));
   if (size < feature)
     return status::invalid_argument(detail::cat(what, ": size ", size, " is smaller than one element (", feature, ")"));
   return {};
@@ -171,11 +174,13 @@ inline status check_size(double size, double feature, const char* what) {
 inline result<tri_mesh> make_ring_exemplar(const ring_exemplar_options& o = {}) {
   const double R = o.major_radius, r = o.minor_radius;
   if (!(R > 0) || !(r > 0) || !(r < R))
-    return status::invalid_argument(detail::cat("ring exemplar: need 0 < minor_radius < major_radius, got ", r, " and ", R));
+    return status::invalid_argument(
+        detail::cat("ring exemplar: need 0 < minor_radius < major_radius, got ", r, " and ", R));
   if (o.ring_segments < 3 || o.tube_segments < 3)
-    return status::invalid_argument(detail::cat("ring exemplar: ring_segments and tube_segments must be >= 3, got ", o.ring_segments,
-                                                " and ", o.tube_segments));
-  if (!(o.spacing > 0)) return status::invalid_argument(detail::cat("ring exemplar: spacing must be > 0, got ", o.spacing));
+    return status::invalid_argument(detail::cat("ring exemplar: ring_segments and tube_segments must be >= 3, got ",
+                                                o.ring_segments, " and ", o.tube_segments));
+  if (!(o.spacing > 0))
+    return status::invalid_argument(detail::cat("ring exemplar: spacing must be > 0, got ", o.spacing));
   if (auto s = detail::check_size(o.size, 2 * (R + r), "ring exemplar"); !s) return s;
   if (!(o.jitter >= 0 && o.jitter < 0.5))
     return status::invalid_argument(detail::cat("ring exemplar: jitter must be in [0, 0.5), got ", o.jitter));
@@ -196,7 +201,8 @@ inline result<tri_mesh> make_ring_exemplar(const ring_exemplar_options& o = {}) 
     const double max_tilt = o.max_tilt_degrees * std::numbers::pi / 180;
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i) {
-        const double jx = (rng.uniform(i, j, 0) * 2 - 1) * o.jitter * o.spacing, jy = (rng.uniform(i, j, 1) * 2 - 1) * o.jitter * o.spacing;
+        const double jx = (rng.uniform(i, j, 0) * 2 - 1) * o.jitter * o.spacing,
+                     jy = (rng.uniform(i, j, 1) * 2 - 1) * o.jitter * o.spacing;
         const double tilt = rng.uniform(i, j, 2) * max_tilt, dir = rng.uniform(i, j, 3) * 2 * std::numbers::pi;
         const double yaw = rng.uniform(i, j, 4) * 2 * std::numbers::pi;
         const vec3 n0{std::sin(tilt) * std::cos(dir), std::sin(tilt) * std::sin(dir), std::cos(tilt)};
@@ -237,12 +243,14 @@ inline result<tri_mesh> make_ring_exemplar(const ring_exemplar_options& o = {}) 
 /// outside [0, 5].
 inline result<tri_mesh> make_stone_exemplar(const stone_exemplar_options& o = {}) {
   if (!(o.min_radius > 0) || !(o.max_radius >= o.min_radius))
-    return status::invalid_argument(detail::cat("stone exemplar: need 0 < min_radius <= max_radius, got ", o.min_radius, " and ", o.max_radius));
+    return status::invalid_argument(
+        detail::cat("stone exemplar: need 0 < min_radius <= max_radius, got ", o.min_radius, " and ", o.max_radius));
   if (auto s = detail::check_size(o.size, 2 * o.max_radius, "stone exemplar"); !s) return s;
   if (!(o.coverage > 0 && o.coverage <= 0.9))
     return status::invalid_argument(detail::cat("stone exemplar: coverage must be in (0, 0.9], got ", o.coverage));
   if (o.subdivisions < 0 || o.subdivisions > 5)
-    return status::invalid_argument(detail::cat("stone exemplar: subdivisions must be in [0, 5], got ", o.subdivisions));
+    return status::invalid_argument(
+        detail::cat("stone exemplar: subdivisions must be in [0, 5], got ", o.subdivisions));
   if (!(o.flatness > 0) || !(o.roughness >= 0 && o.roughness < 0.5) || !(o.gap >= 0))
     return status::invalid_argument("stone exemplar: flatness must be > 0, roughness in [0, 0.5), gap >= 0");
   const counter_rng rng(o.seed, stream_id("geometry.exemplar.stones"));
@@ -257,7 +265,8 @@ inline result<tri_mesh> make_stone_exemplar(const stone_exemplar_options& o = {}
   for (std::uint64_t attempt = 0; attempt < 20000 && covered < target; ++attempt) {
     const double rad = o.min_radius + (o.max_radius - o.min_radius) * rng.uniform(attempt, 0);
     const double outer = rad * (1 + o.roughness);
-    const double x = outer + (o.size - 2 * outer) * rng.uniform(attempt, 1), y = outer + (o.size - 2 * outer) * rng.uniform(attempt, 2);
+    const double x = outer + (o.size - 2 * outer) * rng.uniform(attempt, 1),
+                 y = outer + (o.size - 2 * outer) * rng.uniform(attempt, 2);
     bool free = true;
     for (const disk& d : placed)
       if ((d.x - x) * (d.x - x) + (d.y - y) * (d.y - y) < (d.r + outer + o.gap) * (d.r + outer + o.gap)) {
@@ -294,15 +303,17 @@ inline result<tri_mesh> make_stone_exemplar(const stone_exemplar_options& o = {}
 /// Errors: non-positive sizes, fewer than 4 vertices around or along, or a thickness too large for
 /// the amplitude (crossing threads would touch).
 inline result<tri_mesh> make_weave_exemplar(const weave_exemplar_options& o = {}) {
-  if (!(o.spacing > 0)) return status::invalid_argument(detail::cat("weave exemplar: spacing must be > 0, got ", o.spacing));
+  if (!(o.spacing > 0))
+    return status::invalid_argument(detail::cat("weave exemplar: spacing must be > 0, got ", o.spacing));
   if (auto s = detail::check_size(o.size, 2 * o.spacing, "weave exemplar"); !s) return s;
   if (o.around < 4 || o.segments_per_spacing < 4)
-    return status::invalid_argument(detail::cat("weave exemplar: around and segments_per_spacing must be >= 4, got ", o.around,
-                                                " and ", o.segments_per_spacing));
+    return status::invalid_argument(detail::cat("weave exemplar: around and segments_per_spacing must be >= 4, got ",
+                                                o.around, " and ", o.segments_per_spacing));
   if (!(o.width > 0 && o.width < 0.5) || !(o.thickness > 0) || !(o.amplitude > 0))
     return status::invalid_argument("weave exemplar: need width in (0, 0.5), thickness > 0, amplitude > 0");
   if (o.amplitude * (1 + std::cos(std::numbers::pi * o.width)) <= 2 * o.thickness * 1.05)
-    return status::invalid_argument(detail::cat("weave exemplar: thickness ", o.thickness, " is too large for amplitude ", o.amplitude,
+    return status::invalid_argument(detail::cat("weave exemplar: thickness ", o.thickness,
+                                                " is too large for amplitude ", o.amplitude,
                                                 "; crossing threads would touch"));
   const double s = o.spacing;
   const int n = static_cast<int>(std::floor(o.size / s));
@@ -318,7 +329,8 @@ inline result<tri_mesh> make_weave_exemplar(const weave_exemplar_options& o = {}
         const double t = end_gap + (o.size - 2 * end_gap) * k / steps;
         const double across = margin + (j + 0.5) * s;
         // x-threads: over at even crossings when j is even; y-threads do the opposite
-        const double phase = std::numbers::pi * ((t - margin) / s - 0.5) + std::numbers::pi * j + (dir == 1 ? std::numbers::pi : 0.0);
+        const double phase =
+            std::numbers::pi * ((t - margin) / s - 0.5) + std::numbers::pi * j + (dir == 1 ? std::numbers::pi : 0.0);
         const double z = h0 + o.amplitude * s * std::cos(phase);
         path.push_back(dir == 0 ? vec3{t, across, z} : vec3{across, t, z});
       }

@@ -23,16 +23,16 @@
 TESSERA_NAMESPACE_BEGIN
 
 struct mesh_quilt_options {
-  int patch_cells = 0;                 ///< side of the patch P_T in grid cells; 0 = half the exemplar
-  double lambda = 1.0;                 ///< weight of the normal term of eq. 1
-  int max_samples = 160;               ///< M_T vertices of P_T used for the matching cost (evenly thinned)
-  double tolerance = 0.05;             ///< pick randomly among translations within (1 + tolerance) of the best cost
-  bool icp = true;                     ///< refine the grid translation by ICP (eq. 5, §3.3.3)
+  int patch_cells = 0;      ///< side of the patch P_T in grid cells; 0 = half the exemplar
+  double lambda = 1.0;      ///< weight of the normal term of eq. 1
+  int max_samples = 160;    ///< M_T vertices of P_T used for the matching cost (evenly thinned)
+  double tolerance = 0.05;  ///< pick randomly among translations within (1 + tolerance) of the best cost
+  bool icp = true;          ///< refine the grid translation by ICP (eq. 5, §3.3.3)
   int icp_iterations = 30;
-  double correspondence_distance = 0;  ///< §3.3.4 search radius; 0 = half a grid cell
-  double deform_weight = 1.0;          ///< mu of eq. 6-7
-  bool merge = true;                   ///< merge corresponding elements (§3.3.6); false drops overlapping ones
-  int smooth_rings = 2;                ///< vertex rings relaxed around each merge seam
+  double correspondence_distance = 0;        ///< §3.3.4 search radius; 0 = half a grid cell
+  double deform_weight = 1.0;                ///< mu of eq. 6-7
+  bool merge = true;                         ///< merge corresponding elements (§3.3.6); false drops overlapping ones
+  int smooth_rings = 2;                      ///< vertex rings relaxed around each merge seam
   merge_rules rules = merge_rules::tessera;  ///< SOURCE/SINK rules of the element cuts (§3.3.6; see merge_rules)
   std::uint64_t seed = 0;
   tessera::progress progress = {};
@@ -46,16 +46,23 @@ struct mesh_quilt_result {
 
 namespace detail {
 inline status check_quilt_options(const mesh_quilt_options& o) {
-  if (o.patch_cells < 0) return status::invalid_argument(detail::cat("mesh_quilt: patch_cells must be >= 0, got ", o.patch_cells));
-  if (!(o.lambda >= 0) || !std::isfinite(o.lambda)) return status::invalid_argument(detail::cat("mesh_quilt: lambda must be >= 0, got ", o.lambda));
-  if (o.max_samples < 1) return status::invalid_argument(detail::cat("mesh_quilt: max_samples must be >= 1, got ", o.max_samples));
-  if (!(o.tolerance >= 0)) return status::invalid_argument(detail::cat("mesh_quilt: tolerance must be >= 0, got ", o.tolerance));
-  if (o.icp_iterations < 1) return status::invalid_argument(detail::cat("mesh_quilt: icp_iterations must be >= 1, got ", o.icp_iterations));
+  if (o.patch_cells < 0)
+    return status::invalid_argument(detail::cat("mesh_quilt: patch_cells must be >= 0, got ", o.patch_cells));
+  if (!(o.lambda >= 0) || !std::isfinite(o.lambda))
+    return status::invalid_argument(detail::cat("mesh_quilt: lambda must be >= 0, got ", o.lambda));
+  if (o.max_samples < 1)
+    return status::invalid_argument(detail::cat("mesh_quilt: max_samples must be >= 1, got ", o.max_samples));
+  if (!(o.tolerance >= 0))
+    return status::invalid_argument(detail::cat("mesh_quilt: tolerance must be >= 0, got ", o.tolerance));
+  if (o.icp_iterations < 1)
+    return status::invalid_argument(detail::cat("mesh_quilt: icp_iterations must be >= 1, got ", o.icp_iterations));
   if (!(o.correspondence_distance >= 0) || !std::isfinite(o.correspondence_distance))
-    return status::invalid_argument(detail::cat("mesh_quilt: correspondence_distance must be >= 0, got ", o.correspondence_distance));
+    return status::invalid_argument(
+        detail::cat("mesh_quilt: correspondence_distance must be >= 0, got ", o.correspondence_distance));
   if (!(o.deform_weight > 0) || !std::isfinite(o.deform_weight))
     return status::invalid_argument(detail::cat("mesh_quilt: deform_weight must be > 0, got ", o.deform_weight));
-  if (o.smooth_rings < 0) return status::invalid_argument(detail::cat("mesh_quilt: smooth_rings must be >= 0, got ", o.smooth_rings));
+  if (o.smooth_rings < 0)
+    return status::invalid_argument(detail::cat("mesh_quilt: smooth_rings must be >= 0, got ", o.smooth_rings));
   return {};
 }
 template <class Engine>
@@ -67,8 +74,8 @@ mesh_quilt_result finish_quilt(Engine& engine) {
   return r;
 }
 inline mesh_quilt_params to_params(const mesh_quilt_options& o, bool constrained, std::uint64_t stream) {
-  return {o.patch_cells, o.lambda, o.max_samples, o.tolerance, o.icp, o.icp_iterations, o.correspondence_distance,
-          o.deform_weight, o.merge, o.smooth_rings, o.seed, stream, constrained, o.rules};
+  return {o.patch_cells,   o.lambda, o.max_samples,  o.tolerance, o.icp,  o.icp_iterations, o.correspondence_distance,
+          o.deform_weight, o.merge,  o.smooth_rings, o.seed,      stream, constrained,      o.rules};
 }
 }  // namespace detail
 
@@ -81,18 +88,19 @@ inline mesh_quilt_params to_params(const mesh_quilt_options& o, bool constrained
 /// translation candidates of each patch are scored through it). Time: about (area / patch area)
 /// patches, each O(candidates * samples * log F) plus the merges.
 template <Executor E = serial_executor>
-result<mesh_quilt_result> mesh_quilt(const quilt_exemplar& exemplar, double width, double height, const mesh_quilt_options& options = {},
-                                     E&& exec = {}) {
+result<mesh_quilt_result> mesh_quilt(const quilt_exemplar& exemplar, double width, double height,
+                                     const mesh_quilt_options& options = {}, E&& exec = {}) {
   if (!(width > 0) || !(height > 0) || !std::isfinite(width) || !std::isfinite(height))
     return status::invalid_argument(detail::cat("mesh_quilt: size must be positive, got ", width, " x ", height));
   if (exemplar.num_elements() == 0) return status::invalid_argument("mesh_quilt: the exemplar is empty (not prepared)");
   if (auto s = detail::check_quilt_options(options); !s) return s;
   const double cells = (width / exemplar.cell_size()) * (height / exemplar.cell_size());
   if (cells > double(1 << 26))
-    return status::size_overflow(detail::cat("mesh_quilt: ", width, " x ", height, " is ", cells, " grid cells of ", exemplar.cell_size(),
-                                             "; at most 2^26"));
-  detail::quilt_engine engine(exemplar, {0, 0, width, height}, detail::to_params(options, false, 0),
-                              [&exec](index_t n, const std::function<void(index_t)>& fn) { exec.parallel_for(0, n, fn); });
+    return status::size_overflow(detail::cat("mesh_quilt: ", width, " x ", height, " is ", cells, " grid cells of ",
+                                             exemplar.cell_size(), "; at most 2^26"));
+  detail::quilt_engine engine(
+      exemplar, {0, 0, width, height}, detail::to_params(options, false, 0),
+      [&exec](index_t n, const std::function<void(index_t)>& fn) { exec.parallel_for(0, n, fn); });
   if (auto s = engine.run(options.progress); !s) return s;
   return detail::finish_quilt(engine);
 }
@@ -100,8 +108,8 @@ result<mesh_quilt_result> mesh_quilt(const quilt_exemplar& exemplar, double widt
 /// mesh_quilt for any Mesh exemplar (prepared with default quilt_exemplar_options). Also rejects
 /// open or non-manifold exemplars (see prepare_quilt_exemplar).
 template <Mesh M, Executor E = serial_executor>
-result<mesh_quilt_result> mesh_quilt(const M& exemplar, double width, double height, const mesh_quilt_options& options = {},
-                                     E&& exec = {}) {
+result<mesh_quilt_result> mesh_quilt(const M& exemplar, double width, double height,
+                                     const mesh_quilt_options& options = {}, E&& exec = {}) {
   auto ex = prepare_quilt_exemplar(exemplar);
   if (!ex) return ex.error();
   return mesh_quilt(*ex, width, height, options, exec);

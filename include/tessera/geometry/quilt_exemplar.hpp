@@ -74,9 +74,11 @@ class quilt_exemplar {
 template <Mesh M>
 result<quilt_exemplar> prepare_quilt_exemplar(const M& exemplar, const quilt_exemplar_options& options) {
   if (!(options.cell_size >= 0) || !std::isfinite(options.cell_size))
-    return status::invalid_argument(detail::cat("quilt exemplar: cell_size must be finite and >= 0, got ", options.cell_size));
+    return status::invalid_argument(
+        detail::cat("quilt exemplar: cell_size must be finite and >= 0, got ", options.cell_size));
   if (!(options.long_element_fraction > 0))
-    return status::invalid_argument(detail::cat("quilt exemplar: long_element_fraction must be > 0, got ", options.long_element_fraction));
+    return status::invalid_argument(
+        detail::cat("quilt exemplar: long_element_fraction must be > 0, got ", options.long_element_fraction));
   auto elems = extract_elements(exemplar, {}, "exemplar");
   if (!elems) return elems.error();
   quilt_exemplar q;
@@ -85,7 +87,8 @@ result<quilt_exemplar> prepare_quilt_exemplar(const M& exemplar, const quilt_exe
   q.bounds_ = bounding_box(q.mesh_);
   const vec3 ext = q.bounds_.extent();
   if (!(ext.x > 0) || !(ext.y > 0))
-    return status::invalid_argument(detail::cat("exemplar: XY extent is ", ext.x, " x ", ext.y, "; a geometric texture needs area"));
+    return status::invalid_argument(
+        detail::cat("exemplar: XY extent is ", ext.x, " x ", ext.y, "; a geometric texture needs area"));
   std::vector<double> diam;
   for (const auto& e : q.elements_) {
     const vec3 x = e.box.extent();
@@ -96,14 +99,16 @@ result<quilt_exemplar> prepare_quilt_exemplar(const M& exemplar, const quilt_exe
   q.cell_ = options.cell_size > 0 ? options.cell_size : 0.5 * q.diameter_;
   if (!(q.cell_ > 0)) return status::invalid_argument("exemplar: elements have no XY extent");
   if (q.cell_ * 2 > std::min(ext.x, ext.y))
-    return status::invalid_argument(detail::cat("exemplar: ", ext.x, " x ", ext.y, " is smaller than two grid cells of ", q.cell_));
+    return status::invalid_argument(
+        detail::cat("exemplar: ", ext.x, " x ", ext.y, " is smaller than two grid cells of ", q.cell_));
   q.bvh_ = triangle_bvh(q.mesh_);
   q.normals_ = tessera::face_normals(q.mesh_);
   index_t f = 0;
   for (std::size_t e = 0; e < q.elements_.size(); ++e) {
     q.face_offset_.push_back(f);
     f += q.elements_[e].mesh.num_faces();
-    q.face_element_.insert(q.face_element_.end(), static_cast<std::size_t>(q.elements_[e].mesh.num_faces()), static_cast<index_t>(e));
+    q.face_element_.insert(q.face_element_.end(), static_cast<std::size_t>(q.elements_[e].mesh.num_faces()),
+                           static_cast<index_t>(e));
     const vec3 x = q.elements_[e].box.extent();
     q.long_.push_back(std::max(x.x, x.y) > options.long_element_fraction * std::min(ext.x, ext.y) ? 1 : 0);
   }

@@ -39,19 +39,24 @@ result<tile_border_layout> tile_border_vertices(const tri_mesh& tile, double til
   for (std::size_t v = 0; v < tile.positions.size(); ++v) {
     const vec3 p = tile.positions[v];
     if (!(p.x >= 0 && p.x <= tile_size && p.y >= 0 && p.y <= tile_size))
-      return status::invalid_argument(detail::cat("tile: vertex ", v, " (", p.x, ", ", p.y, ") lies outside [0, ", tile_size, "]^2"));
+      return status::invalid_argument(
+          detail::cat("tile: vertex ", v, " (", p.x, ", ", p.y, ") lies outside [0, ", tile_size, "]^2"));
     const bool on[4] = {p.y == tile_size, p.x == tile_size, p.y == 0, p.x == 0};
     const int count = on[0] + on[1] + on[2] + on[3];
     if (count > 1) return status::invalid_argument(detail::cat("tile: vertex ", v, " lies on a tile corner"));
     for (int s = 0; s < 4; ++s)
-      if (on[s]) l.side_of[v] = static_cast<signed char>(s), l.side[static_cast<std::size_t>(s)].push_back(static_cast<index_t>(v));
+      if (on[s])
+        l.side_of[v] = static_cast<signed char>(s),
+        l.side[static_cast<std::size_t>(s)].push_back(static_cast<index_t>(v));
   }
   for (int s = 0; s < 4; ++s) {
     const int a = is_horizontal_side(s) ? 0 : 1;
-    std::sort(l.side[static_cast<std::size_t>(s)].begin(), l.side[static_cast<std::size_t>(s)].end(), [&](index_t x, index_t y) {
-      const vec3 p = tile.positions[static_cast<std::size_t>(x)], q = tile.positions[static_cast<std::size_t>(y)];
-      return p[a] != q[a] ? p[a] < q[a] : p.z != q.z ? p.z < q.z : x < y;
-    });
+    std::sort(l.side[static_cast<std::size_t>(s)].begin(), l.side[static_cast<std::size_t>(s)].end(),
+              [&](index_t x, index_t y) {
+                const vec3 p = tile.positions[static_cast<std::size_t>(x)],
+                           q = tile.positions[static_cast<std::size_t>(y)];
+                return p[a] != q[a] ? p[a] < q[a] : p.z != q.z ? p.z < q.z : x < y;
+              });
   }
   return l;
 }
@@ -75,7 +80,8 @@ index_t tile_corner_crossings(const tri_mesh& tile, double tile_size) {
     }
   index_t n = 0;
   for (unsigned b : sides) {
-    const bool ns = b & (border_bit(side_north) | border_bit(side_south)), ew = b & (border_bit(side_east) | border_bit(side_west));
+    const bool ns = b & (border_bit(side_north) | border_bit(side_south)),
+               ew = b & (border_bit(side_east) | border_bit(side_west));
     n += ns && ew ? 1 : 0;
   }
   return n;
@@ -96,7 +102,8 @@ index_t tile_set_corner_crossings(const geometric_tile_set& set) {
 /// tile_border_vertices, a set whose sizes disagree.
 template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
 result<index_t> tile_set_border_mismatch(const geometric_tile_set& set, double tolerance = 1e-6) {
-  if (set.tiles.size() != set.edges.size()) return status::invalid_argument("tile set: tiles and edges differ in count");
+  if (set.tiles.size() != set.edges.size())
+    return status::invalid_argument("tile set: tiles and edges differ in count");
   const double w = set.tile_size;
   struct border {
     std::vector<vec3> pts;  // (along, height, 0) relative to the side line
@@ -114,7 +121,8 @@ result<index_t> tile_set_border_mismatch(const geometric_tile_set& set, double t
     }
     for (const auto& f : t.faces)
       for (int k = 0; k < 3; ++k) {
-        const auto x = rank.find(f[static_cast<std::size_t>(k)]), y = rank.find(f[static_cast<std::size_t>((k + 1) % 3)]);
+        const auto x = rank.find(f[static_cast<std::size_t>(k)]),
+                   y = rank.find(f[static_cast<std::size_t>((k + 1) % 3)]);
         if (x != rank.end() && y != rank.end()) b.edges.push_back(std::minmax(x->second, y->second));
       }
     std::sort(b.edges.begin(), b.edges.end());
@@ -138,8 +146,10 @@ result<index_t> tile_set_border_mismatch(const geometric_tile_set& set, double t
       auto& refs = is_horizontal_side(s) ? ref_h : ref_v;
       const int color = s == side_north ? e.north : s == side_east ? e.east : s == side_south ? e.south : e.west;
       auto it = refs.find(color);
-      if (it == refs.end()) refs.emplace(color, b);
-      else mismatches += same(it->second, b) ? 0 : 1;
+      if (it == refs.end())
+        refs.emplace(color, b);
+      else
+        mismatches += same(it->second, b) ? 0 : 1;
     }
   }
   return mismatches;
@@ -170,8 +180,9 @@ class geometric_plane_layout {
   template <Executor E = serial_executor>
   status write(std::span<vec3> positions, std::span<std::array<index_t, 3>> faces, E&& exec = {}) const {
     if (static_cast<index_t>(positions.size()) != num_vertices() || static_cast<index_t>(faces.size()) != num_faces())
-      return status::invalid_argument(detail::cat("geometric_plane_layout::write: storage for ", positions.size(), " vertices and ", faces.size(),
-                                                  " faces, the plane has ", num_vertices(), " and ", num_faces()));
+      return status::invalid_argument(detail::cat("geometric_plane_layout::write: storage for ", positions.size(),
+                                                  " vertices and ", faces.size(), " faces, the plane has ",
+                                                  num_vertices(), " and ", num_faces()));
     exec.parallel_for(0, cols_ * rows_, [&](index_t cell) { write_cell(cell, positions.data(), faces.data()); });
     return {};
   }
@@ -181,9 +192,9 @@ class geometric_plane_layout {
   friend result<geometric_plane_layout> plan_geometric_plane(const geometric_tile_set&, const C&, index_t, index_t);
 
   struct tile_plan {
-    std::vector<index_t> owned;   // tile vertices every cell writes, in output order (all but south/east sides)
+    std::vector<index_t> owned;        // tile vertices every cell writes, in output order (all but south/east sides)
     std::vector<index_t> south, east;  // tile vertices on the south / east side, canonical order
-    std::vector<index_t> north_rank, west_rank;  // owned rank of the k-th north / west vertex
+    std::vector<index_t> north_rank, west_rank;      // owned rank of the k-th north / west vertex
     std::vector<std::array<std::int32_t, 3>> faces;  // local ids: < owned.size() owned rank, then south k, then east k
   };
 
@@ -202,7 +213,8 @@ class geometric_plane_layout {
     border.resize(ns + ne);
     index_t extra = base + static_cast<index_t>(no);
     if (r == rows_ - 1) {
-      for (std::size_t k = 0; k < ns; ++k) dst[no + k] = src[static_cast<std::size_t>(P.south[k])] + off, border[k] = extra + static_cast<index_t>(k);
+      for (std::size_t k = 0; k < ns; ++k)
+        dst[no + k] = src[static_cast<std::size_t>(P.south[k])] + off, border[k] = extra + static_cast<index_t>(k);
       extra += static_cast<index_t>(ns);
     } else {
       const std::size_t below = static_cast<std::size_t>(cell + cols_);
@@ -211,7 +223,8 @@ class geometric_plane_layout {
     }
     if (c == cols_ - 1) {
       vec3* de = out_pos + extra;
-      for (std::size_t k = 0; k < ne; ++k) de[k] = src[static_cast<std::size_t>(P.east[k])] + off, border[ns + k] = extra + static_cast<index_t>(k);
+      for (std::size_t k = 0; k < ne; ++k)
+        de[k] = src[static_cast<std::size_t>(P.east[k])] + off, border[ns + k] = extra + static_cast<index_t>(k);
     } else {
       const std::size_t right = static_cast<std::size_t>(cell + 1);
       const tile_plan& B = plan_[static_cast<std::size_t>(type_[right])];
@@ -222,15 +235,16 @@ class geometric_plane_layout {
     std::array<index_t, 3>* df = out_faces + fbase_[static_cast<std::size_t>(cell)];
     for (std::size_t f = 0; f < P.faces.size(); ++f) {
       const auto& l = P.faces[f];
-      df[f] = {l[0] < owned ? base + l[0] : bd[l[0] - owned], l[1] < owned ? base + l[1] : bd[l[1] - owned], l[2] < owned ? base + l[2] : bd[l[2] - owned]};
+      df[f] = {l[0] < owned ? base + l[0] : bd[l[0] - owned], l[1] < owned ? base + l[1] : bd[l[1] - owned],
+               l[2] < owned ? base + l[2] : bd[l[2] - owned]};
     }
   }
 
   const geometric_tile_set* set_ = nullptr;
   index_t cols_ = 0, rows_ = 0;
   double w_ = 0;
-  std::vector<index_t> type_;          // tile per cell
-  std::vector<tile_plan> plan_;        // per tile (empty when unused)
+  std::vector<index_t> type_;           // tile per cell
+  std::vector<tile_plan> plan_;         // per tile (empty when unused)
   std::vector<index_t> vbase_, fbase_;  // output offsets per cell (+ total)
 };
 
@@ -243,13 +257,15 @@ class geometric_plane_layout {
 /// set), more than 2^31 output vertices. O(cells + size of the tiles used); not thread-safe only in
 /// the sense that `set` must not change while the layout is used.
 template <TileColoring C>
-result<geometric_plane_layout> plan_geometric_plane(const geometric_tile_set& set, const C& coloring, index_t cols, index_t rows) {
+result<geometric_plane_layout> plan_geometric_plane(const geometric_tile_set& set, const C& coloring, index_t cols,
+                                                    index_t rows) {
   if (auto s = check_grid_coloring(coloring, cols, rows); !s) return s;
   if (coloring.num_colors(side_north) != set.horizontal_colors || coloring.num_colors(side_east) != set.vertical_colors)
-    return status::invalid_argument(detail::cat("tile_geometric_plane: the colouring has ", coloring.num_colors(side_north), " x ",
-                                                coloring.num_colors(side_east), " colours, the tile set ", set.horizontal_colors, " x ",
-                                                set.vertical_colors));
-  if (set.tiles.empty() || set.tiles.size() != set.edges.size()) return status::invalid_argument("tile_geometric_plane: empty tile set");
+    return status::invalid_argument(detail::cat(
+        "tile_geometric_plane: the colouring has ", coloring.num_colors(side_north), " x ",
+        coloring.num_colors(side_east), " colours, the tile set ", set.horizontal_colors, " x ", set.vertical_colors));
+  if (set.tiles.empty() || set.tiles.size() != set.edges.size())
+    return status::invalid_argument("tile_geometric_plane: empty tile set");
   std::map<std::array<int, 4>, index_t> by_edges;
   for (std::size_t t = 0; t < set.edges.size(); ++t) {
     const auto& e = set.edges[t];
@@ -261,11 +277,12 @@ result<geometric_plane_layout> plan_geometric_plane(const geometric_tile_set& se
   L.type_.resize(ncells);
   std::vector<unsigned char> used(set.tiles.size(), 0);
   for (index_t f = 0; f < cols * rows; ++f) {
-    const std::array<int, 4> key{coloring.edge_color(f, 0), coloring.edge_color(f, 1), coloring.edge_color(f, 2), coloring.edge_color(f, 3)};
+    const std::array<int, 4> key{coloring.edge_color(f, 0), coloring.edge_color(f, 1), coloring.edge_color(f, 2),
+                                 coloring.edge_color(f, 3)};
     const auto it = by_edges.find(key);
     if (it == by_edges.end())
-      return status::invalid_argument(detail::cat("tile_geometric_plane: cell ", f, " needs edges [", key[0], ", ", key[1], ", ", key[2], ", ",
-                                                  key[3], "] which no tile has"));
+      return status::invalid_argument(detail::cat("tile_geometric_plane: cell ", f, " needs edges [", key[0], ", ",
+                                                  key[1], ", ", key[2], ", ", key[3], "] which no tile has"));
     L.type_[static_cast<std::size_t>(f)] = it->second;
     used[static_cast<std::size_t>(it->second)] = 1;
   }
@@ -275,18 +292,21 @@ result<geometric_plane_layout> plan_geometric_plane(const geometric_tile_set& se
     if (!used[t]) continue;
     const tri_mesh& tile = set.tiles[t];
     if (tile.positions.size() > std::size_t{1} << 30)
-      return status::size_overflow(detail::cat("tile_geometric_plane: tile ", t, " has ", tile.positions.size(), " vertices"));
+      return status::size_overflow(
+          detail::cat("tile_geometric_plane: tile ", t, " has ", tile.positions.size(), " vertices"));
     auto b = tile_border_vertices(tile, set.tile_size);
     if (!b) return b.error();
     auto& P = L.plan_[t];
     std::vector<std::int32_t> local(tile.positions.size(), -1);
     for (std::size_t v = 0; v < tile.positions.size(); ++v) {
       const int s = b->side_of[v];
-      if (s != side_south && s != side_east) local[v] = static_cast<std::int32_t>(P.owned.size()), P.owned.push_back(static_cast<index_t>(v));
+      if (s != side_south && s != side_east)
+        local[v] = static_cast<std::int32_t>(P.owned.size()), P.owned.push_back(static_cast<index_t>(v));
     }
     P.south = std::move(b->side[side_south]);
     P.east = std::move(b->side[side_east]);
-    for (std::size_t k = 0; k < P.south.size(); ++k) local[static_cast<std::size_t>(P.south[k])] = static_cast<std::int32_t>(P.owned.size() + k);
+    for (std::size_t k = 0; k < P.south.size(); ++k)
+      local[static_cast<std::size_t>(P.south[k])] = static_cast<std::int32_t>(P.owned.size() + k);
     for (std::size_t k = 0; k < P.east.size(); ++k)
       local[static_cast<std::size_t>(P.east[k])] = static_cast<std::int32_t>(P.owned.size() + P.south.size() + k);
     for (index_t v : b->side[side_north]) P.north_rank.push_back(local[static_cast<std::size_t>(v)]);
@@ -296,20 +316,25 @@ result<geometric_plane_layout> plan_geometric_plane(const geometric_tile_set& se
       for (std::size_t k = 0; k < 3; ++k) {
         const index_t v = tile.faces[f][k];
         if (v < 0 || v >= tile.num_vertices())
-          return status::invalid_argument(detail::cat("tile_geometric_plane: tile ", t, " face ", f, " has vertex ", v, " out of range"));
+          return status::invalid_argument(
+              detail::cat("tile_geometric_plane: tile ", t, " face ", f, " has vertex ", v, " out of range"));
         P.faces[f][k] = local[static_cast<std::size_t>(v)];
       }
   }
   // neighbours must agree on their shared border's vertex count
-  const auto plan_at = [&](index_t cell) -> const auto& { return L.plan_[static_cast<std::size_t>(L.type_[static_cast<std::size_t>(cell)])]; };
+  const auto plan_at = [&](index_t cell) -> const auto& {
+    return L.plan_[static_cast<std::size_t>(L.type_[static_cast<std::size_t>(cell)])];
+  };
   for (index_t r = 0; r < rows; ++r)
     for (index_t c = 0; c < cols; ++c) {
       const auto& a = plan_at(r * cols + c);
       if (r + 1 < rows && a.south.size() != plan_at((r + 1) * cols + c).north_rank.size())
-        return status::invalid_argument(detail::cat("tile_geometric_plane: tiles at cells ", r * cols + c, " and ", (r + 1) * cols + c,
+        return status::invalid_argument(detail::cat("tile_geometric_plane: tiles at cells ", r * cols + c, " and ",
+                                                    (r + 1) * cols + c,
                                                     " have different border vertex counts (inconsistent tile set)"));
       if (c + 1 < cols && a.east.size() != plan_at(r * cols + c + 1).west_rank.size())
-        return status::invalid_argument(detail::cat("tile_geometric_plane: tiles at cells ", r * cols + c, " and ", r * cols + c + 1,
+        return status::invalid_argument(detail::cat("tile_geometric_plane: tiles at cells ", r * cols + c, " and ",
+                                                    r * cols + c + 1,
                                                     " have different border vertex counts (inconsistent tile set)"));
     }
   // vertex and face offsets per cell
@@ -335,7 +360,8 @@ result<geometric_plane_layout> plan_geometric_plane(const geometric_tile_set& se
 /// Errors: those of plan_geometric_plane. Cells are filled in parallel through `exec`; the mesh is
 /// identical for every executor. O(output size).
 template <TileColoring C, Executor E = serial_executor>
-result<tri_mesh> tile_geometric_plane(const geometric_tile_set& set, const C& coloring, index_t cols, index_t rows, E&& exec = {}) {
+result<tri_mesh> tile_geometric_plane(const geometric_tile_set& set, const C& coloring, index_t cols, index_t rows,
+                                      E&& exec = {}) {
   auto plan = plan_geometric_plane(set, coloring, cols, rows);
   if (!plan) return plan.error();
   tri_mesh out;

@@ -33,11 +33,11 @@ TESSERA_NAMESPACE_BEGIN
 
 /// Options of compose_tiles().
 struct compose_options {
-  index_t x = 0;                                   ///< plane pixel shown at output column 0
-  index_t y = 0;                                   ///< plane pixel shown at output row 0
-  bool outline = false;                            ///< draw the tile borders (first row and column of every tile)
+  index_t x = 0;         ///< plane pixel shown at output column 0
+  index_t y = 0;         ///< plane pixel shown at output row 0
+  bool outline = false;  ///< draw the tile borders (first row and column of every tile)
   std::array<float, 4> outline_color = {1.0f, 0.1f, 0.1f, 1.0f};  ///< RGBA in [0, 1]
-  std::uint64_t seed = 1;                          ///< picks among variants (tiles with equal edges), per cell
+  std::uint64_t seed = 1;  ///< picks among variants (tiles with equal edges), per cell
 };
 
 namespace detail {
@@ -60,29 +60,32 @@ inline constexpr bool is_raw_output = std::is_same_v<O, image_view<T, C>> || std
 /// Complexity: O(cells in the window · log n + output pixels), the latter as row memcpys.
 /// Thread safety: reads set and coloring, writes `out` only.
 template <Channel T, int C, class Coloring, WritableImage O, Executor X = serial_executor>
-  requires GridTileColoring<Coloring> || PlaneTileColoring<Coloring>
+requires GridTileColoring<Coloring> || PlaneTileColoring<Coloring>
 [[nodiscard]] status compose_tiles(const wang_tile_set<T, C>& set, const Coloring& coloring, O& out,
                                    const compose_options& options = {}, X&& exec = {}) {
   if (set.size() == 0 || set.tile_size() <= 0) return status::invalid_argument("compose_tiles: the tile set is empty");
   if (auto s = validate_image(out, "output"); !s) return s;
   const tile_set_edges& edges = set.edges();
-  if (coloring.num_colors(side_north) != edges.horizontal_colors() || coloring.num_colors(side_east) != edges.vertical_colors())
-    return status::invalid_argument(detail::cat("compose_tiles: the colouring uses ", coloring.num_colors(side_north), " x ",
-                                                coloring.num_colors(side_east), " colours but the tile set has ",
+  if (coloring.num_colors(side_north) != edges.horizontal_colors() ||
+      coloring.num_colors(side_east) != edges.vertical_colors())
+    return status::invalid_argument(detail::cat("compose_tiles: the colouring uses ", coloring.num_colors(side_north),
+                                                " x ", coloring.num_colors(side_east), " colours but the tile set has ",
                                                 edges.horizontal_colors(), " x ", edges.vertical_colors()));
   const index_t ts = set.tile_size(), w = width_of(out), h = height_of(out);
   if (options.x > (index_t{1} << 52) || options.x < -(index_t{1} << 52) || options.y > (index_t{1} << 52) ||
       options.y < -(index_t{1} << 52))
-    return status::out_of_range(detail::cat("compose_tiles: window origin (", options.x, ", ", options.y, ") is too far out"));
+    return status::out_of_range(
+        detail::cat("compose_tiles: window origin (", options.x, ", ", options.y, ") is too far out"));
   const index_t c0 = floor_div(options.x, ts), c1 = floor_div(options.x + w - 1, ts);
   const index_t r0 = floor_div(options.y, ts), r1 = floor_div(options.y + h - 1, ts);
   if constexpr (GridTileColoring<Coloring>) {
-    if (auto s = validate_grid_coloring(coloring); !s) return status(s.code(), detail::cat("compose_tiles: ", s.message()));
+    if (auto s = validate_grid_coloring(coloring); !s)
+      return status(s.code(), detail::cat("compose_tiles: ", s.message()));
     const index_t cols = static_cast<index_t>(coloring.cols()), rows = static_cast<index_t>(coloring.rows());
     if (c0 < 0 || r0 < 0 || c1 >= cols || r1 >= rows)
-      return status::out_of_range(detail::cat("compose_tiles: window [", options.x, ", ", options.x + w, ") x [", options.y, ", ",
-                                              options.y + h, ") leaves the ", cols * ts, " x ", rows * ts,
-                                              " pixels of the ", cols, " x ", rows, " colouring"));
+      return status::out_of_range(detail::cat("compose_tiles: window [", options.x, ", ", options.x + w, ") x [",
+                                              options.y, ", ", options.y + h, ") leaves the ", cols * ts, " x ",
+                                              rows * ts, " pixels of the ", cols, " x ", rows, " colouring"));
   }
   // Tile of every cell of the window, validated before anything is written.
   const index_t ncols = c1 - c0 + 1, nrows = r1 - r0 + 1;
@@ -92,9 +95,9 @@ template <Channel T, int C, class Coloring, WritableImage O, Executor X = serial
       const wang_edges e = cell_edges(coloring, c, r);
       const index_t t = tile_at_cell(edges, e, options.seed, c, r);
       if (t < 0)
-        return status::invalid_argument(detail::cat("compose_tiles: the colouring violates the tile set: cell (", c, ", ", r,
-                                                    ") needs edges [north ", e.north, ", east ", e.east, ", south ", e.south,
-                                                    ", west ", e.west, "] and the set has no such tile"));
+        return status::invalid_argument(detail::cat(
+            "compose_tiles: the colouring violates the tile set: cell (", c, ", ", r, ") needs edges [north ", e.north,
+            ", east ", e.east, ", south ", e.south, ", west ", e.west, "] and the set has no such tile"));
       cell_tile[static_cast<std::size_t>((r - r0) * ncols + (c - c0))] = t;
     }
   const pixel<T, C> line = convert_pixel<pixel<T, C>>(pixel<float, 4>{options.outline_color});
@@ -112,7 +115,8 @@ template <Channel T, int C, class Coloring, WritableImage O, Executor X = serial
         while (ox < w) {
           const index_t px = options.x + ox, c = floor_div(px, ts), tx = px - c * ts;
           const index_t n = std::min(ts - tx, w - ox);
-          std::memcpy(dst + ox * C, set.tile_row(row_tiles[c - c0], ty) + tx * C, static_cast<std::size_t>(n * C) * sizeof(T));
+          std::memcpy(dst + ox * C, set.tile_row(row_tiles[c - c0], ty) + tx * C,
+                      static_cast<std::size_t>(n * C) * sizeof(T));
           ox += n;
         }
         if (options.outline) {

@@ -56,8 +56,9 @@ status validate_inpaint_inputs(const I& image, const M& mask, const O& out, inde
 }
 
 template <Channel T, int C, WritableImage O, class X>
-status constrained_quilt_run(detail::quilt_source<T, C>& src, image_buffer<T, C> image, const std::vector<std::uint8_t>& hole,
-                             O& out, const quilt_options& options, index_t patch, index_t overlap, X& exec) {
+status constrained_quilt_run(detail::quilt_source<T, C>& src, image_buffer<T, C> image,
+                             const std::vector<std::uint8_t>& hole, O& out, const quilt_options& options, index_t patch,
+                             index_t overlap, X& exec) {
   const index_t w = image.width(), h = image.height();
   if (w < patch || h < patch)
     return status::invalid_argument(detail::cat("patch_size ", patch, " is larger than the ", w, " x ", h, " image"));
@@ -92,14 +93,17 @@ status constrained_quilt_run(detail::quilt_source<T, C>& src, image_buffer<T, C>
 /// Complexity: O(patches over the hole's bounding box · candidates · window pixels).
 /// Thread safety: reads the inputs, writes `out` only.
 template <Image E, Image I, Image M, WritableImage O, Executor X = serial_executor>
-[[nodiscard]] status constrained_quilt(const E& exemplar, const I& image, const M& mask, O& out, const quilt_options& options = {},
-                                       X&& exec = {}) {
-  if (auto s = detail::validate_quilt_extent(exemplar, "exemplar", max_quilt_exemplar_pixels, "max_quilt_exemplar_pixels"); !s)
+[[nodiscard]] status constrained_quilt(const E& exemplar, const I& image, const M& mask, O& out,
+                                       const quilt_options& options = {}, X&& exec = {}) {
+  if (auto s =
+          detail::validate_quilt_extent(exemplar, "exemplar", max_quilt_exemplar_pixels, "max_quilt_exemplar_pixels");
+      !s)
     return s;
   if (auto s = detail::validate_finite_pixels(exemplar, "exemplar"); !s) return s;
   if (auto s = detail::validate_inpaint_inputs(image, mask, out, max_quilt_pixels, "max_quilt_pixels"); !s) return s;
   index_t patch = 0, overlap = 0;
-  if (auto s = detail::resolve_quilt_sizes(options, width_of(exemplar), height_of(exemplar), patch, overlap); !s) return s;
+  if (auto s = detail::resolve_quilt_sizes(options, width_of(exemplar), height_of(exemplar), patch, overlap); !s)
+    return s;
   using T = channel_t<I>;
   constexpr int C = channels_v<I>;
   auto ex = to_buffer<T, C>(exemplar, "exemplar");
@@ -107,7 +111,8 @@ template <Image E, Image I, Image M, WritableImage O, Executor X = serial_execut
   auto img = to_buffer<T, C>(image, "image");
   if (!img) return img.error();
   detail::quilt_source<T, C> src(std::move(*ex));
-  return detail::constrained_quilt_run(src, std::move(*img), detail::read_hole_mask(mask), out, options, patch, overlap, exec);
+  return detail::constrained_quilt_run(src, std::move(*img), detail::read_hole_mask(mask), out, options, patch, overlap,
+                                       exec);
 }
 
 /// Inpainting from the image itself: as above with the image as exemplar, but only exemplar windows
@@ -115,8 +120,11 @@ template <Image E, Image I, Image M, WritableImage O, Executor X = serial_execut
 /// limited to max_quilt_exemplar_pixels), plus invalid_argument when the hole leaves no hole-free
 /// window of the patch size.
 template <Image I, Image M, WritableImage O, Executor X = serial_executor>
-[[nodiscard]] status constrained_quilt(const I& image, const M& mask, O& out, const quilt_options& options = {}, X&& exec = {}) {
-  if (auto s = detail::validate_inpaint_inputs(image, mask, out, max_quilt_exemplar_pixels, "max_quilt_exemplar_pixels"); !s)
+[[nodiscard]] status constrained_quilt(const I& image, const M& mask, O& out, const quilt_options& options = {},
+                                       X&& exec = {}) {
+  if (auto s =
+          detail::validate_inpaint_inputs(image, mask, out, max_quilt_exemplar_pixels, "max_quilt_exemplar_pixels");
+      !s)
     return s;
   index_t patch = 0, overlap = 0;
   if (auto s = detail::resolve_quilt_sizes(options, width_of(image), height_of(image), patch, overlap); !s) return s;
@@ -128,9 +136,10 @@ template <Image I, Image M, WritableImage O, Executor X = serial_executor>
   detail::quilt_source<T, C> src(*img);
   src.forbid_windows(hole, patch);
   if (!src.any_allowed(patch))
-    return status::invalid_argument(detail::cat("the mask leaves no ", patch, " x ", patch,
-                                                " window of the image free of masked pixels to copy from; pass a separate "
-                                                "exemplar or a smaller patch_size"));
+    return status::invalid_argument(
+        detail::cat("the mask leaves no ", patch, " x ", patch,
+                    " window of the image free of masked pixels to copy from; pass a separate "
+                    "exemplar or a smaller patch_size"));
   return detail::constrained_quilt_run(src, std::move(*img), hole, out, options, patch, overlap, exec);
 }
 

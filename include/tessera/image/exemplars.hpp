@@ -113,7 +113,8 @@ inline rgb exemplar_pixel(exemplar_kind kind, const counter_rng& rng, double x, 
     }
     case exemplar_kind::cells: {
       const double cell = size / 6;
-      const auto cx = static_cast<std::int64_t>(std::floor(x / cell)), cy = static_cast<std::int64_t>(std::floor(y / cell));
+      const auto cx = static_cast<std::int64_t>(std::floor(x / cell)),
+                 cy = static_cast<std::int64_t>(std::floor(y / cell));
       double d1 = 1e30, d2 = 1e30;
       std::int64_t best_x = 0, best_y = 0;
       for (std::int64_t j = cy - 1; j <= cy + 1; ++j)
@@ -121,8 +122,13 @@ inline rgb exemplar_pixel(exemplar_kind kind, const counter_rng& rng, double x, 
           const double px = (static_cast<double>(i) + 0.15 + 0.7 * rng.uniform(i, j, 0)) * cell;
           const double py = (static_cast<double>(j) + 0.15 + 0.7 * rng.uniform(i, j, 1)) * cell;
           const double d = std::hypot(x - px, y - py);
-          if (d < d1) { d2 = d1; d1 = d; best_x = i; best_y = j; }
-          else if (d < d2) d2 = d;
+          if (d < d1) {
+            d2 = d1;
+            d1 = d;
+            best_x = i;
+            best_y = j;
+          } else if (d < d2)
+            d2 = d;
         }
       const double edge = std::clamp((d2 - d1) / (cell * 0.08), 0.0, 1.0);
       const rgb stone = mix({0.45, 0.40, 0.35}, {0.80, 0.74, 0.64}, rng.uniform(best_x, best_y, 2));
@@ -130,7 +136,8 @@ inline rgb exemplar_pixel(exemplar_kind kind, const counter_rng& rng, double x, 
     }
     case exemplar_kind::weave: {
       const double period = size / 8, half = period / 2;
-      const auto tx = static_cast<std::int64_t>(std::floor(x / half)), ty = static_cast<std::int64_t>(std::floor(y / half));
+      const auto tx = static_cast<std::int64_t>(std::floor(x / half)),
+                 ty = static_cast<std::int64_t>(std::floor(y / half));
       const double lx = x - static_cast<double>(tx) * half, ly = y - static_cast<double>(ty) * half;
       const bool warp_on_top = ((tx + ty) & 1) == 0;
       const double across = warp_on_top ? lx / half : ly / half;  // position across the visible thread
@@ -141,9 +148,11 @@ inline rgb exemplar_pixel(exemplar_kind kind, const counter_rng& rng, double x, 
     }
     case exemplar_kind::dots: {
       const double cell = size / 8;
-      const auto cx = static_cast<std::int64_t>(std::floor(x / cell)), cy = static_cast<std::int64_t>(std::floor(y / cell));
+      const auto cx = static_cast<std::int64_t>(std::floor(x / cell)),
+                 cy = static_cast<std::int64_t>(std::floor(y / cell));
       const double jx = (rng.uniform(cx, cy, 0) - 0.5) * cell * 0.2, jy = (rng.uniform(cx, cy, 1) - 0.5) * cell * 0.2;
-      const double d = std::hypot(x - (static_cast<double>(cx) + 0.5) * cell - jx, y - (static_cast<double>(cy) + 0.5) * cell - jy);
+      const double d =
+          std::hypot(x - (static_cast<double>(cx) + 0.5) * cell - jx, y - (static_cast<double>(cy) + 0.5) * cell - jy);
       const double t = std::clamp((cell * 0.3 - d) / 1.5, 0.0, 1.0);
       return mix({0.93, 0.90, 0.82}, {0.75, 0.15, 0.12}, t);
     }
@@ -163,7 +172,8 @@ result<image_buffer<T, C>> make_exemplar(exemplar_kind kind, const exemplar_opti
   for (index_t y = 0; y < opts.height; ++y)
     for (index_t x = 0; x < opts.width; ++x) {
       const auto c = detail::exemplar_pixel(kind, rng, static_cast<double>(x), static_cast<double>(y), size);
-      const pixel<float, 3> rgb{static_cast<float>(std::clamp(c[0], 0.0, 1.0)), static_cast<float>(std::clamp(c[1], 0.0, 1.0)),
+      const pixel<float, 3> rgb{static_cast<float>(std::clamp(c[0], 0.0, 1.0)),
+                                static_cast<float>(std::clamp(c[1], 0.0, 1.0)),
                                 static_cast<float>(std::clamp(c[2], 0.0, 1.0))};
       out.write(x, y, convert_pixel<pixel<T, C>>(rgb));
     }

@@ -32,9 +32,9 @@
 TESSERA_NAMESPACE_BEGIN
 
 struct neighborhood_energy_options {
-  index_t window = 5;       ///< neighbourhood side in pixels (>= 1, at most the smaller image side)
-  index_t sample_step = 2;  ///< output windows are taken every sample_step pixels in x and y (>= 1)
-  bool brute_force = false; ///< compare with every exemplar window instead of the kd-tree (same result)
+  index_t window = 5;        ///< neighbourhood side in pixels (>= 1, at most the smaller image side)
+  index_t sample_step = 2;   ///< output windows are taken every sample_step pixels in x and y (>= 1)
+  bool brute_force = false;  ///< compare with every exemplar window instead of the kd-tree (same result)
 };
 
 namespace detail {
@@ -78,7 +78,8 @@ result<double> neighborhood_energy(const O& output, const E& exemplar, const nei
   const index_t w = opts.window;
   if (w < 1) return status::invalid_argument(detail::cat("neighborhood_energy: window must be >= 1, got ", w));
   if (opts.sample_step < 1)
-    return status::invalid_argument(detail::cat("neighborhood_energy: sample_step must be >= 1, got ", opts.sample_step));
+    return status::invalid_argument(
+        detail::cat("neighborhood_energy: sample_step must be >= 1, got ", opts.sample_step));
   if (w > width_of(exemplar) || w > height_of(exemplar) || w > width_of(output) || w > height_of(output))
     return status::invalid_argument(detail::cat("neighborhood_energy: window ", w, " does not fit the output (",
                                                 width_of(output), " x ", height_of(output), ") and the exemplar (",
@@ -95,7 +96,8 @@ result<double> neighborhood_energy(const O& output, const E& exemplar, const nei
   const index_t qnx = (out->width() - w) / opts.sample_step + 1, qny = (out->height() - w) / opts.sample_step + 1;
 
   // kd-tree over PCA projections of the exemplar windows (unless brute force is cheaper or asked for)
-  const bool brute = opts.brute_force || static_cast<double>(ne) * static_cast<double>(qnx * qny) * static_cast<double>(D) < 4e6;
+  const bool brute =
+      opts.brute_force || static_cast<double>(ne) * static_cast<double>(qnx * qny) * static_cast<double>(D) < 4e6;
   // Eigen and the kd-tree through dependent_t: compiled only where neighborhood_energy is used
   using real = detail::dependent_t<double, E>;
   using matrix = Eigen::Matrix<real, Eigen::Dynamic, Eigen::Dynamic>;
@@ -142,7 +144,9 @@ result<double> neighborhood_energy(const O& output, const E& exemplar, const nei
         const row qp = qv.transpose() * basis;
         index.search(
             qp.data(), 1,
-            [&](std::uint32_t i, double bound) { return detail::squared_distance(q.data(), windows.data() + i * D, w, w * C, bound); },
+            [&](std::uint32_t i, double bound) {
+              return detail::squared_distance(q.data(), windows.data() + i * D, w, w * C, bound);
+            },
             best);
         nearest = best.front().dist;
       }
@@ -187,9 +191,9 @@ result<double> seam_gradient_ratio(const I& image, std::span<const seam_segment>
     const seam_segment& s = seams[i];
     const index_t across = s.vertical ? w : h, along = s.vertical ? h : w;
     if (s.position < 1 || s.position > across - 1 || s.begin < 0 || s.begin >= s.end || s.end > along)
-      return status::out_of_range(detail::cat("seam_gradient_ratio: seams[", i, "] (", s.vertical ? "vertical" : "horizontal",
-                                              ", position ", s.position, ", rows/columns [", s.begin, ", ", s.end,
-                                              ")) lies outside the ", w, " x ", h, " image"));
+      return status::out_of_range(detail::cat(
+          "seam_gradient_ratio: seams[", i, "] (", s.vertical ? "vertical" : "horizontal", ", position ", s.position,
+          ", rows/columns [", s.begin, ", ", s.end, ")) lies outside the ", w, " x ", h, " image"));
   }
   auto img = to_buffer<float, C>(image, "image");
   auto ref = to_buffer<float, C>(reference, "reference");
@@ -228,7 +232,8 @@ result<double> seam_gradient_ratio(const I& image, std::span<const seam_segment>
   const double expected = (static_cast<double>(n_vertical) * mean_x + static_cast<double>(n_horizontal) * mean_y) /
                           static_cast<double>(n_vertical + n_horizontal);
   if (!(expected > 0))
-    return status::invalid_argument("seam_gradient_ratio: reference has no gradients in the seams' directions (flat image)");
+    return status::invalid_argument(
+        "seam_gradient_ratio: reference has no gradients in the seams' directions (flat image)");
   return seam_sum / static_cast<double>(n_vertical + n_horizontal) / expected;
 }
 
@@ -255,7 +260,8 @@ result<double> histogram_distance(const A& a, const B& b, int bins = 32) {
     for (index_t i = 0; i < n; ++i) {
       const float v = img.data()[i * C + c];
       const double u = v > 0 ? std::min(static_cast<double>(v), 1.0) : 0.0;  // NaN -> 0
-      hist[static_cast<std::size_t>(std::min<index_t>(bins - 1, static_cast<index_t>(u * bins)))] += 1.0 / static_cast<double>(n);
+      hist[static_cast<std::size_t>(std::min<index_t>(bins - 1, static_cast<index_t>(u * bins)))] +=
+          1.0 / static_cast<double>(n);
     }
     return hist;
   };
@@ -283,8 +289,9 @@ result<double> repetition_score(const I& image, index_t min_offset) {
   if (auto s = validate_image(image, "image"); !s) return s;
   const index_t w = width_of(image), h = height_of(image), mx = w / 2, my = h / 2;
   if (min_offset < 1 || min_offset > std::max(mx, my))
-    return status::invalid_argument(detail::cat("repetition_score: min_offset must be in [1, ", std::max<index_t>(1, std::max(mx, my)),
-                                                "] for a ", w, " x ", h, " image, got ", min_offset));
+    return status::invalid_argument(detail::cat("repetition_score: min_offset must be in [1, ",
+                                                std::max<index_t>(1, std::max(mx, my)), "] for a ", w, " x ", h,
+                                                " image, got ", min_offset));
   auto img = to_buffer<float, C>(image, "image");
   if (!img) return img.error();
   const std::vector<double> values(img->data(), img->data() + w * h * C);

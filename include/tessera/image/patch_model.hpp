@@ -36,18 +36,18 @@ inline constexpr std::string_view to_string(patch_side s) noexcept {
 }
 
 struct patch_model_options {
-  index_t patch_width = 0;     ///< cell pitch in x; 0: chosen by analyze_patch_size (paper §2.1)
-  index_t patch_height = 0;    ///< cell pitch in y; 0: chosen by analyze_patch_size
-  index_t overlap = 0;         ///< overlap width between neighbouring patches; 0: chosen by the analysis
-  int candidates = 8;          ///< k, the size of each compatible set (paper: 8), 1 to 64; at most the number of patches
-  bool exact_sets = false;     ///< exact top-k sets (branch and bound); slower on stochastic exemplars
-  int pca_dims = 8;            ///< PCA dimensions of the strip descriptors
-  index_t pca_samples = 384;   ///< strips sampled to estimate the PCA basis
-  int search_pool = 16;        ///< approximate sets: kd-tree candidates re-ranked by exact L2 per patch and side
-  int refine_iterations = 4;   ///< approximate sets: coherence propagation rounds after the kd-tree search
-  bool seams = false;          ///< also precompute a minimum-error seam for every compatible pair
+  index_t patch_width = 0;    ///< cell pitch in x; 0: chosen by analyze_patch_size (paper §2.1)
+  index_t patch_height = 0;   ///< cell pitch in y; 0: chosen by analyze_patch_size
+  index_t overlap = 0;        ///< overlap width between neighbouring patches; 0: chosen by the analysis
+  int candidates = 8;         ///< k, the size of each compatible set (paper: 8), 1 to 64; at most the number of patches
+  bool exact_sets = false;    ///< exact top-k sets (branch and bound); slower on stochastic exemplars
+  int pca_dims = 8;           ///< PCA dimensions of the strip descriptors
+  index_t pca_samples = 384;  ///< strips sampled to estimate the PCA basis
+  int search_pool = 16;       ///< approximate sets: kd-tree candidates re-ranked by exact L2 per patch and side
+  int refine_iterations = 4;  ///< approximate sets: coherence propagation rounds after the kd-tree search
+  bool seams = false;         ///< also precompute a minimum-error seam for every compatible pair
   patch_size_options analysis = {};  ///< options of the size analysis when a size or the overlap is 0
-  tessera::progress progress = {};  ///< fraction done; return false (or raise the token) to cancel
+  tessera::progress progress = {};   ///< fraction done; return false (or raise the token) to cancel
 };
 
 namespace detail {
@@ -172,8 +172,8 @@ class patch_model {
 
   /// Bytes held by the model (exemplar, phase lists, compatible sets, seams).
   [[nodiscard]] std::size_t memory_bytes() const noexcept {
-    std::size_t b = exemplar_.size_bytes() + phase_start_.size() * sizeof(index_t) + phase_members_.size() * sizeof(std::uint32_t) +
-                    phase_order_.size() * sizeof(phase_offset);
+    std::size_t b = exemplar_.size_bytes() + phase_start_.size() * sizeof(index_t) +
+                    phase_members_.size() * sizeof(std::uint32_t) + phase_order_.size() * sizeof(phase_offset);
     for (int s = 0; s < 4; ++s)
       b += compat_[s].size() * sizeof(std::uint32_t) + worst_.size() * sizeof(float) / 4 +
            by_index_[s].size() * sizeof(indexed_candidate) + seams_[s].size();
@@ -221,9 +221,10 @@ struct patch_model_builder {
       if (!analysis) return analysis.error();
       if (m.pw_ == 0) m.pw_ = analysis->patch_width;
       if (m.ph_ == 0) m.ph_ = analysis->patch_height;
-      if (m.v_ == 0) m.v_ = m.pw_ == analysis->patch_width && m.ph_ == analysis->patch_height
-                                ? analysis->overlap
-                                : std::max<index_t>(1, std::min({analysis->overlap, m.pw_, m.ph_}));
+      if (m.v_ == 0)
+        m.v_ = m.pw_ == analysis->patch_width && m.ph_ == analysis->patch_height
+                   ? analysis->overlap
+                   : std::max<index_t>(1, std::min({analysis->overlap, m.pw_, m.ph_}));
       m.analysis_ = std::move(*analysis);
     }
     const index_t pw = m.pw_, ph = m.ph_, v = m.v_;
@@ -231,16 +232,18 @@ struct patch_model_builder {
       return status::invalid_argument(cat("build_patch_model: patch ", pw, " x ", ph, " with overlap ", v,
                                           " is invalid (patch sides >= 2, 1 <= overlap <= patch side)"));
     if (pw + v > W || ph + v > H)
-      return status::invalid_argument(cat("build_patch_model: patches of ", pw + v, " x ", ph + v, " (patch ", pw, " x ", ph,
-                                          " + overlap ", v, ") do not fit the ", W, " x ", H, " exemplar"));
+      return status::invalid_argument(cat("build_patch_model: patches of ", pw + v, " x ", ph + v, " (patch ", pw,
+                                          " x ", ph, " + overlap ", v, ") do not fit the ", W, " x ", H, " exemplar"));
     m.nx_ = W - pw - v + 1;
     m.ny_ = H - ph - v + 1;
     const index_t n = m.nx_ * m.ny_;
     if (n < 2)
-      return status::invalid_argument(cat("build_patch_model: the ", W, " x ", H, " exemplar holds fewer than two patches of ",
-                                          pw + v, " x ", ph + v));
-    if (n > index_t{1} << 31) return status::size_overflow(cat("build_patch_model: ", n, " patches exceed the supported 2^31"));
-    if (opts.seams && v > 255) return status::invalid_argument(cat("build_patch_model: seams need overlap <= 255, got ", v));
+      return status::invalid_argument(cat("build_patch_model: the ", W, " x ", H,
+                                          " exemplar holds fewer than two patches of ", pw + v, " x ", ph + v));
+    if (n > index_t{1} << 31)
+      return status::size_overflow(cat("build_patch_model: ", n, " patches exceed the supported 2^31"));
+    if (opts.seams && v > 255)
+      return status::invalid_argument(cat("build_patch_model: seams need overlap <= 255, got ", v));
     m.k_ = std::min<index_t>(opts.candidates, n);
     const index_t k = m.k_;
 
@@ -265,13 +268,16 @@ struct patch_model_builder {
     m.phase_members_.resize(static_cast<std::size_t>(n));
     std::vector<index_t> fill(m.phase_start_.begin(), m.phase_start_.end() - 1);
     for (index_t p = 0; p < n; ++p)
-      m.phase_members_[static_cast<std::size_t>(fill[static_cast<std::size_t>(m.phase_of(p))]++)] = static_cast<std::uint32_t>(p);
+      m.phase_members_[static_cast<std::size_t>(fill[static_cast<std::size_t>(m.phase_of(p))]++)] =
+          static_cast<std::uint32_t>(p);
 
     // step 3: compatible sets, stored by error and by patch index (for the intersections)
     const patch_geometry g{pw, ph, v, m.nx_, m.ny_};
-    const compatible_set_options so{k, opts.exact_sets, opts.pca_dims, opts.pca_samples, opts.search_pool, opts.refine_iterations};
-    auto sets = compatible_sets(m.exemplar_, g, so, exec,
-                                [&](double f) { return opts.progress.report(0.05 + 0.8 * f, "patch model: compatible sets"); });
+    const compatible_set_options so{
+        k, opts.exact_sets, opts.pca_dims, opts.pca_samples, opts.search_pool, opts.refine_iterations};
+    auto sets = compatible_sets(m.exemplar_, g, so, exec, [&](double f) {
+      return opts.progress.report(0.05 + 0.8 * f, "patch model: compatible sets");
+    });
     if (sets.empty()) return status::cancelled();
     m.worst_.resize(static_cast<std::size_t>(n * 4));
     for (int si = 0; si < 4; ++si) {
@@ -280,10 +286,12 @@ struct patch_model_builder {
       auto& by_id = m.by_index_[si];
       by_id.resize(static_cast<std::size_t>(n * k));
       for (index_t a = 0; a < n; ++a) {
-        m.worst_[static_cast<std::size_t>(a * 4 + si)] = static_cast<float>(set.dist[static_cast<std::size_t>(a * k + k - 1)]);
+        m.worst_[static_cast<std::size_t>(a * 4 + si)] =
+            static_cast<float>(set.dist[static_cast<std::size_t>(a * k + k - 1)]);
         auto* e = by_id.data() + a * k;
         for (index_t r = 0; r < k; ++r)
-          e[r] = {set.ids[static_cast<std::size_t>(a * k + r)], static_cast<float>(set.dist[static_cast<std::size_t>(a * k + r)])};
+          e[r] = {set.ids[static_cast<std::size_t>(a * k + r)],
+                  static_cast<float>(set.dist[static_cast<std::size_t>(a * k + r)])};
         std::sort(e, e + k, [](const indexed_candidate& x, const indexed_candidate& y) { return x.patch < y.patch; });
       }
     }
@@ -293,8 +301,9 @@ struct patch_model_builder {
     constexpr int seam_order[4] = {1, 2, 3, 0};
     for (int i = 0; i < 4 && opts.seams; ++i) {
       const int si = seam_order[i], mirror = i < 2 ? -1 : seam_order[i - 2];
-      m.seams_[si] = mirror < 0 ? seam_table(m.exemplar_, g, k, si, m.compat_[si], exec)
-                                : seam_table(m.exemplar_, g, k, si, m.compat_[si], exec, &m.compat_[mirror], &m.seams_[mirror]);
+      m.seams_[si] =
+          mirror < 0 ? seam_table(m.exemplar_, g, k, si, m.compat_[si], exec)
+                     : seam_table(m.exemplar_, g, k, si, m.compat_[si], exec, &m.compat_[mirror], &m.seams_[mirror]);
       if (!opts.progress.report(0.85 + 0.15 * (i + 1) / 4.0, "patch model: seams")) return status::cancelled();
     }
     if (!opts.progress.report(1.0, "patch model")) return status::cancelled();
@@ -330,17 +339,20 @@ auto build_patch_model(const I& exemplar, const patch_model_options& opts = {}, 
     -> result<patch_model<channel_t<I>, channels_v<I>>> {
   if (auto s = validate_image(exemplar, "exemplar"); !s) return s;
   if (opts.patch_width < 0 || opts.patch_height < 0 || opts.overlap < 0)
-    return status::invalid_argument(detail::cat("build_patch_model: patch_width, patch_height and overlap must be >= 0 (0: automatic), got ",
-                                                opts.patch_width, ", ", opts.patch_height, ", ", opts.overlap));
+    return status::invalid_argument(
+        detail::cat("build_patch_model: patch_width, patch_height and overlap must be >= 0 (0: automatic), got ",
+                    opts.patch_width, ", ", opts.patch_height, ", ", opts.overlap));
   if (opts.candidates < 1 || opts.candidates > 64)
-    return status::invalid_argument(detail::cat("build_patch_model: candidates must be in [1, 64], got ", opts.candidates));
+    return status::invalid_argument(
+        detail::cat("build_patch_model: candidates must be in [1, 64], got ", opts.candidates));
   if (opts.pca_dims < 1 || opts.pca_dims > 64)
     return status::invalid_argument(detail::cat("build_patch_model: pca_dims must be in [1, 64], got ", opts.pca_dims));
   if (opts.pca_samples < 2)
     return status::invalid_argument(detail::cat("build_patch_model: pca_samples must be >= 2, got ", opts.pca_samples));
   if (opts.search_pool < 1 || opts.refine_iterations < 0 || opts.refine_iterations > 64)
-    return status::invalid_argument(detail::cat("build_patch_model: search_pool must be >= 1 and refine_iterations in [0, 64], got ",
-                                                opts.search_pool, " and ", opts.refine_iterations));
+    return status::invalid_argument(
+        detail::cat("build_patch_model: search_pool must be >= 1 and refine_iterations in [0, 64], got ",
+                    opts.search_pool, " and ", opts.refine_iterations));
 
   auto ex = to_buffer<channel_t<I>, channels_v<I>>(exemplar, "exemplar");
   if (!ex) return ex.error();

@@ -25,33 +25,33 @@
 TESSERA_NAMESPACE_BEGIN
 
 struct patch_size_options {
-  index_t min_size = 0;                 ///< smallest candidate side; 0: a quarter of the exemplar side (§2.1)
-  index_t max_size = 0;                 ///< largest candidate side; 0: half the exemplar side (§2.1)
-  index_t candidates_per_axis = 9;      ///< sides tried per axis, evenly spaced in [min_size, max_size]
-  bool rectangular = true;              ///< also try shapes with width != height
-  int histogram_bins = 16;              ///< grey histogram bins of the containment measure
-  double containment_tolerance = 0.5;   ///< a patch "contains" the exemplar when the L2 distance of the normalized
-                                        ///< histograms is below this share of the exemplar histogram's L2 norm
-  double containment_fraction = 0.9;    ///< share of patches that must contain it (§2.1.1: 90 %)
-  index_t reference_grid = 4;           ///< one reference block per cell of a grid x grid partition (§2.1.2)
-  double similarity = 0.35;             ///< blocks are similar when mean squared grey difference < similarity x 2 variance
-  double periodicity_hits = 1.0;        ///< share of reference blocks that must find a similar block (§2.1.2: all)
-  double min_alignment = 0.3;           ///< alignment below this counts as none (stochastic textures)
-  index_t analysis_size = 64;           ///< the periodicity count runs on a copy downsampled to at most this side
-                                        ///< (elongated exemplars: at most this side squared pixels)
-  index_t min_overlap = 0;              ///< smallest overlap width tried; 0: a sixth of the patch side (at least 2)
-  index_t max_overlap = 0;              ///< largest; 0: a third of the patch side, within the exemplar
-  double overlap_efficiency = 0.9;      ///< pick the smallest width reaching this share of the best discrimination
-  int overlap_pairs = 400;              ///< random patch pairs for the overlap discrimination
-  std::uint64_t seed = 1;               ///< reference blocks and pairs are drawn from it
-  tessera::progress progress = {};           ///< fraction done; return false (or raise the token) to cancel
+  index_t min_size = 0;                ///< smallest candidate side; 0: a quarter of the exemplar side (§2.1)
+  index_t max_size = 0;                ///< largest candidate side; 0: half the exemplar side (§2.1)
+  index_t candidates_per_axis = 9;     ///< sides tried per axis, evenly spaced in [min_size, max_size]
+  bool rectangular = true;             ///< also try shapes with width != height
+  int histogram_bins = 16;             ///< grey histogram bins of the containment measure
+  double containment_tolerance = 0.5;  ///< a patch "contains" the exemplar when the L2 distance of the normalized
+                                       ///< histograms is below this share of the exemplar histogram's L2 norm
+  double containment_fraction = 0.9;   ///< share of patches that must contain it (§2.1.1: 90 %)
+  index_t reference_grid = 4;          ///< one reference block per cell of a grid x grid partition (§2.1.2)
+  double similarity = 0.35;         ///< blocks are similar when mean squared grey difference < similarity x 2 variance
+  double periodicity_hits = 1.0;    ///< share of reference blocks that must find a similar block (§2.1.2: all)
+  double min_alignment = 0.3;       ///< alignment below this counts as none (stochastic textures)
+  index_t analysis_size = 64;       ///< the periodicity count runs on a copy downsampled to at most this side
+                                    ///< (elongated exemplars: at most this side squared pixels)
+  index_t min_overlap = 0;          ///< smallest overlap width tried; 0: a sixth of the patch side (at least 2)
+  index_t max_overlap = 0;          ///< largest; 0: a third of the patch side, within the exemplar
+  double overlap_efficiency = 0.9;  ///< pick the smallest width reaching this share of the best discrimination
+  int overlap_pairs = 400;          ///< random patch pairs for the overlap discrimination
+  std::uint64_t seed = 1;           ///< reference blocks and pairs are drawn from it
+  tessera::progress progress = {};  ///< fraction done; return false (or raise the token) to cancel
 };
 
 /// The measures of one candidate patch shape.
 struct patch_size_measure {
   index_t width = 0;
   index_t height = 0;
-  double containment = 0;       ///< share of patches whose grey histogram is within tolerance of the exemplar's (§2.1.1)
+  double containment = 0;  ///< share of patches whose grey histogram is within tolerance of the exemplar's (§2.1.1)
   double containment_p90 = 0;   ///< 90th percentile of the histogram distances, relative to the exemplar
                                 ///< histogram's norm (lower is better)
   double periodicity = 0;       ///< mean number of blocks similar to a reference block (§2.1.2)
@@ -80,15 +80,17 @@ struct patch_size_analysis {
 
 namespace detail {
 /// The overlap measures for patches of pw x ph and the chosen width (see analyze_patch_size).
-inline result<std::pair<std::vector<overlap_measure>, index_t>> choose_overlap(const grey_image& grey, index_t pw, index_t ph,
+inline result<std::pair<std::vector<overlap_measure>, index_t>> choose_overlap(const grey_image& grey, index_t pw,
+                                                                               index_t ph,
                                                                                const patch_size_options& opts) {
   const index_t side = std::min(pw, ph);
   const index_t vmin = opts.min_overlap > 0 ? opts.min_overlap : std::max<index_t>(2, side / 6);
-  const index_t vmax = std::min({opts.max_overlap > 0 ? opts.max_overlap : std::max<index_t>(vmin, side / 3), grey.w - pw,
-                                 grey.h - ph, side});
+  const index_t vmax = std::min(
+      {opts.max_overlap > 0 ? opts.max_overlap : std::max<index_t>(vmin, side / 3), grey.w - pw, grey.h - ph, side});
   if (vmax < vmin)
-    return status::invalid_argument(cat("analyze_patch_size: no overlap width in [", vmin, ", ", vmax, "] fits patches of ", pw,
-                                        " x ", ph, " in the ", grey.w, " x ", grey.h, " exemplar"));
+    return status::invalid_argument(cat("analyze_patch_size: no overlap width in [", vmin, ", ", vmax,
+                                        "] fits patches of ", pw, " x ", ph, " in the ", grey.w, " x ", grey.h,
+                                        " exemplar"));
   std::vector<overlap_measure> measures;
   for (const auto& [v, d] : overlap_measures(grey, pw, ph, vmin, vmax, opts.overlap_pairs, opts.seed))
     measures.push_back({.overlap = v, .discrimination = d});
@@ -107,7 +109,8 @@ inline result<std::pair<std::vector<overlap_measure>, index_t>> choose_overlap(c
 /// plus the alignment level floor(20 alignment) in [0, 20] (0 below `min_alignment`), plus
 /// 1 - area / (max_area + 1) in (0, 1) for the smaller area. Comparing scores compares these keys in
 /// order; equal scores mean equal keys.
-inline double patch_size_score(bool contains, bool periodic, double alignment, double min_alignment, index_t area, index_t max_area) {
+inline double patch_size_score(bool contains, bool periodic, double alignment, double min_alignment, index_t area,
+                               index_t max_area) {
   const double level = alignment >= min_alignment ? std::clamp(std::floor(alignment * 20.0), 0.0, 20.0) : 0.0;
   return 100.0 * ((contains ? 1 : 0) + (periodic ? 1 : 0)) + level +
          (1.0 - static_cast<double>(area) / static_cast<double>(max_area + 1));
@@ -115,16 +118,21 @@ inline double patch_size_score(bool contains, bool periodic, double alignment, d
 
 inline status validate_patch_size_options(const patch_size_options& opts) {
   if (opts.candidates_per_axis < 1)
-    return status::invalid_argument(cat("analyze_patch_size: candidates_per_axis must be >= 1, got ", opts.candidates_per_axis));
+    return status::invalid_argument(
+        cat("analyze_patch_size: candidates_per_axis must be >= 1, got ", opts.candidates_per_axis));
   if (opts.histogram_bins < 2 || opts.histogram_bins > 4096)
-    return status::invalid_argument(cat("analyze_patch_size: histogram_bins must be in [2, 4096], got ", opts.histogram_bins));
+    return status::invalid_argument(
+        cat("analyze_patch_size: histogram_bins must be in [2, 4096], got ", opts.histogram_bins));
   if (!(opts.containment_fraction >= 0 && opts.containment_fraction <= 1) || !(opts.containment_tolerance >= 0))
-    return status::invalid_argument(cat("analyze_patch_size: containment_fraction must be in [0, 1] and containment_tolerance >= 0, got ",
-                                        opts.containment_fraction, " and ", opts.containment_tolerance));
+    return status::invalid_argument(
+        cat("analyze_patch_size: containment_fraction must be in [0, 1] and containment_tolerance >= 0, got ",
+            opts.containment_fraction, " and ", opts.containment_tolerance));
   if (opts.reference_grid < 1 || opts.reference_grid > 64)
-    return status::invalid_argument(cat("analyze_patch_size: reference_grid must be in [1, 64], got ", opts.reference_grid));
+    return status::invalid_argument(
+        cat("analyze_patch_size: reference_grid must be in [1, 64], got ", opts.reference_grid));
   if (!(opts.periodicity_hits >= 0 && opts.periodicity_hits <= 1))
-    return status::invalid_argument(cat("analyze_patch_size: periodicity_hits must be in [0, 1], got ", opts.periodicity_hits));
+    return status::invalid_argument(
+        cat("analyze_patch_size: periodicity_hits must be in [0, 1], got ", opts.periodicity_hits));
   if (!(opts.similarity > 0))
     return status::invalid_argument(cat("analyze_patch_size: similarity must be > 0, got ", opts.similarity));
   if (opts.analysis_size < 16)
@@ -133,8 +141,9 @@ inline status validate_patch_size_options(const patch_size_options& opts) {
     return status::invalid_argument(cat("analyze_patch_size: overlap range [", opts.min_overlap, ", ", opts.max_overlap,
                                         "] is invalid (0 for automatic, else max_overlap >= min_overlap >= 1)"));
   if (!(opts.overlap_efficiency > 0 && opts.overlap_efficiency <= 1) || opts.overlap_pairs < 8)
-    return status::invalid_argument(cat("analyze_patch_size: overlap_efficiency must be in (0, 1] and overlap_pairs >= 8, got ",
-                                        opts.overlap_efficiency, " and ", opts.overlap_pairs));
+    return status::invalid_argument(
+        cat("analyze_patch_size: overlap_efficiency must be in (0, 1] and overlap_pairs >= 8, got ",
+            opts.overlap_efficiency, " and ", opts.overlap_pairs));
   return {};
 }
 }  // namespace detail
@@ -176,7 +185,8 @@ result<patch_size_analysis> analyze_patch_size(const I& exemplar, const patch_si
   if (auto s = validate_image(exemplar, "exemplar"); !s) return s;
   const index_t W = width_of(exemplar), H = height_of(exemplar);
   if (W < 8 || H < 8)
-    return status::invalid_argument(detail::cat("analyze_patch_size: exemplar must be at least 8 x 8, got ", W, " x ", H));
+    return status::invalid_argument(
+        detail::cat("analyze_patch_size: exemplar must be at least 8 x 8, got ", W, " x ", H));
   const index_t lo = opts.min_size > 0 ? opts.min_size : std::max<index_t>(2, std::min(W, H) / 4);
   const index_t hi = opts.max_size > 0 ? opts.max_size : std::max<index_t>(lo, std::min(W, H) / 2);
   if (lo < 2 || hi < lo || hi > std::min(W, H) - 1)
@@ -200,7 +210,8 @@ result<patch_size_analysis> analyze_patch_size(const I& exemplar, const patch_si
   if (!opts.progress.report(0.0, "patch size: containment")) return status::cancelled();
   detail::containment_measures(grey, out.sizes, opts.histogram_bins, opts.containment_tolerance, exec);
   if (!opts.progress.report(0.3, "patch size: periodicity")) return status::cancelled();
-  detail::periodicity_measures(grey, out.sizes, opts.reference_grid, opts.similarity, opts.analysis_size, opts.seed, exec);
+  detail::periodicity_measures(grey, out.sizes, opts.reference_grid, opts.similarity, opts.analysis_size, opts.seed,
+                               exec);
   if (!opts.progress.report(0.7, "patch size: alignment")) return status::cancelled();
   detail::alignment_measures(grey, out.sizes);
 
@@ -213,9 +224,11 @@ result<patch_size_analysis> analyze_patch_size(const I& exemplar, const patch_si
   for (const auto& m : out.sizes) max_area = std::max(max_area, m.width * m.height);
   const patch_size_measure* best = nullptr;
   for (auto& m : out.sizes) {
-    const bool contains = m.containment >= opts.containment_fraction, periodic = m.periodicity_hits >= opts.periodicity_hits;
+    const bool contains = m.containment >= opts.containment_fraction,
+               periodic = m.periodicity_hits >= opts.periodicity_hits;
     m.qualified = contains && periodic;
-    m.score = detail::patch_size_score(contains, periodic, m.alignment, opts.min_alignment, m.width * m.height, max_area);
+    m.score =
+        detail::patch_size_score(contains, periodic, m.alignment, opts.min_alignment, m.width * m.height, max_area);
     if (best == nullptr || m.score > best->score) best = &m;
   }
   out.patch_width = best->width;
@@ -243,7 +256,8 @@ result<patch_size_analysis> analyze_overlap(const I& exemplar, index_t patch_wid
   const index_t W = width_of(exemplar), H = height_of(exemplar);
   if (patch_width < 2 || patch_height < 2 || patch_width >= W || patch_height >= H)
     return status::invalid_argument(detail::cat("analyze_overlap: patch size ", patch_width, " x ", patch_height,
-                                                " must be at least 2 and smaller than the exemplar (", W, " x ", H, ")"));
+                                                " must be at least 2 and smaller than the exemplar (", W, " x ", H,
+                                                ")"));
   auto grey_buffer = to_buffer<float, 1>(exemplar, "exemplar");
   if (!grey_buffer) return grey_buffer.error();
   const detail::grey_image grey{std::vector<double>(grey_buffer->data(), grey_buffer->data() + W * H), W, H};

@@ -47,14 +47,14 @@ struct texture_offset {
 };
 
 struct patch_synthesis_options {
-  texture_offset origin = {};           ///< texture coordinates of the output's top-left pixel
-  std::uint64_t seed = 0;               ///< the texture: same seed, same infinite texture
+  texture_offset origin = {};  ///< texture coordinates of the output's top-left pixel
+  std::uint64_t seed = 0;      ///< the texture: same seed, same infinite texture
   seam_mode seams = seam_mode::feather;
-  index_t phase_radius = -1;            ///< distributed patches come from phases within this distance of one
-                                        ///< phase (any value >= max(patch_width, patch_height) means every
-                                        ///< phase); -1: the phases most similar to it (detail::phase_group)
-  index_t min_phase_group = 16;         ///< with phase_radius -1: at least this many patches to draw from
-  tessera::progress progress = {};           ///< fraction done; return false (or raise the token) to cancel
+  index_t phase_radius = -1;        ///< distributed patches come from phases within this distance of one
+                                    ///< phase (any value >= max(patch_width, patch_height) means every
+                                    ///< phase); -1: the phases most similar to it (detail::phase_group)
+  index_t min_phase_group = 16;     ///< with phase_radius -1: at least this many patches to draw from
+  tessera::progress progress = {};  ///< fraction done; return false (or raise the token) to cancel
 };
 
 /// What a synthesis call did (for statistics; the pixels do not depend on it).
@@ -84,20 +84,22 @@ inline status validate_window(index_t w, index_t h, const patch_synthesis_option
       o.y > max_texture_coordinate - h)
     return status::out_of_range(cat(fn, ": window at origin (", o.x, ", ", o.y, ") of ", w, " x ", h,
                                     " leaves the supported texture plane [-2^52, 2^52]"));
-  if (opts.phase_radius < -1) return status::invalid_argument(cat(fn, ": phase_radius must be >= -1, got ", opts.phase_radius));
+  if (opts.phase_radius < -1)
+    return status::invalid_argument(cat(fn, ": phase_radius must be >= -1, got ", opts.phase_radius));
   if (opts.min_phase_group < 1)
     return status::invalid_argument(cat(fn, ": min_phase_group must be >= 1, got ", opts.min_phase_group));
   return {};
 }
 
 template <Channel T, int C, class Ex>
-result<patch_plan> plan_window(const patch_model<T, C>& model, index_t w, index_t h, const patch_synthesis_options& opts,
-                               std::string_view fn, Ex&& exec) {
-  if (model.num_patches() == 0) return status::invalid_argument(cat(fn, ": the patch model is empty (default-constructed)"));
+result<patch_plan> plan_window(const patch_model<T, C>& model, index_t w, index_t h,
+                               const patch_synthesis_options& opts, std::string_view fn, Ex&& exec) {
+  if (model.num_patches() == 0)
+    return status::invalid_argument(cat(fn, ": the patch model is empty (default-constructed)"));
   if (auto s = validate_window(w, h, opts, fn); !s) return s;
   if (opts.progress.cancelled()) return status::cancelled();
-  return make_plan(model, opts.origin.x, opts.origin.y, w, h, opts.seed, opts.seams == seam_mode::cut, opts.phase_radius,
-                   opts.min_phase_group, exec);
+  return make_plan(model, opts.origin.x, opts.origin.y, w, h, opts.seed, opts.seams == seam_mode::cut,
+                   opts.phase_radius, opts.min_phase_group, exec);
 }
 
 inline patch_synthesis_stats to_stats(const plan_counts& c) {
@@ -107,7 +109,8 @@ inline patch_synthesis_stats to_stats(const plan_counts& c) {
 /// Renders a plan from exemplar `ex` into `out`, in bands of rows on `exec`, reporting progress
 /// between groups of bands from the calling thread.
 template <class T, int C, class O, class Ex>
-status render_window(const patch_plan& plan, const image_buffer<T, C>& ex, O& out, const tessera::progress& progress, Ex&& exec) {
+status render_window(const patch_plan& plan, const image_buffer<T, C>& ex, O& out, const tessera::progress& progress,
+                     Ex&& exec) {
   using OT = std::remove_cvref_t<O>;
   const plan_renderer<T, C> renderer(plan, ex);
   const index_t w = plan.w, h = plan.h, band = 16, bands = (h + band - 1) / band;
@@ -159,9 +162,8 @@ status render_window(const patch_plan& plan, const image_buffer<T, C>& ex, O& ou
 /// out_of_range when the window leaves [-2^52, 2^52]; cancelled. Complexity O(output pixels + cells k);
 /// a model-sized amount of extra memory per worker row. Thread safety: the model is only read.
 template <Channel T, int C, class O, Executor E = serial_executor>
-  requires WritableImage<std::remove_cvref_t<O>>
-result<patch_synthesis_stats> synthesize(const patch_model<T, C>& model, O&& out, const patch_synthesis_options& opts = {},
-                                         E&& exec = {}) {
+requires WritableImage<std::remove_cvref_t<O>> result<patch_synthesis_stats> synthesize(
+    const patch_model<T, C>& model, O&& out, const patch_synthesis_options& opts = {}, E&& exec = {}) {
   if (auto s = validate_image(out, "output"); !s) return s;
   auto plan = detail::plan_window(model, width_of(out), height_of(out), opts, "synthesize", exec);
   if (!plan) return plan.error();
@@ -176,12 +178,13 @@ result<patch_synthesis_stats> synthesize(const patch_model<T, C>& model, O&& out
 /// Errors: those of synthesize(), plus invalid_argument when the aligned exemplar's size differs from
 /// the model's exemplar. Complexity and threading as synthesize().
 template <Channel T, int C, Image A, class O, Executor E = serial_executor>
-  requires WritableImage<std::remove_cvref_t<O>>
-result<patch_synthesis_stats> synthesize_aligned(const patch_model<T, C>& model, const A& aligned_exemplar, O&& out,
-                                                 const patch_synthesis_options& opts = {}, E&& exec = {}) {
+requires WritableImage<std::remove_cvref_t<O>> result<patch_synthesis_stats> synthesize_aligned(
+    const patch_model<T, C>& model, const A& aligned_exemplar, O&& out, const patch_synthesis_options& opts = {},
+    E&& exec = {}) {
   if (auto s = validate_image(out, "output"); !s) return s;
   if (auto s = validate_image(aligned_exemplar, "aligned_exemplar"); !s) return s;
-  if (auto s = validate_same_size(model.exemplar(), "the model's exemplar", aligned_exemplar, "aligned_exemplar"); !s) return s;
+  if (auto s = validate_same_size(model.exemplar(), "the model's exemplar", aligned_exemplar, "aligned_exemplar"); !s)
+    return s;
   auto ex = to_buffer(aligned_exemplar, "aligned_exemplar");
   if (!ex) return ex.error();
   auto plan = detail::plan_window(model, width_of(out), height_of(out), opts, "synthesize_aligned", exec);
@@ -197,9 +200,8 @@ result<patch_synthesis_stats> synthesize_aligned(const patch_model<T, C>& model,
 /// Errors: those of synthesize(), plus invalid_argument for fewer than 2 channels or exemplar
 /// coordinates that the channel type cannot hold (uint8 and exemplars over 256 pixels).
 template <Channel T, int C, class S, Executor E = serial_executor>
-  requires WritableImage<std::remove_cvref_t<S>>
-result<patch_synthesis_stats> synthesize_source_map(const patch_model<T, C>& model, S&& source_map,
-                                                    const patch_synthesis_options& opts = {}, E&& exec = {}) {
+requires WritableImage<std::remove_cvref_t<S>> result<patch_synthesis_stats> synthesize_source_map(
+    const patch_model<T, C>& model, S&& source_map, const patch_synthesis_options& opts = {}, E&& exec = {}) {
   using ST = std::remove_cvref_t<S>;
   using P = pixel_t<ST>;
   using PC = typename pixel_traits<P>::channel_type;
@@ -212,7 +214,8 @@ result<patch_synthesis_stats> synthesize_source_map(const patch_model<T, C>& mod
         (std::is_same_v<PC, float> && largest > (index_t{1} << 24)))
       return status::invalid_argument(detail::cat("synthesize_source_map: exemplar coordinates up to ", largest,
                                                   " do not fit the source map's channel type"));
-    auto plan = detail::plan_window(model, width_of(source_map), height_of(source_map), opts, "synthesize_source_map", exec);
+    auto plan =
+        detail::plan_window(model, width_of(source_map), height_of(source_map), opts, "synthesize_source_map", exec);
     if (!plan) return plan.error();
     const index_t w = plan->w, h = plan->h;
     exec.parallel_for(0, h, [&](index_t y) {
@@ -233,7 +236,8 @@ result<patch_synthesis_stats> synthesize_source_map(const patch_model<T, C>& mod
 /// The centre lines of the overlaps inside a w x h window at `origin` (where feathered seams are most
 /// visible), clipped to the window, as seam_segment for seam_gradient_ratio (image/metrics.hpp).
 template <Channel T, int C>
-std::vector<seam_segment> patch_seam_lines(const patch_model<T, C>& model, index_t w, index_t h, texture_offset origin = {}) {
+std::vector<seam_segment> patch_seam_lines(const patch_model<T, C>& model, index_t w, index_t h,
+                                           texture_offset origin = {}) {
   std::vector<seam_segment> out;
   const index_t pw = model.patch_width(), ph = model.patch_height(), half = model.overlap() / 2;
   if (pw <= 0 || w <= 0 || h <= 0) return out;

@@ -35,10 +35,10 @@ TESSERA_NAMESPACE_BEGIN
 
 /// Options of quilt() and constrained_quilt().
 struct quilt_options {
-  index_t patch_size = 0;   ///< side of the square patches; 0 = a quarter of the exemplar's smaller side, in [8, 64]
-  index_t overlap = 0;      ///< overlap between neighbouring patches; 0 = patch_size / 6 (at least 2, Efros & Freeman)
-  double tolerance = 0.1;   ///< candidates within (1 + tolerance) of the best overlap error are drawn from
-  bool seamless = false;    ///< quilt(): synthesize on a torus so the output tiles with itself
+  index_t patch_size = 0;  ///< side of the square patches; 0 = a quarter of the exemplar's smaller side, in [8, 64]
+  index_t overlap = 0;     ///< overlap between neighbouring patches; 0 = patch_size / 6 (at least 2, Efros & Freeman)
+  double tolerance = 0.1;  ///< candidates within (1 + tolerance) of the best overlap error are drawn from
+  bool seamless = false;   ///< quilt(): synthesize on a torus so the output tiles with itself
   double boundary_weight = 64;  ///< constrained_quilt(): weight, in the overlap error, of fixed pixels bordering the
                                 ///< region to fill, where the cut cannot move (1 = plain Efros & Freeman)
   std::uint64_t seed = 1;
@@ -91,14 +91,18 @@ status validate_finite_pixels(const I& img, std::string_view what) {
 inline status resolve_quilt_sizes(const quilt_options& o, index_t ew, index_t eh, index_t& patch, index_t& overlap) {
   const index_t smaller = std::min(ew, eh);
   patch = o.patch_size > 0 ? o.patch_size : std::min(smaller, std::clamp<index_t>(smaller / 4, 8, 64));
-  if (o.patch_size < 0) return status::invalid_argument(detail::cat("patch_size must be >= 0 (0 = automatic), got ", o.patch_size));
+  if (o.patch_size < 0)
+    return status::invalid_argument(detail::cat("patch_size must be >= 0 (0 = automatic), got ", o.patch_size));
   if (patch < 2) return status::invalid_argument(detail::cat("patch_size must be at least 2, got ", patch));
   if (patch > ew || patch > eh)
-    return status::invalid_argument(detail::cat("patch_size ", patch, " does not fit the ", ew, " x ", eh, " exemplar"));
-  if (o.overlap < 0) return status::invalid_argument(detail::cat("overlap must be >= 0 (0 = automatic), got ", o.overlap));
+    return status::invalid_argument(
+        detail::cat("patch_size ", patch, " does not fit the ", ew, " x ", eh, " exemplar"));
+  if (o.overlap < 0)
+    return status::invalid_argument(detail::cat("overlap must be >= 0 (0 = automatic), got ", o.overlap));
   overlap = o.overlap > 0 ? o.overlap : std::max<index_t>(std::min<index_t>(2, patch / 2), patch / 6);
   if (overlap < 1 || 2 * overlap > patch)
-    return status::invalid_argument(detail::cat("overlap ", overlap, " must be in [1, patch_size / 2 = ", patch / 2, "]"));
+    return status::invalid_argument(
+        detail::cat("overlap ", overlap, " must be in [1, patch_size / 2 = ", patch / 2, "]"));
   if (!(o.tolerance >= 0) || !std::isfinite(o.tolerance))
     return status::invalid_argument(detail::cat("tolerance must be a finite number >= 0, got ", o.tolerance));
   if (!(o.boundary_weight >= 1) || !(o.boundary_weight <= 1e6))
@@ -124,16 +128,19 @@ inline status resolve_quilt_sizes(const quilt_options& o, index_t ew, index_t eh
 /// candidates = (ew − patch + 1)(eh − patch + 1). Thread safety: reads `exemplar`, writes `out` only.
 template <Image E, WritableImage O, Executor X = serial_executor>
 [[nodiscard]] status quilt(const E& exemplar, O& out, const quilt_options& options = {}, X&& exec = {}) {
-  if (auto s = detail::validate_quilt_extent(exemplar, "exemplar", max_quilt_exemplar_pixels, "max_quilt_exemplar_pixels"); !s)
+  if (auto s =
+          detail::validate_quilt_extent(exemplar, "exemplar", max_quilt_exemplar_pixels, "max_quilt_exemplar_pixels");
+      !s)
     return s;
   if (auto s = detail::validate_quilt_extent(out, "output", max_quilt_pixels, "max_quilt_pixels"); !s) return s;
   if (auto s = detail::validate_finite_pixels(exemplar, "exemplar"); !s) return s;
   index_t patch = 0, overlap = 0;
-  if (auto s = detail::resolve_quilt_sizes(options, width_of(exemplar), height_of(exemplar), patch, overlap); !s) return s;
+  if (auto s = detail::resolve_quilt_sizes(options, width_of(exemplar), height_of(exemplar), patch, overlap); !s)
+    return s;
   const index_t w = width_of(out), h = height_of(out);
   if (options.seamless && (w < patch || h < patch))
-    return status::invalid_argument(detail::cat("seamless output must be at least one patch (", patch, ") in each direction, got ",
-                                                w, " x ", h));
+    return status::invalid_argument(
+        detail::cat("seamless output must be at least one patch (", patch, ") in each direction, got ", w, " x ", h));
   using T = channel_t<E>;
   constexpr int C = channels_v<E>;
   auto ex = to_buffer<T, C>(exemplar, "exemplar");

@@ -63,14 +63,14 @@ struct wang_atlas_options {
 /// A tile set packed into one texture plus where each tile is.
 template <Channel T, int C>
 struct wang_atlas {
-  image_buffer<T, C> image;        ///< the texture
+  image_buffer<T, C> image;  ///< the texture
   atlas_layout layout = atlas_layout::edge_ordered;
   index_t tile_size = 0;
-  index_t padding = 0;             ///< 0 for the edge-ordered layout
-  index_t slot_size = 0;           ///< tile_size + 2 · padding
-  int mip_levels = 0;              ///< box-filtered levels 0 .. mip_levels − 1 sample exactly across tile borders and corners
-  tile_set_edges edges;            ///< the set's edges (for tile lookups)
-  std::vector<index_t> slot_col;   ///< atlas slot of each tile (edge-ordered: of each tile's edges)
+  index_t padding = 0;    ///< 0 for the edge-ordered layout
+  index_t slot_size = 0;  ///< tile_size + 2 · padding
+  int mip_levels = 0;     ///< box-filtered levels 0 .. mip_levels − 1 sample exactly across tile borders and corners
+  tile_set_edges edges;   ///< the set's edges (for tile lookups)
+  std::vector<index_t> slot_col;  ///< atlas slot of each tile (edge-ordered: of each tile's edges)
   std::vector<index_t> slot_row;
 
   /// Atlas texel coordinates of offset (fx, fy) ∈ [0, tile_size)² inside tile `tile`.
@@ -88,19 +88,20 @@ struct wang_atlas {
 /// multiple of 2^(mip_levels − 1); an atlas too large.
 /// Complexity: O(atlas texels). Thread safety: reads `set` only.
 template <Channel T, int C>
-[[nodiscard]] result<wang_atlas<T, C>> build_wang_atlas(const wang_tile_set<T, C>& set, const wang_atlas_options& options = {}) {
+[[nodiscard]] result<wang_atlas<T, C>> build_wang_atlas(const wang_tile_set<T, C>& set,
+                                                        const wang_atlas_options& options = {}) {
   const tile_set_edges& edges = set.edges();
   const index_t ts = set.tile_size();
   if (set.size() == 0) return status::invalid_argument("wang atlas: the tile set is empty");
   if (options.mip_levels < 0 || options.mip_levels > 16)
-    return status::invalid_argument(detail::cat("wang atlas: mip_levels must be in [0, 16] (0 = all the set allows), got ",
-                                                options.mip_levels));
+    return status::invalid_argument(
+        detail::cat("wang atlas: mip_levels must be in [0, 16] (0 = all the set allows), got ", options.mip_levels));
   if (options.mip_levels > set.exact_mip_levels())
-    return status::invalid_argument(detail::cat("wang atlas: mip_levels ", options.mip_levels, " needs tiles that agree within ",
-                                                index_t{1} << (options.mip_levels - 1),
-                                                " texels of their edges and corners, but this set's shared border is ",
-                                                set.shared_border(), " (exact for ", set.exact_mip_levels(),
-                                                " levels); build it with wang_tile_options::mip_levels = ", options.mip_levels));
+    return status::invalid_argument(detail::cat(
+        "wang atlas: mip_levels ", options.mip_levels, " needs tiles that agree within ",
+        index_t{1} << (options.mip_levels - 1), " texels of their edges and corners, but this set's shared border is ",
+        set.shared_border(), " (exact for ", set.exact_mip_levels(),
+        " levels); build it with wang_tile_options::mip_levels = ", options.mip_levels));
   int levels = options.mip_levels > 0 ? options.mip_levels : set.exact_mip_levels();
   wang_atlas<T, C> a;
   a.layout = options.layout;
@@ -115,9 +116,9 @@ template <Channel T, int C>
       for (index_t i = 0; i < complete_tile_count(nh, nv); ++i)
         if (edges.find(complete_tile_edges(i, nh, nv)) < 0) {
           const wang_edges e = complete_tile_edges(i, nh, nv);
-          return status::invalid_argument(detail::cat("wang atlas: the edge-ordered layout needs the complete set; tile [", e.north,
-                                                      ", ", e.east, ", ", e.south, ", ", e.west,
-                                                      "] is missing (use atlas_layout::padded for subsets)"));
+          return status::invalid_argument(
+              detail::cat("wang atlas: the edge-ordered layout needs the complete set; tile [", e.north, ", ", e.east,
+                          ", ", e.south, ", ", e.west, "] is missing (use atlas_layout::padded for subsets)"));
         }
     }
     a.padding = 0;
@@ -131,7 +132,8 @@ template <Channel T, int C>
   } else {
     a.padding = options.padding > 0 ? options.padding : levels > 0 ? index_t{1} << (levels - 1) : 1;
     if (options.padding < 0 || a.padding >= ts)
-      return status::invalid_argument(detail::cat("wang atlas: padding must be in [0, tile_size = ", ts, "), got ", options.padding));
+      return status::invalid_argument(
+          detail::cat("wang atlas: padding must be in [0, tile_size = ", ts, "), got ", options.padding));
     int allowed = 0;  // levels the padding serves: 2^k <= padding and 2^k dividing it
     while (allowed < 62 && (index_t{1} << allowed) <= a.padding && a.padding % (index_t{1} << allowed) == 0) ++allowed;
     if (options.mip_levels > allowed)
@@ -153,7 +155,8 @@ template <Channel T, int C>
   a.image = std::move(*img);
   auto copy_block = [&](index_t tile, index_t sx, index_t sy, index_t w, index_t h, index_t dx, index_t dy) {
     for (index_t y = 0; y < h; ++y)
-      std::memcpy(a.image.pixel_ptr(dx, dy + y), set.tile_row(tile, sy + y) + sx * C, static_cast<std::size_t>(w * C) * sizeof(T));
+      std::memcpy(a.image.pixel_ptr(dx, dy + y), set.tile_row(tile, sy + y) + sx * C,
+                  static_cast<std::size_t>(w * C) * sizeof(T));
   };
   // a neighbour of tile t across `side`, matching its edge (and, for corners, a second edge when possible)
   auto neighbour = [&](index_t t, int side) -> index_t {
@@ -177,11 +180,14 @@ template <Channel T, int C>
   };
   const index_t p = a.padding;
   for (index_t t = 0; t < set.size(); ++t) {
-    const index_t ox = a.slot_col[static_cast<std::size_t>(t)] * a.slot_size, oy = a.slot_row[static_cast<std::size_t>(t)] * a.slot_size;
-    if (options.layout == atlas_layout::edge_ordered && set.edges().find(edges[t]) != t) continue;  // first variant only
+    const index_t ox = a.slot_col[static_cast<std::size_t>(t)] * a.slot_size,
+                  oy = a.slot_row[static_cast<std::size_t>(t)] * a.slot_size;
+    if (options.layout == atlas_layout::edge_ordered && set.edges().find(edges[t]) != t)
+      continue;  // first variant only
     copy_block(t, 0, 0, ts, ts, ox + p, oy + p);
     if (p == 0) continue;
-    const index_t n = neighbour(t, side_north), s = neighbour(t, side_south), w = neighbour(t, side_west), e = neighbour(t, side_east);
+    const index_t n = neighbour(t, side_north), s = neighbour(t, side_south), w = neighbour(t, side_west),
+                  e = neighbour(t, side_east);
     copy_block(n, 0, ts - p, ts, p, ox + p, oy);
     copy_block(s, 0, 0, ts, p, ox + p, oy + p + ts);
     copy_block(w, ts - p, 0, p, ts, ox, oy + p);
@@ -202,7 +208,7 @@ template <Channel T, int C>
 /// or one beyond ±2^62 cells. O(1) for plane colourings
 /// (hash_coloring), plus an O(log n) lookup for the padded layout; thread-safe.
 template <Channel T, int C, class Coloring>
-  requires GridTileColoring<Coloring> || PlaneTileColoring<Coloring>
+requires GridTileColoring<Coloring> || PlaneTileColoring<Coloring>
 [[nodiscard]] vec2 atlas_coordinates(const wang_atlas<T, C>& atlas, const Coloring& coloring, double px, double py,
                                      std::uint64_t seed = 1) noexcept {
   const double ts = static_cast<double>(atlas.tile_size);
@@ -215,8 +221,9 @@ template <Channel T, int C, class Coloring>
       return {-1, -1};
   const wang_edges e = cell_edges(coloring, col, row);
   if (atlas.layout == atlas_layout::edge_ordered) {
-    if (e.north < 0 || e.north >= atlas.edges.horizontal_colors() || e.south < 0 || e.south >= atlas.edges.horizontal_colors() ||
-        e.east < 0 || e.east >= atlas.edges.vertical_colors() || e.west < 0 || e.west >= atlas.edges.vertical_colors())
+    if (e.north < 0 || e.north >= atlas.edges.horizontal_colors() || e.south < 0 ||
+        e.south >= atlas.edges.horizontal_colors() || e.east < 0 || e.east >= atlas.edges.vertical_colors() ||
+        e.west < 0 || e.west >= atlas.edges.vertical_colors())
       return {-1, -1};
     return {static_cast<double>(edge_order_index(e.west, e.east)) * ts + (px - cf * ts),
             static_cast<double>(edge_order_index(e.north, e.south)) * ts + (py - rf * ts)};

@@ -22,9 +22,9 @@ TESSERA_NAMESPACE_BEGIN
 
 /// The ratio of one touching pair.
 struct wang_pair_seam {
-  index_t first = 0;      ///< west (or north) tile
-  index_t second = 0;     ///< east (or south) tile
-  bool vertical = true;   ///< true: first | second side by side; false: first above second
+  index_t first = 0;     ///< west (or north) tile
+  index_t second = 0;    ///< east (or south) tile
+  bool vertical = true;  ///< true: first | second side by side; false: first above second
   double ratio = 0;
 };
 
@@ -33,7 +33,7 @@ struct wang_seam_report {
   std::vector<wang_pair_seam> pairs;  ///< every pair that can touch, horizontal pairs first
   double mean_ratio = 0;
   double max_ratio = 0;
-  wang_pair_seam worst;               ///< the pair with the largest ratio
+  wang_pair_seam worst;  ///< the pair with the largest ratio
 };
 
 /// Largest number of touching pairs wang_seam_quality() measures (2^20; a complete set of 7 x 7
@@ -56,8 +56,9 @@ template <Channel T, int C, Image E>
       pairs += static_cast<index_t>(set.edges().with_west(set.edges()[a].east).size() +
                                     set.edges().with_north(set.edges()[a].south).size());
     if (pairs > max_wang_seam_pairs)
-      return status::size_overflow(detail::cat("wang_seam_quality: the set's ", set.size(), " tiles form ", pairs,
-                                               " touching pairs, more than max_wang_seam_pairs = ", max_wang_seam_pairs));
+      return status::size_overflow(
+          detail::cat("wang_seam_quality: the set's ", set.size(), " tiles form ", pairs,
+                      " touching pairs, more than max_wang_seam_pairs = ", max_wang_seam_pairs));
   }
   auto reference = to_buffer<float, C>(exemplar, "exemplar");
   if (!reference) return reference.error();
@@ -98,7 +99,8 @@ template <Channel T, int C, Image E>
 
 /// The tile borders inside a width × height image showing the plane window whose top-left pixel is
 /// plane pixel (x, y), as seam_segments (for seam_gradient_ratio of a composed image).
-inline std::vector<seam_segment> tile_border_seams(index_t width, index_t height, index_t tile_size, index_t x = 0, index_t y = 0) {
+inline std::vector<seam_segment> tile_border_seams(index_t width, index_t height, index_t tile_size, index_t x = 0,
+                                                   index_t y = 0) {
   std::vector<seam_segment> seams;
   if (tile_size <= 0 || width <= 0 || height <= 0) return seams;
   for (index_t px = 1; px < width; ++px)

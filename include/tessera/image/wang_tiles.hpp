@@ -55,14 +55,17 @@ class wang_tile_set;
 namespace detail {
 /// Checks a tile count and size against max_wang_tile_set_bytes for pixels of `pixel_bytes`.
 inline status validate_tile_set_extent(index_t tiles, index_t tile_size, std::size_t pixel_bytes) {
-  if (tile_size <= 0) return status::invalid_argument(detail::cat("wang tile set: tile_size must be positive, got ", tile_size));
-  if (tiles <= 0) return status::invalid_argument(detail::cat("wang tile set: the set must hold at least one tile, got ", tiles));
+  if (tile_size <= 0)
+    return status::invalid_argument(detail::cat("wang tile set: tile_size must be positive, got ", tile_size));
+  if (tiles <= 0)
+    return status::invalid_argument(detail::cat("wang tile set: the set must hold at least one tile, got ", tiles));
   const double bytes = static_cast<double>(tiles) * static_cast<double>(tile_size) * static_cast<double>(tile_size) *
                        static_cast<double>(pixel_bytes);
   if (!(bytes <= static_cast<double>(max_wang_tile_set_bytes)))
-    return status::size_overflow(detail::cat("wang tile set: ", tiles, " tiles of ", tile_size, " x ", tile_size, " pixels (",
-                                             pixel_bytes, " bytes each) need ", bytes,
-                                             " bytes, more than max_wang_tile_set_bytes = 2^32; use fewer colours or smaller tiles"));
+    return status::size_overflow(
+        detail::cat("wang tile set: ", tiles, " tiles of ", tile_size, " x ", tile_size, " pixels (", pixel_bytes,
+                    " bytes each) need ", bytes,
+                    " bytes, more than max_wang_tile_set_bytes = 2^32; use fewer colours or smaller tiles"));
   return {};
 }
 
@@ -76,8 +79,8 @@ struct wang_tile_set_access {
     try {
       return wang_tile_set<T, C>(std::move(edges), tile_size);
     } catch (const std::bad_alloc&) {
-      return status::size_overflow(detail::cat("wang tile set: cannot allocate ", edges.size(), " tiles of ", tile_size, " x ",
-                                               tile_size, " pixels"));
+      return status::size_overflow(detail::cat("wang tile set: cannot allocate ", edges.size(), " tiles of ", tile_size,
+                                               " x ", tile_size, " pixels"));
     }
 #else
     return wang_tile_set<T, C>(std::move(edges), tile_size);
@@ -150,18 +153,22 @@ class wang_tile_set {
   /// measuring shared_border(). Errors: tile count different from the edge set's, a tile not
   /// tile_size × tile_size (the message names the tile), tile_size <= 0, more than
   /// max_wang_tile_set_bytes (size_overflow). O(pixels).
-  static result<wang_tile_set> create(tile_set_edges edges, index_t tile_size, const std::vector<image_buffer<T, C>>& tiles) {
-    if (tile_size <= 0) return status::invalid_argument(detail::cat("wang tile set: tile_size must be positive, got ", tile_size));
+  static result<wang_tile_set> create(tile_set_edges edges, index_t tile_size,
+                                      const std::vector<image_buffer<T, C>>& tiles) {
+    if (tile_size <= 0)
+      return status::invalid_argument(detail::cat("wang tile set: tile_size must be positive, got ", tile_size));
     if (static_cast<index_t>(tiles.size()) != edges.size())
-      return status::invalid_argument(detail::cat("wang tile set: ", tiles.size(), " tile images for ", edges.size(), " tile edges"));
+      return status::invalid_argument(
+          detail::cat("wang tile set: ", tiles.size(), " tile images for ", edges.size(), " tile edges"));
     for (std::size_t i = 0; i < tiles.size(); ++i)
       if (tiles[i].width() != tile_size || tiles[i].height() != tile_size)
-        return status::invalid_argument(detail::cat("wang tile set: tile ", i, " is ", tiles[i].width(), " x ", tiles[i].height(),
-                                                    ", expected ", tile_size, " x ", tile_size));
+        return status::invalid_argument(detail::cat("wang tile set: tile ", i, " is ", tiles[i].width(), " x ",
+                                                    tiles[i].height(), ", expected ", tile_size, " x ", tile_size));
     auto s = detail::wang_tile_set_access::allocate<T, C>(std::move(edges), tile_size);
     if (!s) return s.error();
     for (std::size_t i = 0; i < tiles.size(); ++i)
-      std::memcpy(detail::wang_tile_set_access::tile_data(*s, static_cast<index_t>(i)), tiles[i].data(), tiles[i].size_bytes());
+      std::memcpy(detail::wang_tile_set_access::tile_data(*s, static_cast<index_t>(i)), tiles[i].data(),
+                  tiles[i].size_bytes());
     detail::wang_tile_set_access::finish(*s);
     return s;
   }
@@ -180,7 +187,8 @@ class wang_tile_set {
   /// shared_border() and 2^(L−1) divides tile_size() (0 when shared_border() is 0). O(1).
   [[nodiscard]] int exact_mip_levels() const noexcept {
     int levels = 0;
-    while (levels < 62 && (index_t{1} << levels) <= shared_border_ && tile_size_ % (index_t{1} << levels) == 0) ++levels;
+    while (levels < 62 && (index_t{1} << levels) <= shared_border_ && tile_size_ % (index_t{1} << levels) == 0)
+      ++levels;
     return levels;
   }
   /// The tiles' edge colours (tile i has edges()[i]) with their lookups.
@@ -199,7 +207,8 @@ class wang_tile_set {
  private:
   friend struct detail::wang_tile_set_access;
   wang_tile_set(tile_set_edges edges, index_t tile_size)
-      : edges_(std::move(edges)), tile_size_(tile_size),
+      : edges_(std::move(edges)),
+        tile_size_(tile_size),
         pixels_(static_cast<std::size_t>(edges_.size() * tile_size * tile_size * C)) {}
 
   tile_set_edges edges_;
@@ -211,10 +220,10 @@ class wang_tile_set {
 /// Options of build_wang_tiles().
 struct wang_tile_options {
   index_t tile_size = 64;
-  int horizontal_colors = 2;          ///< colours of north/south edges (nh)
-  int vertical_colors = 2;            ///< colours of east/west edges (nv)
-  std::vector<wang_edges> tiles = {}; ///< tiles to build; empty = the complete set of nh² · nv² tiles.
-                                      ///< tile_set_edges::modular_subset(2, 2, 2) gives Cohen's 8.
+  int horizontal_colors = 2;           ///< colours of north/south edges (nh)
+  int vertical_colors = 2;             ///< colours of east/west edges (nv)
+  std::vector<wang_edges> tiles = {};  ///< tiles to build; empty = the complete set of nh² · nv² tiles.
+                                       ///< tile_set_edges::modular_subset(2, 2, 2) gives Cohen's 8.
   int mip_levels = 0;      ///< mip levels (level 0 included) an atlas of the set must sample exactly across tile
                            ///< borders and corners: sets border = 2^(mip_levels − 1) and needs tile_size to be a
                            ///< multiple of it. 0 = automatic: the most, up to 4, with 2^(L−1) dividing tile_size
@@ -225,9 +234,10 @@ struct wang_tile_options {
   index_t border = 0;      ///< outermost pixels copied from the edge samples and never cut, and the depth of the
                            ///< corner sample every tile corner shares; 0 = 2^(mip_levels − 1)
   double tolerance = 0.1;  ///< candidate selection tolerance (as in quilt())
-  double boundary_weight = 64;  ///< overlap-error weight of fixed border pixels next to unsynthesized ones (as in quilt_options)
-  index_t min_candidates = 4;   ///< draw each patch among at least this many best candidates, so tiles sharing
-                                ///< edges still get different interiors (1 = pure tolerance rule)
+  double boundary_weight =
+      64;  ///< overlap-error weight of fixed border pixels next to unsynthesized ones (as in quilt_options)
+  index_t min_candidates = 4;  ///< draw each patch among at least this many best candidates, so tiles sharing
+                               ///< edges still get different interiors (1 = pure tolerance rule)
   std::uint64_t seed = 1;
   tessera::progress progress = {};
 };
@@ -241,23 +251,24 @@ inline result<wang_sizes> resolve_wang_sizes(const wang_tile_options& o, index_t
   wang_sizes z{o.tile_size, o.overlap, o.patch_size, o.border};
   if (z.tile < 4) return status::invalid_argument(detail::cat("tile_size must be at least 4, got ", z.tile));
   if (z.tile > ew || z.tile > eh)
-    return status::invalid_argument(detail::cat("tile_size ", z.tile, " is larger than the ", ew, " x ", eh,
-                                                " exemplar allows (each edge sample is a tile_size-long strip of it); use a "
-                                                "larger exemplar (quilt() can make one) or smaller tiles"));
+    return status::invalid_argument(
+        detail::cat("tile_size ", z.tile, " is larger than the ", ew, " x ", eh,
+                    " exemplar allows (each edge sample is a tile_size-long strip of it); use a "
+                    "larger exemplar (quilt() can make one) or smaller tiles"));
   if (z.overlap < 0 || z.patch < 0 || z.border < 0)
-    return status::invalid_argument(detail::cat("overlap, patch_size and border must be >= 0 (0 = automatic), got ", z.overlap,
-                                                ", ", z.patch, ", ", z.border));
+    return status::invalid_argument(detail::cat("overlap, patch_size and border must be >= 0 (0 = automatic), got ",
+                                                z.overlap, ", ", z.patch, ", ", z.border));
   if (o.mip_levels < 0 || o.mip_levels > 16)
     return status::invalid_argument(detail::cat("mip_levels must be in [0, 16] (0 = automatic), got ", o.mip_levels));
   if (o.mip_levels > 0) {
     const index_t need = index_t{1} << (o.mip_levels - 1);
     if (z.tile % need != 0)
-      return status::invalid_argument(detail::cat("tile_size ", z.tile, " must be a multiple of 2^(mip_levels - 1) = ", need,
-                                                  " for ", o.mip_levels, " exact mip levels"));
+      return status::invalid_argument(detail::cat("tile_size ", z.tile, " must be a multiple of 2^(mip_levels - 1) = ",
+                                                  need, " for ", o.mip_levels, " exact mip levels"));
     if (z.border == 0) z.border = need;
     if (z.border < need)
-      return status::invalid_argument(detail::cat("border ", z.border, " is smaller than the 2^(mip_levels - 1) = ", need,
-                                                  " texels ", o.mip_levels, " exact mip levels need"));
+      return status::invalid_argument(detail::cat("border ", z.border, " is smaller than the 2^(mip_levels - 1) = ",
+                                                  need, " texels ", o.mip_levels, " exact mip levels need"));
   } else if (z.border == 0) {
     index_t need = 8;  // 4 levels at most
     while (need > 1 && (z.tile % need != 0 || need > std::max<index_t>(1, z.tile / 8))) need /= 2;
@@ -267,14 +278,18 @@ inline result<wang_sizes> resolve_wang_sizes(const wang_tile_options& o, index_t
   if (z.patch == 0) {
     // about tile/3, then the smallest patch covering the tile with the same number of patches
     const index_t target = std::max<index_t>(3 * z.overlap, z.tile / 3);
-    const index_t n = std::max<index_t>(1, (z.tile - z.overlap + (target - z.overlap) / 2) / std::max<index_t>(1, target - z.overlap));
+    const index_t n = std::max<index_t>(
+        1, (z.tile - z.overlap + (target - z.overlap) / 2) / std::max<index_t>(1, target - z.overlap));
     z.patch = std::min(z.tile, (z.tile - z.overlap + n - 1) / n + z.overlap);
   }
   if (2 * z.overlap > z.patch || z.overlap < 1)
-    return status::invalid_argument(detail::cat("overlap ", z.overlap, " must be in [1, patch_size / 2 = ", z.patch / 2, "]"));
-  if (z.patch > z.tile) return status::invalid_argument(detail::cat("patch_size ", z.patch, " exceeds tile_size ", z.tile));
+    return status::invalid_argument(
+        detail::cat("overlap ", z.overlap, " must be in [1, patch_size / 2 = ", z.patch / 2, "]"));
+  if (z.patch > z.tile)
+    return status::invalid_argument(detail::cat("patch_size ", z.patch, " exceeds tile_size ", z.tile));
   if (z.patch > ew || z.patch > eh || 2 * z.overlap > std::min(ew, eh))
-    return status::invalid_argument(detail::cat("patch_size ", z.patch, " does not fit the ", ew, " x ", eh, " exemplar"));
+    return status::invalid_argument(
+        detail::cat("patch_size ", z.patch, " does not fit the ", ew, " x ", eh, " exemplar"));
   if (z.border >= z.overlap)
     return status::invalid_argument(detail::cat("border ", z.border, " must be smaller than overlap ", z.overlap,
                                                 " (the cut needs room inside each edge sample)"));
@@ -303,11 +318,13 @@ inline result<wang_sizes> resolve_wang_sizes(const wang_tile_options& o, index_t
 /// Thread safety: reads `exemplar` only.
 template <Image E, Executor X = serial_executor>
 [[nodiscard]] result<wang_tile_set<channel_t<E>, channels_v<E>>> build_wang_tiles(const E& exemplar,
-                                                                                   const wang_tile_options& options = {},
-                                                                                   X&& exec = {}) {
+                                                                                  const wang_tile_options& options = {},
+                                                                                  X&& exec = {}) {
   using T = channel_t<E>;
   constexpr int C = channels_v<E>;
-  if (auto s = detail::validate_quilt_extent(exemplar, "exemplar", max_quilt_exemplar_pixels, "max_quilt_exemplar_pixels"); !s)
+  if (auto s =
+          detail::validate_quilt_extent(exemplar, "exemplar", max_quilt_exemplar_pixels, "max_quilt_exemplar_pixels");
+      !s)
     return s;
   if (auto s = validate_color_counts(options.horizontal_colors, options.vertical_colors); !s) return s;
   const int nh = options.horizontal_colors, nv = options.vertical_colors;
@@ -316,7 +333,8 @@ template <Image E, Executor X = serial_executor>
   if (!sizes) return sizes.error();
   // named locals, not a structured binding: lambdas below capture them (Clang 14 cannot capture bindings)
   const index_t ts = sizes->tile, ov = sizes->overlap, patch = sizes->patch, border = sizes->border;
-  const index_t count = options.tiles.empty() ? complete_tile_count(nh, nv) : static_cast<index_t>(options.tiles.size());
+  const index_t count =
+      options.tiles.empty() ? complete_tile_count(nh, nv) : static_cast<index_t>(options.tiles.size());
   if (auto s = detail::validate_tile_set_extent(count, ts, sizeof(T) * C); !s) return s;
   auto edges = options.tiles.empty() ? tile_set_edges::complete(nh, nv) : tile_set_edges::create(nh, nv, options.tiles);
   if (!edges) return edges.error();
@@ -344,7 +362,8 @@ template <Image E, Executor X = serial_executor>
   // Edge extraction (paper 000 §3.1): the corner sample and one strip per colour, whose ends are
   // the corner sample's halves (detail/wang_edge_samples.hpp).
   detail::wang_frame_samples<T, C> frame;
-  if (auto s = detail::build_frame_samples(src, ts, ov, border, nh, nv, prm, options.tolerance, exec, frame); !s) return s;
+  if (auto s = detail::build_frame_samples(src, ts, ov, border, nh, nv, prm, options.tolerance, exec, frame); !s)
+    return s;
 
   const index_t n = set->size();
   std::vector<status> failures(static_cast<std::size_t>(n));

@@ -35,7 +35,7 @@ struct mesh_preview_options {
   double margin = 0.04;           ///< empty border, fraction of the image size
   std::array<float, 3> color{0.80f, 0.74f, 0.64f};
   std::array<float, 3> background{1.0f, 1.0f, 1.0f};
-  bool tint_elements = true;      ///< vary the colour slightly per connected component
+  bool tint_elements = true;  ///< vary the colour slightly per connected component
   /// Overlay the grid lines x = k * grid_spacing, y = k * grid_spacing (k integer) on the base plane
   /// z = grid_height over the mesh's XY bounds: tile borders of a tiled plane. 0 = no grid.
   double grid_spacing = 0;
@@ -57,13 +57,16 @@ inline std::array<float, 3> tint(std::array<float, 3> c, index_t id) {
 /// faces, an image size outside 1 to 8192 pixels a side, non-finite angles, a negative grid spacing.
 /// O(F + pixels); rasterization runs through `exec` (same image for every executor).
 template <Mesh M, Executor E = serial_executor>
-result<image_buffer<std::uint8_t, 3>> render_mesh_preview(const M& mesh, const mesh_preview_options& o = {}, E&& exec = {}) {
+result<image_buffer<std::uint8_t, 3>> render_mesh_preview(const M& mesh, const mesh_preview_options& o = {},
+                                                          E&& exec = {}) {
   if (o.width < 1 || o.height < 1 || o.width > 8192 || o.height > 8192)
-    return status::invalid_argument(detail::cat("render_mesh_preview: image size must be 1 to 8192 a side, got ", o.width, " x ", o.height));
+    return status::invalid_argument(
+        detail::cat("render_mesh_preview: image size must be 1 to 8192 a side, got ", o.width, " x ", o.height));
   if (!std::isfinite(o.azimuth_degrees) || !std::isfinite(o.elevation_degrees) || !(o.margin >= 0 && o.margin < 0.5))
     return status::invalid_argument("render_mesh_preview: angles must be finite and margin in [0, 0.5)");
   if (!(o.grid_spacing >= 0) || !std::isfinite(o.grid_height))
-    return status::invalid_argument(detail::cat("render_mesh_preview: grid_spacing must be >= 0, got ", o.grid_spacing));
+    return status::invalid_argument(
+        detail::cat("render_mesh_preview: grid_spacing must be >= 0, got ", o.grid_spacing));
   auto tm = to_tri_mesh(mesh, "render_mesh_preview: mesh");
   if (!tm) return tm.error();
   const tri_mesh& m = *tm;
@@ -99,7 +102,8 @@ result<image_buffer<std::uint8_t, 3>> render_mesh_preview(const M& mesh, const m
       m.num_faces(), depth->rect(),
       [&](index_t i, raster_triangle& t) {
         const auto& fc = m.faces[static_cast<std::size_t>(i)];
-        t = {sv[static_cast<std::size_t>(fc[0])], sv[static_cast<std::size_t>(fc[1])], sv[static_cast<std::size_t>(fc[2])]};
+        t = {sv[static_cast<std::size_t>(fc[0])], sv[static_cast<std::size_t>(fc[1])],
+             sv[static_cast<std::size_t>(fc[2])]};
         return true;
       },
       [&](index_t i, const fragment& fr) {
@@ -125,7 +129,8 @@ result<image_buffer<std::uint8_t, 3>> render_mesh_preview(const M& mesh, const m
         continue;
       }
       const auto& fc = m.faces[static_cast<std::size_t>(fi)];
-      vec3 n = normalized(vn[static_cast<std::size_t>(fc[0])] * bary_at[px][0] + vn[static_cast<std::size_t>(fc[1])] * bary_at[px][1] +
+      vec3 n = normalized(vn[static_cast<std::size_t>(fc[0])] * bary_at[px][0] +
+                          vn[static_cast<std::size_t>(fc[1])] * bary_at[px][1] +
                           vn[static_cast<std::size_t>(fc[2])] * bary_at[px][2]);
       if (dot(n, f) > 0) n = -n;  // back faces lit like front faces
       const double shade = 0.28 + 0.62 * std::max(0.0, dot(n, l1)) + 0.25 * std::max(0.0, dot(n, l2));
@@ -153,7 +158,8 @@ result<image_buffer<std::uint8_t, 3>> render_mesh_preview(const M& mesh, const m
     const double g = o.grid_spacing;
     const double gx0 = std::floor(box.min.x / g) * g, gx1 = std::ceil(box.max.x / g) * g;
     const double gy0 = std::floor(box.min.y / g) * g, gy1 = std::ceil(box.max.y / g) * g;
-    if ((gx1 - gx0) / g + (gy1 - gy0) / g > 4096) return status::invalid_argument("render_mesh_preview: grid_spacing is too fine");
+    if ((gx1 - gx0) / g + (gy1 - gy0) / g > 4096)
+      return status::invalid_argument("render_mesh_preview: grid_spacing is too fine");
     for (double x = gx0; x <= gx1 + 1e-9 * g; x += g) line({x, gy0, o.grid_height}, {x, gy1, o.grid_height});
     for (double y = gy0; y <= gy1 + 1e-9 * g; y += g) line({gx0, y, o.grid_height}, {gx1, y, o.grid_height});
   }

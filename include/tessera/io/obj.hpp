@@ -99,8 +99,8 @@ inline result<tri_mesh> parse_obj(std::string_view text, std::string_view name =
           if (!ttok.empty()) {
             index_t t = 0;
             if (!detail::obj_index(ttok, static_cast<index_t>(texcoords.size()), t))
-              return err(detail::cat("face corner '", tok, "' refers to a texture coordinate outside 1..",
-                                     texcoords.size()));
+              return err(
+                  detail::cat("face corner '", tok, "' refers to a texture coordinate outside 1..", texcoords.size()));
             corner_t.push_back(t);
           }
         }
@@ -114,7 +114,8 @@ inline result<tri_mesh> parse_obj(std::string_view text, std::string_view name =
         if (a == b || b == c || a == c)
           return err(detail::cat("degenerate face: it repeats vertex ", (a == b || a == c) ? a + 1 : b + 1));
         m.faces.push_back({a, b, c});
-        if (corner_t.empty()) face_uvs.push_back({});
+        if (corner_t.empty())
+          face_uvs.push_back({});
         else
           face_uvs.push_back({texcoords[static_cast<std::size_t>(corner_t[0])],
                               texcoords[static_cast<std::size_t>(corner_t[i])],

@@ -44,13 +44,15 @@ inline result<tri_mesh> parse_off(std::string_view text, std::string_view name =
   int got = next_content();
   if (got < 0) return err("binary data: this is not a text OFF file");
   if (got == 0)
-    return detail::parse_error_at_line(name, std::max<index_t>(1, lines.line_number()), "empty file: expected the OFF keyword");
+    return detail::parse_error_at_line(name, std::max<index_t>(1, lines.line_number()),
+                                       "empty file: expected the OFF keyword");
   const std::string_view keyword = detail::next_token(rest);
   if (keyword.size() < 3 || keyword.substr(keyword.size() - 3) != "OFF")
     return err(detail::cat("expected the OFF keyword, got '", keyword, "'"));
   const std::string_view prefix = keyword.substr(0, keyword.size() - 3);
   for (char c : prefix) {
-    if (c == '4' || c == 'n') return status::unsupported(detail::cat(name, ": ", keyword, " (not 3D) is not supported"));
+    if (c == '4' || c == 'n')
+      return status::unsupported(detail::cat(name, ": ", keyword, " (not 3D) is not supported"));
     if (c != 'S' && c != 'T' && c != 'C' && c != 'N')
       return err(detail::cat("expected the OFF keyword, got '", keyword, "'"));
   }

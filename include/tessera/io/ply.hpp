@@ -46,20 +46,23 @@ status read_ply_elements(const ply_header& h, Source& src, std::string_view name
   std::vector<index_t> corners;
   for (const ply_element& e : h.elements) {
     std::size_t least = 0;  // bytes one element occupies at the very least
-    for (const ply_property& p : e.properties) least += Source::min_value_bytes(p.is_list ? p.count_type : p.value_type);
+    for (const ply_property& p : e.properties)
+      least += Source::min_value_bytes(p.is_list ? p.count_type : p.value_type);
     if (least > 0 && static_cast<std::size_t>(e.count) > (src.remaining() + 1) / least) {  // +1: no final newline
-      const std::string msg = cat("truncated or corrupt: the header (line ", e.header_line, ") declares ", e.count, " '",
-                                  e.name, "' elements but only ", src.remaining(), " bytes of data follow");
-      if constexpr (std::is_same_v<Source, ply_binary_source>) return src.error_ahead(msg);
-      else return parse_error_at_line(name, e.header_line, msg);
+      const std::string msg = cat("truncated or corrupt: the header (line ", e.header_line, ") declares ", e.count,
+                                  " '", e.name, "' elements but only ", src.remaining(), " bytes of data follow");
+      if constexpr (std::is_same_v<Source, ply_binary_source>)
+        return src.error_ahead(msg);
+      else
+        return parse_error_at_line(name, e.header_line, msg);
     }
     const bool is_vertex = &e == vertex, is_face = e.name == "face";
     int xyz[3] = {-1, -1, -1}, uv[2] = {-1, -1}, indices = -1, texcoord = -1;
     if (is_vertex) {
       static constexpr std::string_view axes[3] = {"x", "y", "z"};
       for (int k = 0; k < 3; ++k) xyz[k] = e.find(axes[k]);
-      static constexpr std::string_view uv_names[4][2] = {{"u", "v"}, {"s", "t"}, {"texture_u", "texture_v"},
-                                                           {"texture_s", "texture_t"}};
+      static constexpr std::string_view uv_names[4][2] = {
+          {"u", "v"}, {"s", "t"}, {"texture_u", "texture_v"}, {"texture_s", "texture_t"}};
       for (const auto& n : uv_names)
         if (uv[0] < 0 && e.find(n[0]) >= 0 && e.find(n[1]) >= 0) uv[0] = e.find(n[0]), uv[1] = e.find(n[1]);
       for (int k = 0; k < 3; ++k)
@@ -116,7 +119,8 @@ status read_ply_elements(const ply_header& h, Source& src, std::string_view name
               return src.error_here(cat(where(), ": vertex index ", d, " outside 0..", nv - 1));
             corners.push_back(static_cast<index_t>(d));
           }
-          if (corners.size() < 3) return src.error_here(cat(where(), ": a face needs at least 3 corners, got ", corners.size()));
+          if (corners.size() < 3)
+            return src.error_here(cat(where(), ": a face needs at least 3 corners, got ", corners.size()));
         } else if (j == texcoord) {
           for (std::size_t k = 0; k + 1 < list.size(); k += 2) corner_uv.push_back({list[k], list[k + 1]});
           if (list.size() % 2 != 0) return src.error_here(cat(where(), ": texcoord holds an odd number of values"));
@@ -127,7 +131,8 @@ status read_ply_elements(const ply_header& h, Source& src, std::string_view name
         if (have_vertex_uv) vertex_uv.push_back(t);
       } else if (is_face) {
         if (texcoord >= 0 && corner_uv.size() != corners.size())
-          return src.error_here(cat(where(), ": texcoord has ", corner_uv.size(), " uv pairs for ", corners.size(), " corners"));
+          return src.error_here(
+              cat(where(), ": texcoord has ", corner_uv.size(), " uv pairs for ", corners.size(), " corners"));
         for (std::size_t k = 1; k + 1 < corners.size(); ++k) {
           const index_t a = corners[0], b = corners[k], c = corners[k + 1];
           if (a == b || b == c || a == c)
@@ -143,7 +148,9 @@ status read_ply_elements(const ply_header& h, Source& src, std::string_view name
   } else if (have_vertex_uv) {
     m.uvs.resize(m.faces.size());
     for (std::size_t f = 0; f < m.faces.size(); ++f)
-      for (int k = 0; k < 3; ++k) m.uvs[f][static_cast<std::size_t>(k)] = vertex_uv[static_cast<std::size_t>(m.faces[f][static_cast<std::size_t>(k)])];
+      for (int k = 0; k < 3; ++k)
+        m.uvs[f][static_cast<std::size_t>(k)] =
+            vertex_uv[static_cast<std::size_t>(m.faces[f][static_cast<std::size_t>(k)])];
   }
   return {};
 }
@@ -205,7 +212,7 @@ std::string format_ply(const M& m, const ply_write_options& opts = {}) {
   if (uvs) out += "property list uchar float texcoord\n";
   out += "end_header\n";
   out.reserve(out.size() + static_cast<std::size_t>(opts.binary ? 24 * nv + 13 * nf + (uvs ? 25 * nf : 0)
-                                                                 : 40 * nv + 24 * nf + (uvs ? 60 * nf : 0)));
+                                                                : 40 * nv + 24 * nf + (uvs ? 60 * nf : 0)));
   for (index_t v = 0; v < nv; ++v) {
     const vec3 p = tessera::vertex_position(m, v);
     for (int k = 0; k < 3; ++k) {
@@ -220,7 +227,8 @@ std::string format_ply(const M& m, const ply_write_options& opts = {}) {
   for (index_t f = 0; f < nf; ++f) {
     if (opts.binary) {
       out += '\3';
-      for (int k = 0; k < 3; ++k) detail::put_binary(out, static_cast<std::int32_t>(tessera::face_vertex(m, f, k)), big);
+      for (int k = 0; k < 3; ++k)
+        detail::put_binary(out, static_cast<std::int32_t>(tessera::face_vertex(m, f, k)), big);
     } else {
       out += '3';
       for (int k = 0; k < 3; ++k) {
@@ -230,8 +238,10 @@ std::string format_ply(const M& m, const ply_write_options& opts = {}) {
     }
     if constexpr (UVMesh<M>) {
       if (uvs) {
-        if (opts.binary) out += '\6';
-        else out += " 6";
+        if (opts.binary)
+          out += '\6';
+        else
+          out += " 6";
         for (int k = 0; k < 3; ++k) {
           const vec2 t = tessera::corner_uv(m, f, k);
           for (float c : {static_cast<float>(t.x), static_cast<float>(t.y)}) {
@@ -257,7 +267,8 @@ template <Mesh M>
 status write_ply(const std::string& path, const M& m, const ply_write_options& opts = {}) {
   if (auto s = validate_mesh(m, path); !s) return s;
   if (tessera::num_vertices(m) > std::numeric_limits<std::int32_t>::max())
-    return status::size_overflow(detail::cat(path, ": ", tessera::num_vertices(m), " vertices exceed PLY's 32-bit indices"));
+    return status::size_overflow(
+        detail::cat(path, ": ", tessera::num_vertices(m), " vertices exceed PLY's 32-bit indices"));
   return detail::write_file(path, format_ply(m, opts));
 }
 

@@ -53,8 +53,12 @@ struct png_info {
 inline result<png_info> decode_png_info(const unsigned char* data, std::size_t size, std::string_view name = "png") {
   auto l = detail::check_png(data, size, name);
   if (!l) return l.error();
-  return png_info{static_cast<index_t>(l->width), static_cast<index_t>(l->height), l->channels(),
-                  l->bit_depth == 16 ? 16 : 8,    l->bit_depth,                     l->color_type == 3,
+  return png_info{static_cast<index_t>(l->width),
+                  static_cast<index_t>(l->height),
+                  l->channels(),
+                  l->bit_depth == 16 ? 16 : 8,
+                  l->bit_depth,
+                  l->color_type == 3,
                   l->interlaced};
 }
 
@@ -95,9 +99,10 @@ result<image_buffer<T, C>> decode_png(const unsigned char* data, std::size_t siz
   if (auto s = validate_image_extent(info->width, info->height, C, name); !s) return s;
   const int fc = info->channels;
   const bool wide = info->bit_depth == 16;
-  if (size > INT_MAX || static_cast<double>(info->width) * static_cast<double>(info->height) * fc * (wide ? 2 : 1) > INT_MAX)
-    return status::unsupported(detail::cat(name, ": ", info->width, " x ", info->height,
-                                           " is too large for the PNG decoder (2 GB limit)"));
+  if (size > INT_MAX ||
+      static_cast<double>(info->width) * static_cast<double>(info->height) * fc * (wide ? 2 : 1) > INT_MAX)
+    return status::unsupported(
+        detail::cat(name, ": ", info->width, " x ", info->height, " is too large for the PNG decoder (2 GB limit)"));
   int w = 0, h = 0, got = 0;
   const int len = static_cast<int>(size);
   std::unique_ptr<void, detail::stbi_deleter> raw(
@@ -117,8 +122,10 @@ result<image_buffer<T, C>> decode_png(const unsigned char* data, std::size_t siz
       default: run.template operator()<S, 4>(); break;
     }
   };
-  if (wide) by_channels.template operator()<std::uint16_t>();
-  else by_channels.template operator()<std::uint8_t>();
+  if (wide)
+    by_channels.template operator()<std::uint16_t>();
+  else
+    by_channels.template operator()<std::uint8_t>();
   return out;
 }
 
@@ -160,7 +167,8 @@ result<std::vector<unsigned char>> encode_png(const I& img, std::string_view nam
       }
     }
   }
-  const auto filtered = detail::png_filter_rows(raw.data(), row_bytes, static_cast<std::size_t>(h), C * bytes_per_sample);
+  const auto filtered =
+      detail::png_filter_rows(raw.data(), row_bytes, static_cast<std::size_t>(h), C * bytes_per_sample);
   int zlen = 0;
   std::unique_ptr<unsigned char, decltype(&std::free)> z(
       stbi_zlib_compress(const_cast<unsigned char*>(filtered.data()), static_cast<int>(filtered.size()), &zlen, 8),

@@ -43,9 +43,9 @@ struct manifest_field {
 
 /// One tile of a manifest.
 struct tile_manifest_entry {
-  index_t index = 0;         ///< tile number; the entries hold each of 0..n-1 once
-  std::string file;          ///< file name relative to the directory ("tile_3.png")
-  wang_edges edges = {};     ///< [north, east, south, west]
+  index_t index = 0;      ///< tile number; the entries hold each of 0..n-1 once
+  std::string file;       ///< file name relative to the directory ("tile_3.png")
+  wang_edges edges = {};  ///< [north, east, south, west]
   std::vector<manifest_field> extra = {};
   friend bool operator==(const tile_manifest_entry&, const tile_manifest_entry&) = default;
 };
@@ -99,7 +99,8 @@ inline result<tile_manifest> parse_tile_manifest(std::string_view text, std::str
   if (!json) return json.error();
   auto bad = [&](auto... what) { return status::parse_error(detail::cat(name, ": ", what...)); };
   if (!json->is_object()) return bad("the manifest must be a JSON object");
-  auto integer = [&](const detail::json_value& obj, std::string_view key, index_t& out, std::string_view where) -> status {
+  auto integer = [&](const detail::json_value& obj, std::string_view key, index_t& out,
+                     std::string_view where) -> status {
     const detail::json_value* v = obj.find(key);
     if (v == nullptr) return bad(where, "missing \"", key, "\"");
     if (!v->is_number() || v->number != std::floor(v->number) || std::fabs(v->number) > 9.0e15)
@@ -161,13 +162,15 @@ inline std::string format_tile_manifest(const tile_manifest& m) {
   std::string out = "{\n";
   out += detail::cat("  \"tile_size\": ", m.tile_size, ",\n  \"horizontal_colors\": ", m.horizontal_colors,
                      ",\n  \"vertical_colors\": ", m.vertical_colors, ",\n");
-  for (const auto& f : m.extra) out += detail::cat("  ", detail::json_quote(f.name), ": ", detail::json_number(f.value), ",\n");
+  for (const auto& f : m.extra)
+    out += detail::cat("  ", detail::json_quote(f.name), ": ", detail::json_number(f.value), ",\n");
   out += "  \"tiles\": [\n";
   for (std::size_t i = 0; i < m.tiles.size(); ++i) {
     const auto& t = m.tiles[i];
-    out += detail::cat("    {\"index\": ", t.index, ", \"file\": ", detail::json_quote(t.file), ", \"edges\": [", t.edges.north,
-                       ", ", t.edges.east, ", ", t.edges.south, ", ", t.edges.west, "]");
-    for (const auto& f : t.extra) out += detail::cat(", ", detail::json_quote(f.name), ": ", detail::json_number(f.value));
+    out += detail::cat("    {\"index\": ", t.index, ", \"file\": ", detail::json_quote(t.file), ", \"edges\": [",
+                       t.edges.north, ", ", t.edges.east, ", ", t.edges.south, ", ", t.edges.west, "]");
+    for (const auto& f : t.extra)
+      out += detail::cat(", ", detail::json_quote(f.name), ": ", detail::json_number(f.value));
     out += i + 1 < m.tiles.size() ? "},\n" : "}\n";
   }
   out += "  ]\n}\n";
@@ -183,7 +186,9 @@ inline result<tile_set_edges> manifest_tile_set(const tile_manifest& m) {
 }
 
 /// The path of the manifest inside a tile directory: DIR/tiles.json.
-inline std::string tile_manifest_path(const std::string& dir) { return (std::filesystem::path(dir) / "tiles.json").string(); }
+inline std::string tile_manifest_path(const std::string& dir) {
+  return (std::filesystem::path(dir) / "tiles.json").string();
+}
 
 namespace detail {
 /// The text of DIR/tiles.json; io_error "DIR/tiles.json: cannot open the tile manifest".
@@ -195,7 +200,8 @@ inline result<std::string> read_tile_manifest_text(const std::string& dir) {
 }
 /// The path of tile `t`'s file in DIR, or an io_error naming it when it is missing (`manifest`: the
 /// manifest's path, for the message).
-inline result<std::string> existing_tile_file(const std::string& dir, const tile_manifest_entry& t, const std::string& manifest) {
+inline result<std::string> existing_tile_file(const std::string& dir, const tile_manifest_entry& t,
+                                              const std::string& manifest) {
   const auto file = std::filesystem::path(dir) / t.file;
   std::error_code ec;
   if (!std::filesystem::is_regular_file(file, ec))

@@ -92,7 +92,8 @@ inline constexpr index_t max_raster_coordinate = index_t{1} << 19;
 
 /// Checks a pixel rectangle: 0 <= x0 <= x1 <= 2^19, same for y.
 inline status validate_pixel_rect(const pixel_rect& r, std::string_view what = "pixel_rect") {
-  if (r.x0 < 0 || r.y0 < 0 || r.x1 < r.x0 || r.y1 < r.y0 || r.x1 > max_raster_coordinate || r.y1 > max_raster_coordinate)
+  if (r.x0 < 0 || r.y0 < 0 || r.x1 < r.x0 || r.y1 < r.y0 || r.x1 > max_raster_coordinate ||
+      r.y1 > max_raster_coordinate)
     return status::invalid_argument(detail::cat(what, ": [", r.x0, ", ", r.x1, ") x [", r.y0, ", ", r.y1,
                                                 ") must satisfy 0 <= x0 <= x1 <= 2^19 and 0 <= y0 <= y1 <= 2^19"));
   return {};
@@ -114,12 +115,16 @@ inline int keep_orientation(face_culling c) noexcept {
   return c == face_culling::cull_clockwise ? -1 : c == face_culling::cull_counter_clockwise ? 1 : 0;
 }
 inline std::array<std::array<double, 4>, 3> pack(const raster_triangle& t) noexcept {
-  return {{{t[0].x, t[0].y, t[0].z, t[0].inv_w}, {t[1].x, t[1].y, t[1].z, t[1].inv_w}, {t[2].x, t[2].y, t[2].z, t[2].inv_w}}};
+  return {{{t[0].x, t[0].y, t[0].z, t[0].inv_w},
+           {t[1].x, t[1].y, t[1].z, t[1].inv_w},
+           {t[2].x, t[2].y, t[2].z, t[2].inv_w}}};
 }
 inline std::array<std::array<double, 4>, 3> pack(const clip_triangle& t) noexcept {
   return {{{t[0].x, t[0].y, t[0].z, t[0].w}, {t[1].x, t[1].y, t[1].z, t[1].w}, {t[2].x, t[2].y, t[2].z, t[2].w}}};
 }
-inline bool make_polygon(const raster_triangle& t, const raster_viewport&, polygon& p) { return screen_polygon(pack(t), p); }
+inline bool make_polygon(const raster_triangle& t, const raster_viewport&, polygon& p) {
+  return screen_polygon(pack(t), p);
+}
 inline bool make_polygon(const clip_triangle& t, const raster_viewport& vp, polygon& p) {
   return clip_polygon_to_screen(pack(t), {vp.x, vp.y, vp.width, vp.height}, vp.depth == clip_depth::zero_to_one, p);
 }
@@ -150,8 +155,8 @@ status rasterize_triangle(const raster_triangle& tri, const pixel_rect& clip, F&
 /// pixels). Fragments carry perspective-correct weights of the given corners and window depth in
 /// [0, 1]. Errors: invalid viewport or clip. Thread-safe.
 template <class F>
-status rasterize_clip_triangle(const clip_triangle& tri, const raster_viewport& viewport, const pixel_rect& clip, F&& fn,
-                               face_culling culling = face_culling::none) {
+status rasterize_clip_triangle(const clip_triangle& tri, const raster_viewport& viewport, const pixel_rect& clip,
+                               F&& fn, face_culling culling = face_culling::none) {
   if (auto s = validate_raster_viewport(viewport); !s) return s;
   if (auto s = validate_pixel_rect(clip, "clip"); !s) return s;
   detail::raster::polygon p;
@@ -215,11 +220,13 @@ status rasterize_batch(index_t count, const raster_viewport& vp, const pixel_rec
     for (index_t i = c * per; i < std::min(count, (c + 1) * per); ++i) {
       const auto& r = range[static_cast<std::size_t>(i)];
       for (std::int32_t yy = r[1]; yy <= r[3]; ++yy)
-        for (std::int32_t xx = r[0]; xx <= r[2]; ++xx) bins[static_cast<std::size_t>(cur[yy * tx + xx]++)] = static_cast<std::int32_t>(i);
+        for (std::int32_t xx = r[0]; xx <= r[2]; ++xx)
+          bins[static_cast<std::size_t>(cur[yy * tx + xx]++)] = static_cast<std::int32_t>(i);
     }
   });
   exec.parallel_for(0, tiles, [&](index_t t) {
-    const pixel_rect tile{clip.x0 + (t % tx) * ts, clip.y0 + (t / tx) * ts, std::min(clip.x1, clip.x0 + (t % tx + 1) * ts),
+    const pixel_rect tile{clip.x0 + (t % tx) * ts, clip.y0 + (t / tx) * ts,
+                          std::min(clip.x1, clip.x0 + (t % tx + 1) * ts),
                           std::min(clip.y1, clip.y0 + (t / tx + 1) * ts)};
     for (index_t k = start[static_cast<std::size_t>(t)]; k < start[static_cast<std::size_t>(t + 1)]; ++k) {
       const index_t i = bins[static_cast<std::size_t>(k)];
@@ -241,8 +248,8 @@ status rasterize_batch(index_t count, const raster_viewport& vp, const pixel_rec
 /// executor. Errors: invalid clip, count or tile_size. Work: O(count + covered pixels); memory:
 /// 16 bytes per triangle plus 4 per (triangle, tile) pair.
 template <class Get, class F, Executor E = serial_executor>
-status rasterize_triangles(index_t count, const pixel_rect& clip, Get&& triangle, F&& fn, const rasterize_options& opts = {},
-                           E&& exec = {}) {
+status rasterize_triangles(index_t count, const pixel_rect& clip, Get&& triangle, F&& fn,
+                           const rasterize_options& opts = {}, E&& exec = {}) {
   if (auto s = validate_pixel_rect(clip, "clip"); !s) return s;
   return detail::raster::rasterize_batch<raster_triangle>(count, raster_viewport{}, clip, triangle, fn, opts, exec);
 }
@@ -265,9 +272,11 @@ class depth_buffer {
  public:
   depth_buffer() = default;
   /// A width x height buffer; invalid_argument for a non-positive or overflowing size.
-  static result<depth_buffer> create(index_t width, index_t height, float clear_value = std::numeric_limits<float>::infinity()) {
+  static result<depth_buffer> create(index_t width, index_t height,
+                                     float clear_value = std::numeric_limits<float>::infinity()) {
     if (width <= 0 || height <= 0 || width > max_raster_coordinate || height > max_raster_coordinate)
-      return status::invalid_argument(detail::cat("depth_buffer: size must be 1 to 2^19 per side, got ", width, " x ", height));
+      return status::invalid_argument(
+          detail::cat("depth_buffer: size must be 1 to 2^19 per side, got ", width, " x ", height));
     depth_buffer d;
     d.width_ = width;
     d.height_ = height;

@@ -42,24 +42,24 @@ enum class scale_mode {
 };
 
 struct scale_field_options {
-  double min_scale = 0.5;  ///< smallest scale (step 3), in (0, 1]
-  index_t max_levels = 64; ///< at most this many levels (1 to 65536); match the exemplar pyramid's
+  double min_scale = 0.5;   ///< smallest scale (step 3), in (0, 1]
+  index_t max_levels = 64;  ///< at most this many levels (1 to 65536); match the exemplar pyramid's
   scale_mode mode = scale_mode::stepped;
 };
 
 /// Per-face results (indexed like the mesh; culled faces hold distance NaN, level -1, scale 0) and
 /// the figures of §2.2.
 struct scale_field {
-  std::vector<double> distance;      ///< D_i (step 1)
-  std::vector<std::int32_t> level;   ///< 0 (nearest) to levels - 1
-  std::vector<float> scale;          ///< in [min_scale, 1]
-  index_t levels = 0;                ///< L; 0 when nothing is visible
+  std::vector<double> distance;     ///< D_i (step 1)
+  std::vector<std::int32_t> level;  ///< 0 (nearest) to levels - 1
+  std::vector<float> scale;         ///< in [min_scale, 1]
+  index_t levels = 0;               ///< L; 0 when nothing is visible
   double min_distance = 0, max_distance = 0;
-  double max_delta = 0;              ///< maxδ (step 2)
-  double level_width = 0;            ///< distance slice per level (>= maxδ), 0 for one level
+  double max_delta = 0;    ///< maxδ (step 2)
+  double level_width = 0;  ///< distance slice per level (>= maxδ), 0 for one level
   double min_scale = 1;
-  index_t adjacent_pairs = 0;        ///< adjacent visible pairs examined
-  int max_level_jump = 0;            ///< largest |level_i - level_j| over adjacent visible pairs (<= 1)
+  index_t adjacent_pairs = 0;  ///< adjacent visible pairs examined
+  int max_level_jump = 0;      ///< largest |level_i - level_j| over adjacent visible pairs (<= 1)
   /// The scale of level l.
   [[nodiscard]] double level_scale(index_t l) const noexcept {
     return levels <= 1 ? 1.0 : 1.0 - (1.0 - min_scale) * static_cast<double>(l) / static_cast<double>(levels - 1);
@@ -73,8 +73,8 @@ struct scale_field {
 /// not agree (see validate_terrain_mesh), a non-finite view distance. Nothing visible is not an error: levels = 0. O(F), parallel through `exec`;
 /// deterministic (maxima are order-independent).
 template <Executor E = serial_executor>
-status assign_scale_field(const terrain_mesh& mesh, const screen_projection& projection, const scale_field_options& opts,
-                          scale_field& out, E&& exec = {}) {
+status assign_scale_field(const terrain_mesh& mesh, const screen_projection& projection,
+                          const scale_field_options& opts, scale_field& out, E&& exec = {}) {
   if (!(opts.min_scale > 0 && opts.min_scale <= 1))
     return status::invalid_argument(detail::cat("min_scale must be in (0, 1], got ", opts.min_scale));
   if (opts.max_levels < 1 || opts.max_levels > 65536)
@@ -88,10 +88,12 @@ status assign_scale_field(const terrain_mesh& mesh, const screen_projection& pro
   out.scale.resize(static_cast<std::size_t>(nf));
   exec.parallel_for(0, (nf + block - 1) / block, [&](index_t c) {
     const auto a = static_cast<std::size_t>(c * block), b = static_cast<std::size_t>(std::min(nf, (c + 1) * block));
-    std::fill(out.distance.begin() + static_cast<std::ptrdiff_t>(a), out.distance.begin() + static_cast<std::ptrdiff_t>(b),
-              std::numeric_limits<double>::quiet_NaN());
-    std::fill(out.level.begin() + static_cast<std::ptrdiff_t>(a), out.level.begin() + static_cast<std::ptrdiff_t>(b), -1);
-    std::fill(out.scale.begin() + static_cast<std::ptrdiff_t>(a), out.scale.begin() + static_cast<std::ptrdiff_t>(b), 0.0f);
+    std::fill(out.distance.begin() + static_cast<std::ptrdiff_t>(a),
+              out.distance.begin() + static_cast<std::ptrdiff_t>(b), std::numeric_limits<double>::quiet_NaN());
+    std::fill(out.level.begin() + static_cast<std::ptrdiff_t>(a), out.level.begin() + static_cast<std::ptrdiff_t>(b),
+              -1);
+    std::fill(out.scale.begin() + static_cast<std::ptrdiff_t>(a), out.scale.begin() + static_cast<std::ptrdiff_t>(b),
+              0.0f);
   });
   out.min_scale = opts.min_scale;
   out.levels = 0;
@@ -111,7 +113,8 @@ status assign_scale_field(const terrain_mesh& mesh, const screen_projection& pro
   std::vector<partial> part(static_cast<std::size_t>(chunks));
   auto for_chunks = [&](auto&& body) {
     exec.parallel_for(0, chunks, [&](index_t c) {
-      for (index_t i = c * block; i < std::min(nvis, (c + 1) * block); ++i) body(part[static_cast<std::size_t>(c)], vis[i]);
+      for (index_t i = c * block; i < std::min(nvis, (c + 1) * block); ++i)
+        body(part[static_cast<std::size_t>(c)], vis[i]);
     });
   };
   // step 1: view distances (and the check that every visible entry is a visible face)
@@ -119,8 +122,9 @@ status assign_scale_field(const terrain_mesh& mesh, const screen_projection& pro
     partial& p = part[static_cast<std::size_t>(c)];
     for (index_t i = c * block; i < std::min(nvis, (c + 1) * block); ++i) {
       const std::int32_t f = vis[i];
-      const double d = detail::is_visible_face(projection, f) ? norm(mesh.centroids[static_cast<std::size_t>(f)] - projection.eye)
-                                                               : std::numeric_limits<double>::quiet_NaN();
+      const double d = detail::is_visible_face(projection, f)
+                           ? norm(mesh.centroids[static_cast<std::size_t>(f)] - projection.eye)
+                           : std::numeric_limits<double>::quiet_NaN();
       if (!std::isfinite(d)) {
         if (p.bad < 0) p.bad = i;
         continue;
@@ -140,12 +144,14 @@ status assign_scale_field(const terrain_mesh& mesh, const screen_projection& pro
   for_chunks([&](partial& p, std::int32_t f) {
     for (std::int32_t n : mesh.neighbors[static_cast<std::size_t>(f)])
       if (n > f && n < nf && !std::isnan(out.distance[static_cast<std::size_t>(n)])) {  // visible: has a distance
-        p.delta = std::max(p.delta, std::abs(out.distance[static_cast<std::size_t>(f)] - out.distance[static_cast<std::size_t>(n)]));
+        p.delta = std::max(
+            p.delta, std::abs(out.distance[static_cast<std::size_t>(f)] - out.distance[static_cast<std::size_t>(n)]));
         ++p.pairs;
       }
   });
   double dmin = std::numeric_limits<double>::infinity(), dmax = -dmin, delta = 0;
-  for (const partial& p : part) dmin = std::min(dmin, p.dmin), dmax = std::max(dmax, p.dmax), delta = std::max(delta, p.delta);
+  for (const partial& p : part)
+    dmin = std::min(dmin, p.dmin), dmax = std::max(dmax, p.dmax), delta = std::max(delta, p.delta);
   for (const partial& p : part) out.adjacent_pairs += p.pairs;
   const double range = dmax - dmin;
   // step 5: slice width h >= maxδ (with a relative margin of 1e-9 that absorbs rounding, so floors
@@ -177,13 +183,15 @@ status assign_scale_field(const terrain_mesh& mesh, const screen_projection& pro
   for_chunks([&](partial& p, std::int32_t f) {
     const double d = out.distance[static_cast<std::size_t>(f)];
     const index_t l = level_of(d);
-    const double s = opts.mode == scale_mode::continuous ? 1 - span * (range > 0 ? (d - dmin) / range : 0.0) : out.level_scale(l);
+    const double s =
+        opts.mode == scale_mode::continuous ? 1 - span * (range > 0 ? (d - dmin) / range : 0.0) : out.level_scale(l);
     out.level[static_cast<std::size_t>(f)] = static_cast<std::int32_t>(l);
     out.scale[static_cast<std::size_t>(f)] = static_cast<float>(std::clamp(s, opts.min_scale, 1.0));
     for (std::int32_t n : mesh.neighbors[static_cast<std::size_t>(f)])
       if (n > f && n < nf) {
         const double dn = out.distance[static_cast<std::size_t>(n)];
-        if (!std::isnan(dn)) p.jump = std::max(p.jump, static_cast<int>(std::abs(l - level_of(dn))));  // visible: has a distance
+        if (!std::isnan(dn))
+          p.jump = std::max(p.jump, static_cast<int>(std::abs(l - level_of(dn))));  // visible: has a distance
       }
   });
   for (const partial& p : part) out.max_level_jump = std::max(out.max_level_jump, p.jump);

@@ -24,9 +24,9 @@
 TESSERA_NAMESPACE_BEGIN
 
 struct exemplar_pyramid_options {
-  double min_scale = 0.5;  ///< scale of the last level, in (0, 1]
-  index_t levels = 0;      ///< number of levels (1 to 4096); 0 = as few as keep steps <= max_step
-  double max_step = 0.008; ///< largest scale step between consecutive levels when levels = 0
+  double min_scale = 0.5;   ///< scale of the last level, in (0, 1]
+  index_t levels = 0;       ///< number of levels (1 to 4096); 0 = as few as keep steps <= max_step
+  double max_step = 0.008;  ///< largest scale step between consecutive levels when levels = 0
   tessera::progress progress = {};
 };
 
@@ -35,7 +35,8 @@ class exemplar_pyramid;
 
 namespace detail {
 template <Channel T, int C, class E>
-result<exemplar_pyramid<T, C>> build_pyramid_from_buffer(const image_buffer<T, C>& ex, const exemplar_pyramid_options& opts, E& exec);
+result<exemplar_pyramid<T, C>> build_pyramid_from_buffer(const image_buffer<T, C>& ex,
+                                                         const exemplar_pyramid_options& opts, E& exec);
 }  // namespace detail
 
 /// Levels k = 0 .. K-1 at scales 1 - (1 - min_scale) k / (K - 1) (level 0 is the exemplar), each an
@@ -55,7 +56,9 @@ class exemplar_pyramid {
     const index_t n = num_levels();
     return n <= 1 ? 1.0 : 1.0 - (1.0 - min_scale_) * static_cast<double>(k) / static_cast<double>(n - 1);
   }
-  [[nodiscard]] const image_buffer<T, C>& level(index_t k) const noexcept { return levels_[static_cast<std::size_t>(k)]; }
+  [[nodiscard]] const image_buffer<T, C>& level(index_t k) const noexcept {
+    return levels_[static_cast<std::size_t>(k)];
+  }
 
   /// Fractional level index of scale s (clamped to [0, K - 1]; 0 for NaN).
   [[nodiscard]] double level_position(double s) const noexcept {
@@ -79,7 +82,8 @@ class exemplar_pyramid {
     if (f > 0 && k0 + 1 < num_levels()) {
       const std::array<float, C> b = bilinear(k0 + 1, u / s, v / s);
       for (int c = 0; c < C; ++c)
-        a[static_cast<std::size_t>(c)] += static_cast<float>(f) * (b[static_cast<std::size_t>(c)] - a[static_cast<std::size_t>(c)]);
+        a[static_cast<std::size_t>(c)] +=
+            static_cast<float>(f) * (b[static_cast<std::size_t>(c)] - a[static_cast<std::size_t>(c)]);
     }
     return a;
   }
@@ -93,7 +97,8 @@ class exemplar_pyramid {
   [[nodiscard]] std::array<float, C> bilinear(index_t k, double ex, double ey) const noexcept {
     const image_buffer<T, C>& img = levels_[static_cast<std::size_t>(k)];
     return detail::bilinear_sample(img, ex * static_cast<double>(img.width()) / static_cast<double>(width_) - 0.5,
-                                   ey * static_cast<double>(img.height()) / static_cast<double>(height_) - 0.5, detail::clamp_index{});
+                                   ey * static_cast<double>(img.height()) / static_cast<double>(height_) - 0.5,
+                                   detail::clamp_index{});
   }
 
   std::vector<image_buffer<T, C>> levels_;
@@ -103,11 +108,14 @@ class exemplar_pyramid {
 
 namespace detail {
 template <Channel T, int C, class E>
-result<exemplar_pyramid<T, C>> build_pyramid_from_buffer(const image_buffer<T, C>& ex, const exemplar_pyramid_options& opts, E& exec) {
+result<exemplar_pyramid<T, C>> build_pyramid_from_buffer(const image_buffer<T, C>& ex,
+                                                         const exemplar_pyramid_options& opts, E& exec) {
   index_t n = opts.levels;
-  if (n == 0) n = opts.min_scale >= 1 ? 1 : static_cast<index_t>(std::ceil((1 - opts.min_scale) / opts.max_step - 1e-9)) + 1;
+  if (n == 0)
+    n = opts.min_scale >= 1 ? 1 : static_cast<index_t>(std::ceil((1 - opts.min_scale) / opts.max_step - 1e-9)) + 1;
   if (n > 4096)
-    return status::invalid_argument(detail::cat("exemplar pyramid: ", n, " levels requested; at most 4096 (raise max_step)"));
+    return status::invalid_argument(
+        detail::cat("exemplar pyramid: ", n, " levels requested; at most 4096 (raise max_step)"));
   exemplar_pyramid<T, C> p;
   p.width_ = ex.width();
   p.height_ = ex.height();
@@ -118,7 +126,8 @@ result<exemplar_pyramid<T, C>> build_pyramid_from_buffer(const image_buffer<T, C
   for (std::size_t i = 0; i < src.size(); ++i) src[i] = channel_to_unit(ex.data()[i]);
   auto rows = [&](index_t count, auto&& body) { exec.parallel_for(0, count, body); };
   for (index_t k = 1; k < n; ++k) {
-    if (!opts.progress.report(static_cast<double>(k) / static_cast<double>(n), "exemplar pyramid")) return status::cancelled();
+    if (!opts.progress.report(static_cast<double>(k) / static_cast<double>(n), "exemplar pyramid"))
+      return status::cancelled();
     const double s = p.scale(k);
     const index_t w = std::max<index_t>(1, static_cast<index_t>(std::llround(static_cast<double>(ex.width()) * s)));
     const index_t h = std::max<index_t>(1, static_cast<index_t>(std::llround(static_cast<double>(ex.height()) * s)));
@@ -144,7 +153,8 @@ result<exemplar_pyramid<channel_t<I>, channels_v<I>>> build_exemplar_pyramid(con
   if (!(opts.min_scale > 0 && opts.min_scale <= 1))
     return status::invalid_argument(detail::cat("exemplar pyramid: min_scale must be in (0, 1], got ", opts.min_scale));
   if (opts.levels < 0 || opts.levels > 4096)
-    return status::invalid_argument(detail::cat("exemplar pyramid: levels must be 0 (automatic) to 4096, got ", opts.levels));
+    return status::invalid_argument(
+        detail::cat("exemplar pyramid: levels must be 0 (automatic) to 4096, got ", opts.levels));
   if (!(opts.max_step > 0 && opts.max_step <= 1))
     return status::invalid_argument(detail::cat("exemplar pyramid: max_step must be in (0, 1], got ", opts.max_step));
   auto buf = to_buffer(exemplar, "exemplar");

@@ -56,8 +56,8 @@ TESSERA_NAMESPACE_BEGIN
 struct terrain_uv_buffer {
   index_t viewport_width = 0, viewport_height = 0;
   index_t exemplar_width = 0, exemplar_height = 0;
-  index_t levels = 0;     ///< of the scale field
-  double min_scale = 1;   ///< of the scale field
+  index_t levels = 0;                           ///< of the scale field
+  double min_scale = 1;                         ///< of the scale field
   std::vector<std::array<float, 6>> corner_uv;  ///< u0 v0 u1 v1 u2 v2
   std::vector<std::array<float, 2>> offset;
   std::vector<std::int32_t> level;
@@ -68,13 +68,14 @@ struct terrain_uv_buffer {
 /// Collects the engine-facing outputs of a synthesis (see terrain_uv_buffer). Errors
 /// (invalid_argument): a projection, field or synthesis that does not belong to `mesh`, or a
 /// visible face the field or the synthesis did not cover (made from another projection). O(F).
-inline result<terrain_uv_buffer> export_corner_uvs(const terrain_mesh& mesh, const screen_projection& proj, const scale_field& field,
-                                                   const triangle_synthesis& syn) {
+inline result<terrain_uv_buffer> export_corner_uvs(const terrain_mesh& mesh, const screen_projection& proj,
+                                                   const scale_field& field, const triangle_synthesis& syn) {
   if (auto s = detail::check_projection(mesh, proj, "export_corner_uvs"); !s) return s;
   const auto nf = static_cast<std::size_t>(mesh.num_faces());
   if (field.level.size() != nf || field.scale.size() != nf || syn.offset.size() != nf || syn.region.size() != nf)
-    return status::invalid_argument(detail::cat("export_corner_uvs: the scale field (", field.level.size(), " faces) and synthesis (",
-                                                syn.region.size(), " faces) must belong to the mesh (", nf, " faces)"));
+    return status::invalid_argument(detail::cat("export_corner_uvs: the scale field (", field.level.size(),
+                                                " faces) and synthesis (", syn.region.size(),
+                                                " faces) must belong to the mesh (", nf, " faces)"));
   terrain_uv_buffer b;
   b.viewport_width = proj.width;
   b.viewport_height = proj.height;
@@ -90,11 +91,13 @@ inline result<terrain_uv_buffer> export_corner_uvs(const terrain_mesh& mesh, con
   b.state.assign(nf, 0);
   for (std::size_t i = 0; i < proj.visible.size(); ++i) {
     const std::int32_t f = proj.visible[i];
-    if (!detail::is_visible_face(proj, f)) return detail::bad_visible_entry("export_corner_uvs", static_cast<index_t>(i), f);
+    if (!detail::is_visible_face(proj, f))
+      return detail::bad_visible_entry("export_corner_uvs", static_cast<index_t>(i), f);
     const auto fi = static_cast<std::size_t>(f);
     if (field.level[fi] < 0 || syn.region[fi] < 0)
-      return status::invalid_argument(detail::cat("export_corner_uvs: visible face ", f, " has level ", field.level[fi], " and region ",
-                                                  syn.region[fi], ": the field and synthesis must come from this projection"));
+      return status::invalid_argument(detail::cat("export_corner_uvs: visible face ", f, " has level ", field.level[fi],
+                                                  " and region ", syn.region[fi],
+                                                  ": the field and synthesis must come from this projection"));
     const vec2 o = syn.offset[fi];
     for (std::size_t k = 0; k < 3; ++k) {
       const std::int32_t v = mesh.faces[fi][k];
@@ -125,8 +128,8 @@ inline void put_f32(std::vector<unsigned char>& out, float f) {
   put_u32(out, v);
 }
 inline std::uint32_t get_u32(const unsigned char* p) {
-  return static_cast<std::uint32_t>(p[0]) | static_cast<std::uint32_t>(p[1]) << 8 | static_cast<std::uint32_t>(p[2]) << 16 |
-         static_cast<std::uint32_t>(p[3]) << 24;
+  return static_cast<std::uint32_t>(p[0]) | static_cast<std::uint32_t>(p[1]) << 8 |
+         static_cast<std::uint32_t>(p[2]) << 16 | static_cast<std::uint32_t>(p[3]) << 24;
 }
 inline float get_f32(const unsigned char* p) {
   const std::uint32_t v = get_u32(p);
@@ -141,16 +144,20 @@ inline float get_f32(const unsigned char* p) {
 inline result<std::vector<unsigned char>> encode_terrain_uvs(const terrain_uv_buffer& uv) {
   const std::size_t n = uv.level.size();
   if (uv.corner_uv.size() != n || uv.offset.size() != n || uv.scale.size() != n || uv.state.size() != n)
-    return status::invalid_argument(detail::cat("terrain uv buffer: arrays of different lengths (", uv.corner_uv.size(), ", ",
-                                                uv.offset.size(), ", ", n, ", ", uv.scale.size(), ", ", uv.state.size(), ")"));
+    return status::invalid_argument(detail::cat("terrain uv buffer: arrays of different lengths (", uv.corner_uv.size(),
+                                                ", ", uv.offset.size(), ", ", n, ", ", uv.scale.size(), ", ",
+                                                uv.state.size(), ")"));
   constexpr index_t u32max = 0xffffffff;
-  for (const index_t v : {static_cast<index_t>(n), uv.viewport_width, uv.viewport_height, uv.exemplar_width, uv.exemplar_height, uv.levels})
-    if (v < 0 || v > u32max) return status::invalid_argument(detail::cat("terrain uv buffer: ", v, " does not fit the file's u32 fields"));
+  for (const index_t v : {static_cast<index_t>(n), uv.viewport_width, uv.viewport_height, uv.exemplar_width,
+                          uv.exemplar_height, uv.levels})
+    if (v < 0 || v > u32max)
+      return status::invalid_argument(detail::cat("terrain uv buffer: ", v, " does not fit the file's u32 fields"));
   std::vector<unsigned char> out;
   out.reserve(terrain_uv_header_bytes + terrain_uv_record_bytes * n);
   for (const char c : {'T', 'S', 'U', 'V'}) out.push_back(static_cast<unsigned char>(c));
   detail::put_u32(out, terrain_uv_file_version);
-  for (const index_t v : {static_cast<index_t>(n), uv.viewport_width, uv.viewport_height, uv.exemplar_width, uv.exemplar_height, uv.levels})
+  for (const index_t v : {static_cast<index_t>(n), uv.viewport_width, uv.viewport_height, uv.exemplar_width,
+                          uv.exemplar_height, uv.levels})
     detail::put_u32(out, static_cast<std::uint32_t>(v));
   detail::put_f32(out, static_cast<float>(uv.min_scale));
   for (std::size_t f = 0; f < n; ++f) {
@@ -169,9 +176,11 @@ inline result<terrain_uv_buffer> decode_terrain_uvs(const unsigned char* data, s
   if (size < terrain_uv_header_bytes || std::memcmp(data, "TSUV", 4) != 0)
     return status::invalid_argument(detail::cat("terrain uv file: no 'TSUV' header (", size, " bytes)"));
   if (const std::uint32_t v = detail::get_u32(data + 4); v != terrain_uv_file_version)
-    return status::invalid_argument(detail::cat("terrain uv file: version ", v, ", expected ", terrain_uv_file_version));
+    return status::invalid_argument(
+        detail::cat("terrain uv file: version ", v, ", expected ", terrain_uv_file_version));
   const std::size_t n = detail::get_u32(data + 8);
-  if ((size - terrain_uv_header_bytes) / terrain_uv_record_bytes != n || (size - terrain_uv_header_bytes) % terrain_uv_record_bytes != 0)
+  if ((size - terrain_uv_header_bytes) / terrain_uv_record_bytes != n ||
+      (size - terrain_uv_header_bytes) % terrain_uv_record_bytes != 0)
     return status::invalid_argument(detail::cat("terrain uv file: ", size, " bytes do not hold ", n, " faces"));
   terrain_uv_buffer uv;
   uv.viewport_width = detail::get_u32(data + 12);

@@ -59,8 +59,10 @@ template <Executor E = serial_executor>
 result<tri_mesh> make_terrain(const terrain_options& o = {}, E&& exec = {}) {
   if (o.cells_x < 1 || o.cells_y < 1)
     return status::invalid_argument(detail::cat("terrain cells must be >= 1, got ", o.cells_x, " x ", o.cells_y));
-  if (o.cells_x > (index_t{1} << 14) || o.cells_y > (index_t{1} << 14) || (o.cells_x + 1) * (o.cells_y + 1) > (index_t{1} << 28))
-    return status::size_overflow(detail::cat("terrain of ", o.cells_x, " x ", o.cells_y, " cells exceeds 2^28 vertices"));
+  if (o.cells_x > (index_t{1} << 14) || o.cells_y > (index_t{1} << 14) ||
+      (o.cells_x + 1) * (o.cells_y + 1) > (index_t{1} << 28))
+    return status::size_overflow(
+        detail::cat("terrain of ", o.cells_x, " x ", o.cells_y, " cells exceeds 2^28 vertices"));
   // bounds that keep every noise coordinate x / wavelength * 2^15 far inside the int64 range of
   // floor() in gradient_noise (at most 0.5e6 * 2^15 + 300), and every position finite
   if (!(o.size_x > 0 && o.size_y > 0 && o.size_x <= 1e15 && o.size_y <= 1e15))
@@ -90,7 +92,7 @@ result<tri_mesh> make_terrain(const terrain_options& o = {}, E&& exec = {}) {
           f *= 2;
         }
         const double t = std::clamp(0.5 + 0.9 * sum / norm_, 0.0, 1.0);  // about [0, 1]
-        z = o.height * t * t * (1.6 - 0.6 * t);                            // flatter lowlands, steeper peaks
+        z = o.height * t * t * (1.6 - 0.6 * t);                          // flatter lowlands, steeper peaks
       }
       m.positions[static_cast<std::size_t>(j * nx + i)] = {x, y, z};
     }

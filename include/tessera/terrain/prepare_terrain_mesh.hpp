@@ -48,7 +48,10 @@ void build_terrain_adjacency(terrain_mesh& m) {
   const auto nv = static_cast<std::size_t>(m.num_vertices()), nf = static_cast<std::size_t>(m.num_faces());
   std::vector<std::int32_t> start(nv + 1, 0);
   for (const auto& f : m.faces)
-    for (int k = 0; k < 3; ++k) ++start[static_cast<std::size_t>(std::min(f[static_cast<std::size_t>(k)], f[static_cast<std::size_t>((k + 1) % 3)])) + 1];
+    for (int k = 0; k < 3; ++k)
+      ++start[static_cast<std::size_t>(
+                  std::min(f[static_cast<std::size_t>(k)], f[static_cast<std::size_t>((k + 1) % 3)])) +
+              1];
   for (std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
   struct half {
     std::int32_t other, face_side;
@@ -57,21 +60,27 @@ void build_terrain_adjacency(terrain_mesh& m) {
   std::vector<std::int32_t> fill(start.begin(), start.end() - 1);
   for (std::size_t f = 0; f < nf; ++f)
     for (int k = 0; k < 3; ++k) {
-      const std::int32_t a = m.faces[f][static_cast<std::size_t>(k)], b = m.faces[f][static_cast<std::size_t>((k + 1) % 3)];
-      hs[static_cast<std::size_t>(fill[static_cast<std::size_t>(std::min(a, b))]++)] = {std::max(a, b), static_cast<std::int32_t>(3 * f) + k};
+      const std::int32_t a = m.faces[f][static_cast<std::size_t>(k)],
+                         b = m.faces[f][static_cast<std::size_t>((k + 1) % 3)];
+      hs[static_cast<std::size_t>(fill[static_cast<std::size_t>(std::min(a, b))]++)] = {
+          std::max(a, b), static_cast<std::int32_t>(3 * f) + k};
     }
   m.neighbors.assign(nf, {-1, -1, -1});
   m.boundary_edges = m.nonmanifold_edges = m.interior_edges = 0;
   for (std::size_t v = 0; v < nv; ++v) {
     half* first = hs.data() + start[v];
     half* last = hs.data() + start[v + 1];
-    std::sort(first, last, [](const half& x, const half& y) { return x.other != y.other ? x.other < y.other : x.face_side < y.face_side; });
+    std::sort(first, last, [](const half& x, const half& y) {
+      return x.other != y.other ? x.other < y.other : x.face_side < y.face_side;
+    });
     for (half* i = first; i != last;) {
       half* j = i;
       while (j != last && j->other == i->other) ++j;
       if (j - i == 2) {
-        m.neighbors[static_cast<std::size_t>(i[0].face_side / 3)][static_cast<std::size_t>(i[0].face_side % 3)] = i[1].face_side / 3;
-        m.neighbors[static_cast<std::size_t>(i[1].face_side / 3)][static_cast<std::size_t>(i[1].face_side % 3)] = i[0].face_side / 3;
+        m.neighbors[static_cast<std::size_t>(i[0].face_side / 3)][static_cast<std::size_t>(i[0].face_side % 3)] =
+            i[1].face_side / 3;
+        m.neighbors[static_cast<std::size_t>(i[1].face_side / 3)][static_cast<std::size_t>(i[1].face_side % 3)] =
+            i[0].face_side / 3;
         ++m.interior_edges;
       } else if (j - i == 1) {
         ++m.boundary_edges;
@@ -89,11 +98,13 @@ namespace detail {
 inline status check_terrain_mesh_sizes(const terrain_mesh& m) {
   const std::size_t nf = m.faces.size();
   if (m.centroids.size() != nf || m.neighbors.size() != nf)
-    return status::invalid_argument(detail::cat("terrain_mesh has ", nf, " faces but ", m.centroids.size(), " centroids and ",
-                                                m.neighbors.size(), " neighbour triples: build it with prepare_terrain_mesh"));
+    return status::invalid_argument(detail::cat("terrain_mesh has ", nf, " faces but ", m.centroids.size(),
+                                                " centroids and ", m.neighbors.size(),
+                                                " neighbour triples: build it with prepare_terrain_mesh"));
   constexpr std::size_t limit = std::numeric_limits<std::int32_t>::max() / 3;
   if (nf > limit || m.positions.size() > limit)
-    return status::size_overflow(detail::cat("terrain_mesh: ", m.positions.size(), " vertices / ", nf, " faces exceed ", limit));
+    return status::size_overflow(
+        detail::cat("terrain_mesh: ", m.positions.size(), " vertices / ", nf, " faces exceed ", limit));
   return {};
 }
 /// Whether n names a face of a mesh of nf faces (neighbour entries are -1 or a face).
@@ -104,12 +115,14 @@ inline status terrain_face_problem(const terrain_mesh& m, index_t f) {
   const index_t nv = m.num_vertices(), nf = m.num_faces();
   for (std::size_t k = 0; k < 3; ++k) {
     if (m.faces[i][k] < 0 || m.faces[i][k] >= nv)
-      return status::out_of_range(detail::cat("terrain_mesh face ", f, " corner ", k, " names vertex ", m.faces[i][k], " of ", nv));
+      return status::out_of_range(
+          detail::cat("terrain_mesh face ", f, " corner ", k, " names vertex ", m.faces[i][k], " of ", nv));
     if (m.neighbors[i][k] < -1 || m.neighbors[i][k] >= nf)
-      return status::out_of_range(detail::cat("terrain_mesh face ", f, " side ", k, " names neighbour ", m.neighbors[i][k], " of ", nf,
-                                              " faces (-1 for none)"));
+      return status::out_of_range(detail::cat("terrain_mesh face ", f, " side ", k, " names neighbour ",
+                                              m.neighbors[i][k], " of ", nf, " faces (-1 for none)"));
   }
-  if (!is_finite(m.centroids[i])) return status::invalid_argument(detail::cat("terrain_mesh face ", f, " has a non-finite centroid"));
+  if (!is_finite(m.centroids[i]))
+    return status::invalid_argument(detail::cat("terrain_mesh face ", f, " has a non-finite centroid"));
   return {};
 }
 }  // namespace detail
@@ -123,7 +136,8 @@ inline status terrain_face_problem(const terrain_mesh& m, index_t f) {
 inline status validate_terrain_mesh(const terrain_mesh& m) {
   if (auto s = detail::check_terrain_mesh_sizes(m); !s) return s;
   for (index_t v = 0; v < m.num_vertices(); ++v)
-    if (!is_finite(m.position(v))) return status::invalid_argument(detail::cat("terrain_mesh vertex ", v, " is not finite"));
+    if (!is_finite(m.position(v)))
+      return status::invalid_argument(detail::cat("terrain_mesh vertex ", v, " is not finite"));
   for (index_t f = 0; f < m.num_faces(); ++f)
     if (auto s = detail::terrain_face_problem(m, f); !s) return s;
   return {};
@@ -140,7 +154,8 @@ result<terrain_mesh> prepare_terrain_mesh(const M& mesh, std::string_view what =
   const index_t nv = num_vertices(mesh), nf = num_faces(mesh);
   constexpr index_t limit = std::numeric_limits<std::int32_t>::max() / 3;
   if (nv > limit || nf > limit)
-    return status::size_overflow(detail::cat(what, ": ", nv, " vertices / ", nf, " faces exceed the terrain limit of ", limit));
+    return status::size_overflow(
+        detail::cat(what, ": ", nv, " vertices / ", nf, " faces exceed the terrain limit of ", limit));
   terrain_mesh m;
   m.positions.resize(static_cast<std::size_t>(nv));
   for (index_t v = 0; v < nv; ++v) m.positions[static_cast<std::size_t>(v)] = vertex_position(mesh, v);

@@ -44,13 +44,13 @@ enum class face_visibility : std::uint8_t {
 struct screen_projection {
   index_t width = 0, height = 0;  ///< viewport in pixels
   clip_depth depth = glm_clip_depth;
-  vec3 eye;                                         ///< eye position in world space
-  std::vector<std::array<double, 4>> clip;          ///< per vertex: projection * view * position
-  std::vector<vec2> screen;                         ///< per vertex: pixel position (y down); NaN behind the near plane
-  std::vector<std::uint8_t> state;                  ///< per face: a face_visibility
-  std::vector<std::array<float, 4>> bounds;         ///< per face: visible screen box x0, y0, x1, y1 (clipped to the viewport)
-  std::vector<std::int32_t> visible;                ///< faces not culled, ascending
-  index_t near_clipped = 0;                         ///< how many visible faces cross the near plane
+  vec3 eye;                                  ///< eye position in world space
+  std::vector<std::array<double, 4>> clip;   ///< per vertex: projection * view * position
+  std::vector<vec2> screen;                  ///< per vertex: pixel position (y down); NaN behind the near plane
+  std::vector<std::uint8_t> state;           ///< per face: a face_visibility
+  std::vector<std::array<float, 4>> bounds;  ///< per face: visible screen box x0, y0, x1, y1 (clipped to the viewport)
+  std::vector<std::int32_t> visible;         ///< faces not culled, ascending
+  index_t near_clipped = 0;                  ///< how many visible faces cross the near plane
 
   [[nodiscard]] bool is_visible(index_t f) const noexcept { return state[static_cast<std::size_t>(f)] != 0; }
   [[nodiscard]] index_t num_visible() const noexcept { return static_cast<index_t>(visible.size()); }
@@ -87,9 +87,9 @@ inline status check_projection(const terrain_mesh& mesh, const screen_projection
   const auto nf = static_cast<std::size_t>(mesh.num_faces()), nv = static_cast<std::size_t>(mesh.num_vertices());
   if (proj.state.size() != nf || proj.bounds.size() != nf || proj.clip.size() != nv || proj.screen.size() != nv ||
       proj.visible.size() > nf)
-    return status::invalid_argument(detail::cat(stage, ": the projection (", proj.state.size(), " faces, ", proj.clip.size(),
-                                                " vertices) does not belong to the mesh (", nf, " faces, ", nv,
-                                                " vertices): project this mesh first"));
+    return status::invalid_argument(detail::cat(stage, ": the projection (", proj.state.size(), " faces, ",
+                                                proj.clip.size(), " vertices) does not belong to the mesh (", nf,
+                                                " faces, ", nv, " vertices): project this mesh first"));
   if (!is_finite(proj.eye)) return status::invalid_argument(detail::cat(stage, ": the projection's eye is not finite"));
   return {};
 }
@@ -98,7 +98,8 @@ inline bool is_visible_face(const screen_projection& proj, std::int32_t f) noexc
   return f >= 0 && static_cast<std::size_t>(f) < proj.state.size() && proj.state[static_cast<std::size_t>(f)] != 0;
 }
 inline status bad_visible_entry(const char* stage, index_t i, std::int32_t f) {
-  return status::invalid_argument(detail::cat(stage, ": projection.visible[", i, "] = ", f, " is not a visible face of the mesh"));
+  return status::invalid_argument(
+      detail::cat(stage, ": projection.visible[", i, "] = ", f, " is not a visible face of the mesh"));
 }
 }  // namespace detail
 
@@ -157,7 +158,8 @@ status project_mesh(const terrain_mesh& mesh, const terrain_camera& camera, scre
         continue;
       }
       std::uint8_t oc[3];
-      for (int k = 0; k < 3; ++k) oc[k] = detail::clip_outcode(out.clip[static_cast<std::size_t>(face[static_cast<std::size_t>(k)])], zo);
+      for (int k = 0; k < 3; ++k)
+        oc[k] = detail::clip_outcode(out.clip[static_cast<std::size_t>(face[static_cast<std::size_t>(k)])], zo);
       if ((oc[0] & oc[1] & oc[2]) != 0) continue;
       if (opts.cull_back_faces) {
         const vec3 a = mesh.position(face[0]), n3 = cross(mesh.position(face[1]) - a, mesh.position(face[2]) - a);
@@ -166,14 +168,16 @@ status project_mesh(const terrain_mesh& mesh, const terrain_camera& camera, scre
       double x0, y0, x1, y1;
       const bool near = ((oc[0] | oc[1] | oc[2]) & 16) != 0;
       if (!near) {
-        const vec2 s0 = out.screen[static_cast<std::size_t>(face[0])], s1 = out.screen[static_cast<std::size_t>(face[1])],
+        const vec2 s0 = out.screen[static_cast<std::size_t>(face[0])],
+                   s1 = out.screen[static_cast<std::size_t>(face[1])],
                    s2 = out.screen[static_cast<std::size_t>(face[2])];
         x0 = std::min({s0.x, s1.x, s2.x}), x1 = std::max({s0.x, s1.x, s2.x});
         y0 = std::min({s0.y, s1.y, s2.y}), y1 = std::max({s0.y, s1.y, s2.y});
       } else {
         detail::raster::polygon poly{};  // rare path: zero-filled keeps the compiler sure of initialization
         std::array<std::array<double, 4>, 3> t;
-        for (int k = 0; k < 3; ++k) t[static_cast<std::size_t>(k)] = out.clip[static_cast<std::size_t>(face[static_cast<std::size_t>(k)])];
+        for (int k = 0; k < 3; ++k)
+          t[static_cast<std::size_t>(k)] = out.clip[static_cast<std::size_t>(face[static_cast<std::size_t>(k)])];
         detail::raster::clip_polygon_to_screen(t, {0, 0, W, H}, zo, poly);
         if (poly.n < 3) continue;
         x0 = x1 = poly.v[0].x, y0 = y1 = poly.v[0].y;
@@ -220,8 +224,8 @@ status project_mesh(const terrain_mesh& mesh, const terrain_camera& camera, scre
 
 /// As above, returning a new screen_projection.
 template <Executor E = serial_executor>
-result<screen_projection> project_mesh(const terrain_mesh& mesh, const terrain_camera& camera, const project_options& opts = {},
-                                       E&& exec = {}) {
+result<screen_projection> project_mesh(const terrain_mesh& mesh, const terrain_camera& camera,
+                                       const project_options& opts = {}, E&& exec = {}) {
   screen_projection out;
   if (auto s = project_mesh(mesh, camera, out, opts, exec); !s) return s;
   return out;

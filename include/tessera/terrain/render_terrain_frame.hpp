@@ -71,8 +71,9 @@ status check_frame_inputs(const terrain_mesh& mesh, const screen_projection& pro
   if (auto s = check_visible_geometry(mesh, proj, "render_terrain_frame", exec); !s) return s;
   const auto nf = static_cast<std::size_t>(mesh.num_faces());
   if (field.level.size() != nf || field.scale.size() != nf || syn.region.size() != nf || syn.offset.size() != nf)
-    return status::invalid_argument(detail::cat("render_terrain_frame: the scale field (", field.level.size(), " faces) and synthesis (",
-                                                syn.region.size(), " faces) must belong to the mesh (", nf, " faces)"));
+    return status::invalid_argument(detail::cat("render_terrain_frame: the scale field (", field.level.size(),
+                                                " faces) and synthesis (", syn.region.size(),
+                                                " faces) must belong to the mesh (", nf, " faces)"));
   if (pyramid.num_levels() == 0) return status::invalid_argument("render_terrain_frame: the exemplar pyramid is empty");
   if (!(field.min_scale > 0 && field.min_scale >= pyramid.min_scale() * (1 - 1e-9)))
     return status::invalid_argument(detail::cat("render_terrain_frame: the scale field reaches scale ", field.min_scale,
@@ -98,10 +99,11 @@ status check_frame_inputs(const terrain_mesh& mesh, const screen_projection& pro
     if (i < 0) continue;
     const std::int32_t f = proj.visible[static_cast<std::size_t>(i)];
     const auto fi = static_cast<std::size_t>(f);
-    return status::invalid_argument(detail::cat("render_terrain_frame: visible face ", f, " has level ", field.level[fi], " of ",
-                                                field.levels, ", scale ", field.scale[fi], " (field min_scale ", field.min_scale,
-                                                "), region ", syn.region[fi], ", offset (", syn.offset[fi].x, ", ", syn.offset[fi].y,
-                                                "): the field and the synthesis must come from this projection and mesh"));
+    return status::invalid_argument(
+        detail::cat("render_terrain_frame: visible face ", f, " has level ", field.level[fi], " of ", field.levels,
+                    ", scale ", field.scale[fi], " (field min_scale ", field.min_scale, "), region ", syn.region[fi],
+                    ", offset (", syn.offset[fi].x, ", ", syn.offset[fi].y,
+                    "): the field and the synthesis must come from this projection and mesh"));
   }
   return {};
 }
@@ -122,23 +124,25 @@ status render_terrain_frame(const terrain_mesh& mesh, const screen_projection& p
                             const triangle_synthesis& syn, const exemplar_pyramid<T, C>& pyramid, O& out,
                             const render_terrain_options& opts = {}, E&& exec = {}) {
   if (width_of(out) != proj.width || height_of(out) != proj.height)
-    return status::invalid_argument(detail::cat("output is ", width_of(out), " x ", height_of(out), " but the viewport is ",
-                                                proj.width, " x ", proj.height));
+    return status::invalid_argument(detail::cat("output is ", width_of(out), " x ", height_of(out),
+                                                " but the viewport is ", proj.width, " x ", proj.height));
   if (!(opts.feather >= 0 && opts.feather <= 64))
     return status::invalid_argument(detail::cat("feather must be 0 to 64 pixels, got ", opts.feather));
   if (!(opts.ambient >= 0 && opts.ambient <= 1) || !is_finite(vec3{opts.sun[0], opts.sun[1], opts.sun[2]}))
-    return status::invalid_argument(detail::cat("ambient must be in [0, 1] and sun finite, got ambient ", opts.ambient));
+    return status::invalid_argument(
+        detail::cat("ambient must be in [0, 1] and sun finite, got ambient ", opts.ambient));
   if (auto s = detail::check_frame_inputs(mesh, proj, field, syn, pyramid, exec); !s) return s;
   detail::visibility_buffer vb;
   if (auto s = detail::render_visibility(mesh, proj, vb, false, opts.tile_size, exec); !s) return s;
   if (!opts.progress.report(0.4, "render terrain frame")) return status::cancelled();
-  const detail::seam_feather feather(mesh, proj, field, syn, vb, opts.shading == terrain_shading::texture ? opts.feather : 0.0, exec);
+  const detail::seam_feather feather(mesh, proj, field, syn, vb,
+                                     opts.shading == terrain_shading::texture ? opts.feather : 0.0, exec);
   if (!opts.progress.report(0.6, "render terrain frame")) return status::cancelled();
   const std::vector<float> light = detail::face_light(mesh, proj, opts.sun, opts.ambient, exec);
   const index_t w = proj.width, h = proj.height;
   image_buffer<float, C> frame(w, h);
-  const auto bg = convert_pixel<pixel<float, C>>(pixel<float, 4>{opts.background[0], opts.background[1], opts.background[2],
-                                                                 opts.background[3]});
+  const auto bg = convert_pixel<pixel<float, C>>(
+      pixel<float, 4>{opts.background[0], opts.background[1], opts.background[2], opts.background[3]});
   exec.parallel_for(0, h, [&](index_t y) {
     for (index_t x = 0; x < w; ++x) {
       const std::int32_t f = vb.face[static_cast<std::size_t>(y * w + x)];
@@ -146,13 +150,15 @@ status render_terrain_frame(const terrain_mesh& mesh, const screen_projection& p
       if (f >= 0) {
         const auto i = static_cast<std::size_t>(f);
         if (opts.shading == terrain_shading::scale_field) {
-          c = convert_pixel<pixel<float, C>>(detail::scale_colour(field.min_scale < 1 ? (1.0 - field.scale[i]) / (1.0 - field.min_scale) : 0.0));
+          c = convert_pixel<pixel<float, C>>(
+              detail::scale_colour(field.min_scale < 1 ? (1.0 - field.scale[i]) / (1.0 - field.min_scale) : 0.0));
         } else if (opts.shading == terrain_shading::regions) {
           c = convert_pixel<pixel<float, C>>(detail::region_colour(syn.region[i]));
         } else {
           // uv from the level image's centre -> pixels of the shrunk exemplar from its corner
           const double px = static_cast<double>(x) + 0.5, py = static_cast<double>(y) + 0.5;
-          const double cx = 0.5 * static_cast<double>(pyramid.width()), cy = 0.5 * static_cast<double>(pyramid.height());
+          const double cx = 0.5 * static_cast<double>(pyramid.width()),
+                       cy = 0.5 * static_cast<double>(pyramid.height());
           const double s = field.scale[i];
           c = pyramid.sample(s, px + syn.offset[i].x + cx * s, py + syn.offset[i].y + cy * s);
           const detail::seam_partner p = feather.partner(x, y);

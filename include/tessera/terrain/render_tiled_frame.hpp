@@ -40,7 +40,9 @@ class tiled_texture {
   [[nodiscard]] index_t width() const noexcept { return levels_.empty() ? 0 : levels_[0].width(); }
   [[nodiscard]] index_t height() const noexcept { return levels_.empty() ? 0 : levels_[0].height(); }
   [[nodiscard]] index_t num_levels() const noexcept { return static_cast<index_t>(levels_.size()); }
-  [[nodiscard]] const image_buffer<T, C>& level(index_t k) const noexcept { return levels_[static_cast<std::size_t>(k)]; }
+  [[nodiscard]] const image_buffer<T, C>& level(index_t k) const noexcept {
+    return levels_[static_cast<std::size_t>(k)];
+  }
 
   /// Trilinear sample at texel coordinates (u, v) of level 0, wrapping around, at level of detail
   /// `lod` (0 = full resolution). Unit float channels. Thread-safe.
@@ -64,7 +66,8 @@ class tiled_texture {
   [[nodiscard]] std::array<float, C> bilinear(index_t k, double u, double v) const noexcept {
     const image_buffer<T, C>& img = levels_[static_cast<std::size_t>(k)];
     return detail::bilinear_sample(img, u * static_cast<double>(img.width()) / static_cast<double>(width()) - 0.5,
-                                   v * static_cast<double>(img.height()) / static_cast<double>(height()) - 0.5, detail::wrap_index{});
+                                   v * static_cast<double>(img.height()) / static_cast<double>(height()) - 0.5,
+                                   detail::wrap_index{});
   }
 };
 
@@ -114,7 +117,8 @@ inline double auto_tiled_repeat(const terrain_mesh& mesh, const screen_projectio
                r = proj.screen[static_cast<std::size_t>(fv[2])];
     const double screen = 0.5 * std::abs(cross(q - p, r - p));
     const double d = norm(mesh.centroids[static_cast<std::size_t>(f)] - proj.eye);
-    if (screen >= 1 && ground > 0 && d < best) best = d, repeat = static_cast<double>(exemplar_width) * std::sqrt(ground / screen);
+    if (screen >= 1 && ground > 0 && d < best)
+      best = d, repeat = static_cast<double>(exemplar_width) * std::sqrt(ground / screen);
   }
   return repeat;
 }
@@ -124,16 +128,17 @@ inline double auto_tiled_repeat(const terrain_mesh& mesh, const screen_projectio
 /// `mesh` (detail::check_visible_geometry), empty texture, repeat < 0 or not finite, bad tile_size. O(visible faces + pixels), parallel through `exec` (bit-identical for
 /// any executor).
 template <Channel T, int C, WritableImage O, Executor E = serial_executor>
-status render_tiled_frame(const terrain_mesh& mesh, const screen_projection& proj, const tiled_texture<T, C>& tex, O& out,
-                          const render_tiled_options& opts = {}, E&& exec = {}) {
+status render_tiled_frame(const terrain_mesh& mesh, const screen_projection& proj, const tiled_texture<T, C>& tex,
+                          O& out, const render_tiled_options& opts = {}, E&& exec = {}) {
   if (width_of(out) != proj.width || height_of(out) != proj.height)
-    return status::invalid_argument(detail::cat("output is ", width_of(out), " x ", height_of(out), " but the viewport is ",
-                                                proj.width, " x ", proj.height));
+    return status::invalid_argument(detail::cat("output is ", width_of(out), " x ", height_of(out),
+                                                " but the viewport is ", proj.width, " x ", proj.height));
   if (tex.num_levels() == 0) return status::invalid_argument("the tiled texture is empty");
   if (!(opts.repeat >= 0) || !std::isfinite(opts.repeat))
     return status::invalid_argument(detail::cat("repeat must be >= 0 and finite, got ", opts.repeat));
   if (!(opts.ambient >= 0 && opts.ambient <= 1) || !is_finite(vec3{opts.sun[0], opts.sun[1], opts.sun[2]}))
-    return status::invalid_argument(detail::cat("ambient must be in [0, 1] and sun finite, got ambient ", opts.ambient));
+    return status::invalid_argument(
+        detail::cat("ambient must be in [0, 1] and sun finite, got ambient ", opts.ambient));
   if (auto s = detail::check_visible_geometry(mesh, proj, "render_tiled_frame", exec); !s) return s;
   double repeat = opts.repeat > 0 ? opts.repeat : auto_tiled_repeat(mesh, proj, tex.width());
   if (!(repeat > 0)) repeat = 1;
@@ -142,8 +147,8 @@ status render_tiled_frame(const terrain_mesh& mesh, const screen_projection& pro
   const std::vector<float> light = detail::face_light(mesh, proj, opts.sun, opts.ambient, exec);
   const index_t w = proj.width, h = proj.height;
   const double su = static_cast<double>(tex.width()) / repeat, sv = static_cast<double>(tex.height()) / repeat;
-  const auto bg = convert_pixel<pixel<float, C>>(pixel<float, 4>{opts.background[0], opts.background[1], opts.background[2],
-                                                                 opts.background[3]});
+  const auto bg = convert_pixel<pixel<float, C>>(
+      pixel<float, 4>{opts.background[0], opts.background[1], opts.background[2], opts.background[3]});
   image_buffer<float, C> frame(w, h);
   exec.parallel_for(0, h, [&](index_t y) {
     for (index_t x = 0; x < w; ++x) {

@@ -94,15 +94,16 @@ struct triangle_synthesis {
   std::vector<std::uint8_t> seam;    ///< bit k: side k borders a visible face with other coordinates
   std::vector<std::int32_t> order;   ///< visible faces in synthesis (stack) order
   index_t visible = 0;
-  index_t regions = 0;     ///< placements made (components + restarts)
-  index_t components = 0;  ///< connected regions of visible faces (each starts with a placement)
-  index_t restarts = 0;    ///< placements because no neighbour's coordinates fitted (out of bounds)
-  index_t deferred = 0;    ///< faces that waited for more synthesized neighbours (defer_restarts)
-  index_t oversized = 0;   ///< faces larger than their level image (texture clamps at its border)
-  index_t shared_edges = 0;      ///< edges between two visible faces
-  index_t continuous_edges = 0;  ///< of those, edges whose two faces have equal coordinates
+  index_t regions = 0;             ///< placements made (components + restarts)
+  index_t components = 0;          ///< connected regions of visible faces (each starts with a placement)
+  index_t restarts = 0;            ///< placements because no neighbour's coordinates fitted (out of bounds)
+  index_t deferred = 0;            ///< faces that waited for more synthesized neighbours (defer_restarts)
+  index_t oversized = 0;           ///< faces larger than their level image (texture clamps at its border)
+  index_t shared_edges = 0;        ///< edges between two visible faces
+  index_t continuous_edges = 0;    ///< of those, edges whose two faces have equal coordinates
   double continuous_fraction = 1;  ///< continuous_edges / shared_edges (1 when there are none)
-  double min_area_ratio = std::numeric_limits<double>::infinity();  ///< min over faces of level-image area / screen area
+  double min_area_ratio =
+      std::numeric_limits<double>::infinity();  ///< min over faces of level-image area / screen area
   index_t min_area_face = -1;
   index_t exemplar_width = 0, exemplar_height = 0;  ///< the exemplar size synthesized for (level 0 of the pyramid)
   status warning;  ///< ok, or out_of_range describing an exemplar too small for the triangles (§3 (1))
@@ -135,7 +136,8 @@ status synthesize_triangles(const terrain_mesh& mesh, const screen_projection& p
                             index_t exemplar_width, index_t exemplar_height, const triangle_synthesis_options& opts,
                             triangle_synthesis& out, E&& exec = {}) {
   if (exemplar_width <= 0 || exemplar_height <= 0)
-    return status::invalid_argument(detail::cat("exemplar size must be positive, got ", exemplar_width, " x ", exemplar_height));
+    return status::invalid_argument(
+        detail::cat("exemplar size must be positive, got ", exemplar_width, " x ", exemplar_height));
   if (!(opts.margin >= 0) || !std::isfinite(opts.margin))
     return status::invalid_argument(detail::cat("margin must be >= 0, got ", opts.margin));
   if (auto s = detail::check_projection(mesh, proj, "synthesize_triangles"); !s) return s;
@@ -156,7 +158,8 @@ status synthesize_triangles(const terrain_mesh& mesh, const screen_projection& p
   out.region.resize(static_cast<std::size_t>(nf));
   out.seam.resize(static_cast<std::size_t>(nf));
   exec.parallel_for(0, (nf + block - 1) / block, [&](index_t c) {  // culled faces: offset 0, region -1, no seam
-    const auto a = static_cast<std::ptrdiff_t>(c * block), b = static_cast<std::ptrdiff_t>(std::min(nf, (c + 1) * block));
+    const auto a = static_cast<std::ptrdiff_t>(c * block),
+               b = static_cast<std::ptrdiff_t>(std::min(nf, (c + 1) * block));
     std::fill(out.offset.begin() + a, out.offset.begin() + b, vec2{});
     std::fill(out.region.begin() + a, out.region.begin() + b, -1);
     std::fill(out.seam.begin() + a, out.seam.begin() + b, std::uint8_t{0});
@@ -194,7 +197,8 @@ status synthesize_triangles(const terrain_mesh& mesh, const screen_projection& p
   for (index_t idx = 0; idx < nvis; ++idx) {
     const index_t at = (start + idx) % nvis;
     const std::int32_t seed_face = proj.visible[static_cast<std::size_t>(at)];
-    if (!detail::is_visible_face(proj, seed_face)) return detail::bad_visible_entry("synthesize_triangles", at, seed_face);
+    if (!detail::is_visible_face(proj, seed_face))
+      return detail::bad_visible_entry("synthesize_triangles", at, seed_face);
     if (out.region[static_cast<std::size_t>(seed_face)] >= 0) continue;
     ++out.components;
     stack.push_back(seed_face);
@@ -214,8 +218,9 @@ status synthesize_triangles(const terrain_mesh& mesh, const screen_projection& p
       if (out.region[fi] >= 0) continue;
       const double s = field.scale[fi];
       if (!(s > 0 && s <= 1))  // e.g. 0 for a face the field's projection culled
-        return status::invalid_argument(detail::cat("synthesize_triangles: visible face ", f, " has scale ", s, " and level ",
-                                                    field.level[fi], " in the scale field: compute the field from this projection"));
+        return status::invalid_argument(detail::cat("synthesize_triangles: visible face ", f, " has scale ", s,
+                                                    " and level ", field.level[fi],
+                                                    " in the scale field: compute the field from this projection"));
       const auto& nb = mesh.neighbors[fi];
       const auto& b = box(f);
       const double hw = 0.5 * W * s - m, hh = 0.5 * H * s - m;  // half the level image, less the margin
@@ -248,7 +253,8 @@ status synthesize_triangles(const terrain_mesh& mesh, const screen_projection& p
             const auto& bn = box(n);
             away += vec2{static_cast<double>(bn[0] + bn[2]), static_cast<double>(bn[1] + bn[3])} * 0.5;
           }
-          const vec2 d = vec2{static_cast<double>(b[0] + b[2]), static_cast<double>(b[1] + b[3])} * 0.5 - away / synthesized;
+          const vec2 d =
+              vec2{static_cast<double>(b[0] + b[2]), static_cast<double>(b[1] + b[3])} * 0.5 - away / synthesized;
           const double len = norm(d);
           if (len > 0) toward = vec2{0.5 - 0.5 * d.x / len, 0.5 - 0.5 * d.y / len};
         }
@@ -279,16 +285,20 @@ status synthesize_triangles(const terrain_mesh& mesh, const screen_projection& p
       out.order.push_back(f);
       for (int k = 0; k < 3; ++k) {
         const std::int32_t n = nb[static_cast<std::size_t>(k)];
-        if (detail::is_face_index(n, nf) && proj.state[static_cast<std::size_t>(n)] != 0 && out.region[static_cast<std::size_t>(n)] < 0)
+        if (detail::is_face_index(n, nf) && proj.state[static_cast<std::size_t>(n)] != 0 &&
+            out.region[static_cast<std::size_t>(n)] < 0)
           stack.push_back(n);
       }
-      if ((++done & 0xffff) == 0 && !opts.progress.report(static_cast<double>(done) / static_cast<double>(nvis), "synthesize triangles"))
+      if ((++done & 0xffff) == 0 &&
+          !opts.progress.report(static_cast<double>(done) / static_cast<double>(nvis), "synthesize triangles"))
         return status::cancelled();
     }
   }
-  if (static_cast<index_t>(out.order.size()) != nvis)  // a face marked visible but missing from proj.visible was reached
+  if (static_cast<index_t>(out.order.size()) !=
+      nvis)  // a face marked visible but missing from proj.visible was reached
     return status::invalid_argument(detail::cat("synthesize_triangles: the projection marks ", out.order.size(),
-                                                " reachable faces visible but lists ", nvis, ": project this mesh first"));
+                                                " reachable faces visible but lists ", nvis,
+                                                ": project this mesh first"));
   // offsets from the placement table, seams, continuity and the exemplar-size check: independent per
   // face, in chunks whose partial
   // results combine in chunk order (so ties resolve to the smallest face, for any executor)
@@ -331,16 +341,18 @@ status synthesize_triangles(const terrain_mesh& mesh, const screen_projection& p
     out.warning = status::out_of_range(detail::cat(
         "the exemplar (", exemplar_width, " x ", exemplar_height, ") is only ", out.min_area_ratio,
         " times the screen area of face ", out.min_area_face, " at its scale; paper 003 advises 8 to 12 times (",
-        out.oversized, " faces do not fit their level image at all and clamp at its border): use a larger exemplar, a larger "
+        out.oversized,
+        " faces do not fit their level image at all and clamp at its border): use a larger exemplar, a larger "
         "min_scale or a finer mesh"));
   return opts.progress.report(1.0, "synthesize triangles") ? status{} : status::cancelled();
 }
 
 /// As above, returning a new triangle_synthesis.
 template <Executor E = serial_executor>
-result<triangle_synthesis> synthesize_triangles(const terrain_mesh& mesh, const screen_projection& proj, const scale_field& field,
-                                                index_t exemplar_width, index_t exemplar_height,
-                                                const triangle_synthesis_options& opts = {}, E&& exec = {}) {
+result<triangle_synthesis> synthesize_triangles(const terrain_mesh& mesh, const screen_projection& proj,
+                                                const scale_field& field, index_t exemplar_width,
+                                                index_t exemplar_height, const triangle_synthesis_options& opts = {},
+                                                E&& exec = {}) {
   triangle_synthesis out;
   if (auto s = synthesize_triangles(mesh, proj, field, exemplar_width, exemplar_height, opts, out, exec); !s) return s;
   return out;

@@ -47,14 +47,15 @@ struct terrain_camera {
 /// of §2.2 would be undefined. Errors name the field and the value.
 inline status validate_camera(const terrain_camera& c) {
   if (c.width < 1 || c.height < 1 || c.width > max_viewport_side || c.height > max_viewport_side)
-    return status::invalid_argument(
-        detail::cat("camera viewport must be 1 to ", max_viewport_side, " pixels per side, got ", c.width, " x ", c.height));
+    return status::invalid_argument(detail::cat("camera viewport must be 1 to ", max_viewport_side,
+                                                " pixels per side, got ", c.width, " x ", c.height));
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j)
       if (!std::isfinite(c.view[i][j]) || !std::isfinite(c.projection[i][j]))
         return status::invalid_argument(detail::cat("camera matrices must be finite (column ", i, ", row ", j, ")"));
   const double dv = glm::determinant(c.view), dp = glm::determinant(c.projection);
-  if (!(std::abs(dv) > 1e-300)) return status::invalid_argument(detail::cat("camera view matrix is singular (determinant ", dv, ")"));
+  if (!(std::abs(dv) > 1e-300))
+    return status::invalid_argument(detail::cat("camera view matrix is singular (determinant ", dv, ")"));
   if (!(std::abs(dp) > 1e-300))
     return status::invalid_argument(detail::cat("camera projection matrix is singular (determinant ", dp, ")"));
   // GLM is column-major: view[col][3] is the bottom row
@@ -62,13 +63,15 @@ inline status validate_camera(const terrain_camera& c) {
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 3; ++j) largest = std::max(largest, std::abs(c.view[i][j]));
   const double tol = 1e-9 * std::max(largest, std::abs(c.view[3][3]));
-  if (std::abs(c.view[0][3]) > tol || std::abs(c.view[1][3]) > tol || std::abs(c.view[2][3]) > tol || !(c.view[3][3] > tol))
-    return status::invalid_argument(detail::cat("camera view matrix must be affine (bottom row 0, 0, 0, w with w > 0), got ",
-                                                c.view[0][3], ", ", c.view[1][3], ", ", c.view[2][3], ", ", c.view[3][3]));
+  if (std::abs(c.view[0][3]) > tol || std::abs(c.view[1][3]) > tol || std::abs(c.view[2][3]) > tol ||
+      !(c.view[3][3] > tol))
+    return status::invalid_argument(
+        detail::cat("camera view matrix must be affine (bottom row 0, 0, 0, w with w > 0), got ", c.view[0][3], ", ",
+                    c.view[1][3], ", ", c.view[2][3], ", ", c.view[3][3]));
   const glm::dvec4 eye = glm::inverse(c.view) * glm::dvec4(0, 0, 0, 1);
   if (!(eye.w > 0) || !std::isfinite(eye.x / eye.w) || !std::isfinite(eye.y / eye.w) || !std::isfinite(eye.z / eye.w))
-    return status::invalid_argument(detail::cat("camera view matrix puts the eye at (", eye.x, ", ", eye.y, ", ", eye.z, ", w = ", eye.w,
-                                                "): not a finite point"));
+    return status::invalid_argument(detail::cat("camera view matrix puts the eye at (", eye.x, ", ", eye.y, ", ", eye.z,
+                                                ", w = ", eye.w, "): not a finite point"));
   return {};
 }
 
@@ -102,22 +105,23 @@ inline result<terrain_camera> make_camera(const look_at_camera& c, index_t width
     return status::invalid_argument(detail::cat("camera eye (", c.eye.x, ", ", c.eye.y, ", ", c.eye.z,
                                                 ") equals its target: the view direction is undefined"));
   if (norm(cross(normalized(dir), normalized(c.up))) <= 1e-9)
-    return status::invalid_argument(detail::cat("camera up (", c.up.x, ", ", c.up.y, ", ", c.up.z,
-                                                ") is zero or parallel to the view direction"));
+    return status::invalid_argument(
+        detail::cat("camera up (", c.up.x, ", ", c.up.y, ", ", c.up.z, ") is zero or parallel to the view direction"));
   if (!(c.fov_y_degrees > 0 && c.fov_y_degrees < 180))
     return status::invalid_argument(detail::cat("camera fov_y_degrees must be in (0, 180), got ", c.fov_y_degrees));
   if (!(c.near > 0) || !std::isfinite(c.near))
     return status::invalid_argument(detail::cat("camera near must be positive and finite, got ", c.near));
   if (!(c.far > c.near) || !std::isfinite(c.far))
-    return status::invalid_argument(detail::cat("camera far must be finite and greater than near = ", c.near, ", got ", c.far));
+    return status::invalid_argument(
+        detail::cat("camera far must be finite and greater than near = ", c.near, ", got ", c.far));
   terrain_camera cam;
   cam.width = width;
   cam.height = height;
   if (auto s = validate_camera(cam); !s) return s;
   cam.view = glm::lookAt(glm::dvec3(c.eye.x, c.eye.y, c.eye.z), glm::dvec3(c.target.x, c.target.y, c.target.z),
                          glm::dvec3(c.up.x, c.up.y, c.up.z));
-  cam.projection = glm::perspective(glm::radians(c.fov_y_degrees), static_cast<double>(width) / static_cast<double>(height),
-                                    c.near, c.far);
+  cam.projection = glm::perspective(glm::radians(c.fov_y_degrees),
+                                    static_cast<double>(width) / static_cast<double>(height), c.near, c.far);
   if (auto s = validate_camera(cam); !s) return s;
   return cam;
 }
@@ -134,7 +138,8 @@ inline result<camera_preset> parse_camera_preset(std::string_view s) {
   if (s == "grazing") return camera_preset::grazing;
   if (s == "oblique") return camera_preset::oblique;
   if (s == "overview") return camera_preset::overview;
-  return status::invalid_argument(detail::cat("unknown camera preset '", s, "' (expected grazing, oblique or overview)"));
+  return status::invalid_argument(
+      detail::cat("unknown camera preset '", s, "' (expected grazing, oblique or overview)"));
 }
 
 /// The look-at description of a preset for a scene with these bounds (near and far planes fitted

@@ -54,9 +54,7 @@ inline status validate_color_counts(int nh, int nv) {
 
 /// Number of tiles of the complete set, nh² · nv² (paper 000 §3: 16 for two colours each way).
 /// Precondition: validate_color_counts(nh, nv) is ok. O(1).
-constexpr index_t complete_tile_count(int nh, int nv) noexcept {
-  return static_cast<index_t>(nh) * nh * nv * nv;
-}
+constexpr index_t complete_tile_count(int nh, int nv) noexcept { return static_cast<index_t>(nh) * nh * nv * nv; }
 
 /// Checks that every colour of `e` lies in range: north/south in [0, nh), east/west in [0, nv).
 inline status validate_wang_edges(const wang_edges& e, int nh, int nv) {
@@ -64,7 +62,11 @@ inline status validate_wang_edges(const wang_edges& e, int nh, int nv) {
   for (int side = 0; side < 4; ++side) {
     const int n = is_horizontal_side(side) ? nh : nv;
     if (e[side] < 0 || e[side] >= n)
-      return status::out_of_range(detail::cat("wang edges: ", side == 0 ? "north" : side == 1 ? "east" : side == 2 ? "south" : "west",
+      return status::out_of_range(detail::cat("wang edges: ",
+                                              side == 0   ? "north"
+                                              : side == 1 ? "east"
+                                              : side == 2 ? "south"
+                                                          : "west",
                                               " colour ", e[side], " is outside [0, ", n, ")"));
   }
   return {};

@@ -41,8 +41,9 @@ class hash_coloring {
   static result<hash_coloring> create(int nh, int nv, std::uint64_t seed = 1, int modulus = 1) {
     if (auto s = validate_color_counts(nh, nv); !s) return s;
     if (modulus < 1 || nh % modulus != 0 || nv % modulus != 0)
-      return status::invalid_argument(detail::cat("hash colouring: modulus ", modulus, " must be >= 1 and divide both the ",
-                                                  nh, " horizontal and ", nv, " vertical colour counts"));
+      return status::invalid_argument(detail::cat("hash colouring: modulus ", modulus,
+                                                  " must be >= 1 and divide both the ", nh, " horizontal and ", nv,
+                                                  " vertical colour counts"));
     hash_coloring c;
     c.nh_ = nh;
     c.nv_ = nv;
@@ -57,7 +58,8 @@ class hash_coloring {
   static result<hash_coloring> for_set(const tile_set_edges& set, std::uint64_t seed = 1) {
     if (set.hash_modulus() == 0)
       return status::unsupported(detail::cat(
-          "hash colouring: the tile set (", set.size(), " tiles over ", set.horizontal_colors(), " x ", set.vertical_colors(),
+          "hash colouring: the tile set (", set.size(), " tiles over ", set.horizontal_colors(), " x ",
+          set.vertical_colors(),
           " colours) contains neither the complete set nor a whole modular subset, so O(1) hashing could ask for a "
           "missing tile; use scanline_coloring for this set"));
     return create(set.horizontal_colors(), set.vertical_colors(), seed, set.hash_modulus());
@@ -85,8 +87,8 @@ class hash_coloring {
   /// included), so the colouring is consistent on the torus of that size. Errors: a period < 1.
   [[nodiscard]] result<hash_coloring> with_period(index_t period_cols, index_t period_rows) const {
     if (period_cols < 1 || period_rows < 1)
-      return status::invalid_argument(detail::cat("hash colouring: period must be at least 1 x 1 cells, got ", period_cols,
-                                                  " x ", period_rows));
+      return status::invalid_argument(
+          detail::cat("hash colouring: period must be at least 1 x 1 cells, got ", period_cols, " x ", period_rows));
     hash_coloring c = *this;
     c.period_cols_ = period_cols;
     c.period_rows_ = period_rows;
@@ -98,7 +100,8 @@ class hash_coloring {
 
   /// A cols × rows window whose cell (0, 0) is plane cell (origin_col, origin_row); models
   /// TileColoring. Errors: non-positive size.
-  [[nodiscard]] result<hash_coloring_window> window(index_t origin_col, index_t origin_row, index_t cols, index_t rows) const;
+  [[nodiscard]] result<hash_coloring_window> window(index_t origin_col, index_t origin_row, index_t cols,
+                                                    index_t rows) const;
 
  private:
   // v + 1, wrapping at the ends of the index range (coordinates are only hash keys)
@@ -140,7 +143,8 @@ class hash_coloring {
 /// (a window may straddle them). Models TileColoring; O(1) queries.
 class hash_coloring_window {
  public:
-  hash_coloring_window(const hash_coloring& plane, index_t origin_col, index_t origin_row, index_t cols, index_t rows) noexcept
+  hash_coloring_window(const hash_coloring& plane, index_t origin_col, index_t origin_row, index_t cols,
+                       index_t rows) noexcept
       : plane_(plane), origin_col_(origin_col), origin_row_(origin_row), cols_(cols), rows_(rows) {}
 
   [[nodiscard]] index_t cols() const noexcept { return cols_; }
@@ -169,11 +173,14 @@ class hash_coloring_window {
   index_t origin_col_, origin_row_, cols_, rows_;
 };
 
-inline result<hash_coloring_window> hash_coloring::window(index_t origin_col, index_t origin_row, index_t cols, index_t rows) const {
+inline result<hash_coloring_window> hash_coloring::window(index_t origin_col, index_t origin_row, index_t cols,
+                                                          index_t rows) const {
   if (cols <= 0 || rows <= 0)
-    return status::invalid_argument(detail::cat("hash colouring window: size must be at least 1 x 1 cells, got ", cols, " x ", rows));
+    return status::invalid_argument(
+        detail::cat("hash colouring window: size must be at least 1 x 1 cells, got ", cols, " x ", rows));
   if (cols > (index_t{1} << 32) / rows)
-    return status::size_overflow(detail::cat("hash colouring window: ", cols, " x ", rows, " cells exceed the supported 2^32"));
+    return status::size_overflow(
+        detail::cat("hash colouring window: ", cols, " x ", rows, " cells exceed the supported 2^32"));
   return hash_coloring_window(*this, origin_col, origin_row, cols, rows);
 }
 

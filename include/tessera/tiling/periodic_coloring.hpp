@@ -36,8 +36,9 @@ class periodic_coloring {
   /// search budget of `max_search_steps` exhausted (not_converged).
   /// Complexity: O(cols · rows) for hashable sets; the search is exponential in the worst case but
   /// bounded by max_search_steps.
-  static result<periodic_coloring> create(const tile_set_edges& set, index_t period_cols, index_t period_rows, index_t cols,
-                                          index_t rows, std::uint64_t seed = 1, index_t max_search_steps = 1'000'000) {
+  static result<periodic_coloring> create(const tile_set_edges& set, index_t period_cols, index_t period_rows,
+                                          index_t cols, index_t rows, std::uint64_t seed = 1,
+                                          index_t max_search_steps = 1'000'000) {
     if (auto s = detail::validate_grid(period_cols, period_rows, "periodic colouring period"); !s) return s;
     if (auto s = detail::validate_grid(cols, rows, "periodic colouring"); !s) return s;
     periodic_coloring c;
@@ -68,9 +69,13 @@ class periodic_coloring {
   [[nodiscard]] index_t period_rows() const noexcept { return period_rows_; }
   [[nodiscard]] index_t num_faces() const noexcept { return cols_ * rows_; }
   [[nodiscard]] int num_colors(int side) const noexcept { return is_horizontal_side(side) ? nh_ : nv_; }
-  [[nodiscard]] int edge_color(index_t face, int side) const noexcept { return edge_color_at(face % cols_, face / cols_, side); }
+  [[nodiscard]] int edge_color(index_t face, int side) const noexcept {
+    return edge_color_at(face % cols_, face / cols_, side);
+  }
   /// Colour of `side` of cell (col, row) of the infinite periodic plane (any integers).
-  [[nodiscard]] int edge_color_at(index_t col, index_t row, int side) const noexcept { return edges_at(col, row)[side]; }
+  [[nodiscard]] int edge_color_at(index_t col, index_t row, int side) const noexcept {
+    return edges_at(col, row)[side];
+  }
   [[nodiscard]] const wang_edges& edges_at(index_t col, index_t row) const noexcept {
     return pattern_[static_cast<std::size_t>(wrap(row, period_rows_) * period_cols_ + wrap(col, period_cols_))];
   }
@@ -114,16 +119,16 @@ class periodic_coloring {
     gather(0);
     while (k < n) {
       if (++steps > max_steps)
-        return status::not_converged(detail::cat("periodic colouring: no ", P, " x ", Q, " pattern found within ", max_steps,
-                                                 " search steps; try another period or a complete set"));
+        return status::not_converged(detail::cat("periodic colouring: no ", P, " x ", Q, " pattern found within ",
+                                                 max_steps, " search steps; try another period or a complete set"));
       auto& options = candidates[static_cast<std::size_t>(k)];
       auto& i = next[static_cast<std::size_t>(k)];
       if (i < options.size()) {
         pattern_[static_cast<std::size_t>(k)] = set[options[i++]];
         if (++k < n) gather(k);
       } else if (k == 0) {
-        return status::invalid_argument(detail::cat("periodic colouring: the tile set admits no periodic pattern of ", P,
-                                                    " x ", Q, " cells"));
+        return status::invalid_argument(
+            detail::cat("periodic colouring: the tile set admits no periodic pattern of ", P, " x ", Q, " cells"));
       } else {
         --k;  // backtrack
       }

@@ -48,7 +48,8 @@ class scanline_coloring {
   /// Cohen et al. 2003 §3 (scanline tiling). Errors: non-positive grid; more than
   /// max_coloring_cells cells (size_overflow); a set lacking a tile for some (north, west) pair
   /// (check_scanline_fillable names it). O(cols · rows · log n).
-  static result<scanline_coloring> create(const tile_set_edges& set, index_t cols, index_t rows, std::uint64_t seed = 1) {
+  static result<scanline_coloring> create(const tile_set_edges& set, index_t cols, index_t rows,
+                                          std::uint64_t seed = 1) {
     if (auto s = detail::validate_grid(cols, rows, "scanline colouring"); !s) return s;
     if (auto s = set.check_scanline_fillable(); !s) return s;
     scanline_coloring c;
@@ -62,11 +63,13 @@ class scanline_coloring {
       for (index_t col = 0; col < cols; ++col) {
         index_t pick = 0;
         if (r == 0 && col == 0) {
-          pick = static_cast<index_t>(rng.below(static_cast<std::uint64_t>(set.size()), col, r));  // first cell: any tile
+          pick =
+              static_cast<index_t>(rng.below(static_cast<std::uint64_t>(set.size()), col, r));  // first cell: any tile
         } else {
-          const std::span<const index_t> options = r > 0 && col > 0 ? set.matching(c.at(col, r - 1).south, c.at(col - 1, r).east)
-                                                   : r > 0          ? set.with_north(c.at(col, r - 1).south)
-                                                                    : set.with_west(c.at(col - 1, r).east);
+          const std::span<const index_t> options = r > 0 && col > 0
+                                                       ? set.matching(c.at(col, r - 1).south, c.at(col - 1, r).east)
+                                                   : r > 0 ? set.with_north(c.at(col, r - 1).south)
+                                                           : set.with_west(c.at(col - 1, r).east);
           TESSERA_ASSERT(!options.empty());
           pick = options[static_cast<std::size_t>(rng.below(options.size(), col, r))];
         }
@@ -86,7 +89,9 @@ class scanline_coloring {
   [[nodiscard]] index_t rows() const noexcept { return rows_; }
   [[nodiscard]] index_t num_faces() const noexcept { return cols_ * rows_; }
   [[nodiscard]] int num_colors(int side) const noexcept { return is_horizontal_side(side) ? nh_ : nv_; }
-  [[nodiscard]] int edge_color(index_t face, int side) const noexcept { return cells_[static_cast<std::size_t>(face)][side]; }
+  [[nodiscard]] int edge_color(index_t face, int side) const noexcept {
+    return cells_[static_cast<std::size_t>(face)][side];
+  }
   /// Colour of `side` of cell (col, row); 0 <= col < cols, 0 <= row < rows.
   [[nodiscard]] int edge_color_at(index_t col, index_t row, int side) const noexcept { return at(col, row)[side]; }
   [[nodiscard]] const wang_edges& edges_at(index_t col, index_t row) const noexcept { return at(col, row); }

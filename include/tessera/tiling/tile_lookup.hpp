@@ -53,9 +53,9 @@ bool grid_coloring_consistent(const C& c) noexcept {
 template <GridTileColoring C>
 status validate_grid_coloring(const C& c) {
   if (grid_coloring_consistent(c)) return {};
-  return status::invalid_argument(detail::cat("grid colouring: cols() x rows() = ", static_cast<index_t>(c.cols()), " x ",
-                                              static_cast<index_t>(c.rows()), " does not match num_faces() = ",
-                                              static_cast<index_t>(c.num_faces()),
+  return status::invalid_argument(detail::cat("grid colouring: cols() x rows() = ", static_cast<index_t>(c.cols()),
+                                              " x ", static_cast<index_t>(c.rows()),
+                                              " does not match num_faces() = ", static_cast<index_t>(c.num_faces()),
                                               " (face = row * cols + col must cover the grid exactly)"));
 }
 
@@ -68,26 +68,31 @@ struct grid_coloring_view {
   [[nodiscard]] index_t rows() const noexcept { return grid_cols > 0 ? coloring->num_faces() / grid_cols : 0; }
   [[nodiscard]] index_t num_faces() const noexcept { return coloring->num_faces(); }
   [[nodiscard]] int num_colors(int side) const noexcept { return static_cast<int>(coloring->num_colors(side)); }
-  [[nodiscard]] int edge_color(index_t face, int side) const noexcept { return static_cast<int>(coloring->edge_color(face, side)); }
+  [[nodiscard]] int edge_color(index_t face, int side) const noexcept {
+    return static_cast<int>(coloring->edge_color(face, side));
+  }
 };
 
 /// The four colours of cell (col, row). For grid colourings the cell must lie in the grid.
 template <class C>
-  requires GridTileColoring<C> || PlaneTileColoring<C>
-wang_edges cell_edges(const C& c, index_t col, index_t row) noexcept {
+requires GridTileColoring<C> || PlaneTileColoring<C> wang_edges cell_edges(const C& c, index_t col, index_t row)
+noexcept {
   if constexpr (GridTileColoring<C>) {
     const index_t f = row * static_cast<index_t>(c.cols()) + col;
     return {static_cast<int>(c.edge_color(f, side_north)), static_cast<int>(c.edge_color(f, side_east)),
             static_cast<int>(c.edge_color(f, side_south)), static_cast<int>(c.edge_color(f, side_west))};
   } else {
-    return {static_cast<int>(c.edge_color_at(col, row, side_north)), static_cast<int>(c.edge_color_at(col, row, side_east)),
-            static_cast<int>(c.edge_color_at(col, row, side_south)), static_cast<int>(c.edge_color_at(col, row, side_west))};
+    return {static_cast<int>(c.edge_color_at(col, row, side_north)),
+            static_cast<int>(c.edge_color_at(col, row, side_east)),
+            static_cast<int>(c.edge_color_at(col, row, side_south)),
+            static_cast<int>(c.edge_color_at(col, row, side_west))};
   }
 }
 
 /// The tile of `set` placed in cell (col, row) whose edges are `e`: the only tile with these edges,
 /// or one of its variants drawn by (seed, col, row); -1 when the set has no such tile. O(log n).
-inline index_t tile_at_cell(const tile_set_edges& set, const wang_edges& e, std::uint64_t seed, index_t col, index_t row) noexcept {
+inline index_t tile_at_cell(const tile_set_edges& set, const wang_edges& e, std::uint64_t seed, index_t col,
+                            index_t row) noexcept {
   const auto v = set.variants(e);
   if (v.empty()) return -1;
   if (v.size() == 1) return v.front();
@@ -120,16 +125,23 @@ concept has_edge_color_at = requires(const T& c, index_t col, index_t row, int s
 };
 template <class T>
 constexpr tiling_coloring_problem grid_coloring_problem_of() {
-  if constexpr (!TileColoring<T>) return tiling_coloring_problem::not_tile_coloring;
-  else if constexpr (!has_grid_size<T>) return tiling_coloring_problem::no_grid_size;
-  else return tiling_coloring_problem::none;
+  if constexpr (!TileColoring<T>)
+    return tiling_coloring_problem::not_tile_coloring;
+  else if constexpr (!has_grid_size<T>)
+    return tiling_coloring_problem::no_grid_size;
+  else
+    return tiling_coloring_problem::none;
 }
 template <class T>
 constexpr tiling_coloring_problem plane_coloring_problem_of() {
-  if constexpr (GridTileColoring<T>) return tiling_coloring_problem::is_grid;
-  else if constexpr (!has_num_colors<T>) return tiling_coloring_problem::no_num_colors;
-  else if constexpr (!has_edge_color_at<T>) return tiling_coloring_problem::no_edge_color_at;
-  else return tiling_coloring_problem::none;
+  if constexpr (GridTileColoring<T>)
+    return tiling_coloring_problem::is_grid;
+  else if constexpr (!has_num_colors<T>)
+    return tiling_coloring_problem::no_num_colors;
+  else if constexpr (!has_edge_color_at<T>)
+    return tiling_coloring_problem::no_edge_color_at;
+  else
+    return tiling_coloring_problem::none;
 }
 }  // namespace detail
 
@@ -157,16 +169,18 @@ template <class T>
 constexpr void explain_plane_tile_coloring() {
   using detail::tiling_coloring_problem;
   constexpr tiling_coloring_problem p = detail::plane_coloring_problem_of<T>();
-  static_assert(p != tiling_coloring_problem::is_grid,
-                "tessera::PlaneTileColoring: the type has cols() and rows(), so it is a GridTileColoring (a finite "
-                "grid); algorithms taking either accept it as such. Remove cols()/rows() to make it a plane colouring.");
+  static_assert(
+      p != tiling_coloring_problem::is_grid,
+      "tessera::PlaneTileColoring: the type has cols() and rows(), so it is a GridTileColoring (a finite "
+      "grid); algorithms taking either accept it as such. Remove cols()/rows() to make it a plane colouring.");
   static_assert(p != tiling_coloring_problem::no_num_colors,
                 "tessera::PlaneTileColoring: the type has no `int num_colors(int side) const` (colours of north/south "
                 "sides for side 0 or 2, of east/west sides for 1 or 3).");
-  static_assert(p != tiling_coloring_problem::no_edge_color_at,
-                "tessera::PlaneTileColoring: the type has no `int edge_color_at(index_t col, index_t row, int side) const` "
-                "answering for every cell of the plane (negative coordinates included; side 0 north, 1 east, 2 south, "
-                "3 west).");
+  static_assert(
+      p != tiling_coloring_problem::no_edge_color_at,
+      "tessera::PlaneTileColoring: the type has no `int edge_color_at(index_t col, index_t row, int side) const` "
+      "answering for every cell of the plane (negative coordinates included; side 0 north, 1 east, 2 south, "
+      "3 west).");
 }
 
 /// Floor division for cell coordinates of possibly negative plane positions.

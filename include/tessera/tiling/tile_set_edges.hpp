@@ -94,7 +94,8 @@ class tile_set_edges {
 
   /// All tiles with exactly these edges, in increasing index order (empty when none).
   [[nodiscard]] std::span<const index_t> variants(const wang_edges& e) const noexcept {
-    if (e.north < 0 || e.north >= nh_ || e.south < 0 || e.south >= nh_ || e.east < 0 || e.east >= nv_ || e.west < 0 || e.west >= nv_)
+    if (e.north < 0 || e.north >= nh_ || e.south < 0 || e.south >= nh_ || e.east < 0 || e.east >= nv_ || e.west < 0 ||
+        e.west >= nv_)
       return {};
     return range(by_edges_, complete_tile_index(e, nh_, nv_),
                  [&](index_t t) { return complete_tile_index((*this)[t], nh_, nv_); });
@@ -131,7 +132,8 @@ class tile_set_edges {
     for (int n = 0; n < nh_; ++n)
       for (int w = 0; w < nv_; ++w)
         if (matching(n, w).empty())
-          return status::invalid_argument(detail::cat("tile set has no tile with north colour ", n, " and west colour ", w,
+          return status::invalid_argument(detail::cat("tile set has no tile with north colour ", n, " and west colour ",
+                                                      w,
                                                       "; a scanline colouring needs one for every (north, west) pair"));
     return {};
   }
@@ -178,8 +180,9 @@ class tile_set_edges {
       index_t members = 0;  // distinct combinations of the set inside the modular subset for m
       for (index_t i = 0; i < n; ++i) {
         const wang_edges& e = (*this)[by_edges_[static_cast<std::size_t>(i)]];
-        const bool first = i == 0 || complete_tile_index(e, nh_, nv_) !=
-                                         complete_tile_index((*this)[by_edges_[static_cast<std::size_t>(i - 1)]], nh_, nv_);
+        const bool first =
+            i == 0 || complete_tile_index(e, nh_, nv_) !=
+                          complete_tile_index((*this)[by_edges_[static_cast<std::size_t>(i - 1)]], nh_, nv_);
         if (first && in_modular_subset(e, m)) ++members;
       }
       if (members == complete_tile_count(nh_, nv_) / m) hash_modulus_ = m;
@@ -200,17 +203,19 @@ class tile_set_edges {
 /// (core/tile_coloring.hpp). O(faces · log n); thread-safe.
 template <TileColoring C>
 status check_coloring_against_set(const C& coloring, const tile_set_edges& set) {
-  if (coloring.num_colors(side_north) != set.horizontal_colors() || coloring.num_colors(side_east) != set.vertical_colors())
-    return status::invalid_argument(detail::cat("colouring uses ", coloring.num_colors(side_north), " horizontal and ",
-                                                coloring.num_colors(side_east), " vertical colours but the tile set has ",
-                                                set.horizontal_colors(), " and ", set.vertical_colors()));
+  if (coloring.num_colors(side_north) != set.horizontal_colors() ||
+      coloring.num_colors(side_east) != set.vertical_colors())
+    return status::invalid_argument(detail::cat(
+        "colouring uses ", coloring.num_colors(side_north), " horizontal and ", coloring.num_colors(side_east),
+        " vertical colours but the tile set has ", set.horizontal_colors(), " and ", set.vertical_colors()));
   if (auto s = check_color_ranges(coloring); !s) return s;
   for (index_t f = 0; f < coloring.num_faces(); ++f) {
-    const wang_edges e{static_cast<int>(coloring.edge_color(f, side_north)), static_cast<int>(coloring.edge_color(f, side_east)),
-                       static_cast<int>(coloring.edge_color(f, side_south)), static_cast<int>(coloring.edge_color(f, side_west))};
+    const wang_edges e{
+        static_cast<int>(coloring.edge_color(f, side_north)), static_cast<int>(coloring.edge_color(f, side_east)),
+        static_cast<int>(coloring.edge_color(f, side_south)), static_cast<int>(coloring.edge_color(f, side_west))};
     if (set.find(e) < 0)
-      return status::invalid_argument(detail::cat("colouring violates the tile set: face ", f, " needs edges [north ", e.north,
-                                                  ", east ", e.east, ", south ", e.south, ", west ", e.west,
+      return status::invalid_argument(detail::cat("colouring violates the tile set: face ", f, " needs edges [north ",
+                                                  e.north, ", east ", e.east, ", south ", e.south, ", west ", e.west,
                                                   "] but the set has no such tile"));
   }
   return {};

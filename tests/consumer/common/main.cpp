@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
   auto mesh = tessera::make_mesh_view(positions, 6, indices, 2);
   if (!mesh || !tessera::validate_mesh(*mesh)) return std::fprintf(stderr, "mesh view failed\n"), 1;
   const auto components = tessera::connected_components(*mesh).count;
-  std::printf("consumer: tessera %s, wrote %s, %td mesh components\n", TESSERA_VERSION_STRING, path.c_str(), components);
+  std::printf("consumer: tessera %s, wrote %s, %td mesh components\n", TESSERA_VERSION_STRING, path.c_str(),
+              components);
   return components == 2 ? 0 : 1;
 }

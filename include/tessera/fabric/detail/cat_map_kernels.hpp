@@ -181,8 +181,10 @@ void apply_gather(image_view<const T, C> src, image_view<T, C> dst, const mat2& 
   const T* from = src.data();
   index_t from_stride = src.stride();
   for (const cat_pass& p : passes) {
-    if (p.rows) row_pass<T, C>(from, from_stride, dst, p, exec);
-    else column_pass<T, C>(from, from_stride, dst, p, exec);
+    if (p.rows)
+      row_pass<T, C>(from, from_stride, dst, p, exec);
+    else
+      column_pass<T, C>(from, from_stride, dst, p, exec);
     from = dst.data();
     from_stride = dst.stride();
   }

@@ -130,8 +130,8 @@ struct life_int_rule {
 /// only, with signed compares, so it vectorizes well (8 pixels per SSE2 vector for 8-bit images).
 template <class V, class U, int S, bool ByThreshold, bool Exact>
 TESSERA_LIFE_INLINE void life_int_classify(const V* TESSERA_LIFE_RESTRICT up, const V* TESSERA_LIFE_RESTRICT mid,
-                       const V* TESSERA_LIFE_RESTRICT down, index_t w, const life_int_rule<V>& rule,
-                       U* TESSERA_LIFE_RESTRICT toward, U* TESSERA_LIFE_RESTRICT kind) noexcept {
+                                           const V* TESSERA_LIFE_RESTRICT down, index_t w, const life_int_rule<V>& rule,
+                                           U* TESSERA_LIFE_RESTRICT toward, U* TESSERA_LIFE_RESTRICT kind) noexcept {
   const V live_k = rule.live, dead_n = rule.dead, crowd = rule.crowd;
   const V qt = static_cast<V>(rule.q_threshold + (V{1} << S));
   auto mask = [](bool b) { return static_cast<U>(0 - static_cast<U>(b)); };
@@ -181,7 +181,8 @@ std::size_t life_compact(const U* kind, index_t w, std::uint32_t* fired) noexcep
       const __m128i k = _mm_loadu_si128(reinterpret_cast<const __m128i*>(kind + x));
       const __m128i none = _mm_packs_epi16(_mm_cmpeq_epi16(k, zero), zero);
       const auto m = static_cast<std::size_t>(~_mm_movemask_epi8(none) & 0xff);
-      const __m128i at = _mm_unpacklo_epi8(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(life_compact_lanes.at[m])), zero);
+      const __m128i at =
+          _mm_unpacklo_epi8(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(life_compact_lanes.at[m])), zero);
       const __m128i first = _mm_set1_epi32(static_cast<int>(x));
       _mm_storeu_si128(reinterpret_cast<__m128i*>(fired + n), _mm_add_epi32(_mm_unpacklo_epi16(at, zero), first));
       _mm_storeu_si128(reinterpret_cast<__m128i*>(fired + n + 4), _mm_add_epi32(_mm_unpackhi_epi16(at, zero), first));
@@ -208,8 +209,16 @@ struct life_int_scratch {
   std::vector<std::uint32_t> fired, sum, q, up;
   std::vector<float> lq, k, base;
   explicit life_int_scratch(index_t w)
-      : rows(static_cast<std::size_t>(3 * (w + 2))), toward(static_cast<std::size_t>(w)), kind(toward.size()),
-        fired(toward.size() + 8), sum(toward.size()), q(toward.size()), up(toward.size()), lq(toward.size()), k(toward.size()), base(toward.size()) {}
+      : rows(static_cast<std::size_t>(3 * (w + 2))),
+        toward(static_cast<std::size_t>(w)),
+        kind(toward.size()),
+        fired(toward.size() + 8),
+        sum(toward.size()),
+        q(toward.size()),
+        up(toward.size()),
+        lq(toward.size()),
+        k(toward.size()),
+        base(toward.size()) {}
 };
 
 /// The per-pixel arithmetic of the fired pixels, over structure-of-arrays scratch so that it
@@ -242,7 +251,8 @@ TESSERA_LIFE_INLINE void life_int_fired(std::size_t n, std::uint32_t row_key, li
     const float l = lo + (hi - lo) * r;
     const std::int32_t d = qi - m, span_old = m - (d < 0 ? -d : d);  // 2M times 1 - |2L - 1|
     const float span_new = top - std::abs(l - top);
-    const float k = life_select(life_mask(span_old > 0), span_new / static_cast<float>(span_old > 1 ? span_old : 1), 0.0f);
+    const float k =
+        life_select(life_mask(span_old > 0), span_new / static_cast<float>(span_old > 1 ? span_old : 1), 0.0f);
     lq[i] = l;
     kk[i] = k;
     base[i] = (l - q * k) * 0.5f + 0.5f;
@@ -260,7 +270,9 @@ struct life_int_loops {
                        U* kind) noexcept {
     life_int_classify<V, U, S, ByThreshold, Exact>(up, mid, down, w, rule, toward, kind);
   }
-  static void fired(std::size_t n, std::uint32_t row_key, life_int_scratch<T>& s) noexcept { life_int_fired<T>(n, row_key, s); }
+  static void fired(std::size_t n, std::uint32_t row_key, life_int_scratch<T>& s) noexcept {
+    life_int_fired<T>(n, row_key, s);
+  }
 };
 #if defined(TESSERA_LIFE_AVX2)
 template <class T>
@@ -273,7 +285,8 @@ struct life_int_loops<T, true> {
                                                        const life_int_rule<V>& rule, U* toward, U* kind) noexcept {
     life_int_classify<V, U, S, ByThreshold, Exact>(up, mid, down, w, rule, toward, kind);
   }
-  __attribute__((target("avx2"))) static void fired(std::size_t n, std::uint32_t row_key, life_int_scratch<T>& s) noexcept {
+  __attribute__((target("avx2"))) static void fired(std::size_t n, std::uint32_t row_key,
+                                                    life_int_scratch<T>& s) noexcept {
     life_int_fired<T>(n, row_key, s);
   }
 };
@@ -292,9 +305,9 @@ inline bool life_has_avx2() noexcept { return false; }
 /// q, new lightness (s.lq, in q units: L' = lq / 2M) and relighting factors (s.k, s.base). All
 /// other columns keep their lightness exactly.
 template <class T, class Fill, class Emit>
-void life_int_band(index_t w, index_t h, index_t y0, index_t y1, const life_int_rule<typename life_lane<T>::value>& rule,
-                   const life_random& random, life_int_scratch<T>& s, Fill&& fill, Emit&& emit,
-                   bool use_avx2 = life_has_avx2()) {
+void life_int_band(index_t w, index_t h, index_t y0, index_t y1,
+                   const life_int_rule<typename life_lane<T>::value>& rule, const life_random& random,
+                   life_int_scratch<T>& s, Fill&& fill, Emit&& emit, bool use_avx2 = life_has_avx2()) {
   using V = typename life_lane<T>::value;
   using U = typename life_lane<T>::sum;
   constexpr int S = life_lane<T>::shift;
@@ -303,8 +316,9 @@ void life_int_band(index_t w, index_t h, index_t y0, index_t y1, const life_int_
   using fired_fn = void (*)(std::size_t, std::uint32_t, life_int_scratch<T>&) noexcept;
   auto pick = [&](auto loops) -> std::pair<classify_fn, fired_fn> {
     using L = decltype(loops);
-    const classify_fn c = rule.by_threshold ? (rule.exact ? &L::template classify<true, true> : &L::template classify<true, false>)
-                                            : (rule.exact ? &L::template classify<false, true> : &L::template classify<false, false>);
+    const classify_fn c = rule.by_threshold
+                              ? (rule.exact ? &L::template classify<true, true> : &L::template classify<true, false>)
+                              : (rule.exact ? &L::template classify<false, true> : &L::template classify<false, false>);
     return {c, &L::fired};
   };
   const auto [classify, fired] = use_avx2 ? pick(life_int_loops<T, true>{}) : pick(life_int_loops<T, false>{});
@@ -370,7 +384,8 @@ void life_int_relight_row(const T* in, T* out, const life_int_scratch<T>& s, std
                                         _mm_or_si128(_mm_slli_epi32(channel(16), 16), _mm_and_si128(p, alpha)));
       std::uint32_t words[4];
       _mm_storeu_si128(reinterpret_cast<__m128i*>(words), rgba);
-      for (int j = 0; j < 4; ++j) std::memcpy(out + static_cast<std::size_t>(x[j]) * 4, words + j, sizeof(std::uint32_t));
+      for (int j = 0; j < 4; ++j)
+        std::memcpy(out + static_cast<std::size_t>(x[j]) * 4, words + j, sizeof(std::uint32_t));
     }
   }
 #endif

@@ -125,8 +125,12 @@ struct life_scratch {
   std::vector<std::int32_t> fire;
   std::vector<index_t> fired;
   explicit life_scratch(index_t w)
-      : rows(static_cast<std::size_t>(3 * (w + 2))), lo(static_cast<std::size_t>(w)), hi(lo.size()), next(lo.size()),
-        fire(lo.size()), fired(lo.size()) {}
+      : rows(static_cast<std::size_t>(3 * (w + 2))),
+        lo(static_cast<std::size_t>(w)),
+        hi(lo.size()),
+        next(lo.size()),
+        fire(lo.size()),
+        fired(lo.size()) {}
 };
 
 /// Runs one generation on rows [y0, y1) of a W x H toroidal lightness field whose row y is written,
@@ -142,8 +146,10 @@ void life_band(index_t w, index_t h, index_t y0, index_t y1, const life_rule& ru
   fill(y0, ring[1]);
   for (index_t y = y0; y < y1; ++y) {
     fill((y + 1) % h, ring[2]);
-    if (rule.by_threshold) life_classify<true>(ring[0], ring[1], ring[2], w, rule, s.lo.data(), s.hi.data(), s.fire.data());
-    else life_classify<false>(ring[0], ring[1], ring[2], w, rule, s.lo.data(), s.hi.data(), s.fire.data());
+    if (rule.by_threshold)
+      life_classify<true>(ring[0], ring[1], ring[2], w, rule, s.lo.data(), s.hi.data(), s.fire.data());
+    else
+      life_classify<false>(ring[0], ring[1], ring[2], w, rule, s.lo.data(), s.hi.data(), s.fire.data());
     // compact the fired columns without branches, then update only those
     index_t n = 0;
     for (index_t x = 0; x < w; ++x) {
@@ -155,7 +161,8 @@ void life_band(index_t w, index_t h, index_t y0, index_t y1, const life_rule& ru
     const bool narrow = static_cast<std::uint64_t>(w) <= (std::uint64_t{1} << 32);  // one row key per row
     for (index_t k = 0; k < n; ++k) {
       const index_t x = s.fired[static_cast<std::size_t>(k)];
-      const float r = narrow ? static_cast<float>(life_random::bits24(key, static_cast<std::uint32_t>(x))) * 0x1.0p-24f : random(y, x);
+      const float r = narrow ? static_cast<float>(life_random::bits24(key, static_cast<std::uint32_t>(x))) * 0x1.0p-24f
+                             : random(y, x);
       const auto xs = static_cast<std::size_t>(x);
       s.next[xs] = s.lo[xs] + (s.hi[xs] - s.lo[xs]) * r;
     }

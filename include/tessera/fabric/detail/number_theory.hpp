@@ -20,9 +20,7 @@ using u64 = std::uint64_t;
 #if defined(__SIZEOF_INT128__)
 __extension__ typedef unsigned __int128 fabric_u128;
 /// (a * b) mod m without overflow, for any m > 0 (a, b < m).
-inline u64 mulmod(u64 a, u64 b, u64 m) noexcept {
-  return static_cast<u64>(static_cast<fabric_u128>(a) * b % m);
-}
+inline u64 mulmod(u64 a, u64 b, u64 m) noexcept { return static_cast<u64>(static_cast<fabric_u128>(a) * b % m); }
 #else
 /// (a * b) mod m without overflow, for any m > 0 (a, b < m): double-and-add fallback.
 inline u64 mulmod(u64 a, u64 b, u64 m) noexcept {
@@ -171,8 +169,10 @@ inline std::vector<prime_power> factorize(u64 n) {
   std::sort(primes.begin(), primes.end());
   std::vector<prime_power> out;
   for (u64 p : primes) {
-    if (!out.empty() && out.back().p == p) ++out.back().k;
-    else out.push_back({p, 1});
+    if (!out.empty() && out.back().p == p)
+      ++out.back().k;
+    else
+      out.push_back({p, 1});
   }
   return out;
 }

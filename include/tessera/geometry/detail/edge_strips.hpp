@@ -48,7 +48,8 @@ struct strip_candidate {
 /// Windows of the source where a strip may be cut: crossing elements clear of the ends by the corner
 /// margin and (unless long) inside the strip. Positions on a lattice of step `step`.
 template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
-std::vector<strip_candidate> strip_candidates(const quilt_exemplar& src, bool horizontal, const strip_params& sp, double step) {
+std::vector<strip_candidate> strip_candidates(const quilt_exemplar& src, bool horizontal, const strip_params& sp,
+                                              double step) {
   const int a = horizontal ? 0 : 1, b = horizontal ? 1 : 0;
   const aabb& bb = src.bounds();
   std::vector<strip_candidate> out;
@@ -79,7 +80,8 @@ std::vector<texture_element> split_components(const tri_mesh& m) {
 /// Cuts the strip at `c` out of the source. Returns false when an element cannot be cut cleanly
 /// (a cap that cannot be triangulated).
 template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
-bool extract_strip(const quilt_exemplar& src, bool horizontal, const strip_params& sp, const strip_candidate& c, edge_strip& out) {
+bool extract_strip(const quilt_exemplar& src, bool horizontal, const strip_params& sp, const strip_candidate& c,
+                   edge_strip& out) {
   const int a = horizontal ? 0 : 1, b = horizontal ? 1 : 0;
   out = {};
   out.horizontal = horizontal;
@@ -90,7 +92,8 @@ bool extract_strip(const quilt_exemplar& src, bool horizontal, const strip_param
   for (index_t e = 0; e < src.num_elements(); ++e) {
     const texture_element& el = src.elements()[static_cast<std::size_t>(e)];
     const aabb& x = el.box;
-    if (x.max[a] < c.along0 || x.min[a] > c.along0 + w || x.max[b] < c.across0 - hh || x.min[b] > c.across0 + hh) continue;
+    if (x.max[a] < c.along0 || x.min[a] > c.along0 + w || x.max[b] < c.across0 - hh || x.min[b] > c.across0 + hh)
+      continue;
     tri_mesh m = el.mesh;
     for (vec3& p : m.positions) p[a] -= c.along0, p[b] -= c.across0;
     const bool crossing = x.min[b] < c.across0 && x.max[b] > c.across0;
@@ -103,8 +106,10 @@ bool extract_strip(const quilt_exemplar& src, bool horizontal, const strip_param
       f.mesh = std::move(m);
       f.fixed.assign(f.mesh.positions.size(), 0);
       f.update_box();
-      if (lo > eps && hi <= hh) out.positive.push_back(std::move(f));
-      else if (hi < -eps && lo >= -hh) out.negative.push_back(std::move(f));
+      if (lo > eps && hi <= hh)
+        out.positive.push_back(std::move(f));
+      else if (hi < -eps && lo >= -hh)
+        out.negative.push_back(std::move(f));
       continue;
     }
     ++out.crossing;

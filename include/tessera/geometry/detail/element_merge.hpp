@@ -50,17 +50,16 @@ namespace detail {
 
 struct merge_params {
   xy_rect domain;
-  bool constrained = false;    ///< the domain sides are tile borders: nothing non-fixed may reach them
-  double corr_dist = 0.25;     ///< correspondence search radius (§3.3.4)
-  double mu = 1.0;             ///< soft-constraint weight of eq. 6-7
-  int smooth_rings = 2;        ///< rings around the seam relaxed after joining
-  double margin = 1e-7;        ///< non-fixed vertices stay this far inside a constrained domain
+  bool constrained = false;  ///< the domain sides are tile borders: nothing non-fixed may reach them
+  double corr_dist = 0.25;   ///< correspondence search radius (§3.3.4)
+  double mu = 1.0;           ///< soft-constraint weight of eq. 6-7
+  int smooth_rings = 2;      ///< rings around the seam relaxed after joining
+  double margin = 1e-7;      ///< non-fixed vertices stay this far inside a constrained domain
   /// Regions: "old" is what was synthesized before this patch (occupied cells), "patch" is P_T. The
   /// overlap of §3.3.6 is old and patch; the new region is patch but not old.
   std::function<bool(vec3)> is_old, in_patch;
   merge_rules rules = merge_rules::tessera;
 };
-
 
 /// What merge_pair decided, for tests and diagnostics: terminal links per face (+1 SOURCE, -1 SINK,
 /// 0 free), the kept faces of each element after its cut, Dist(v, other element) per vertex (eq. 8,
@@ -90,8 +89,8 @@ inline bool strictly_inside(const xy_rect& d, vec3 p, double m) {
 // the cut is infinite.
 template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
 std::optional<std::vector<unsigned char>> dual_graph_cut(const tri_mesh& m, const std::vector<double>& dist,
-                                                                const std::vector<signed char>& term,
-                                                                const std::vector<double>& bias) {
+                                                         const std::vector<signed char>& term,
+                                                         const std::vector<double>& bias) {
   const index_t nf = m.num_faces();
   max_flow_graph g(nf);
   const double inf = std::numeric_limits<double>::infinity();
@@ -106,7 +105,8 @@ std::optional<std::vector<unsigned char>> dual_graph_cut(const tri_mesh& m, cons
   for (const mesh_edge& e : mesh_edges(m)) {
     if (e.faces.size() != 2) continue;
     const double len = norm(m.positions[static_cast<std::size_t>(e.v0)] - m.positions[static_cast<std::size_t>(e.v1)]);
-    const double w = (1 + len) * (1 + dist[static_cast<std::size_t>(e.v0)] + dist[static_cast<std::size_t>(e.v1)]);  // eq. 8
+    const double w =
+        (1 + len) * (1 + dist[static_cast<std::size_t>(e.v0)] + dist[static_cast<std::size_t>(e.v1)]);  // eq. 8
     g.add_edge(e.faces[0][0], e.faces[1][0], w, w);
   }
   const auto flow = g.solve();
@@ -122,7 +122,7 @@ std::optional<std::vector<unsigned char>> dual_graph_cut(const tri_mesh& m, cons
 /// by the translation units that quilt, not by every includer of tessera.hpp (its compile-time goal).
 template <class Deferred = void>
 std::optional<texture_element> merge_pair(const texture_element& ct, const texture_element& cin, const merge_params& p,
-                                                 merge_counters& stats, merge_trace* trace = nullptr) {
+                                          merge_counters& stats, merge_trace* trace = nullptr) {
   ++stats.attempted;
   const double corr2 = p.corr_dist * p.corr_dist;
   const double dist_cap = 4 * p.corr_dist;  // Dist of eq. 8 is searched up to 4 correspondence radii, capped there
@@ -234,7 +234,8 @@ std::optional<texture_element> merge_pair(const texture_element& ct, const textu
   }
   bool any_sink = false, conflict = false;
   for (std::size_t f = 0; f < t2.faces.size(); ++f) {
-    bool sink = !paper && is_new(centroid(t2, static_cast<index_t>(f))) && corr_face_t[static_cast<std::size_t>(t2.faces[f][0])] >= 0;
+    bool sink = !paper && is_new(centroid(t2, static_cast<index_t>(f))) &&
+                corr_face_t[static_cast<std::size_t>(t2.faces[f][0])] >= 0;
     for (index_t v : t2.faces[f]) sink = sink || sink_vertex[static_cast<std::size_t>(v)];
     if (!sink) continue;
     if (term_t[f] > 0) {
@@ -257,7 +258,8 @@ std::optional<texture_element> merge_pair(const texture_element& ct, const textu
   }
   constexpr double bias_weight = 0.05;
   std::vector<double> bias_t(t2.faces.size());
-  for (std::size_t f = 0; f < t2.faces.size(); ++f) bias_t[f] = p.is_old(centroid(t2, static_cast<index_t>(f))) ? bias_weight : -bias_weight;
+  for (std::size_t f = 0; f < t2.faces.size(); ++f)
+    bias_t[f] = p.is_old(centroid(t2, static_cast<index_t>(f))) ? bias_weight : -bias_weight;
   const auto keep_t = dual_graph_cut(t2, dist_t, term_t, bias_t);
   if (!keep_t) {
     ++stats.fail_cut;
@@ -275,14 +277,18 @@ std::optional<texture_element> merge_pair(const texture_element& ct, const textu
       const index_t ft = corr_face_in[v];
       if (ft < 0) continue;
       const vec3 c = centroid(t2, ft);
-      sink_in[v] = is_kept_old(c) || border_t[static_cast<std::size_t>(ft)] || (t_frontier[static_cast<std::size_t>(ft)] && p.in_patch(c));
+      sink_in[v] = is_kept_old(c) || border_t[static_cast<std::size_t>(ft)] ||
+                   (t_frontier[static_cast<std::size_t>(ft)] && p.in_patch(c));
     }
   for (std::size_t f = 0; f < in2.faces.size() && !conflict; ++f) {
     bool has_fixed = false;
-    for (index_t v : in2.faces[f]) has_fixed = has_fixed || (static_cast<std::size_t>(v) < cin.fixed.size() && cin.fixed[static_cast<std::size_t>(v)]);
+    for (index_t v : in2.faces[f])
+      has_fixed =
+          has_fixed || (static_cast<std::size_t>(v) < cin.fixed.size() && cin.fixed[static_cast<std::size_t>(v)]);
     bool must_go = false;
     if (p.constrained)
-      for (index_t v : in2.faces[f]) must_go = must_go || !strictly_inside(p.domain, in2.positions[static_cast<std::size_t>(v)], p.margin);
+      for (index_t v : in2.faces[f])
+        must_go = must_go || !strictly_inside(p.domain, in2.positions[static_cast<std::size_t>(v)], p.margin);
     const vec3 c = centroid(in2, static_cast<index_t>(f));
     must_go = must_go || is_kept_old(c);
     if (paper) {
@@ -313,8 +319,10 @@ std::optional<texture_element> merge_pair(const texture_element& ct, const textu
       if (ft < 0) continue;
       ((*keep_t)[static_cast<std::size_t>(ft)] ? to_kept : to_removed)++;
     }
-    if (to_kept > 0 && to_removed == 0) term_in[f] = -1;
-    else if (to_removed > 0 && to_kept == 0) term_in[f] = 1;
+    if (to_kept > 0 && to_removed == 0)
+      term_in[f] = -1;
+    else if (to_removed > 0 && to_kept == 0)
+      term_in[f] = 1;
   }
   if (trace) trace->term_in = term_in;
   if (conflict) {
@@ -322,7 +330,8 @@ std::optional<texture_element> merge_pair(const texture_element& ct, const textu
     return std::nullopt;
   }
   std::vector<double> bias_in(in2.faces.size());
-  for (std::size_t f = 0; f < in2.faces.size(); ++f) bias_in[f] = p.is_old(centroid(in2, static_cast<index_t>(f))) ? -bias_weight : bias_weight;
+  for (std::size_t f = 0; f < in2.faces.size(); ++f)
+    bias_in[f] = p.is_old(centroid(in2, static_cast<index_t>(f))) ? -bias_weight : bias_weight;
   const auto keep_in = dual_graph_cut(in2, dist_in, term_in, bias_in);
   if (!keep_in) {
     ++stats.fail_cut;
@@ -361,7 +370,8 @@ std::optional<texture_element> merge_pair(const texture_element& ct, const textu
   for (std::size_t v = 0; v < map_t.size(); ++v)
     if (map_t[v] >= 0 && v < ct.fixed.size() && ct.fixed[v]) out.fixed[static_cast<std::size_t>(map_t[v])] = 1;
   for (std::size_t v = 0; v < map_in.size(); ++v)
-    if (map_in[v] >= 0 && v < cin.fixed.size() && cin.fixed[v]) out.fixed[static_cast<std::size_t>(base + map_in[v])] = 1;
+    if (map_in[v] >= 0 && v < cin.fixed.size() && cin.fixed[v])
+      out.fixed[static_cast<std::size_t>(base + map_in[v])] = 1;
   out.border = ct.border | cin.border;  // B(C) = B(C1) u B(C2)
   // pair loops greedily by the distance of their centroids; opposite orientation required
   auto loop_centroid = [&](const std::vector<index_t>& l, index_t off) {

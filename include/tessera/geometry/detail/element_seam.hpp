@@ -26,7 +26,9 @@ namespace detail {
 
 inline vec3 centroid(const tri_mesh& m, index_t f) {
   const auto& t = m.faces[static_cast<std::size_t>(f)];
-  return (m.positions[static_cast<std::size_t>(t[0])] + m.positions[static_cast<std::size_t>(t[1])] + m.positions[static_cast<std::size_t>(t[2])]) / 3.0;
+  return (m.positions[static_cast<std::size_t>(t[0])] + m.positions[static_cast<std::size_t>(t[1])] +
+          m.positions[static_cast<std::size_t>(t[2])]) /
+         3.0;
 }
 
 /// Keeps the faces with keep[f] != 0; returns the sub-mesh and the old -> new vertex map.
@@ -61,8 +63,8 @@ std::vector<std::pair<index_t, index_t>> boundary_edge_set(const tri_mesh& m) {
 /// original mesh to the part). Loops made only of the original's boundary edges are left out; a loop
 /// mixing both makes the cut unusable (returns false). `out` may alias `loops`.
 template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
-bool cut_loops(const tri_mesh& original, const std::vector<index_t>& map, const std::vector<std::vector<index_t>>& loops,
-                      std::vector<std::vector<index_t>>& out) {
+bool cut_loops(const tri_mesh& original, const std::vector<index_t>& map,
+               const std::vector<std::vector<index_t>>& loops, std::vector<std::vector<index_t>>& out) {
   const std::vector<std::pair<index_t, index_t>> orig = boundary_edge_set(original);
   std::vector<index_t> back;
   for (std::size_t v = 0; v < map.size(); ++v)
@@ -107,7 +109,8 @@ bool self_intersects(const tri_mesh& m) {
 inline vec3 vector_area(const tri_mesh& m, const std::vector<index_t>& loop) {
   vec3 a;
   for (std::size_t i = 0; i < loop.size(); ++i)
-    a += cross(m.positions[static_cast<std::size_t>(loop[i])], m.positions[static_cast<std::size_t>(loop[(i + 1) % loop.size()])]);
+    a += cross(m.positions[static_cast<std::size_t>(loop[i])],
+               m.positions[static_cast<std::size_t>(loop[(i + 1) % loop.size()])]);
   return a * 0.5;
 }
 
@@ -120,7 +123,8 @@ void stitch_loops(tri_mesh& m, const std::vector<index_t>& a, std::vector<index_
   std::size_t start = 0;
   double best = std::numeric_limits<double>::infinity();
   for (std::size_t k = 0; k < nb; ++k) {
-    const double d = squared_norm(m.positions[static_cast<std::size_t>(b[k])] - m.positions[static_cast<std::size_t>(a[0])]);
+    const double d =
+        squared_norm(m.positions[static_cast<std::size_t>(b[k])] - m.positions[static_cast<std::size_t>(a[0])]);
     if (d < best) best = d, start = k;
   }
   auto A = [&](std::size_t i) { return a[i % na]; };
@@ -128,7 +132,8 @@ void stitch_loops(tri_mesh& m, const std::vector<index_t>& a, std::vector<index_
   auto P = [&](index_t v) { return m.positions[static_cast<std::size_t>(v)]; };
   std::size_t i = 0, k = 0;
   while (i < na || k < nb) {
-    const bool adv_a = k == nb || (i < na && squared_norm(P(A(i + 1)) - P(B(k))) <= squared_norm(P(A(i)) - P(B(k + 1))));
+    const bool adv_a =
+        k == nb || (i < na && squared_norm(P(A(i + 1)) - P(B(k))) <= squared_norm(P(A(i)) - P(B(k + 1))));
     if (adv_a) {
       m.add_face(A(i + 1), A(i), B(k));
       ++i;

@@ -54,14 +54,17 @@ plane_split split_mesh_by_plane(const tri_mesh& m, int axis, double value, doubl
     return above ? it->second.second : it->second.first;
   };
   for (const auto& f : m.faces) {
-    const double d[3] = {s[static_cast<std::size_t>(f[0])], s[static_cast<std::size_t>(f[1])], s[static_cast<std::size_t>(f[2])]};
+    const double d[3] = {s[static_cast<std::size_t>(f[0])], s[static_cast<std::size_t>(f[1])],
+                         s[static_cast<std::size_t>(f[2])]};
     const bool any_pos = d[0] > 0 || d[1] > 0 || d[2] > 0, any_neg = d[0] < 0 || d[1] < 0 || d[2] < 0;
     if (!any_neg) {  // all >= 0 (all on the plane counts as above)
-      out.above.add_face(vid(out.above, map_above, f[0]), vid(out.above, map_above, f[1]), vid(out.above, map_above, f[2]));
+      out.above.add_face(vid(out.above, map_above, f[0]), vid(out.above, map_above, f[1]),
+                         vid(out.above, map_above, f[2]));
       continue;
     }
     if (!any_pos) {
-      out.below.add_face(vid(out.below, map_below, f[0]), vid(out.below, map_below, f[1]), vid(out.below, map_below, f[2]));
+      out.below.add_face(vid(out.below, map_below, f[0]), vid(out.below, map_below, f[1]),
+                         vid(out.below, map_below, f[2]));
       continue;
     }
     // rotate so that corner r is on the plane (then the other two lie on opposite sides) or alone on its side
@@ -71,7 +74,8 @@ plane_split split_mesh_by_plane(const tri_mesh& m, int axis, double value, doubl
     if (r < 0)
       for (int k = 0; k < 3; ++k)
         if ((d[k] > 0) != (d[(k + 1) % 3] > 0) && (d[k] > 0) != (d[(k + 2) % 3] > 0)) r = k;
-    const index_t v0 = f[static_cast<std::size_t>(r)], v1 = f[static_cast<std::size_t>((r + 1) % 3)], v2 = f[static_cast<std::size_t>((r + 2) % 3)];
+    const index_t v0 = f[static_cast<std::size_t>(r)], v1 = f[static_cast<std::size_t>((r + 1) % 3)],
+                  v2 = f[static_cast<std::size_t>((r + 2) % 3)];
     const double d0 = d[r], d1 = d[(r + 1) % 3];
     if (d0 == 0) {
       // v0 on the plane, v1 and v2 on opposite sides: one triangle each side
@@ -138,7 +142,8 @@ bool ear_clip(const std::vector<vec2>& poly, std::vector<std::array<index_t, 3>>
   const auto n = static_cast<index_t>(poly.size());
   if (n < 3) return false;
   double area2 = 0;
-  for (index_t i = 0; i < n; ++i) area2 += cross(poly[static_cast<std::size_t>(i)], poly[static_cast<std::size_t>((i + 1) % n)]);
+  for (index_t i = 0; i < n; ++i)
+    area2 += cross(poly[static_cast<std::size_t>(i)], poly[static_cast<std::size_t>((i + 1) % n)]);
   if (!(std::abs(area2) > 0)) return false;
   const double sign = area2 > 0 ? 1.0 : -1.0;
   std::vector<index_t> idx(static_cast<std::size_t>(n));
@@ -202,7 +207,8 @@ bool cap_plane_loops(tri_mesh& m, int axis, double value, index_t* capped = null
     bool in = false;
     for (std::size_t i = 0, j = l.size() - 1; i < l.size(); j = i++) {
       const vec3 pi = m.positions[static_cast<std::size_t>(l[i])], pj = m.positions[static_cast<std::size_t>(l[j])];
-      if ((pi[a1] > p.y) != (pj[a1] > p.y) && p.x < (pj[a0] - pi[a0]) * (p.y - pi[a1]) / (pj[a1] - pi[a1]) + pi[a0]) in = !in;
+      if ((pi[a1] > p.y) != (pj[a1] > p.y) && p.x < (pj[a0] - pi[a0]) * (p.y - pi[a1]) / (pj[a1] - pi[a1]) + pi[a0])
+        in = !in;
     }
     return in;
   };
@@ -217,11 +223,13 @@ bool cap_plane_loops(tri_mesh& m, int axis, double value, index_t* capped = null
     // the cap runs the loop backwards so that its half-edges oppose the boundary half-edges
     std::vector<index_t> rev(l.rbegin(), l.rend());
     std::vector<vec2> poly;
-    for (index_t v : rev) poly.push_back({m.positions[static_cast<std::size_t>(v)][a0], m.positions[static_cast<std::size_t>(v)][a1]});
+    for (index_t v : rev)
+      poly.push_back({m.positions[static_cast<std::size_t>(v)][a0], m.positions[static_cast<std::size_t>(v)][a1]});
     std::vector<std::array<index_t, 3>> tris;
     if (!ear_clip(poly, tris)) return false;
     for (const auto& t : tris)
-      added.push_back({rev[static_cast<std::size_t>(t[0])], rev[static_cast<std::size_t>(t[1])], rev[static_cast<std::size_t>(t[2])]});
+      added.push_back({rev[static_cast<std::size_t>(t[0])], rev[static_cast<std::size_t>(t[1])],
+                       rev[static_cast<std::size_t>(t[2])]});
   }
   for (const auto& t : added) m.add_face(t[0], t[1], t[2]);
   if (capped) *capped += static_cast<index_t>(on_plane.size());

@@ -39,17 +39,19 @@ struct mesh_quilt_stats {
   index_t elements_dropped = 0;  ///< candidates rejected (intersection, border, failed merge)
   index_t merges_attempted = 0;  ///< pairwise merges tried (one exemplar element may merge several)
   index_t merges_succeeded = 0;
-  index_t icp_iterations = 0;    ///< total ICP updates (eq. 5)
-  index_t icp_discarded = 0;     ///< ICP results not used (no pairs, or a move of a cell or more)
+  index_t icp_iterations = 0;  ///< total ICP updates (eq. 5)
+  index_t icp_discarded = 0;   ///< ICP results not used (no pairs, or a move of a cell or more)
   /// Why merges failed: too few correspondences, deformation solve, graph cut (nothing to cut or
   /// an infinite cut), cut paths that could not be paired, and the final check (self-intersection,
   /// leaving the tile, open or non-manifold edges).
-  index_t merge_fail_correspondence = 0, merge_fail_deform = 0, merge_fail_cut = 0, merge_fail_loops = 0, merge_fail_check = 0;
+  index_t merge_fail_correspondence = 0, merge_fail_deform = 0, merge_fail_cut = 0, merge_fail_loops = 0,
+          merge_fail_check = 0;
   mesh_quilt_stats& operator+=(const mesh_quilt_stats& o) {
     merge_fail_correspondence += o.merge_fail_correspondence, merge_fail_deform += o.merge_fail_deform;
     merge_fail_cut += o.merge_fail_cut, merge_fail_loops += o.merge_fail_loops, merge_fail_check += o.merge_fail_check;
     patches += o.patches, elements_added += o.elements_added, elements_merged += o.elements_merged;
-    elements_dropped += o.elements_dropped, merges_attempted += o.merges_attempted, merges_succeeded += o.merges_succeeded;
+    elements_dropped += o.elements_dropped, merges_attempted += o.merges_attempted,
+        merges_succeeded += o.merges_succeeded;
     icp_iterations += o.icp_iterations, icp_discarded += o.icp_discarded;
     return *this;
   }
@@ -126,7 +128,8 @@ class basic_quilt_engine {
       const index_t i0 = std::clamp<index_t>(si - k / 2, 0, std::max<index_t>(0, cols_ - k));
       const index_t j0 = std::clamp<index_t>(sj - k / 2, 0, std::max<index_t>(0, rows_ - k));
       const index_t i1 = std::min(cols_, i0 + k), j1 = std::min(rows_, j0 + k);
-      const xy_rect window{domain_.x0 + i0 * cell_, domain_.y0 + j0 * cell_, std::min(domain_.x1, domain_.x0 + i1 * cell_),
+      const xy_rect window{domain_.x0 + i0 * cell_, domain_.y0 + j0 * cell_,
+                           std::min(domain_.x1, domain_.x0 + i1 * cell_),
                            std::min(domain_.y1, domain_.y0 + j1 * cell_)};
       const vec3 t = find_translation(window, stats_.patches);
       place_patch(t, window);
@@ -209,8 +212,7 @@ class basic_quilt_engine {
         const double v = cost(cands[c], best.load(std::memory_order_relaxed) * (1 + p_.tolerance), stride);
         costs[c] = v;
         double cur = best.load(std::memory_order_relaxed);
-        while (v < cur && !best.compare_exchange_weak(cur, v, std::memory_order_relaxed)) {
-        }
+        while (v < cur && !best.compare_exchange_weak(cur, v, std::memory_order_relaxed)) {}
       });
       return best.load();
     };
@@ -221,7 +223,8 @@ class basic_quilt_engine {
     if (s.size() >= 4 * coarse_stride && cands.size() > finalists) {
       // rank by the coarse cost without cut-offs (exact partial sums)
       pfor_(static_cast<index_t>(cands.size()), [&](index_t c) {
-        costs[static_cast<std::size_t>(c)] = cost(cands[static_cast<std::size_t>(c)], std::numeric_limits<double>::infinity(), coarse_stride);
+        costs[static_cast<std::size_t>(c)] =
+            cost(cands[static_cast<std::size_t>(c)], std::numeric_limits<double>::infinity(), coarse_stride);
       });
       std::stable_sort(all.begin(), all.end(), [&](std::size_t a, std::size_t b) { return costs[a] < costs[b]; });
       all.resize(finalists);
@@ -237,7 +240,9 @@ class basic_quilt_engine {
       std::vector<vec3> pts;
       for (const sample& q : s) pts.push_back(q.p);
       const auto r = icp_translation(pts, ex_.bvh(), t,
-                                     {.max_iterations = p_.icp_iterations, .tolerance = 1e-3 * cell_, .max_distance = 2 * corr_,
+                                     {.max_iterations = p_.icp_iterations,
+                                      .tolerance = 1e-3 * cell_,
+                                      .max_distance = 2 * corr_,
                                       .free_axes = {true, true, false}});
       if (r && r->pairs > 0 && norm(r->translation - t) < cell_) {
         t = r->translation;
@@ -283,7 +288,9 @@ class basic_quilt_engine {
         for (int dj = -1; dj <= 1; ++dj)
           for (int di = -1; di <= 1; ++di) {
             const index_t a = i + di, b = j + dj;
-            if ((di || dj) && a >= 0 && b >= 0 && a < cols_ && b < rows_ && occ_[static_cast<std::size_t>(b * cols_ + a)]) ++n;
+            if ((di || dj) && a >= 0 && b >= 0 && a < cols_ && b < rows_ &&
+                occ_[static_cast<std::size_t>(b * cols_ + a)])
+              ++n;
           }
         if (n > best_n) best_n = n, best = j * cols_ + i;
       }
@@ -359,7 +366,8 @@ class basic_quilt_engine {
     mp.is_old = [&](vec3 p) { return occupied(p); };
     mp.in_patch = [&](vec3 p) { return w.contains(p); };
     // §3.3.4: correspondences output element -> exemplar element (votes of its vertices in P_T)
-    std::map<index_t, std::vector<std::pair<index_t, std::size_t>>> partners;  // exemplar element -> (-votes, output element)
+    std::map<index_t, std::vector<std::pair<index_t, std::size_t>>>
+        partners;  // exemplar element -> (-votes, output element)
     for (std::size_t i = 0; i < elems_.size() && p_.merge; ++i) {
       if (!alive_[i] || !w.overlaps(elems_[i].box)) continue;
       std::map<index_t, index_t> votes;
@@ -375,7 +383,8 @@ class basic_quilt_engine {
         if (c > best_v) best_v = c, best_e = e;
       if (best_e >= 0 && best_v >= std::max<index_t>(3, n / 5)) partners[best_e].push_back({-best_v, i});
     }
-    const xy_rect inset{domain_.x0 + 1e-6 * cell_, domain_.y0 + 1e-6 * cell_, domain_.x1 - 1e-6 * cell_, domain_.y1 - 1e-6 * cell_};
+    const xy_rect inset{domain_.x0 + 1e-6 * cell_, domain_.y0 + 1e-6 * cell_, domain_.x1 - 1e-6 * cell_,
+                        domain_.y1 - 1e-6 * cell_};
     for (index_t e = 0; e < ex_.num_elements(); ++e) {
       aabb box = ex_.elements()[static_cast<std::size_t>(e)].box;
       box.min += t;
@@ -385,7 +394,8 @@ class basic_quilt_engine {
       for (vec3& q : moved.positions) q += t;
       std::vector<texture_element> pieces;
       if (ex_.is_long(e)) {
-        const xy_rect clip{std::max(w.x0, inset.x0), std::max(w.y0, inset.y0), std::min(w.x1, inset.x1), std::min(w.y1, inset.y1)};
+        const xy_rect clip{std::max(w.x0, inset.x0), std::max(w.y0, inset.y0), std::min(w.x1, inset.x1),
+                           std::min(w.y1, inset.y1)};
         pieces = clipped(moved, clip);
       } else {
         texture_element el;
@@ -413,7 +423,8 @@ class basic_quilt_engine {
             stats_.merges_attempted += mc.attempted;
             stats_.merges_succeeded += mc.merged;
             stats_.merge_fail_correspondence += mc.fail_correspondence, stats_.merge_fail_deform += mc.fail_deform;
-            stats_.merge_fail_cut += mc.fail_cut, stats_.merge_fail_loops += mc.fail_loops, stats_.merge_fail_check += mc.fail_check;
+            stats_.merge_fail_cut += mc.fail_cut, stats_.merge_fail_loops += mc.fail_loops,
+                stats_.merge_fail_check += mc.fail_check;
             if (!merged) break;
             cur = std::move(*merged);
             consumed.push_back(pr.second);

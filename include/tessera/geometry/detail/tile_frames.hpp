@@ -40,18 +40,17 @@ struct tile_frame_result {
 // Border elements of two strips never collide: choose_strips picks vertical strips that fit every
 // horizontal one at all four corners.
 template <class Deferred = void>  // compiled only where tiles are built (see merge_pair)
-tile_frame_result build_frame(const std::vector<edge_strip>& hs, const std::vector<edge_strip>& vs, const wang_edges& e, double w,
-                                     double hh, double cell) {
+tile_frame_result build_frame(const std::vector<edge_strip>& hs, const std::vector<edge_strip>& vs, const wang_edges& e,
+                              double w, double hh, double cell) {
   tile_frame_result r;
   struct part {
     std::vector<texture_element> elems;
     xy_rect window;
   };
-  const part parts[4] = {
-      {place_half(hs[static_cast<std::size_t>(e.south)], true, side_south, 0), {0, 0, w, hh}},
-      {place_half(vs[static_cast<std::size_t>(e.east)], false, side_east, w), {w - hh, 0, w, w}},
-      {place_half(hs[static_cast<std::size_t>(e.north)], false, side_north, w), {0, w - hh, w, w}},
-      {place_half(vs[static_cast<std::size_t>(e.west)], true, side_west, 0), {0, 0, hh, w}}};
+  const part parts[4] = {{place_half(hs[static_cast<std::size_t>(e.south)], true, side_south, 0), {0, 0, w, hh}},
+                         {place_half(vs[static_cast<std::size_t>(e.east)], false, side_east, w), {w - hh, 0, w, w}},
+                         {place_half(hs[static_cast<std::size_t>(e.north)], false, side_north, w), {0, w - hh, w, w}},
+                         {place_half(vs[static_cast<std::size_t>(e.west)], true, side_west, 0), {0, 0, hh, w}}};
   std::vector<texture_element>& out = r.frame.elements;
   std::vector<int> owner;  // which part each frame element came from
   for (int i = 0; i < 4; ++i)
@@ -119,19 +118,21 @@ tile_frame_result build_frame(const std::vector<edge_strip>& hs, const std::vect
 }
 
 template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
-status choose_strips(const quilt_exemplar& src, int horizontal_colors, int vertical_colors, const strip_params& sp, std::uint64_t seed,
-                            std::vector<edge_strip>& hs, std::vector<edge_strip>& vs) {
+status choose_strips(const quilt_exemplar& src, int horizontal_colors, int vertical_colors, const strip_params& sp,
+                     std::uint64_t seed, std::vector<edge_strip>& hs, std::vector<edge_strip>& vs) {
   const double step = 0.5 * src.cell_size();
   const counter_rng rng(seed, stream_id("geometry.wang.strips"));
-  auto pick = [&](bool horizontal, int color, std::vector<strip_candidate>& cands, const std::vector<edge_strip>& against,
-                  edge_strip& out) -> bool {
+  auto pick = [&](bool horizontal, int color, std::vector<strip_candidate>& cands,
+                  const std::vector<edge_strip>& against, edge_strip& out) -> bool {
     // prefer windows with many crossing elements (continuity across the edge), random among those,
     // away from windows used by other colours
     std::vector<std::size_t> order(cands.size());
     for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
     std::vector<double> key(cands.size());
-    for (std::size_t i = 0; i < cands.size(); ++i) key[i] = -double(cands[i].crossing) - rng.uniform(horizontal ? 1 : 2, color, i);
-    std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return key[x] < key[y] || (key[x] == key[y] && x < y); });
+    for (std::size_t i = 0; i < cands.size(); ++i)
+      key[i] = -double(cands[i].crossing) - rng.uniform(horizontal ? 1 : 2, color, i);
+    std::sort(order.begin(), order.end(),
+              [&](std::size_t x, std::size_t y) { return key[x] < key[y] || (key[x] == key[y] && x < y); });
     const std::vector<edge_strip>& mine = horizontal ? hs : vs;
     int tries = 0;
     for (std::size_t i : order) {
@@ -139,7 +140,8 @@ status choose_strips(const quilt_exemplar& src, int horizontal_colors, int verti
       bool far = true;
       for (const edge_strip& s : mine) {
         const int a = horizontal ? 0 : 1, b = horizontal ? 1 : 0;
-        far = far && (std::abs(s.origin[a] - c.along0) > 0.5 * sp.tile_size || std::abs(s.origin[b] - c.across0) > sp.half_height);
+        far = far && (std::abs(s.origin[a] - c.along0) > 0.5 * sp.tile_size ||
+                      std::abs(s.origin[b] - c.across0) > sp.half_height);
       }
       if (!far && tries < static_cast<int>(order.size()) / 2) continue;
       if (++tries > 400) break;
@@ -150,8 +152,9 @@ status choose_strips(const quilt_exemplar& src, int horizontal_colors, int verti
       for (const edge_strip& h : against) {
         for (int corner = 0; corner < 4 && ok; ++corner) {
           const bool north = corner >= 2, east = corner % 2 == 1;
-          ok = !border_elements_collide(place_half(h, !north, north ? side_north : side_south, north ? sp.tile_size : 0.0),
-                                        place_half(s, !east, east ? side_east : side_west, east ? sp.tile_size : 0.0));
+          ok = !border_elements_collide(
+              place_half(h, !north, north ? side_north : side_south, north ? sp.tile_size : 0.0),
+              place_half(s, !east, east ? side_east : side_west, east ? sp.tile_size : 0.0));
         }
         if (!ok) break;
       }
@@ -165,17 +168,19 @@ status choose_strips(const quilt_exemplar& src, int horizontal_colors, int verti
   for (int c = 0; c < horizontal_colors; ++c) {
     edge_strip s;
     if (!pick(true, c, hc, {}, s))
-      return status::invalid_argument(detail::cat("geometric wang tiles: no horizontal edge strip of width ", sp.tile_size, " and height ",
-                                                  2 * sp.half_height, " avoids elements crossing the tile corners (", hc.size(),
-                                                  " candidate windows); try another tile_size, edge_height or corner_margin"));
+      return status::invalid_argument(
+          detail::cat("geometric wang tiles: no horizontal edge strip of width ", sp.tile_size, " and height ",
+                      2 * sp.half_height, " avoids elements crossing the tile corners (", hc.size(),
+                      " candidate windows); try another tile_size, edge_height or corner_margin"));
     hs.push_back(std::move(s));
   }
   for (int c = 0; c < vertical_colors; ++c) {
     edge_strip s;
     if (!pick(false, c, vc, hs, s))
-      return status::invalid_argument(detail::cat("geometric wang tiles: no vertical edge strip of width ", sp.tile_size, " and height ",
-                                                  2 * sp.half_height, " fits every horizontal strip at the tile corners (", vc.size(),
-                                                  " candidate windows); try another tile_size, edge_height or corner_margin"));
+      return status::invalid_argument(
+          detail::cat("geometric wang tiles: no vertical edge strip of width ", sp.tile_size, " and height ",
+                      2 * sp.half_height, " fits every horizontal strip at the tile corners (", vc.size(),
+                      " candidate windows); try another tile_size, edge_height or corner_margin"));
     vs.push_back(std::move(s));
   }
   return {};

@@ -80,7 +80,8 @@ inline ray_triangle_hit ray_triangle(vec3 o, vec3 d, vec3 a, vec3 b, vec3 c, dou
   const vec3 e1 = b - a, e2 = c - a;
   const vec3 pv = cross(d, e2);
   const double det = dot(e1, pv);
-  const double scale = std::max({squared_norm(e1), squared_norm(e2), 1e-300}) * std::sqrt(std::max(squared_norm(d), 1e-300));
+  const double scale =
+      std::max({squared_norm(e1), squared_norm(e2), 1e-300}) * std::sqrt(std::max(squared_norm(d), 1e-300));
   if (std::abs(det) <= 1e-14 * scale) return {};
   const double inv = 1.0 / det;
   const vec3 tv = o - a;
@@ -96,7 +97,8 @@ inline ray_triangle_hit ray_triangle(vec3 o, vec3 d, vec3 a, vec3 b, vec3 c, dou
 
 // --- triangle / triangle --------------------------------------------------------------------------
 
-inline bool segments_intersect_2d(const double p0[2], const double p1[2], const double q0[2], const double q1[2]) noexcept {
+inline bool segments_intersect_2d(const double p0[2], const double p1[2], const double q0[2],
+                                  const double q1[2]) noexcept {
   auto orient = [](const double a[2], const double b[2], const double c[2]) {
     return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
   };
@@ -118,7 +120,7 @@ inline bool point_in_triangle_2d(const double p[2], const double a[2], const dou
     return (v[0] - u[0]) * (w[1] - u[1]) - (v[1] - u[1]) * (w[0] - u[0]);
   };
   const double d1 = orient(a, b, p), d2 = orient(b, c, p), d3 = orient(c, a, p);
-  const bool neg = d1 < 0 || d2 < 0 || d3 < 0, pos = d1 > 0 || d2 > 0 || d3 > 0;
+  const bool neg = d1 < 0 || d2 < 0 || d3<0, pos = d1> 0 || d2 > 0 || d3 > 0;
   return !(neg && pos);
 }
 
@@ -126,8 +128,10 @@ inline bool point_in_triangle_2d(const double p[2], const double a[2], const dou
 inline bool coplanar_triangles_intersect(vec3 n, const std::array<vec3, 3>& t, const std::array<vec3, 3>& u) noexcept {
   const double ax = std::abs(n.x), ay = std::abs(n.y), az = std::abs(n.z);
   int i0 = 0, i1 = 1;
-  if (ax >= ay && ax >= az) i0 = 1, i1 = 2;
-  else if (ay >= az) i0 = 0, i1 = 2;
+  if (ax >= ay && ax >= az)
+    i0 = 1, i1 = 2;
+  else if (ay >= az)
+    i0 = 0, i1 = 2;
   double p[3][2], q[3][2];
   for (int k = 0; k < 3; ++k) {
     p[k][0] = t[k][i0], p[k][1] = t[k][i1];
@@ -144,13 +148,20 @@ inline bool coplanar_triangles_intersect(vec3 n, const std::array<vec3, 3>& t, c
 inline bool triangle_line_interval(const double pv[3], const double dv[3], double& lo, double& hi) noexcept {
   // find the vertex alone on its side
   int solo;
-  if ((dv[0] > 0) == (dv[1] > 0) && dv[0] != 0 && dv[1] != 0) solo = 2;
-  else if ((dv[0] > 0) == (dv[2] > 0) && dv[0] != 0 && dv[2] != 0) solo = 1;
-  else if ((dv[1] > 0) == (dv[2] > 0) && dv[1] != 0 && dv[2] != 0) solo = 0;
-  else if (dv[0] != 0) solo = 0;
-  else if (dv[1] != 0) solo = 1;
-  else if (dv[2] != 0) solo = 2;
-  else return false;  // coplanar
+  if ((dv[0] > 0) == (dv[1] > 0) && dv[0] != 0 && dv[1] != 0)
+    solo = 2;
+  else if ((dv[0] > 0) == (dv[2] > 0) && dv[0] != 0 && dv[2] != 0)
+    solo = 1;
+  else if ((dv[1] > 0) == (dv[2] > 0) && dv[1] != 0 && dv[2] != 0)
+    solo = 0;
+  else if (dv[0] != 0)
+    solo = 0;
+  else if (dv[1] != 0)
+    solo = 1;
+  else if (dv[2] != 0)
+    solo = 2;
+  else
+    return false;  // coplanar
   const int a = (solo + 1) % 3, b = (solo + 2) % 3;
   const double ta = pv[solo] + (pv[a] - pv[solo]) * dv[solo] / (dv[solo] - dv[a]);
   const double tb = pv[solo] + (pv[b] - pv[solo]) * dv[solo] / (dv[solo] - dv[b]);
@@ -167,12 +178,14 @@ inline bool triangles_intersect(const std::array<vec3, 3>& t, const std::array<v
   double du[3], dt[3];
   for (int k = 0; k < 3; ++k) du[k] = dot(n1, u[k] - t[0]);
   // snap tiny distances to zero relative to the triangle sizes
-  const double s1 = std::sqrt(squared_norm(n1)) * 1e-12 * std::max({norm(u[0] - t[0]), norm(u[1] - t[0]), norm(u[2] - t[0]), 1e-300});
+  const double s1 =
+      std::sqrt(squared_norm(n1)) * 1e-12 * std::max({norm(u[0] - t[0]), norm(u[1] - t[0]), norm(u[2] - t[0]), 1e-300});
   for (double& d : du)
     if (std::abs(d) <= s1) d = 0;
   if ((du[0] > 0 && du[1] > 0 && du[2] > 0) || (du[0] < 0 && du[1] < 0 && du[2] < 0)) return false;
   for (int k = 0; k < 3; ++k) dt[k] = dot(n2, t[k] - u[0]);
-  const double s2 = std::sqrt(squared_norm(n2)) * 1e-12 * std::max({norm(t[0] - u[0]), norm(t[1] - u[0]), norm(t[2] - u[0]), 1e-300});
+  const double s2 =
+      std::sqrt(squared_norm(n2)) * 1e-12 * std::max({norm(t[0] - u[0]), norm(t[1] - u[0]), norm(t[2] - u[0]), 1e-300});
   for (double& d : dt)
     if (std::abs(d) <= s2) d = 0;
   if ((dt[0] > 0 && dt[1] > 0 && dt[2] > 0) || (dt[0] < 0 && dt[1] < 0 && dt[2] < 0)) return false;

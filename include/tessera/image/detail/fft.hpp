@@ -31,7 +31,8 @@ class fft_plan {
     TESSERA_ASSERT(n >= 1 && (n & (n - 1)) == 0);
     const double pi = 3.14159265358979323846;
     for (index_t k = 0; k < n / 2; ++k)
-      twiddle_[static_cast<std::size_t>(k)] = std::polar(1.0, -2.0 * pi * static_cast<double>(k) / static_cast<double>(n));
+      twiddle_[static_cast<std::size_t>(k)] =
+          std::polar(1.0, -2.0 * pi * static_cast<double>(k) / static_cast<double>(n));
     int bits = 0;
     while ((index_t{1} << bits) < n) ++bits;
     for (index_t i = 0; i < n; ++i) {
@@ -74,9 +75,11 @@ inline void fft_2d(std::vector<std::complex<double>>& grid, index_t width, index
   for (index_t y = 0; y < height; ++y) rows.run(grid.data() + y * width, inverse);
   std::vector<std::complex<double>> column(static_cast<std::size_t>(height));
   for (index_t x = 0; x < width; ++x) {
-    for (index_t y = 0; y < height; ++y) column[static_cast<std::size_t>(y)] = grid[static_cast<std::size_t>(y * width + x)];
+    for (index_t y = 0; y < height; ++y)
+      column[static_cast<std::size_t>(y)] = grid[static_cast<std::size_t>(y * width + x)];
     cols.run(column.data(), inverse);
-    for (index_t y = 0; y < height; ++y) grid[static_cast<std::size_t>(y * width + x)] = column[static_cast<std::size_t>(y)];
+    for (index_t y = 0; y < height; ++y)
+      grid[static_cast<std::size_t>(y * width + x)] = column[static_cast<std::size_t>(y)];
   }
 }
 
@@ -102,8 +105,8 @@ inline std::vector<double> autocorrelation(const double* f, index_t width, index
 /// channels pooled with per-channel means. Needs max_dx < width and max_dy < height. Offsets where either
 /// side has no variance hold NaN. Row-major result: index dy * (2 max_dx + 1) + dx + max_dx.
 /// O(channels N log N) through FFT correlation sums and integral images.
-inline std::vector<double> correlation_field(const double* f, index_t width, index_t height, int channels, index_t max_dx,
-                                             index_t max_dy) {
+inline std::vector<double> correlation_field(const double* f, index_t width, index_t height, int channels,
+                                             index_t max_dx, index_t max_dy) {
   TESSERA_ASSERT(max_dx >= 0 && max_dy >= 0 && max_dx < width && max_dy < height);
   const index_t w = width, h = height, pw = next_pow2(w + max_dx), ph = next_pow2(h + max_dy);
   const index_t nox = 2 * max_dx + 1, noy = max_dy + 1;

@@ -107,7 +107,9 @@ Matrix pca_basis(Matrix samples, int dims) {
     Matrix omega(D, l);
     for (Eigen::Index j = 0; j < l; ++j)
       for (Eigen::Index i = 0; i < D; ++i)
-        omega(i, j) = 2.0 * bits_to_unit(hash_keys(0x70636131u, static_cast<std::uint64_t>(i), static_cast<std::uint64_t>(j))) - 1.0;
+        omega(i, j) =
+            2.0 * bits_to_unit(hash_keys(0x70636131u, static_cast<std::uint64_t>(i), static_cast<std::uint64_t>(j))) -
+            1.0;
     Matrix q = samples * omega;  // m x l
     for (int power = 0; power < 2; ++power) {
       q.conservativeResize(Eigen::NoChange, orthonormalize(q));
@@ -140,7 +142,8 @@ class lower_bound_knn {
   /// `projected`: n rows of d coordinates. `scale`: a typical squared vector length, for the
   /// absolute rounding margin of the pruning radius.
   lower_bound_knn(std::vector<double> projected, index_t n, int d, double scale)
-      : data_(std::make_unique<dataset>(dataset{std::move(projected), n, d})), margin_(1e-12 * std::max(scale, 1e-300)) {
+      : data_(std::make_unique<dataset>(dataset{std::move(projected), n, d})),
+        margin_(1e-12 * std::max(scale, 1e-300)) {
     TESSERA_ASSERT(n >= 1 && d >= 1 && static_cast<index_t>(data_->points.size()) == n * d && (DIM < 0 || DIM == d));
     tree_ = std::make_unique<tree>(d, *data_, nanoflann::KDTreeSingleIndexAdaptorParams(16));
   }
@@ -154,8 +157,9 @@ class lower_bound_knn {
   /// space (eps-approximate kd-tree search: neighbours within (1 + eps) of the true ones): the
   /// approximate search, where the exact distance re-ranks the projected candidates.
   template <class Exact>
-  void search_approximate(const double* q, std::size_t k, std::size_t pool, float eps, Exact&& exact, std::vector<neighbor>& out,
-                          std::vector<std::uint32_t>& ids, std::vector<double>& dists) const {
+  void search_approximate(const double* q, std::size_t k, std::size_t pool, float eps, Exact&& exact,
+                          std::vector<neighbor>& out, std::vector<std::uint32_t>& ids,
+                          std::vector<double>& dists) const {
     out.clear();
     if (!tree_ || k == 0) return;
     pool = std::min(std::max(pool, k), static_cast<std::size_t>(data_->n));
@@ -192,7 +196,8 @@ class lower_bound_knn {
       return false;
     }
   };
-  using tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, dataset>, dataset, DIM, std::uint32_t>;
+  using tree =
+      nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, dataset>, dataset, DIM, std::uint32_t>;
 
   /// nanoflann result set: exact distances for every point the tree offers, pruning radius = the
   /// k-th best exact distance plus a rounding margin (so equal distances with smaller indices are

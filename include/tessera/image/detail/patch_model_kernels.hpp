@@ -24,8 +24,8 @@ namespace detail {
 /// 65536 values, which cannot overflow), double accumulation in a fixed order for float. Stops early
 /// (returning a partial sum above `bound`) once the sum exceeds `bound`.
 template <class T, int C>
-double window_ssd(const image_buffer<T, C>& img, index_t ax, index_t ay, index_t bx, index_t by, index_t cols, index_t rows,
-                  double bound = std::numeric_limits<double>::infinity()) {
+double window_ssd(const image_buffer<T, C>& img, index_t ax, index_t ay, index_t bx, index_t by, index_t cols,
+                  index_t rows, double bound = std::numeric_limits<double>::infinity()) {
   const index_t n = cols * C;
   if constexpr (std::is_same_v<T, std::uint8_t>) {
     // 32-bit sums over at most 65536 values (65536 x 255^2 < 2^32), flushed into a 64-bit total
@@ -77,14 +77,14 @@ double window_ssd(const image_buffer<T, C>& img, index_t ax, index_t ay, index_t
 /// their PCA projections.
 template <class T, int C>
 struct strip_family {
-  index_t cols = 0, rows = 0;          ///< window size in pixels
-  index_t count_x = 0, count_y = 0;    ///< window positions: x in [0, count_x), y in [0, count_y)
+  index_t cols = 0, rows = 0;        ///< window size in pixels
+  index_t count_x = 0, count_y = 0;  ///< window positions: x in [0, count_x), y in [0, count_y)
   // Eigen types through dependent_t: compiled only where a strip family is built
   using real = dependent_t<double, T>;
   using matrix = Eigen::Matrix<real, Eigen::Dynamic, Eigen::Dynamic>;
   using row_major = Eigen::Matrix<real, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-  matrix basis;                        ///< D x d
-  std::vector<double> projected;       ///< count_x * count_y rows of d values
+  matrix basis;                   ///< D x d
+  std::vector<double> projected;  ///< count_x * count_y rows of d values
   int d = 0;
 
   void gather(const image_buffer<T, C>& img, index_t x, index_t y, double* out) const {
@@ -118,12 +118,13 @@ struct strip_family {
       const index_t first = b * block, last = std::min(n, first + block);
       row_major x(last - first, D);
       for (index_t i = first; i < last; ++i) gather(img, i % count_x, i / count_x, x.row(i - first).data());
-      Eigen::Map<row_major> out(projected.data() + first * d,
-                                                                                             last - first, d);
+      Eigen::Map<row_major> out(projected.data() + first * d, last - first, d);
       out.noalias() = x * basis;
     });
   }
-  [[nodiscard]] const double* projection(index_t x, index_t y) const { return projected.data() + (y * count_x + x) * d; }
+  [[nodiscard]] const double* projection(index_t x, index_t y) const {
+    return projected.data() + (y * count_x + x) * d;
+  }
 };
 
 /// One round of coherence propagation over approximate compatible sets (the k-coherence idea of paper
@@ -193,11 +194,13 @@ inline void pixel_errors(const T* a, const T* b, index_t n, double* out, index_t
   for (index_t i = 0; i < n; ++i, a += C, b += C) {
     if constexpr (std::is_same_v<T, std::uint8_t>) {
       std::int32_t s = 0;  // at most 4 x 255^2
-      for (int c = 0; c < C; ++c) s += (static_cast<std::int32_t>(a[c]) - b[c]) * (static_cast<std::int32_t>(a[c]) - b[c]);
+      for (int c = 0; c < C; ++c)
+        s += (static_cast<std::int32_t>(a[c]) - b[c]) * (static_cast<std::int32_t>(a[c]) - b[c]);
       out[i * step] = static_cast<double>(s);
     } else if constexpr (std::is_same_v<T, std::uint16_t>) {
       std::int64_t s = 0;
-      for (int c = 0; c < C; ++c) s += (static_cast<std::int64_t>(a[c]) - b[c]) * (static_cast<std::int64_t>(a[c]) - b[c]);
+      for (int c = 0; c < C; ++c)
+        s += (static_cast<std::int64_t>(a[c]) - b[c]) * (static_cast<std::int64_t>(a[c]) - b[c]);
       out[i * step] = static_cast<double>(s);
     } else {
       double s = 0;
@@ -218,14 +221,16 @@ inline void pixel_errors(const T* a, const T* b, index_t n, double* out, index_t
 /// Ties go to the smaller column. The squared differences are gathered row by row of the exemplar
 /// (contiguous pixels) before the dynamic programme; integer channels give exact path costs.
 template <class T, int C>
-void min_error_seam(const image_buffer<T, C>& img, index_t lx, index_t ly, index_t rx, index_t ry, index_t offset, index_t v,
-                    index_t len, bool transpose, std::uint8_t* cut, seam_scratch& scratch) {
+void min_error_seam(const image_buffer<T, C>& img, index_t lx, index_t ly, index_t rx, index_t ry, index_t offset,
+                    index_t v, index_t len, bool transpose, std::uint8_t* cut, seam_scratch& scratch) {
   scratch.err.resize(static_cast<std::size_t>(len * v));
   double* e = scratch.err.data();
   if (!transpose) {
-    for (index_t r = 0; r < len; ++r) pixel_errors<T, C>(img.pixel_ptr(lx + offset, ly + r), img.pixel_ptr(rx, ry + r), v, e + r * v, 1);
+    for (index_t r = 0; r < len; ++r)
+      pixel_errors<T, C>(img.pixel_ptr(lx + offset, ly + r), img.pixel_ptr(rx, ry + r), v, e + r * v, 1);
   } else {  // overlap row c of the upper patch against row c of the lower one, along `len` columns
-    for (index_t c = 0; c < v; ++c) pixel_errors<T, C>(img.pixel_ptr(lx, ly + offset + c), img.pixel_ptr(rx, ry + c), len, e + c, v);
+    for (index_t c = 0; c < v; ++c)
+      pixel_errors<T, C>(img.pixel_ptr(lx, ly + offset + c), img.pixel_ptr(rx, ry + c), len, e + c, v);
   }
   // cumulative costs in rows of v + 2 with +infinity at both ends, so the three-way minimum has no
   // branches and vectorizes

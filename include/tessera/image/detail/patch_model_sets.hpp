@@ -30,7 +30,8 @@ struct patch_geometry {
 /// Exact sum of squared differences over the overlap strip when patch b sits on `side` of patch a, or
 /// a partial sum above `bound` once it exceeds `bound` (window_ssd).
 template <class T, int C>
-double strip_error(const image_buffer<T, C>& ex, const patch_geometry& g, index_t a, index_t b, int side, double bound) {
+double strip_error(const image_buffer<T, C>& ex, const patch_geometry& g, index_t a, index_t b, int side,
+                   double bound) {
   const index_t ax = g.x(a), ay = g.y(a), bx = g.x(b), by = g.y(b);
   switch (side) {
     case 1: return window_ssd(ex, ax + g.pw, ay, bx, by, g.v, g.ph + g.v, bound);   // east
@@ -89,8 +90,8 @@ struct side_sets {
 /// the fraction done in [0, 1] and returns false to cancel (then the result is empty). The sets do
 /// not depend on the executor.
 template <class T, int C, class Ex, class Report>
-std::vector<side_sets> compatible_sets(const image_buffer<T, C>& ex, const patch_geometry& g, const compatible_set_options& o,
-                                       Ex&& exec, Report&& report) {
+std::vector<side_sets> compatible_sets(const image_buffer<T, C>& ex, const patch_geometry& g,
+                                       const compatible_set_options& o, Ex&& exec, Report&& report) {
   const index_t W = ex.width(), H = ex.height(), n = g.nx * g.ny, k = o.k;
   strip_family<T, C> vertical, horizontal;
   vertical.build(ex, g.v, g.ph + g.v, W - g.v + 1, g.ny, o.pca_dims, o.pca_samples, exec);
@@ -127,12 +128,16 @@ std::vector<side_sets> compatible_sets(const image_buffer<T, C>& ex, const patch
     dist.assign(static_cast<std::size_t>(n * k), 0.0);
     auto exact = [&](index_t a, index_t b, double bound) { return strip_error(ex, g, a, b, side, bound); };
     const auto kk = static_cast<std::size_t>(k), pool = static_cast<std::size_t>(o.pool);
-    auto search = [&](index_t a, std::vector<neighbor>& best, std::vector<std::uint32_t>& ids, std::vector<double>& ds) {
+    auto search = [&](index_t a, std::vector<neighbor>& best, std::vector<std::uint32_t>& ids,
+                      std::vector<double>& ds) {
       const double* q = f.projection(g.x(a) + query_dx, g.y(a) + query_dy);
       auto exact_a = [&](std::uint32_t b, double bound) { return exact(a, b, bound); };
-      if (o.exact) fixed ? index8.search(q, kk, exact_a, best) : index.search(q, kk, exact_a, best);
-      else if (fixed) index8.search_approximate(q, kk, pool, 1.0f, exact_a, best, ids, ds);
-      else index.search_approximate(q, kk, pool, 1.0f, exact_a, best, ids, ds);
+      if (o.exact)
+        fixed ? index8.search(q, kk, exact_a, best) : index.search(q, kk, exact_a, best);
+      else if (fixed)
+        index8.search_approximate(q, kk, pool, 1.0f, exact_a, best, ids, ds);
+      else
+        index.search_approximate(q, kk, pool, 1.0f, exact_a, best, ids, ds);
     };
     const double share = 0.9 / 4.0;
     const index_t chunks = std::min<index_t>(o.exact ? 8 : 2, g.ny);
@@ -145,12 +150,15 @@ std::vector<side_sets> compatible_sets(const image_buffer<T, C>& ex, const patch
         for (index_t x = 0; x < g.nx; ++x) {
           const index_t a = y * g.nx + x;
           const bool seeded = o.exact || o.refine == 0 || ((x + y) & 1) == 0;
-          if (seeded) search(a, best, ids, ds);
-          else best.clear();
+          if (seeded)
+            search(a, best, ids, ds);
+          else
+            best.clear();
           for (index_t r = 0; r < k; ++r) {
             const bool has = r < static_cast<index_t>(best.size());
             out[static_cast<std::size_t>(a * k + r)] = has ? best[static_cast<std::size_t>(r)].index : 0;
-            dist[static_cast<std::size_t>(a * k + r)] = has ? best[static_cast<std::size_t>(r)].dist : std::numeric_limits<double>::quiet_NaN();
+            dist[static_cast<std::size_t>(a * k + r)] =
+                has ? best[static_cast<std::size_t>(r)].dist : std::numeric_limits<double>::quiet_NaN();
           }
         }
       });
@@ -198,7 +206,8 @@ std::vector<std::uint8_t> seam_table(const image_buffer<T, C>& ex, const patch_g
           }
         }
         const index_t first = a_first ? a : b, second = a_first ? b : a;
-        min_error_seam(ex, g.x(first), g.y(first), g.x(second), g.y(second), vert ? g.pw : g.ph, g.v, len, !vert, out, scratch);
+        min_error_seam(ex, g.x(first), g.y(first), g.x(second), g.y(second), vert ? g.pw : g.ph, g.v, len, !vert, out,
+                       scratch);
       }
     }
   });

@@ -87,8 +87,9 @@ std::vector<std::uint32_t> phase_group(const patch_model<T, C>& m, std::uint64_t
 /// not holding it, that set's k-th error, a lower bound of its error there), then the smallest index.
 /// Returns the patch and whether the intersection was empty.
 template <Channel T, int C>
-std::pair<std::uint32_t, bool> fill_cell(const patch_model<T, C>& m, std::uint32_t west, std::uint32_t east, std::uint32_t north,
-                                         std::uint32_t south, const counter_rng& rng, index_t i, index_t j) {
+std::pair<std::uint32_t, bool> fill_cell(const patch_model<T, C>& m, std::uint32_t west, std::uint32_t east,
+                                         std::uint32_t north, std::uint32_t south, const counter_rng& rng, index_t i,
+                                         index_t j) {
   // a 4-way merge of the sets ordered by patch index, branch-free: copies end with a sentinel
   const std::uint32_t owners[4] = {west, east, north, south};
   constexpr patch_side facing[4] = {patch_side::east, patch_side::west, patch_side::south, patch_side::north};
@@ -113,7 +114,8 @@ std::pair<std::uint32_t, bool> fill_cell(const patch_model<T, C>& m, std::uint32
   int best_count = 0;
   double best_error = 0;
   for (;;) {
-    const std::uint32_t p = std::min(std::min(ids[0][head[0]], ids[1][head[1]]), std::min(ids[2][head[2]], ids[3][head[3]]));
+    const std::uint32_t p =
+        std::min(std::min(ids[0][head[0]], ids[1][head[1]]), std::min(ids[2][head[2]], ids[3][head[3]]));
     if (p == none) break;
     int count = 0;
     double error = 0;  // summed over the sets in order west, east, north, south
@@ -138,8 +140,8 @@ std::pair<std::uint32_t, bool> fill_cell(const patch_model<T, C>& m, std::uint32
 /// by fill_cell, then (cut mode) the seam of every neighbouring pair inside the plan: the model's
 /// precomputed seam when the pair is in a compatible set, else one computed here.
 template <Channel T, int C, class Ex>
-patch_plan make_plan(const patch_model<T, C>& m, index_t ox, index_t oy, index_t w, index_t h, std::uint64_t seed, bool cut,
-                     index_t radius, index_t min_group, Ex&& exec) {
+patch_plan make_plan(const patch_model<T, C>& m, index_t ox, index_t oy, index_t w, index_t h, std::uint64_t seed,
+                     bool cut, index_t radius, index_t min_group, Ex&& exec) {
   patch_plan p;
   p.pw = m.patch_width();
   p.ph = m.patch_height();
@@ -196,7 +198,8 @@ patch_plan make_plan(const patch_model<T, C>& m, index_t ox, index_t oy, index_t
   p.counts.cells = ncells;
   p.counts.phase_group = static_cast<index_t>(group.size());
   for (index_t cj = 0; cj < p.ncy; ++cj)
-    for (index_t ci = 0; ci < p.ncx; ++ci) (((p.ci0 + ci + p.cj0 + cj) & 1) == 0 ? p.counts.placed : p.counts.filled) += 1;
+    for (index_t ci = 0; ci < p.ncx; ++ci)
+      (((p.ci0 + ci + p.cj0 + cj) & 1) == 0 ? p.counts.placed : p.counts.filled) += 1;
   for (index_t e : empty_count) p.counts.empty_intersections += e;
   if (!cut) return p;
 
@@ -205,7 +208,8 @@ patch_plan make_plan(const patch_model<T, C>& m, index_t ox, index_t oy, index_t
   p.hseam.assign(static_cast<std::size_t>(ncells), nullptr);
   auto lookup = [&](std::uint32_t first, std::uint32_t second, bool vertical) -> const std::uint8_t* {
     if (!m.has_seams()) return nullptr;
-    const patch_side fwd = vertical ? patch_side::east : patch_side::south, back = vertical ? patch_side::west : patch_side::north;
+    const patch_side fwd = vertical ? patch_side::east : patch_side::south,
+                     back = vertical ? patch_side::west : patch_side::north;
     const auto a = m.compatible(first, fwd);
     for (std::size_t r = 0; r < a.size(); ++r)
       if (a[r] == second) return m.seam(first, fwd, static_cast<index_t>(r)).data();
@@ -236,11 +240,13 @@ patch_plan make_plan(const patch_model<T, C>& m, index_t ox, index_t oy, index_t
       const auto c = static_cast<std::size_t>(p.cell(ci, cj));
       if (voff[c] >= 0) {
         const auto l = static_cast<std::size_t>(p.cell(ci - 1, cj));
-        min_error_seam(m.exemplar(), p.sx[l], p.sy[l], p.sx[c], p.sy[c], p.pw, p.v, vlen, false, p.own_seams.data() + voff[c], scratch);
+        min_error_seam(m.exemplar(), p.sx[l], p.sy[l], p.sx[c], p.sy[c], p.pw, p.v, vlen, false,
+                       p.own_seams.data() + voff[c], scratch);
       }
       if (hoff[c] >= 0) {
         const auto u = static_cast<std::size_t>(p.cell(ci, cj - 1));
-        min_error_seam(m.exemplar(), p.sx[u], p.sy[u], p.sx[c], p.sy[c], p.ph, p.v, hlen, true, p.own_seams.data() + hoff[c], scratch);
+        min_error_seam(m.exemplar(), p.sx[u], p.sy[u], p.sx[c], p.sy[c], p.ph, p.v, hlen, true,
+                       p.own_seams.data() + hoff[c], scratch);
       }
     }
   });

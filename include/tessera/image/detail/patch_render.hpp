@@ -27,15 +27,19 @@ template <class T>
 using blend_weight = std::conditional_t<std::is_same_v<T, std::uint8_t>, std::uint16_t,
                                         std::conditional_t<std::is_same_v<T, std::uint16_t>, std::uint32_t, float>>;
 template <class T>
-inline constexpr blend_weight<T> weight_one = std::is_same_v<T, std::uint8_t> ? 256 : std::is_same_v<T, std::uint16_t> ? 32768 : 1;
+inline constexpr blend_weight<T> weight_one = std::is_same_v<T, std::uint8_t>    ? 256
+                                              : std::is_same_v<T, std::uint16_t> ? 32768
+                                                                                 : 1;
 
 /// Weight of the second (right or bottom) patch at overlap position t in [0, v): (t + 1/2) / v, the
 /// paper's linear weights by the distance to the overlap border (§2, "feathering").
 template <class T>
 blend_weight<T> feather_weight(index_t t, index_t v) {
   const double u = (static_cast<double>(t) + 0.5) / static_cast<double>(v);
-  if constexpr (std::is_same_v<T, float>) return static_cast<float>(u);
-  else return static_cast<blend_weight<T>>(u * static_cast<double>(weight_one<T>) + 0.5);
+  if constexpr (std::is_same_v<T, float>)
+    return static_cast<float>(u);
+  else
+    return static_cast<blend_weight<T>>(u * static_cast<double>(weight_one<T>) + 0.5);
 }
 
 /// dst[i] = a[i] (1 - w[i]) + b[i] w[i], rounded, for i in [0, N): a fixed trip count the compiler
@@ -64,7 +68,8 @@ inline void blend_fixed(T* dst, const T* a, const T* b, const blend_weight<T>* w
     if constexpr (std::is_same_v<T, std::uint8_t>)
       dst[i] = static_cast<std::uint8_t>((static_cast<std::uint16_t>(a[i] * (256 - w[i]) + b[i] * w[i] + 128)) >> 8);
     else if constexpr (std::is_same_v<T, std::uint16_t>)
-      dst[i] = static_cast<std::uint16_t>((std::uint32_t{a[i]} * (32768u - w[i]) + std::uint32_t{b[i]} * w[i] + 16384u) >> 15);
+      dst[i] = static_cast<std::uint16_t>(
+          (std::uint32_t{a[i]} * (32768u - w[i]) + std::uint32_t{b[i]} * w[i] + 16384u) >> 15);
     else
       dst[i] = a[i] * (1.0f - w[i]) + b[i] * w[i];
   }
@@ -103,7 +108,8 @@ inline void copy_span_bytes(unsigned char* d, const unsigned char* s, std::size_
 }
 template <class T>
 inline void copy_span(T* dst, const T* src, index_t n) noexcept {
-  copy_span_bytes(reinterpret_cast<unsigned char*>(dst), reinterpret_cast<const unsigned char*>(src), static_cast<std::size_t>(n) * sizeof(T));
+  copy_span_bytes(reinterpret_cast<unsigned char*>(dst), reinterpret_cast<const unsigned char*>(src),
+                  static_cast<std::size_t>(n) * sizeof(T));
 }
 
 /// dst[i] = a[i] (1 - w) + b[i] w, rounded; one weight.
@@ -111,10 +117,12 @@ template <class T>
 inline void blend_span_const(T* dst, const T* a, const T* b, blend_weight<T> w, index_t n) noexcept {
   if constexpr (std::is_same_v<T, std::uint8_t>) {
     const auto wa = static_cast<std::uint16_t>(256 - w);
-    for (index_t i = 0; i < n; ++i) dst[i] = static_cast<std::uint8_t>((static_cast<std::uint16_t>(a[i] * wa + b[i] * w + 128)) >> 8);
+    for (index_t i = 0; i < n; ++i)
+      dst[i] = static_cast<std::uint8_t>((static_cast<std::uint16_t>(a[i] * wa + b[i] * w + 128)) >> 8);
   } else if constexpr (std::is_same_v<T, std::uint16_t>) {
     for (index_t i = 0; i < n; ++i)
-      dst[i] = static_cast<std::uint16_t>((std::uint32_t{a[i]} * (32768u - w) + std::uint32_t{b[i]} * w + 16384u) >> 15);
+      dst[i] =
+          static_cast<std::uint16_t>((std::uint32_t{a[i]} * (32768u - w) + std::uint32_t{b[i]} * w + 16384u) >> 15);
   } else {
     const float wa = 1.0f - w;
     for (index_t i = 0; i < n; ++i) dst[i] = a[i] * wa + b[i] * w;

@@ -54,7 +54,8 @@ void containment_measures(const grey_image& g, std::vector<Measure>& shapes, int
       for (index_t x = 0;;) {
         double d2 = 0;
         for (int b = 0; b < bins; ++b) {
-          const double d = static_cast<double>(hist[static_cast<std::size_t>(b)]) * inv - global[static_cast<std::size_t>(b)];
+          const double d =
+              static_cast<double>(hist[static_cast<std::size_t>(b)]) * inv - global[static_cast<std::size_t>(b)];
           d2 += d * d;
         }
         dist.push_back(std::sqrt(d2) / norm);
@@ -69,7 +70,8 @@ void containment_measures(const grey_image& g, std::vector<Measure>& shapes, int
     std::sort(dist.begin(), dist.end());
     const auto within = std::upper_bound(dist.begin(), dist.end(), tolerance) - dist.begin();
     m.containment = static_cast<double>(within) / static_cast<double>(dist.size());
-    m.containment_p90 = dist[std::min(dist.size() - 1, static_cast<std::size_t>(0.9 * static_cast<double>(dist.size())))];
+    m.containment_p90 =
+        dist[std::min(dist.size() - 1, static_cast<std::size_t>(0.9 * static_cast<double>(dist.size())))];
   });
 }
 
@@ -123,7 +125,8 @@ void periodicity_measures(const grey_image& full, std::vector<Measure>& shapes, 
   const counter_rng rng(seed, stream_id("patch_size.references"));
   for (index_t s = 0; s < S; ++s) {
     const Measure& m = shapes[static_cast<std::size_t>(s)];
-    const index_t w = std::clamp<index_t>((m.width + f / 2) / f, 2, W - 1), h = std::clamp<index_t>((m.height + f / 2) / f, 2, H - 1);
+    const index_t w = std::clamp<index_t>((m.width + f / 2) / f, 2, W - 1),
+                  h = std::clamp<index_t>((m.height + f / 2) / f, 2, H - 1);
     wmin = std::min(wmin, w);
     hmin = std::min(hmin, h);
     for (index_t gy = 0; gy < grid; ++gy)
@@ -131,10 +134,11 @@ void periodicity_measures(const grey_image& full, std::vector<Measure>& shapes, 
         auto pick = [&](index_t size, index_t extent, index_t cell, index_t key) {
           const index_t a = std::min(extent - size, cell * extent / grid);
           const index_t b = std::min(extent - size, std::max(a, (cell + 1) * extent / grid - 1));
-          return a + static_cast<index_t>(rng.below(static_cast<std::uint64_t>(b - a + 1), m.width, m.height, gx, gy, key));
+          return a +
+                 static_cast<index_t>(rng.below(static_cast<std::uint64_t>(b - a + 1), m.width, m.height, gx, gy, key));
         };
         refs[static_cast<std::size_t>(s * R + gy * grid + gx)] = {pick(w, W, gx, 0), pick(h, H, gy, 1), w, h,
-                                                                 similarity * 2.0 * var * static_cast<double>(w * h)};
+                                                                  similarity * 2.0 * var * static_cast<double>(w * h)};
       }
   }
   const index_t mdx = W - wmin, mdy = H - hmin, ndy = 2 * mdy + 1;
@@ -211,7 +215,7 @@ void alignment_measures(const grey_image& g, std::vector<Measure>& shapes) {
 /// strips (the first v columns and rows) and that of the rest of the patches.
 template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
 std::vector<std::pair<index_t, double>> overlap_measures(const grey_image& g, index_t pw, index_t ph, index_t vmin,
-                                                                index_t vmax, int pairs, std::uint64_t seed) {
+                                                         index_t vmax, int pairs, std::uint64_t seed) {
   const counter_rng rng(seed, stream_id("patch_size.overlap_pairs"));
   const index_t nx = g.w - pw - vmax + 1, ny = g.h - ph - vmax + 1;
   std::vector<std::pair<index_t, double>> out;

@@ -26,7 +26,8 @@ inline result<std::string> read_file(const std::string& path) {
   errno = 0;
   FILE* f = std::fopen(path.c_str(), "rb");
   if (f == nullptr)
-    return status::io_error(cat(path, ": cannot open file (", errno != 0 ? std::strerror(errno) : "unknown error", ")"));
+    return status::io_error(
+        cat(path, ": cannot open file (", errno != 0 ? std::strerror(errno) : "unknown error", ")"));
   std::string data;
   char buf[1 << 16];
   for (;;) {
@@ -145,7 +146,7 @@ inline void append_number(std::string& out, float v) {
   out.append(buf, r.ptr);
 }
 template <class Int>
-  requires std::is_integral_v<Int>
+requires std::is_integral_v<Int>
 void append_number(std::string& out, Int v) {
   char buf[24];
   const auto r = std::to_chars(buf, buf + sizeof buf, v);

@@ -32,9 +32,9 @@ inline bool ply_type_from_name(std::string_view n, ply_type& t) noexcept {
     std::string_view a, b;
     ply_type t;
   };
-  static constexpr entry table[8] = {{"char", "int8", ply_type::int8},       {"uchar", "uint8", ply_type::uint8},
-                                     {"short", "int16", ply_type::int16},    {"ushort", "uint16", ply_type::uint16},
-                                     {"int", "int32", ply_type::int32},      {"uint", "uint32", ply_type::uint32},
+  static constexpr entry table[8] = {{"char", "int8", ply_type::int8},        {"uchar", "uint8", ply_type::uint8},
+                                     {"short", "int16", ply_type::int16},     {"ushort", "uint16", ply_type::uint16},
+                                     {"int", "int32", ply_type::int32},       {"uint", "uint32", ply_type::uint32},
                                      {"float", "float32", ply_type::float32}, {"double", "float64", ply_type::float64}};
   for (const entry& e : table)
     if (n == e.a || n == e.b) {
@@ -88,10 +88,14 @@ inline result<ply_header> parse_ply_header(std::string_view data, std::string_vi
     if (key == "format") {
       const auto enc = next_token(rest), version = next_token(rest);
       if (have_format) return parse_error_at_line(name, n, "a second format line");
-      if (enc == "ascii") h.encoding = ply_encoding::ascii;
-      else if (enc == "binary_little_endian") h.encoding = ply_encoding::binary_little_endian;
-      else if (enc == "binary_big_endian") h.encoding = ply_encoding::binary_big_endian;
-      else return parse_error_at_line(name, n, cat("unknown format '", enc, "'"));
+      if (enc == "ascii")
+        h.encoding = ply_encoding::ascii;
+      else if (enc == "binary_little_endian")
+        h.encoding = ply_encoding::binary_little_endian;
+      else if (enc == "binary_big_endian")
+        h.encoding = ply_encoding::binary_big_endian;
+      else
+        return parse_error_at_line(name, n, cat("unknown format '", enc, "'"));
       if (version != "1.0") return parse_error_at_line(name, n, cat("unsupported PLY version '", version, "'"));
       have_format = true;
     } else if (key == "element") {
@@ -115,7 +119,8 @@ inline result<ply_header> parse_ply_header(std::string_view data, std::string_vi
           return parse_error_at_line(name, n, cat("invalid list count type '", ct, "'"));
         type = next_token(rest);
       }
-      if (!ply_type_from_name(type, p.value_type)) return parse_error_at_line(name, n, cat("unknown type '", type, "'"));
+      if (!ply_type_from_name(type, p.value_type))
+        return parse_error_at_line(name, n, cat("unknown type '", type, "'"));
       p.name = std::string(next_token(rest));
       if (p.name.empty()) return parse_error_at_line(name, n, "a property without a name");
       h.elements.back().properties.push_back(std::move(p));
@@ -214,10 +219,13 @@ class ply_binary_source {
     return true;
   }
   [[nodiscard]] status error_status(std::string_view context) const {
-    return parse_error_at_byte(name_, error_.rfind("truncated", 0) == 0 ? pos_ : value_start_, cat(context, ": ", error_));
+    return parse_error_at_byte(name_, error_.rfind("truncated", 0) == 0 ? pos_ : value_start_,
+                               cat(context, ": ", error_));
   }
   /// A parse_error at the offset of the last value read.
-  [[nodiscard]] status error_here(std::string_view message) const { return parse_error_at_byte(name_, value_start_, message); }
+  [[nodiscard]] status error_here(std::string_view message) const {
+    return parse_error_at_byte(name_, value_start_, message);
+  }
   /// A parse_error at the offset of the next value.
   [[nodiscard]] status error_ahead(std::string_view message) const { return parse_error_at_byte(name_, pos_, message); }
   [[nodiscard]] std::size_t remaining() const noexcept { return data_.size() - pos_; }

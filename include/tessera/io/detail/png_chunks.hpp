@@ -70,9 +70,10 @@ struct png_layout {
 inline result<png_layout> check_png(const unsigned char* data, std::size_t size, std::string_view name) {
   if (size == 0) return parse_error_at_byte(name, 0, "empty file");
   if (size < 8 || std::memcmp(data, png_signature, 8) != 0)
-    return parse_error_at_byte(name, 0, size < 8 && std::memcmp(data, png_signature, size) == 0
-                                            ? "truncated inside the PNG signature"
-                                            : "not a PNG file (wrong signature)");
+    return parse_error_at_byte(name, 0,
+                               size < 8 && std::memcmp(data, png_signature, size) == 0
+                                   ? "truncated inside the PNG signature"
+                                   : "not a PNG file (wrong signature)");
   png_layout l;
   bool have_ihdr = false, have_plte = false, have_iend = false, idat_ended = false;
   std::size_t pos = 8;
@@ -87,8 +88,8 @@ inline result<png_layout> check_png(const unsigned char* data, std::size_t size,
         return parse_error_at_byte(name, pos + 4, "corrupt chunk type (not four letters)");
     if (len > 0x7fffffffu) return parse_error_at_byte(name, pos, cat("corrupt chunk length ", len));
     if (size - pos - 12 < len)
-      return parse_error_at_byte(name, pos, cat("truncated: chunk ", tname, " needs ", len, " bytes, ", size - pos - 12,
-                                                " left"));
+      return parse_error_at_byte(name, pos,
+                                 cat("truncated: chunk ", tname, " needs ", len, " bytes, ", size - pos - 12, " left"));
     const unsigned char* body = data + pos + 8;
     if (png_crc(type, std::size_t{len} + 4) != get_be32(body + len))
       return parse_error_at_byte(name, pos + 8 + len, cat("corrupt: CRC mismatch in chunk ", tname));
@@ -112,7 +113,8 @@ inline result<png_layout> check_png(const unsigned char* data, std::size_t size,
       if (body[10] != 0 || body[11] != 0 || body[12] > 1)
         return parse_error_at_byte(name, pos + 18, "unknown compression, filter or interlace method");
     } else if (tname == "PLTE") {
-      if (len == 0 || len % 3 != 0 || len > 768) return parse_error_at_byte(name, pos, cat("invalid PLTE length ", len));
+      if (len == 0 || len % 3 != 0 || len > 768)
+        return parse_error_at_byte(name, pos, cat("invalid PLTE length ", len));
       have_plte = true;
     } else if (tname == "tRNS") {
       l.transparency = true;
@@ -134,9 +136,9 @@ inline result<png_layout> check_png(const unsigned char* data, std::size_t size,
   const double bits_per_pixel = double(l.bit_depth) * double(l.color_type == 3 ? 1 : l.channels() - l.transparency);
   const double raw = double(l.height) * (1.0 + std::ceil(double(l.width) * bits_per_pixel / 8.0));
   if (raw > 1100.0 * double(l.idat_bytes) + 1024.0)
-    return parse_error_at_byte(name, 8, cat("corrupt or truncated: the header declares ", l.width, " x ", l.height,
-                                            " pixels but the file holds only ", l.idat_bytes,
-                                            " bytes of compressed data"));
+    return parse_error_at_byte(name, 8,
+                               cat("corrupt or truncated: the header declares ", l.width, " x ", l.height,
+                                   " pixels but the file holds only ", l.idat_bytes, " bytes of compressed data"));
   return l;
 }
 
@@ -156,9 +158,12 @@ inline std::vector<unsigned char> png_filter_rows(const unsigned char* raw, std:
       for (std::size_t i = 0; i < row_bytes; ++i) {
         const int a = i >= bpp ? cur[i - bpp] : 0, b = up ? up[i] : 0, c = (up && i >= bpp) ? up[i - bpp] : 0;
         int pred = 0;
-        if (f == 1) pred = a;
-        else if (f == 2) pred = b;
-        else if (f == 3) pred = (a + b) / 2;
+        if (f == 1)
+          pred = a;
+        else if (f == 2)
+          pred = b;
+        else if (f == 3)
+          pred = (a + b) / 2;
         else if (f == 4) {
           const int p = a + b - c, pa = std::abs(p - a), pb = std::abs(p - b), pc = std::abs(p - c);
           pred = (pa <= pb && pa <= pc) ? a : pb <= pc ? b : c;

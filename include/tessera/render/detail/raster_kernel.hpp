@@ -31,8 +31,8 @@ inline constexpr double guard_band = 1048576.0;  // 2^20
 /// default member initializers: polygons are built for every triangle, and every field is written
 /// before it is read.
 struct poly_vertex {
-  double x, y, z, w;              ///< clip space (x, y, z, w), or screen (x, y, depth, 1/w)
-  std::array<double, 3> corner;   ///< weights of the original corners, sum 1
+  double x, y, z, w;             ///< clip space (x, y, z, w), or screen (x, y, depth, 1/w)
+  std::array<double, 3> corner;  ///< weights of the original corners, sum 1
 };
 
 /// Up to 3 + 7 clip planes worth of vertices; only the first n are meaningful (no zero-fill).
@@ -81,8 +81,10 @@ inline poly_vertex lerp_clip(const poly_vertex& a, const poly_vertex& b, double 
   r.y = a.y + t * (b.y - a.y);
   r.z = a.z + t * (b.z - a.z);
   r.w = a.w + t * (b.w - a.w);
-  for (int k = 0; k < 3; ++k) r.corner[static_cast<std::size_t>(k)] =
-      a.corner[static_cast<std::size_t>(k)] + t * (b.corner[static_cast<std::size_t>(k)] - a.corner[static_cast<std::size_t>(k)]);
+  for (int k = 0; k < 3; ++k)
+    r.corner[static_cast<std::size_t>(k)] =
+        a.corner[static_cast<std::size_t>(k)] +
+        t * (b.corner[static_cast<std::size_t>(k)] - a.corner[static_cast<std::size_t>(k)]);
   return r;
 }
 
@@ -90,7 +92,8 @@ inline poly_vertex lerp_clip(const poly_vertex& a, const poly_vertex& b, double 
 /// linear in 3D, so they interpolate perspective-correctly through 1/w.
 inline poly_vertex lerp_screen(const poly_vertex& a, const poly_vertex& b, double t) noexcept {
   poly_vertex r = lerp_clip(a, b, t);
-  for (std::size_t k = 0; k < 3; ++k) r.corner[k] = (a.corner[k] * a.w + t * (b.corner[k] * b.w - a.corner[k] * a.w)) / r.w;
+  for (std::size_t k = 0; k < 3; ++k)
+    r.corner[k] = (a.corner[k] * a.w + t * (b.corner[k] * b.w - a.corner[k] * a.w)) / r.w;
   return r;
 }
 
@@ -102,10 +105,14 @@ inline void clip_guard_band(polygon& p) {
     inside = inside && std::abs(v.x) <= guard_band && std::abs(v.y) <= guard_band;
   }
   if (inside) return;
-  clip_polygon(p, [](const poly_vertex& v) { return guard_band - v.x; }, lerp_screen);
-  clip_polygon(p, [](const poly_vertex& v) { return v.x + guard_band; }, lerp_screen);
-  clip_polygon(p, [](const poly_vertex& v) { return guard_band - v.y; }, lerp_screen);
-  clip_polygon(p, [](const poly_vertex& v) { return v.y + guard_band; }, lerp_screen);
+  clip_polygon(
+      p, [](const poly_vertex& v) { return guard_band - v.x; }, lerp_screen);
+  clip_polygon(
+      p, [](const poly_vertex& v) { return v.x + guard_band; }, lerp_screen);
+  clip_polygon(
+      p, [](const poly_vertex& v) { return guard_band - v.y; }, lerp_screen);
+  clip_polygon(
+      p, [](const poly_vertex& v) { return v.y + guard_band; }, lerp_screen);
 }
 
 /// floor(a / b) and ceil(a / b) for b > 0.
@@ -190,9 +197,12 @@ void scan_triangle(const triangle_setup& s, std::int64_t x0, std::int64_t y0, st
       base[k] = ea[k] * half + eb[k] * cy + ec[k];
       const std::int64_t step = ea[k] * subpixel_one;  // per pixel to the right
       // need base + i * step >= bias
-      if (step > 0) lo = std::max(lo, ceil_div(bias[k] - base[k], step));
-      else if (step < 0) hi = std::min(hi, floor_div(base[k] - bias[k], -step));
-      else if (base[k] < bias[k]) hi = lo - 1;
+      if (step > 0)
+        lo = std::max(lo, ceil_div(bias[k] - base[k], step));
+      else if (step < 0)
+        hi = std::min(hi, floor_div(base[k] - bias[k], -step));
+      else if (base[k] < bias[k])
+        hi = lo - 1;
     }
     if (lo > hi) continue;
     std::array<std::int64_t, 3> e{};
@@ -235,10 +245,13 @@ inline bool clip_polygon_to_screen(const std::array<std::array<double, 4>, 3>& t
     q.corner[static_cast<std::size_t>(k)] = 1;
     scale = std::max({scale, std::abs(v[0]), std::abs(v[1]), std::abs(v[2]), std::abs(v[3])});
   }
-  clip_polygon(p, [zero_to_one](const poly_vertex& v) { return zero_to_one ? v.z : v.z + v.w; }, lerp_clip);  // near
-  clip_polygon(p, [](const poly_vertex& v) { return v.w - v.z; }, lerp_clip);                                  // far
+  clip_polygon(
+      p, [zero_to_one](const poly_vertex& v) { return zero_to_one ? v.z : v.z + v.w; }, lerp_clip);  // near
+  clip_polygon(
+      p, [](const poly_vertex& v) { return v.w - v.z; }, lerp_clip);  // far
   const double w_min = 1e-12 * scale;  // keeps 1/w finite; linear (a constant), so clipping stays exact
-  clip_polygon(p, [w_min](const poly_vertex& v) { return v.w - w_min; }, lerp_clip);
+  clip_polygon(
+      p, [w_min](const poly_vertex& v) { return v.w - w_min; }, lerp_clip);
   for (int i = 0; i < p.n; ++i) {
     auto& q = p.v[static_cast<std::size_t>(i)];
     const double iw = 1.0 / q.w;
@@ -267,7 +280,8 @@ void draw_polygon(const polygon& p, int keep_orientation, std::int64_t x0, std::
                   std::int64_t y1, F&& fn) {
   triangle_setup s;
   for (int i = 1; i + 1 < p.n; ++i) {
-    if (!setup_triangle(p.v[0], p.v[static_cast<std::size_t>(i)], p.v[static_cast<std::size_t>(i + 1)], keep_orientation, s))
+    if (!setup_triangle(p.v[0], p.v[static_cast<std::size_t>(i)], p.v[static_cast<std::size_t>(i + 1)],
+                        keep_orientation, s))
       continue;
     const double inv_area = 1.0 / static_cast<double>(s.twice_area);
     scan_triangle(s, x0, y0, x1, y1, [&](std::int64_t px, std::int64_t py, const std::array<std::int64_t, 3>& e) {

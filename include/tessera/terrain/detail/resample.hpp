@@ -60,7 +60,8 @@ inline resample_taps make_taps(index_t src, index_t dst) {
 /// Resamples a float image of `channels` interleaved channels from sw x sh to dw x dh. `rows` runs
 /// the per-row loops (an executor's parallel_for); results do not depend on how rows are split.
 template <class Rows>
-std::vector<float> resample_image(const float* src, index_t sw, index_t sh, int channels, index_t dw, index_t dh, Rows&& rows) {
+std::vector<float> resample_image(const float* src, index_t sw, index_t sh, int channels, index_t dw, index_t dh,
+                                  Rows&& rows) {
   const resample_taps tx = make_taps(sw, dw), ty = make_taps(sh, dh);
   const index_t C = channels;
   std::vector<float> tmp(static_cast<std::size_t>(dw * sh * C)), out(static_cast<std::size_t>(dw * dh * C));
@@ -102,7 +103,8 @@ std::array<float, Img::channels> bilinear_sample(const Img& img, double x, doubl
   const auto fx = static_cast<float>(x - fx0), fy = static_cast<float>(y - fy0);
   const index_t w = img.width(), h = img.height();
   const index_t x0 = index(fx0, w), x1 = index(fx0 + 1, w), y0 = index(fy0, h), y1 = index(fy0 + 1, h);
-  const auto *p00 = img.pixel_ptr(x0, y0), *p10 = img.pixel_ptr(x1, y0), *p01 = img.pixel_ptr(x0, y1), *p11 = img.pixel_ptr(x1, y1);
+  const auto *p00 = img.pixel_ptr(x0, y0), *p10 = img.pixel_ptr(x1, y0), *p01 = img.pixel_ptr(x0, y1),
+             *p11 = img.pixel_ptr(x1, y1);
   std::array<float, C> out;
   for (int c = 0; c < C; ++c) {
     const float top = channel_to_unit(p00[c]) + fx * (channel_to_unit(p10[c]) - channel_to_unit(p00[c]));

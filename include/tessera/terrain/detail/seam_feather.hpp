@@ -40,16 +40,21 @@ class seam_feather {
   template <class E>
   seam_feather(const terrain_mesh& mesh, const screen_projection& proj, const scale_field& field,
                const triangle_synthesis& syn, const visibility_buffer& vb, double feather, E& exec)
-      : vb_(vb), feather_(feather), radius_(std::min<index_t>(64, static_cast<index_t>(std::ceil(feather)))),
-        region_(&syn.region), level_(&field.level) {
+      : vb_(vb),
+        feather_(feather),
+        radius_(std::min<index_t>(64, static_cast<index_t>(std::ceil(feather)))),
+        region_(&syn.region),
+        level_(&field.level) {
     const index_t w = vb.width, h = vb.height;
     auto label_of = [&](std::int32_t f) {
-      return static_cast<std::int64_t>(syn.region[static_cast<std::size_t>(f)]) * 65536 + field.level[static_cast<std::size_t>(f)];
+      return static_cast<std::int64_t>(syn.region[static_cast<std::size_t>(f)]) * 65536 +
+             field.level[static_cast<std::size_t>(f)];
     };
     if (feather <= 0) return;
     for (const std::int32_t f : proj.visible)
       for (const std::int32_t n : mesh.neighbors[static_cast<std::size_t>(f)])
-        if (n > f && is_face_index(n, mesh.num_faces()) && proj.state[static_cast<std::size_t>(n)] != 0 && label_of(n) != label_of(f))
+        if (n > f && is_face_index(n, mesh.num_faces()) && proj.state[static_cast<std::size_t>(n)] != 0 &&
+            label_of(n) != label_of(f))
           pairs_.push_back(key(label_of(f), label_of(n)));
     if (pairs_.empty()) return;
     std::sort(pairs_.begin(), pairs_.end());
@@ -132,7 +137,8 @@ class seam_feather {
     return label_of_face(f) == label_of_face(g);
   }
   [[nodiscard]] std::int64_t label_of_face(std::int32_t f) const noexcept {
-    return static_cast<std::int64_t>((*region_)[static_cast<std::size_t>(f)]) * 65536 + (*level_)[static_cast<std::size_t>(f)];
+    return static_cast<std::int64_t>((*region_)[static_cast<std::size_t>(f)]) * 65536 +
+           (*level_)[static_cast<std::size_t>(f)];
   }
 
   const visibility_buffer& vb_;

@@ -53,14 +53,15 @@ status check_visible_geometry(const terrain_mesh& mesh, const screen_projection&
     if (i < 0) continue;
     const std::int32_t f = proj.visible[static_cast<std::size_t>(i)];
     if (!is_visible_face(proj, f)) return bad_visible_entry(stage, i, f);
-    return status::out_of_range(detail::cat(stage, ": face ", f, " names a vertex outside the mesh's ", nv, " vertices"));
+    return status::out_of_range(
+        detail::cat(stage, ": face ", f, " names a vertex outside the mesh's ", nv, " vertices"));
   }
   return {};
 }
 
 template <class E>
-status render_visibility(const terrain_mesh& mesh, const screen_projection& proj, visibility_buffer& vb, bool want_world,
-                         index_t tile_size, E& exec) {
+status render_visibility(const terrain_mesh& mesh, const screen_projection& proj, visibility_buffer& vb,
+                         bool want_world, index_t tile_size, E& exec) {
   vb.width = proj.width;
   vb.height = proj.height;
   const auto n = static_cast<std::size_t>(proj.width * proj.height);
@@ -83,7 +84,8 @@ status render_visibility(const terrain_mesh& mesh, const screen_projection& proj
         vb.face[p] = face;
         if (want_world) {
           const auto& fv = mesh.faces[static_cast<std::size_t>(face)];
-          const vec3 q = mesh.position(fv[0]) * f.bary[0] + mesh.position(fv[1]) * f.bary[1] + mesh.position(fv[2]) * f.bary[2];
+          const vec3 q =
+              mesh.position(fv[0]) * f.bary[0] + mesh.position(fv[1]) * f.bary[1] + mesh.position(fv[2]) * f.bary[2];
           vb.world[p] = {static_cast<float>(q.x), static_cast<float>(q.y), static_cast<float>(q.z)};
         }
       },
