@@ -17,6 +17,7 @@
 #include <array>
 #include <concepts>
 #include <cstdint>
+#include <string_view>
 #include <type_traits>
 #include <utility>
 
@@ -204,6 +205,21 @@ class eigen_image_view {
   }
   [[nodiscard]] M& matrix() noexcept { return m_.get(); }
   [[nodiscard]] const M& matrix() const noexcept { return m_.get(); }
+
+  /// The image_traits validate hook (run by validate_image): a Map over null data that claims a
+  /// non-empty size, or a negative size, is refused.
+  [[nodiscard]] status validate(std::string_view what) const {
+    const auto& m = m_.get();
+    if (m.rows() < 0 || m.cols() < 0)
+      return status::invalid_argument(
+          detail::cat(what, ": Eigen matrix has a negative size ", m.rows(), " x ", m.cols()));
+    if constexpr (requires { m.data(); }) {
+      if (m.size() > 0 && m.data() == nullptr)
+        return status::invalid_argument(
+            detail::cat(what, ": Eigen matrix data is null for a ", m.rows(), " x ", m.cols(), " matrix"));
+    }
+    return {};
+  }
 
  private:
   detail::eigen_holder<M> m_;

@@ -180,7 +180,10 @@ constexpr mesh_problem uv_mesh_problem_of() {
 }
 }  // namespace detail
 
-/// Reports the first reason T is not a tessera::Image.
+/// Reports the first reason T is not a tessera::Image. Beyond these compile-time requirements, a type
+/// may add the optional run-time hook `image_traits<T>::validate(img, what)` (or a member
+/// `validate(what)` returning a status) for inconsistencies only it can see (null storage, a size
+/// larger than its storage); validate_image() runs it at every entry point (see core/image.hpp).
 template <class T>
 constexpr void explain_image() {
   using detail::image_problem;

@@ -14,6 +14,7 @@
 #include <concepts>
 #include <cstdint>
 #include <limits>
+#include <string_view>
 #include <type_traits>
 #include <utility>
 
@@ -175,6 +176,10 @@ concept member_image = requires(const I& i, index_t x, index_t y) {
   i.read(x, y);
 };
 template <class I>
+concept member_validating_image = requires(const I& i, const char* what) {
+  i.validate(std::string_view(what));
+};
+template <class I>
 concept member_writable_image = member_image<I> &&
     requires(I& i, index_t x, index_t y, const std::remove_cvref_t<decltype(std::declval<const I&>().read(0, 0))>& p) {
   i.write(x, y, p);
@@ -183,8 +188,15 @@ concept member_writable_image = member_image<I> &&
 
 /// Reaches an image type. The primary template forwards to members; specialize it for foreign types
 /// (an engine texture class) with static width, height, read and, for outputs, write.
+/// Optionally, like mesh_traits, a specialization (or a member `validate(what)`) may add
+/// `static status validate(const I&, std::string_view what)` for checks only the type can make (null
+/// storage, a size that claims more pixels than the storage holds); validate_image()
+/// (core/image_checks.hpp), which every entry point runs on its images, calls it before its own checks.
 template <class I>
 struct image_traits {
+  static decltype(auto) validate(const I& i, std::string_view what) requires detail::member_validating_image<I> {
+    return i.validate(what);
+  }
   static index_t width(const I& i) requires detail::member_image<I> { return static_cast<index_t>(i.width()); }
   static index_t height(const I& i) requires detail::member_image<I> { return static_cast<index_t>(i.height()); }
   static decltype(auto) read(const I& i, index_t x, index_t y) requires detail::member_image<I> { return i.read(x, y); }

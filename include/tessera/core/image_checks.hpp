@@ -2,9 +2,11 @@
 // Each check returns a status whose message names the parameter (`what`) and the offending values.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <string_view>
+#include <type_traits>
 
 #include "config.hpp"
 #include "image.hpp"
@@ -32,10 +34,37 @@ inline status validate_image_extent(index_t width, index_t height, int channels,
   return {};
 }
 
-/// Checks any Image: positive size, no overflow.
+/// Checks any Image: first the type's own `image_traits<I>::validate(img, what)` hook when it has one
+/// (image_view: null data, a stride shorter than a row; see core/image.hpp), then positive size and no
+/// overflow. Every entry point runs it on its input and output images.
 template <Image I>
 status validate_image(const I& img, std::string_view what) {
+  if constexpr (requires { image_traits<I>::validate(img, what); }) {
+    if (status s = image_traits<I>::validate(img, what); !s) return s;
+  }
   return validate_image_extent(width_of(img), height_of(img), channels_v<I>, what);
+}
+
+/// Checks that every channel of a float image is finite: NaN or infinite values would make distances,
+/// errors, means and spectra NaN. Other channel types always pass (without reading a pixel). Names the
+/// image (`what`), the first bad pixel, its channel and value. O(pixels); run it after validate_image.
+template <Image I>
+status validate_finite_pixels(const I& img, std::string_view what) {
+  if constexpr (std::is_floating_point_v<channel_t<I>>) {
+    using P = pixel_t<I>;
+    const index_t w = width_of(img), h = height_of(img);
+    for (index_t y = 0; y < h; ++y)
+      for (index_t x = 0; x < w; ++x) {
+        const P px = image_traits<I>::read(img, x, y);
+        for (int c = 0; c < channels_v<I>; ++c) {
+          const auto v = pixel_traits<P>::get(px, c);
+          if (!std::isfinite(v))
+            return status::invalid_argument(detail::cat(what, ": pixel (", x, ", ", y, ") channel ", c, " is ", v,
+                                                        "; pixel values must be finite (no NaN or infinity)"));
+        }
+      }
+  }
+  return {};
 }
 
 /// Checks that two images have the same size (aligned maps, masks).

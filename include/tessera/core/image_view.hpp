@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <string_view>
 #include <type_traits>
 
 #include "config.hpp"
@@ -29,11 +30,10 @@ class image_view {
 
   image_view() = default;
   /// Unchecked: use make_image_view() to validate caller-supplied buffers. `stride` counts channel
-  /// values (not bytes) from one row to the next; 0 means tightly packed (width * C).
+  /// values (not bytes) from one row to the next; 0 means tightly packed (width * C). A view built
+  /// here with null data or a short stride is refused by every entry point (validate(), below).
   image_view(T* data, index_t width, index_t height, index_t stride = 0) noexcept
-      : data_(data), width_(width), height_(height), stride_(stride == 0 ? width * C : stride) {
-    TESSERA_ASSERT(width >= 0 && height >= 0 && stride_ >= width * C);
-  }
+      : data_(data), width_(width), height_(height), stride_(stride == 0 ? width * C : stride) {}
 
   /// A read-only view converts implicitly from a writable one.
   operator image_view<const value_type, C>() const noexcept  // NOLINT(google-explicit-constructor)
@@ -48,6 +48,25 @@ class image_view {
   [[nodiscard]] T* data() const noexcept { return data_; }
   [[nodiscard]] T* row(index_t y) const noexcept { return data_ + y * stride_; }
   [[nodiscard]] T* pixel_ptr(index_t x, index_t y) const noexcept { return data_ + y * stride_ + x * C; }
+
+  /// The image_traits validate hook (run by validate_image at every entry point): refuses what the
+  /// unchecked constructor let through: negative sizes, null data with a non-empty size, a stride
+  /// shorter than a row of width * C channel values, or rows whose span overflows.
+  [[nodiscard]] status validate(std::string_view what) const {
+    if (width_ < 0 || height_ < 0)
+      return status::invalid_argument(detail::cat(what, ": image_view has a negative size ", width_, " x ", height_));
+    if (width_ == 0 || height_ == 0) return {};  // reported as empty by validate_image_extent
+    if (data_ == nullptr)
+      return status::invalid_argument(
+          detail::cat(what, ": image_view data is null for a ", width_, " x ", height_, " image"));
+    if (width_ > max_image_elements / C || stride_ < width_ * C)
+      return status::invalid_argument(
+          detail::cat(what, ": image_view stride ", stride_, " is smaller than width * channels = ", width_, " * ", C));
+    if (stride_ > max_image_elements / height_)
+      return status::size_overflow(detail::cat(what, ": image_view stride ", stride_, " x height ", height_,
+                                               " exceeds the supported maximum of ", max_image_elements));
+    return {};
+  }
 
   [[nodiscard]] pixel_type read(index_t x, index_t y) const noexcept {
     TESSERA_ASSERT(x >= 0 && x < width_ && y >= 0 && y < height_);

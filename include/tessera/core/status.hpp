@@ -6,6 +6,7 @@
 #include <charconv>
 #include <concepts>
 #include <cstdio>
+#include <initializer_list>
 #include <new>
 #include <string>
 #include <string_view>
@@ -193,5 +194,22 @@ std::string cat(const Args&... args) {
   return out;
 }
 }  // namespace detail
+
+/// Checks that an enum option holds one of its enumerators, numbered 0 to names.size() - 1 in
+/// declaration order (a value cast from an integer, `seam_mode(42)`, is refused). `what` names the
+/// option ("synthesize: options.seams"); the message lists the valid names.
+template <class E>
+requires std::is_enum_v<E> status validate_enum(E value, std::initializer_list<std::string_view> names,
+                                                std::string_view what) {
+  const auto v = static_cast<long long>(static_cast<std::underlying_type_t<E>>(value));
+  if (v >= 0 && v < static_cast<long long>(names.size())) return {};
+  std::string list;
+  for (std::string_view n : names) {
+    if (!list.empty()) list += ", ";
+    list += n;
+  }
+  return status(status_code::invalid_argument,
+                detail::cat(what, " has the unknown value ", v, " (valid: ", list.c_str(), ")"));
+}
 
 TESSERA_NAMESPACE_END

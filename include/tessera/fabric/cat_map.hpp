@@ -99,8 +99,15 @@ inline result<std::vector<square_region>> cat_regions(index_t w, index_t h, cons
 template <Image I, WritableImage O, class Kernel>
 status run_cat_regions(const I& in, O& out, const cat_map_options& o, const char* what, Kernel&& kernel) {
   if (auto s = validate_image(in, "input"); !s) return status(s.code(), cat(what, ": ", s.message()));
+  if (auto s = validate_image(out, "output"); !s) return status(s.code(), cat(what, ": ", s.message()));
   if (auto s = validate_same_size(in, "input", out, "output"); !s)
     return status(s.code(), cat(what, ": ", s.message()));
+  if (auto s =
+          validate_enum(o.non_square, {"reject", "centered_square", "square_tiles"}, cat(what, ": options.non_square"));
+      !s)
+    return s;
+  if (auto s = validate_enum(o.strategy, {"automatic", "direct", "separable"}, cat(what, ": options.strategy")); !s)
+    return s;
   auto regions = cat_regions(width_of(in), height_of(in), o, what);
   if (!regions) return regions.error();
   using T = channel_t<O>;

@@ -104,6 +104,7 @@ status finish_fabric(image_buffer<T, C>& square, O& out, const fabric_options& o
 template <Image S, WritableImage O, Executor E = serial_executor>
 [[nodiscard]] status make_fabric(const S& source, O& out, const fabric_options& options = {}, E&& exec = {}) {
   if (auto s = validate_image(source, "make_fabric: source"); !s) return s;
+  if (auto s = validate_finite_pixels(source, "make_fabric: source"); !s) return s;
   if (auto s = validate_image(out, "make_fabric: output"); !s) return s;
   if (auto s = detail::check_life_options(options.perturbation); !s) return s;
   const index_t sw = width_of(source), sh = height_of(source);

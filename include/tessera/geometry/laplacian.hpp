@@ -93,6 +93,8 @@ result<std::vector<vec3>> laplacian_deform(const M& mesh, std::span<const unsign
                                            std::span<const laplacian_constraint> constraints,
                                            const laplacian_deform_options& options = {}) {
   if (auto s = validate_mesh(mesh, "laplacian_deform: mesh"); !s) return s;
+  if (auto s = validate_enum(options.weighting, {"cotangent", "uniform"}, "laplacian_deform: options.weighting"); !s)
+    return s;
   const index_t nv = num_vertices(mesh);
   if (!fixed.empty() && static_cast<index_t>(fixed.size()) != nv)
     return status::invalid_argument(

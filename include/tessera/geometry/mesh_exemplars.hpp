@@ -167,6 +167,20 @@ inline status check_size(double size, double feature, const char* what) {
 
 }  // namespace detail
 
+/// Largest vertex count the procedural mesh exemplars build (2^24); exemplars are small. Each
+/// generator estimates its vertex count from the options and refuses more before building anything.
+inline constexpr index_t max_exemplar_mesh_vertices = index_t{1} << 24;
+
+namespace detail {
+inline status check_exemplar_vertices(double estimate, std::string_view what) {
+  if (!(estimate <= static_cast<double>(max_exemplar_mesh_vertices)))
+    return status::size_overflow(cat(what, ": the options ask for about ", estimate,
+                                     " vertices, more than max_exemplar_mesh_vertices = ", max_exemplar_mesh_vertices,
+                                     " (reduce size or the segment counts, or increase spacing)"));
+  return {};
+}
+}  // namespace detail
+
 /// Rings: tori lying on the plane (loose: jittered grid, small random tilts; chain mail: European
 /// 4-in-1, rows of rings leaning alternately so each ring passes through four neighbours).
 /// Errors: non-positive sizes or radii, fewer than 3 segments, a spacing too small for loose rings
@@ -184,6 +198,12 @@ inline result<tri_mesh> make_ring_exemplar(const ring_exemplar_options& o = {}) 
   if (auto s = detail::check_size(o.size, 2 * (R + r), "ring exemplar"); !s) return s;
   if (!(o.jitter >= 0 && o.jitter < 0.5))
     return status::invalid_argument(detail::cat("ring exemplar: jitter must be in [0, 0.5), got ", o.jitter));
+  {
+    const double per_ring = static_cast<double>(o.ring_segments) * o.tube_segments;
+    const double rings =
+        o.chain_mail ? std::pow(o.size / (1.3 * R) + 1, 2) : std::pow(std::floor(o.size / o.spacing), 2);
+    if (auto s = detail::check_exemplar_vertices(rings * per_ring, "ring exemplar"); !s) return s;
+  }
   const counter_rng rng(o.seed, stream_id("geometry.exemplar.rings"));
   tri_mesh m;
   std::vector<index_t> element;
@@ -253,6 +273,12 @@ inline result<tri_mesh> make_stone_exemplar(const stone_exemplar_options& o = {}
         detail::cat("stone exemplar: subdivisions must be in [0, 5], got ", o.subdivisions));
   if (!(o.flatness > 0) || !(o.roughness >= 0 && o.roughness < 0.5) || !(o.gap >= 0))
     return status::invalid_argument("stone exemplar: flatness must be > 0, roughness in [0, 0.5), gap >= 0");
+  {
+    const double per_pebble = 10 * std::pow(4.0, o.subdivisions) + 2;
+    const double pebbles =
+        std::min(20000.0, o.coverage * o.size * o.size / (std::numbers::pi * o.min_radius * o.min_radius) + 1);
+    if (auto s = detail::check_exemplar_vertices(pebbles * per_pebble, "stone exemplar"); !s) return s;
+  }
   const counter_rng rng(o.seed, stream_id("geometry.exemplar.stones"));
   const tri_mesh sphere = detail::icosphere(o.subdivisions);
   struct disk {
@@ -315,6 +341,13 @@ inline result<tri_mesh> make_weave_exemplar(const weave_exemplar_options& o = {}
     return status::invalid_argument(detail::cat("weave exemplar: thickness ", o.thickness,
                                                 " is too large for amplitude ", o.amplitude,
                                                 "; crossing threads would touch"));
+  {
+    const double threads = std::floor(o.size / o.spacing);
+    if (auto s = detail::check_exemplar_vertices(
+            2 * threads * (threads * o.segments_per_spacing + 1) * static_cast<double>(o.around), "weave exemplar");
+        !s)
+      return s;
+  }
   const double s = o.spacing;
   const int n = static_cast<int>(std::floor(o.size / s));
   const double margin = (o.size - n * s) / 2;

@@ -63,7 +63,7 @@ inline status check_quilt_options(const mesh_quilt_options& o) {
     return status::invalid_argument(detail::cat("mesh_quilt: deform_weight must be > 0, got ", o.deform_weight));
   if (o.smooth_rings < 0)
     return status::invalid_argument(detail::cat("mesh_quilt: smooth_rings must be >= 0, got ", o.smooth_rings));
-  return {};
+  return validate_enum(o.rules, {"tessera", "paper"}, "mesh_quilt: options.rules");
 }
 template <class Engine>
 mesh_quilt_result finish_quilt(Engine& engine) {

@@ -67,9 +67,14 @@ class quilt_exemplar {
   double cell_ = 0, diameter_ = 0;
 };
 
+/// Largest grid of a quilting exemplar, in cells of cell_size (2^22): every grid translation of the
+/// exemplar is a candidate, so a larger grid only means a hang.
+inline constexpr index_t max_quilt_exemplar_cells = index_t{1} << 22;
+
 /// Prepares any Mesh as a quilting exemplar. Open and non-manifold exemplars are rejected (closed
 /// elements are what keeps every synthesized element closed); so are invalid meshes (NaN positions,
-/// bad indices, degenerate faces), meshes without faces, a flat XY extent and a bad cell size.
+/// bad indices, degenerate faces), meshes without faces, a flat XY extent, a bad cell size, and (size_overflow)
+/// an extent of more than max_quilt_exemplar_cells grid cells or a non-finite one.
 /// O(F log F).
 template <Mesh M>
 result<quilt_exemplar> prepare_quilt_exemplar(const M& exemplar, const quilt_exemplar_options& options) {
@@ -101,6 +106,14 @@ result<quilt_exemplar> prepare_quilt_exemplar(const M& exemplar, const quilt_exe
   if (q.cell_ * 2 > std::min(ext.x, ext.y))
     return status::invalid_argument(
         detail::cat("exemplar: ", ext.x, " x ", ext.y, " is smaller than two grid cells of ", q.cell_));
+  // Quilting tries every grid translation of the exemplar: its grid must stay small (a stray vertex
+  // at 1e300 would otherwise ask for astronomically many candidates and cells).
+  if (!std::isfinite(ext.x) || !std::isfinite(ext.y) || !std::isfinite(ext.z) ||
+      (ext.x / q.cell_) * (ext.y / q.cell_) > static_cast<double>(max_quilt_exemplar_cells))
+    return status::size_overflow(detail::cat("exemplar: ", ext.x, " x ", ext.y, " is ",
+                                             (ext.x / q.cell_) * (ext.y / q.cell_), " grid cells of ", q.cell_,
+                                             "; at most max_quilt_exemplar_cells = ", max_quilt_exemplar_cells,
+                                             " (a stray vertex far away, or a tiny cell_size?)"));
   q.bvh_ = triangle_bvh(q.mesh_);
   q.normals_ = tessera::face_normals(q.mesh_);
   index_t f = 0;

@@ -248,17 +248,40 @@ class geometric_plane_layout {
   std::vector<index_t> vbase_, fbase_;  // output offsets per cell (+ total)
 };
 
+/// Checks, from the sizes alone, that tiling `set` on a cols x rows grid can fit tessera's output
+/// limit (2^31 faces and vertices): every cell holds one tile, so the output has at least cols · rows ·
+/// (fewest faces of a tile) faces. Run it before building a colouring of that grid (a stored colouring
+/// of 65536 x 4096 cells is itself 4 GB); plan_geometric_plane runs it before allocating anything.
+/// Errors: invalid_argument for a non-positive grid or an empty set, size_overflow beyond the limit. O(tiles).
+inline status validate_geometric_plane_size(const geometric_tile_set& set, index_t cols, index_t rows) {
+  if (cols <= 0 || rows <= 0)
+    return status::invalid_argument(
+        detail::cat("tile_geometric_plane: grid must be at least 1 x 1, got ", cols, " x ", rows));
+  if (set.tiles.empty()) return status::invalid_argument("tile_geometric_plane: empty tile set");
+  std::size_t fewest = set.tiles.front().faces.size();
+  for (const auto& t : set.tiles) fewest = std::min(fewest, t.faces.size());
+  constexpr index_t limit = index_t{1} << 31;
+  if (cols > limit / rows ||
+      static_cast<double>(cols) * static_cast<double>(rows) * static_cast<double>(fewest) > static_cast<double>(limit))
+    return status::size_overflow(detail::cat("tile_geometric_plane: a ", cols, " x ", rows,
+                                             " grid of tiles with at least ", fewest,
+                                             " faces each exceeds the output limit of 2^31 faces"));
+  return {};
+}
+
 /// Plans the welded layout of `set` on a cols x rows grid by `coloring` (face = row * cols + col, row
 /// 0 at the top). Each cell uses the tile whose four edge colours match; touching borders are welded
 /// by the canonical vertex order of their sides, which is identical for every tile carrying a colour
 /// (paper 000 §3.2). Errors: a colouring that is not a valid cols x rows colouring, colour counts
 /// that differ from the set's, a cell whose edges no tile has, a tile with a vertex outside the tile
 /// or on a corner, neighbours whose shared borders have different vertex counts (an inconsistent
-/// set), more than 2^31 output vertices. O(cells + size of the tiles used); not thread-safe only in
+/// set), more than 2^31 output vertices (size_overflow, checked first from the grid size as far as
+/// validate_geometric_plane_size can). O(cells + size of the tiles used); not thread-safe only in
 /// the sense that `set` must not change while the layout is used.
 template <TileColoring C>
 result<geometric_plane_layout> plan_geometric_plane(const geometric_tile_set& set, const C& coloring, index_t cols,
                                                     index_t rows) {
+  if (auto s = validate_geometric_plane_size(set, cols, rows); !s) return s;
   if (auto s = check_grid_coloring(coloring, cols, rows); !s) return s;
   if (coloring.num_colors(side_north) != set.horizontal_colors || coloring.num_colors(side_east) != set.vertical_colors)
     return status::invalid_argument(detail::cat(

@@ -50,6 +50,8 @@ std::vector<std::uint8_t> read_hole_mask(const M& mask) {
 template <Image I, Image M, Image O>
 status validate_inpaint_inputs(const I& image, const M& mask, const O& out, index_t cap, std::string_view cap_name) {
   if (auto s = validate_quilt_extent(image, "image", cap, cap_name); !s) return s;
+  if (auto s = validate_image(mask, "mask"); !s) return s;
+  if (auto s = validate_image(out, "output"); !s) return s;
   if (auto s = validate_same_size(image, "image", mask, "mask"); !s) return s;
   if (auto s = validate_same_size(image, "image", out, "output"); !s) return s;
   return validate_finite_pixels(image, "image");
@@ -99,7 +101,7 @@ template <Image E, Image I, Image M, WritableImage O, Executor X = serial_execut
           detail::validate_quilt_extent(exemplar, "exemplar", max_quilt_exemplar_pixels, "max_quilt_exemplar_pixels");
       !s)
     return s;
-  if (auto s = detail::validate_finite_pixels(exemplar, "exemplar"); !s) return s;
+  if (auto s = validate_finite_pixels(exemplar, "exemplar"); !s) return s;
   if (auto s = detail::validate_inpaint_inputs(image, mask, out, max_quilt_pixels, "max_quilt_pixels"); !s) return s;
   index_t patch = 0, overlap = 0;
   if (auto s = detail::resolve_quilt_sizes(options, width_of(exemplar), height_of(exemplar), patch, overlap); !s)

@@ -161,14 +161,28 @@ inline rgb exemplar_pixel(exemplar_kind kind, const counter_rng& rng, double x, 
 }
 }  // namespace detail
 
+/// Largest exemplar make_exemplar renders, in pixels (2^26: 8192 x 8192); exemplars are small.
+inline constexpr index_t max_exemplar_pixels = index_t{1} << 26;
+
 /// Renders a procedural exemplar of the given kind into C channels of T (grey for C = 1 or 2, opaque
-/// alpha for C = 2 or 4). Fails on a non-positive or overflowing size.
+/// alpha for C = 2 or 4). Errors: invalid_argument for an unknown kind or a non-positive size;
+/// size_overflow for more than max_exemplar_pixels pixels (checked before allocating) or when the
+/// system cannot allocate the image.
 template <Channel T = std::uint8_t, int C = 3>
 result<image_buffer<T, C>> make_exemplar(exemplar_kind kind, const exemplar_options& opts = {}) {
+  if (auto s =
+          validate_enum(kind, {"grass", "sand", "rock", "bricks", "cells", "weave", "dots"}, "make_exemplar: kind");
+      !s)
+    return s;
   if (auto s = validate_image_extent(opts.width, opts.height, C, "exemplar"); !s) return s;
+  if (opts.width > max_exemplar_pixels / opts.height)
+    return status::size_overflow(detail::cat("make_exemplar: ", opts.width, " x ", opts.height,
+                                             " pixels exceed max_exemplar_pixels = ", max_exemplar_pixels));
   const counter_rng rng(opts.seed, stream_id("exemplar") + static_cast<std::uint64_t>(kind));
   const double size = static_cast<double>(std::min(opts.width, opts.height));
-  image_buffer<T, C> out(opts.width, opts.height);
+  auto created = image_buffer<T, C>::create(opts.width, opts.height);
+  if (!created) return created.error();
+  image_buffer<T, C>& out = *created;
   for (index_t y = 0; y < opts.height; ++y)
     for (index_t x = 0; x < opts.width; ++x) {
       const auto c = detail::exemplar_pixel(kind, rng, static_cast<double>(x), static_cast<double>(y), size);
@@ -177,7 +191,7 @@ result<image_buffer<T, C>> make_exemplar(exemplar_kind kind, const exemplar_opti
                                 static_cast<float>(std::clamp(c[2], 0.0, 1.0))};
       out.write(x, y, convert_pixel<pixel<T, C>>(rgb));
     }
-  return out;
+  return created;
 }
 
 TESSERA_NAMESPACE_END

@@ -74,7 +74,9 @@ result<double> neighborhood_energy(const O& output, const E& exemplar, const nei
                                    X&& exec = {}) {
   constexpr int C = channels_v<O>;
   if (auto s = validate_image(output, "output"); !s) return s;
+  if (auto s = validate_finite_pixels(output, "output"); !s) return s;
   if (auto s = validate_image(exemplar, "exemplar"); !s) return s;
+  if (auto s = validate_finite_pixels(exemplar, "exemplar"); !s) return s;
   const index_t w = opts.window;
   if (w < 1) return status::invalid_argument(detail::cat("neighborhood_energy: window must be >= 1, got ", w));
   if (opts.sample_step < 1)
@@ -184,7 +186,9 @@ template <Image I, Image R>
 result<double> seam_gradient_ratio(const I& image, std::span<const seam_segment> seams, const R& reference) {
   constexpr int C = channels_v<I>;
   if (auto s = validate_image(image, "image"); !s) return s;
+  if (auto s = validate_finite_pixels(image, "image"); !s) return s;
   if (auto s = validate_image(reference, "reference"); !s) return s;
+  if (auto s = validate_finite_pixels(reference, "reference"); !s) return s;
   if (seams.empty()) return status::invalid_argument("seam_gradient_ratio: seams is empty");
   const index_t w = width_of(image), h = height_of(image);
   for (std::size_t i = 0; i < seams.size(); ++i) {
@@ -247,7 +251,9 @@ template <Image A, Image B>
 result<double> histogram_distance(const A& a, const B& b, int bins = 32) {
   constexpr int C = channels_v<A>;
   if (auto s = validate_image(a, "a"); !s) return s;
+  if (auto s = validate_finite_pixels(a, "a"); !s) return s;
   if (auto s = validate_image(b, "b"); !s) return s;
+  if (auto s = validate_finite_pixels(b, "b"); !s) return s;
   if (bins < 1 || bins > 65536)
     return status::invalid_argument(detail::cat("histogram_distance: bins must be in [1, 65536], got ", bins));
   auto fa = to_buffer<float, C>(a, "a");
@@ -287,6 +293,7 @@ template <Image I>
 result<double> repetition_score(const I& image, index_t min_offset) {
   constexpr int C = channels_v<I>;
   if (auto s = validate_image(image, "image"); !s) return s;
+  if (auto s = validate_finite_pixels(image, "image"); !s) return s;
   const index_t w = width_of(image), h = height_of(image), mx = w / 2, my = h / 2;
   if (min_offset < 1 || min_offset > std::max(mx, my))
     return status::invalid_argument(detail::cat("repetition_score: min_offset must be in [1, ",

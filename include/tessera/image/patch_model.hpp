@@ -338,6 +338,7 @@ template <Image I, Executor E = serial_executor>
 auto build_patch_model(const I& exemplar, const patch_model_options& opts = {}, E&& exec = {})
     -> result<patch_model<channel_t<I>, channels_v<I>>> {
   if (auto s = validate_image(exemplar, "exemplar"); !s) return s;
+  if (auto s = validate_finite_pixels(exemplar, "exemplar"); !s) return s;
   if (opts.patch_width < 0 || opts.patch_height < 0 || opts.overlap < 0)
     return status::invalid_argument(
         detail::cat("build_patch_model: patch_width, patch_height and overlap must be >= 0 (0: automatic), got ",

@@ -183,6 +183,7 @@ inline status validate_patch_size_options(const patch_size_options& opts) {
 template <Image I, Executor E = serial_executor>
 result<patch_size_analysis> analyze_patch_size(const I& exemplar, const patch_size_options& opts = {}, E&& exec = {}) {
   if (auto s = validate_image(exemplar, "exemplar"); !s) return s;
+  if (auto s = validate_finite_pixels(exemplar, "exemplar"); !s) return s;
   const index_t W = width_of(exemplar), H = height_of(exemplar);
   if (W < 8 || H < 8)
     return status::invalid_argument(
@@ -252,6 +253,7 @@ template <Image I>
 result<patch_size_analysis> analyze_overlap(const I& exemplar, index_t patch_width, index_t patch_height,
                                             const patch_size_options& opts = {}) {
   if (auto s = validate_image(exemplar, "exemplar"); !s) return s;
+  if (auto s = validate_finite_pixels(exemplar, "exemplar"); !s) return s;
   if (auto s = detail::validate_patch_size_options(opts); !s) return s;
   const index_t W = width_of(exemplar), H = height_of(exemplar);
   if (patch_width < 2 || patch_height < 2 || patch_width >= W || patch_height >= H)

@@ -88,7 +88,7 @@ inline status validate_window(index_t w, index_t h, const patch_synthesis_option
     return status::invalid_argument(cat(fn, ": phase_radius must be >= -1, got ", opts.phase_radius));
   if (opts.min_phase_group < 1)
     return status::invalid_argument(cat(fn, ": min_phase_group must be >= 1, got ", opts.min_phase_group));
-  return {};
+  return validate_enum(opts.seams, {"feather", "cut"}, cat(fn, ": options.seams"));
 }
 
 template <Channel T, int C, class Ex>

@@ -66,27 +66,6 @@ status validate_quilt_extent(const I& img, std::string_view what, index_t cap, s
   return {};
 }
 
-/// Checks that every channel of a float image is finite (NaN or infinite values would make every
-/// overlap error NaN); other channel types always pass. Names the first bad pixel. O(pixels).
-template <Image I>
-status validate_finite_pixels(const I& img, std::string_view what) {
-  if constexpr (std::is_floating_point_v<channel_t<I>>) {
-    using P = pixel_t<I>;
-    const index_t w = width_of(img), h = height_of(img);
-    for (index_t y = 0; y < h; ++y)
-      for (index_t x = 0; x < w; ++x) {
-        const P px = image_traits<I>::read(img, x, y);
-        for (int c = 0; c < channels_v<I>; ++c) {
-          const auto v = pixel_traits<P>::get(px, c);
-          if (!std::isfinite(v))
-            return status::invalid_argument(detail::cat(what, ": pixel (", x, ", ", y, ") channel ", c, " is ", v,
-                                                        "; quilting needs finite values"));
-        }
-      }
-  }
-  return {};
-}
-
 /// Resolves automatic patch size and overlap and validates them against an exemplar of ew × eh.
 inline status resolve_quilt_sizes(const quilt_options& o, index_t ew, index_t eh, index_t& patch, index_t& overlap) {
   const index_t smaller = std::min(ew, eh);
@@ -133,7 +112,7 @@ template <Image E, WritableImage O, Executor X = serial_executor>
       !s)
     return s;
   if (auto s = detail::validate_quilt_extent(out, "output", max_quilt_pixels, "max_quilt_pixels"); !s) return s;
-  if (auto s = detail::validate_finite_pixels(exemplar, "exemplar"); !s) return s;
+  if (auto s = validate_finite_pixels(exemplar, "exemplar"); !s) return s;
   index_t patch = 0, overlap = 0;
   if (auto s = detail::resolve_quilt_sizes(options, width_of(exemplar), height_of(exemplar), patch, overlap); !s)
     return s;

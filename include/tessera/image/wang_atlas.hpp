@@ -93,6 +93,7 @@ template <Channel T, int C>
   const tile_set_edges& edges = set.edges();
   const index_t ts = set.tile_size();
   if (set.size() == 0) return status::invalid_argument("wang atlas: the tile set is empty");
+  if (auto s = validate_enum(options.layout, {"edge_ordered", "padded"}, "wang atlas: options.layout"); !s) return s;
   if (options.mip_levels < 0 || options.mip_levels > 16)
     return status::invalid_argument(
         detail::cat("wang atlas: mip_levels must be in [0, 16] (0 = all the set allows), got ", options.mip_levels));

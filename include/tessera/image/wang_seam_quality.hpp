@@ -49,7 +49,7 @@ template <Channel T, int C, Image E>
 [[nodiscard]] result<wang_seam_report> wang_seam_quality(const wang_tile_set<T, C>& set, const E& exemplar) {
   if (set.size() == 0) return status::invalid_argument("wang_seam_quality: the tile set is empty");
   if (auto s = validate_image(exemplar, "exemplar"); !s) return s;
-  if (auto s = detail::validate_finite_pixels(exemplar, "exemplar"); !s) return s;
+  if (auto s = validate_finite_pixels(exemplar, "exemplar"); !s) return s;
   {
     index_t pairs = 0;
     for (index_t a = 0; a < set.size(); ++a)

@@ -344,7 +344,7 @@ template <Image E, Executor X = serial_executor>
     return status::invalid_argument(detail::cat("boundary_weight must be in [1, 1e6], got ", options.boundary_weight));
   if (options.min_candidates < 1)
     return status::invalid_argument(detail::cat("min_candidates must be >= 1, got ", options.min_candidates));
-  if (auto s = detail::validate_finite_pixels(exemplar, "exemplar"); !s) return s;
+  if (auto s = validate_finite_pixels(exemplar, "exemplar"); !s) return s;
   auto set = detail::wang_tile_set_access::allocate<T, C>(*edges, ts);
   if (!set) return set.error();
   auto ex = to_buffer<T, C>(exemplar, "exemplar");

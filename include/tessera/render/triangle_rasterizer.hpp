@@ -106,7 +106,12 @@ inline status validate_raster_viewport(const raster_viewport& v, std::string_vie
         v.x + v.width <= lim && v.y + v.height <= lim))
     return status::invalid_argument(detail::cat(what, ": origin (", v.x, ", ", v.y, ") size ", v.width, " x ", v.height,
                                                 " must be finite, positive and within 2^19 pixels"));
-  return {};
+  return validate_enum(v.depth, {"negative_one_to_one", "zero_to_one"}, detail::cat(what, ": depth"));
+}
+
+/// Checks a face_culling value (one of its three enumerators).
+inline status validate_face_culling(face_culling c, std::string_view what = "culling") {
+  return validate_enum(c, {"none", "cull_clockwise", "cull_counter_clockwise"}, what);
 }
 
 namespace detail::raster {
@@ -145,6 +150,7 @@ template <class F>
 status rasterize_triangle(const raster_triangle& tri, const pixel_rect& clip, F&& fn,
                           face_culling culling = face_culling::none) {
   if (auto s = validate_pixel_rect(clip, "clip"); !s) return s;
+  if (auto s = validate_face_culling(culling); !s) return s;
   detail::raster::polygon p;
   if (detail::raster::make_polygon(tri, {}, p)) detail::raster::draw(p, culling, clip, fn);
   return {};
@@ -159,6 +165,7 @@ status rasterize_clip_triangle(const clip_triangle& tri, const raster_viewport& 
                                F&& fn, face_culling culling = face_culling::none) {
   if (auto s = validate_raster_viewport(viewport); !s) return s;
   if (auto s = validate_pixel_rect(clip, "clip"); !s) return s;
+  if (auto s = validate_face_culling(culling); !s) return s;
   detail::raster::polygon p;
   if (detail::raster::make_polygon(tri, viewport, p)) detail::raster::draw(p, culling, clip, fn);
   return {};
@@ -178,6 +185,7 @@ status rasterize_batch(index_t count, const raster_viewport& vp, const pixel_rec
     return status::invalid_argument(detail::cat("count must be 0 to 2^31 - 1, got ", count));
   if (opts.tile_size < 8 || opts.tile_size > 4096)
     return status::invalid_argument(detail::cat("tile_size must be 8 to 4096, got ", opts.tile_size));
+  if (auto s = validate_face_culling(opts.culling, "options.culling"); !s) return s;
   if (count == 0 || clip.empty()) return {};
   index_t ts = opts.tile_size;
   while (((clip.width() + ts - 1) / ts) * ((clip.height() + ts - 1) / ts) > (index_t{1} << 16)) ts *= 2;
@@ -265,18 +273,25 @@ status rasterize_clip_triangles(index_t count, const raster_viewport& viewport, 
   return detail::raster::rasterize_batch<clip_triangle>(count, viewport, clip, triangle, fn, opts, exec);
 }
 
+/// Largest depth buffer, in pixels (2^28: 1 GiB of floats, e.g. 16384 x 16384).
+inline constexpr index_t max_depth_buffer_pixels = index_t{1} << 28;
+
 /// A depth buffer: one float per pixel, cleared to +infinity; smaller is closer. Pass fragment
 /// depth (window z) or fragment w (view depth, even precision). Concurrent test_and_set calls on
 /// distinct pixels are safe, which is what rasterize_triangles guarantees.
 class depth_buffer {
  public:
   depth_buffer() = default;
-  /// A width x height buffer; invalid_argument for a non-positive or overflowing size.
+  /// A width x height buffer; invalid_argument for a non-positive size or a side beyond 2^19,
+  /// size_overflow beyond max_depth_buffer_pixels (checked before allocating).
   static result<depth_buffer> create(index_t width, index_t height,
                                      float clear_value = std::numeric_limits<float>::infinity()) {
     if (width <= 0 || height <= 0 || width > max_raster_coordinate || height > max_raster_coordinate)
       return status::invalid_argument(
           detail::cat("depth_buffer: size must be 1 to 2^19 per side, got ", width, " x ", height));
+    if (width * height > max_depth_buffer_pixels)
+      return status::size_overflow(detail::cat("depth_buffer: ", width, " x ", height,
+                                               " pixels exceed max_depth_buffer_pixels = ", max_depth_buffer_pixels));
     depth_buffer d;
     d.width_ = width;
     d.height_ = height;

@@ -75,6 +75,7 @@ struct scale_field {
 template <Executor E = serial_executor>
 status assign_scale_field(const terrain_mesh& mesh, const screen_projection& projection,
                           const scale_field_options& opts, scale_field& out, E&& exec = {}) {
+  if (auto s = validate_enum(opts.mode, {"stepped", "continuous"}, "options.mode"); !s) return s;
   if (!(opts.min_scale > 0 && opts.min_scale <= 1))
     return status::invalid_argument(detail::cat("min_scale must be in (0, 1], got ", opts.min_scale));
   if (opts.max_levels < 1 || opts.max_levels > 65536)

@@ -17,6 +17,7 @@
 #include "../core/executor.hpp"
 #include "../core/image.hpp"
 #include "../core/image_buffer.hpp"
+#include "../core/image_checks.hpp"
 #include "../core/progress.hpp"
 #include "../core/status.hpp"
 #include "detail/resample.hpp"
@@ -157,6 +158,8 @@ result<exemplar_pyramid<channel_t<I>, channels_v<I>>> build_exemplar_pyramid(con
         detail::cat("exemplar pyramid: levels must be 0 (automatic) to 4096, got ", opts.levels));
   if (!(opts.max_step > 0 && opts.max_step <= 1))
     return status::invalid_argument(detail::cat("exemplar pyramid: max_step must be in (0, 1], got ", opts.max_step));
+  if (auto s = validate_image(exemplar, "exemplar"); !s) return s;
+  if (auto s = validate_finite_pixels(exemplar, "exemplar"); !s) return s;
   auto buf = to_buffer(exemplar, "exemplar");
   if (!buf) return buf.error();
   return detail::build_pyramid_from_buffer(*buf, opts, exec);

@@ -84,6 +84,8 @@ namespace detail {
 /// projection also check each visible face id as they read it.
 inline status check_projection(const terrain_mesh& mesh, const screen_projection& proj, const char* stage) {
   if (auto s = check_terrain_mesh_sizes(mesh); !s) return s;
+  if (auto s = validate_enum(proj.depth, {"negative_one_to_one", "zero_to_one"}, cat(stage, ": projection depth")); !s)
+    return s;
   const auto nf = static_cast<std::size_t>(mesh.num_faces()), nv = static_cast<std::size_t>(mesh.num_vertices());
   if (proj.state.size() != nf || proj.bounds.size() != nf || proj.clip.size() != nv || proj.screen.size() != nv ||
       proj.visible.size() > nf)

@@ -15,6 +15,7 @@
 #include "../core/executor.hpp"
 #include "../core/image.hpp"
 #include "../core/image_buffer.hpp"
+#include "../core/image_checks.hpp"
 #include "../core/progress.hpp"
 #include "../core/random.hpp"
 #include "../core/status.hpp"
@@ -123,6 +124,8 @@ template <Channel T, int C, WritableImage O, Executor E = serial_executor>
 status render_terrain_frame(const terrain_mesh& mesh, const screen_projection& proj, const scale_field& field,
                             const triangle_synthesis& syn, const exemplar_pyramid<T, C>& pyramid, O& out,
                             const render_terrain_options& opts = {}, E&& exec = {}) {
+  if (auto s = validate_image(out, "output"); !s) return s;
+  if (auto s = validate_enum(opts.shading, {"texture", "scale_field", "regions"}, "options.shading"); !s) return s;
   if (width_of(out) != proj.width || height_of(out) != proj.height)
     return status::invalid_argument(detail::cat("output is ", width_of(out), " x ", height_of(out),
                                                 " but the viewport is ", proj.width, " x ", proj.height));

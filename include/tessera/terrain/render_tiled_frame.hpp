@@ -17,6 +17,7 @@
 #include "../core/executor.hpp"
 #include "../core/image.hpp"
 #include "../core/image_buffer.hpp"
+#include "../core/image_checks.hpp"
 #include "../core/status.hpp"
 #include "detail/resample.hpp"
 #include "detail/visibility.hpp"
@@ -75,6 +76,8 @@ template <Image I, Executor E>
 result<tiled_texture<channel_t<I>, channels_v<I>>> prepare_tiled_texture(const I& exemplar, E&& exec) {
   using T = channel_t<I>;
   constexpr int C = channels_v<I>;
+  if (auto s = validate_image(exemplar, "exemplar"); !s) return s;
+  if (auto s = validate_finite_pixels(exemplar, "exemplar"); !s) return s;
   auto buf = to_buffer(exemplar, "exemplar");
   if (!buf) return buf.error();
   tiled_texture<T, C> t;
@@ -130,6 +133,7 @@ inline double auto_tiled_repeat(const terrain_mesh& mesh, const screen_projectio
 template <Channel T, int C, WritableImage O, Executor E = serial_executor>
 status render_tiled_frame(const terrain_mesh& mesh, const screen_projection& proj, const tiled_texture<T, C>& tex,
                           O& out, const render_tiled_options& opts = {}, E&& exec = {}) {
+  if (auto s = validate_image(out, "output"); !s) return s;
   if (width_of(out) != proj.width || height_of(out) != proj.height)
     return status::invalid_argument(detail::cat("output is ", width_of(out), " x ", height_of(out),
                                                 " but the viewport is ", proj.width, " x ", proj.height));

@@ -140,6 +140,9 @@ status synthesize_triangles(const terrain_mesh& mesh, const screen_projection& p
         detail::cat("exemplar size must be positive, got ", exemplar_width, " x ", exemplar_height));
   if (!(opts.margin >= 0) || !std::isfinite(opts.margin))
     return status::invalid_argument(detail::cat("margin must be >= 0, got ", opts.margin));
+  if (auto s = validate_enum(opts.placement, {"uniform", "away_from_neighbors"}, "options.placement"); !s) return s;
+  if (auto s = validate_enum(opts.continuation, {"oldest_placement", "first_neighbor"}, "options.continuation"); !s)
+    return s;
   if (auto s = detail::check_projection(mesh, proj, "synthesize_triangles"); !s) return s;
   const index_t nf = mesh.num_faces();
   if (static_cast<index_t>(field.level.size()) != nf || static_cast<index_t>(field.scale.size()) != nf)

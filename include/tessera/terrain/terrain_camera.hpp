@@ -46,6 +46,7 @@ struct terrain_camera {
 /// a projective view would put the eye at infinity (w = 0) or mirror it, and every view distance
 /// of §2.2 would be undefined. Errors name the field and the value.
 inline status validate_camera(const terrain_camera& c) {
+  if (auto s = validate_enum(c.depth, {"negative_one_to_one", "zero_to_one"}, "camera depth"); !s) return s;
   if (c.width < 1 || c.height < 1 || c.width > max_viewport_side || c.height > max_viewport_side)
     return status::invalid_argument(detail::cat("camera viewport must be 1 to ", max_viewport_side,
                                                 " pixels per side, got ", c.width, " x ", c.height));
@@ -145,6 +146,7 @@ inline result<camera_preset> parse_camera_preset(std::string_view s) {
 /// The look-at description of a preset for a scene with these bounds (near and far planes fitted
 /// to the scene). Errors: empty or non-finite bounds.
 inline result<look_at_camera> camera_preset_look_at(camera_preset p, const aabb& bounds) {
+  if (auto s = validate_enum(p, {"grazing", "oblique", "overview"}, "camera preset"); !s) return s;
   if (bounds.empty() || !is_finite(bounds.min) || !is_finite(bounds.max))
     return status::invalid_argument("camera preset: the scene bounds are empty or not finite");
   const vec3 c = bounds.center(), e = bounds.extent();

@@ -118,9 +118,11 @@ Matrix pca_basis(Matrix samples, int dims) {
       q = samples * z;
     }
     q.conservativeResize(Eigen::NoChange, orthonormalize(q));
-    const Matrix b = q.transpose() * samples;  // l x D: the samples in the found subspace
-    Eigen::SelfAdjointEigenSolver<Matrix> es(b * b.transpose());
-    take_top(es, [&](Eigen::Index i) { return column(b.transpose() * es.eigenvectors().col(i)); });
+    if (q.cols() > 0) {  // rank-deficient samples (a flat exemplar) leave no column: no variance
+      const Matrix b = q.transpose() * samples;  // l x D: the samples in the found subspace
+      Eigen::SelfAdjointEigenSolver<Matrix> es(b * b.transpose());
+      take_top(es, [&](Eigen::Index i) { return column(b.transpose() * es.eigenvectors().col(i)); });
+    }
   }
   if (got == 0) {  // no variance at all: any unit direction is a valid (trivial) lower bound
     basis.col(0).setZero();
