@@ -306,13 +306,19 @@ TEST_CASE("geometric Wang tiles reject absurd tile counts and cell sizes before 
   REQUIRE(many.error().code() == status_code::size_overflow);
   REQUIRE(many.error().message().find("2^26") != std::string::npos);
   o.horizontal_colors = o.vertical_colors = 2;
-  const auto tiny = prepare_quilt_exemplar(
-      *make_ring_exemplar({.size = 8, .spacing = 2.0, .ring_segments = 12, .tube_segments = 5, .seed = 3}),
-      {.cell_size = 1e-9});
-  REQUIRE(tiny.ok());
-  const auto r = build_geometric_wang_tiles(*tiny, o);
+  const auto ring_exemplar =
+      *make_ring_exemplar({.size = 8, .spacing = 2.0, .ring_segments = 12, .tube_segments = 5, .seed = 3});
+  // a cell this small is refused when the exemplar is prepared (its grid would be ~1e20 cells)...
+  const auto tiny = prepare_quilt_exemplar(ring_exemplar, {.cell_size = 1e-9});
+  REQUIRE(tiny.error().code() == status_code::size_overflow);
+  REQUIRE(tiny.error().message().find("grid cells of 1e-09") != std::string::npos);
+  // ...and one the exemplar accepts is refused by the Wang tile builder when a tile is too many cells
+  const auto fine = prepare_quilt_exemplar(ring_exemplar, {.cell_size = 0.005});
+  REQUIRE(fine.ok());
+  o.tile_size = 50;  // 10^8 cells a tile
+  const auto r = build_geometric_wang_tiles(*fine, o);
   REQUIRE(r.error().code() == status_code::size_overflow);
-  REQUIRE(r.error().message().find("cell_size 1e-09") != std::string::npos);
+  REQUIRE(r.error().message().find("cell_size 0.005") != std::string::npos);
 }
 
 TEST_CASE("tile frames merge a free strip element into a border element it hits, the tile border fixed",

@@ -88,12 +88,15 @@ class image_buffer {
 };
 
 /// Copies any Image into an owning buffer of pixel type (T, C), converting pixels with
-/// convert_pixel. Fails on an empty or overflowing image.
+/// convert_pixel. Fails on an empty or overflowing image, one its type's validate hook refuses, or
+/// (size_overflow) when the copy cannot be allocated.
 template <Channel T, int C, Image I>
 result<image_buffer<T, C>> to_buffer(const I& img, std::string_view what = "image") {
   if (auto s = validate_image(img, what); !s) return s;
   const index_t w = width_of(img), h = height_of(img);
-  image_buffer<T, C> out(w, h);
+  auto created = image_buffer<T, C>::create(w, h);
+  if (!created) return status(created.error().code(), detail::cat(what, ": ", created.error().message()));
+  image_buffer<T, C>& out = *created;
   for (index_t y = 0; y < h; ++y) {
     T* dst = out.row(y);
     for (index_t x = 0; x < w; ++x) {
@@ -101,7 +104,7 @@ result<image_buffer<T, C>> to_buffer(const I& img, std::string_view what = "imag
       for (int c = 0; c < C; ++c) dst[x * C + c] = p[static_cast<std::size_t>(c)];
     }
   }
-  return out;
+  return created;
 }
 
 /// Copies any Image into a buffer of its own channel type and count.
@@ -114,6 +117,7 @@ result<image_buffer<channel_t<I>, channels_v<I>>> to_buffer(const I& img, std::s
 template <Image S, WritableImage D>
 status copy_image(const S& src, D& dst) {
   if (auto s = validate_image(src, "source"); !s) return s;
+  if (auto s = validate_image(dst, "destination"); !s) return s;
   if (auto s = validate_same_size(src, "source", dst, "destination"); !s) return s;
   const index_t w = width_of(src), h = height_of(src);
   for (index_t y = 0; y < h; ++y)
