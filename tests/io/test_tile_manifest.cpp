@@ -220,3 +220,18 @@ TEST_CASE("tile directories: image and geometric sets refuse manifests pointing 
     }
   }
 }
+
+TEST_CASE("tile directories: an empty tile file is written and refused cleanly", "[tiling][bad_input]") {
+  // found by the tile_dir fuzz target under UBSan: writing an empty view passed its null pointer to fwrite
+  const auto dir = scratch("empty_tile");
+  REQUIRE(tessera::detail::write_file(dir + "/tile_0.png", std::string_view{}).ok());
+  REQUIRE(std::filesystem::file_size(dir + "/tile_0.png") == 0);
+  REQUIRE(
+      tessera::detail::write_file(
+          tessera::tile_manifest_path(dir),
+          R"({"tile_size": 16, "horizontal_colors": 1, "vertical_colors": 1, "tiles": [{"index": 0, "file": "tile_0.png", "edges": [0, 0, 0, 0]}]})")
+          .ok());
+  const auto set = tessera::load_wang_tiles<std::uint8_t, 3>(dir);
+  REQUIRE(set.error().code() == tessera::status_code::parse_error);
+  REQUIRE_THAT(set.error().message(), Catch::Contains("tile_0.png") && Catch::Contains("empty file"));
+}

@@ -49,7 +49,8 @@ inline status write_file(const std::string& path, std::string_view data) {
   if (f == nullptr)
     return status::io_error(
         cat(path, ": cannot open for writing (", errno != 0 ? std::strerror(errno) : "unknown error", ")"));
-  const bool ok = std::fwrite(data.data(), 1, data.size(), f) == data.size();
+  // an empty view may hold a null pointer, which fwrite must not receive even for 0 bytes
+  const bool ok = data.empty() || std::fwrite(data.data(), 1, data.size(), f) == data.size();
   if (std::fclose(f) != 0 || !ok) return status::io_error(cat(path, ": write failed (disk full?)"));
   return {};
 }
