@@ -6,6 +6,9 @@ set -euo pipefail
 
 packages=(build-essential cmake ninja-build pkg-config ccache libeigen3-dev libglm-dev libnanoflann-dev
           catch2 libstb-dev libbenchmark-dev libopenmesh-dev)
+# Optional: clang with libFuzzer for the fuzzers (scripts/fuzz.sh, the fuzz step of .ci/run). Installed
+# when missing, but a failure to install them only warns: everything else works without them.
+optional=(clang libclang-rt-14-dev)
 
 if ! command -v dpkg-query >/dev/null 2>&1; then
   echo "setup: not a Debian system (no dpkg-query); install the equivalents of: ${packages[*]}" >&2
@@ -13,21 +16,23 @@ if ! command -v dpkg-query >/dev/null 2>&1; then
   exit 0
 fi
 
-missing=()
-for p in "${packages[@]}"; do
-  if [[ $(dpkg-query -W -f='${Status}' "$p" 2>/dev/null) != "install ok installed" ]]; then
-    missing+=("$p")
-  fi
-done
-if ((${#missing[@]} == 0)); then
-  echo "setup: all ${#packages[@]} Debian packages are installed"
+installed() { [[ $(dpkg-query -W -f='${Status}' "$1" 2>/dev/null) == "install ok installed" ]]; }
+missing=() missing_optional=()
+for p in "${packages[@]}"; do installed "$p" || missing+=("$p"); done
+for p in "${optional[@]}"; do installed "$p" || missing_optional+=("$p"); done
+if ((${#missing[@]} == 0 && ${#missing_optional[@]} == 0)); then
+  echo "setup: all ${#packages[@]} Debian packages and ${#optional[@]} optional ones are installed"
   exit 0
 fi
 
-echo "setup: installing ${missing[*]}"
+echo "setup: installing ${missing[*]} ${missing_optional[*]}"
 sudo=()
 if ((EUID != 0)); then
   if ! command -v sudo >/dev/null 2>&1; then
+    if ((${#missing[@]} == 0)); then
+      echo "setup: optional packages (${missing_optional[*]}) missing and not root: no fuzzers" >&2
+      exit 0
+    fi
     echo "setup: missing packages (${missing[*]}) and not root; run as root or install sudo" >&2
     exit 1
   fi
@@ -35,4 +40,10 @@ if ((EUID != 0)); then
 fi
 export DEBIAN_FRONTEND=noninteractive
 "${sudo[@]}" apt-get update -q
-"${sudo[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
+if ((${#missing[@]} > 0)); then
+  "${sudo[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
+fi
+if ((${#missing_optional[@]} > 0)); then
+  "${sudo[@]}" apt-get install -y -q --no-install-recommends "${missing_optional[@]}" ||
+    echo "setup: could not install the optional ${missing_optional[*]}: no fuzzers (scripts/fuzz.sh)" >&2
+fi

@@ -12,6 +12,7 @@
 #include <tessera/io/png.hpp>
 
 #include "cli.hpp"
+#include "png_limits.hpp"
 #include "fabric_cli.hpp"
 
 namespace {
@@ -68,7 +69,7 @@ int run(const cli::arguments& args) {
                                   info->channels};
   double ms = 0;
   auto s = tessera::dispatch_format(fmt, [&]<class T, int C>(tessera::format_tag<T, C>) -> tessera::status {
-    auto img = tessera::read_png<T, C>(*in);
+    auto img = cli::read_png_file<T, C>(*in);
     if (!img) return img.error();
     tessera::image_buffer<T, C> result(img->width(), img->height());
     tessera::status st;

@@ -9,6 +9,7 @@
 #include <tessera/io/png.hpp>
 
 #include "cli.hpp"
+#include "png_limits.hpp"
 
 namespace {
 
@@ -31,7 +32,7 @@ int convert_image(const cli::arguments& args, const std::string& in, const std::
   const double ms = cli::time_ms([&] {
     s = tessera::dispatch_channels<std::uint16_t>(
         static_cast<int>(*channels), [&]<class T, int C>(tessera::format_tag<T, C>) {
-          auto img = tessera::read_png<std::uint16_t, C>(in);  // 16-bit keeps a 16-bit source exact
+          auto img = cli::read_png_file<std::uint16_t, C>(in);  // 16-bit keeps a 16-bit source exact
           if (!img) return img.error();
           if (*depth == 16) return tessera::write_png(out, *img);
           auto bytes = tessera::to_buffer<std::uint8_t, C>(*img);

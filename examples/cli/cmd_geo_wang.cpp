@@ -99,7 +99,9 @@ int tile(const cli::arguments& args) {
   if (!dir) return cli::fail(args, dir.error());
   if (!out) return cli::fail(args, out.error());
   if (!args.has("--grid")) return cli::fail(args, status::invalid_argument("missing required option --grid"));
-  auto grid = args.size("--grid");
+  // a plane of 2^20 tiles already has tens of millions of vertices: refused before the coloring
+  // (hash colouring stores every cell) is allocated
+  auto grid = args.size("--grid", 4096, index_t{1} << 20);
   if (!grid) return cli::fail(args, grid.error());
   const index_t cols = grid->first, rows = grid->second;  // not a structured binding: a lambda captures them
   auto set = load_geometric_tile_set(*dir);
@@ -170,7 +172,7 @@ const cli::registrar reg_tile{[] {
                  "tile a plane from a geometric Wang tile set into one welded mesh",
                  "tessera geo-wang tile --tiles DIR --grid COLSxROWS --out O.obj [--seed S] [--coloring hash|scanline]",
                  {{"--tiles", "DIR", "tile set directory (tiles.json + OBJ tiles)"},
-                  {"--grid", "COLSxROWS", "number of tiles"},
+                  {"--grid", "COLSxROWS", "number of tiles, at most 4096 a side and 2^20 in all"},
                   {"--coloring", "KIND", "hash (default) or scanline edge colouring"},
                   {"--out", "FILE", "output mesh"}},
                  tile};

@@ -10,6 +10,7 @@
 #include <tessera/io/png.hpp>
 
 #include "cli.hpp"
+#include "png_limits.hpp"
 #include "image_source.hpp"
 
 namespace {
@@ -44,7 +45,7 @@ int run_quilt(const cli::arguments& args) {
         if (inpaint) {
           auto image = cli::load_image_source<T, C>(args, "--in");
           if (!image) return image.error();
-          auto mask = tessera::read_png<std::uint8_t, 1>(args.str("--mask"));
+          auto mask = cli::read_png_file<std::uint8_t, 1>(args.str("--mask"));
           if (!mask) return mask.error();
           out = tessera::image_buffer<T, C>(image->width(), image->height());
           tessera::status result;

@@ -111,9 +111,10 @@ tessera::status tile_with(const cli::arguments& args, const std::string& dir, co
   auto set = tessera::load_wang_tiles<T, C>(dir);
   if (!set) return set.error();
   const index_t ts = set->tile_size();
-  if (cols > 65536 / ts || rows > 65536 / ts)
+  if (cols > 65536 / ts || rows > 65536 / ts || (cols * ts) * (rows * ts) > (index_t{1} << 28))
     return tessera::status::invalid_argument("--grid " + args.str("--grid") + " of " + std::to_string(ts) +
-                                             "-pixel tiles exceeds the 65536 x 65536 pixels this command writes");
+                                             "-pixel tiles exceeds the 65536 pixels per side and 2^28 pixels in all "
+                                             "this command writes");
   auto out = tessera::image_buffer<T, C>::create(cols * ts, rows * ts);
   if (!out) return out.error();
   tessera::thread_pool_executor pool(args.threads());

@@ -13,6 +13,7 @@
 #include <tessera/io/png.hpp>
 
 #include "cli.hpp"
+#include "png_limits.hpp"
 
 namespace fabric_cli {
 
@@ -46,7 +47,7 @@ inline tessera::result<tessera::image_buffer<float, 3>> read_source(const std::s
                                              std::to_string(info->height) + " is larger than the " +
                                              std::to_string(max_side) + " per side and " + std::to_string(max_pixels) +
                                              " pixels the fabric commands accept");
-  return tessera::read_png<float, 3>(path);
+  return cli::read_png_file<float, 3>(path);
 }
 
 /// "#rrggbb" of an RGB colour in [0, 1].

@@ -12,6 +12,7 @@
 #include <tessera/io/png.hpp>
 
 #include "cli.hpp"
+#include "png_limits.hpp"
 
 namespace cli {
 
@@ -36,16 +37,19 @@ inline tessera::result<tessera::pixel_format> image_source_format(const argument
   return tessera::pixel_format{tessera::channel_type::uint8, 3};
 }
 
+/// The bounds of --exemplar-size: a procedural exemplar is at least 8 and at most 4096 pixels a side.
+inline constexpr long long min_exemplar_size = 8, max_exemplar_size = 4096;
+
 /// Reads (or renders) the image `option` names as C channels of T; a procedural kind is rendered
-/// at --exemplar-size, `default_size` when that option is absent.
+/// at --exemplar-size (8 to 4096), `default_size` when that option is absent.
 template <tessera::Channel T, int C>
 tessera::result<tessera::image_buffer<T, C>> load_image_source(const arguments& args, std::string_view option,
                                                                long long default_size = 128) {
   const std::string name = args.str(option);
-  if (std::ifstream(name).good()) return tessera::read_png<T, C>(name);
+  if (std::ifstream(name).good()) return read_png_file<T, C>(name);
   auto kind = tessera::parse_exemplar_kind(name);
   if (!kind) return unknown_image_source(option, name);
-  auto size = args.integer("--exemplar-size", default_size);
+  auto size = args.integer("--exemplar-size", default_size, min_exemplar_size, max_exemplar_size);
   if (!size) return size.error();
   return tessera::make_exemplar<T, C>(*kind, {.width = static_cast<tessera::index_t>(*size),
                                               .height = static_cast<tessera::index_t>(*size),
@@ -63,7 +67,8 @@ tessera::status with_image_source(const arguments& args, std::string_view option
 /// The --exemplar-size option that goes with image sources.
 inline option_spec exemplar_size_option(long long default_size = 128) {
   return {"--exemplar-size", "N",
-          "side of a procedural exemplar named instead of a file (default " + std::to_string(default_size) + ")"};
+          "side of a procedural exemplar named instead of a file, 8 to 4096 (default " + std::to_string(default_size) +
+              ")"};
 }
 
 }  // namespace cli

@@ -47,3 +47,24 @@ TEST_CASE("mesh preview rejects bad input", "[mesh_preview]") {
   REQUIRE_FALSE(render_mesh_preview(*m, {.grid_spacing = -1}).ok());
   REQUIRE(write_mesh_preview("/nonexistent-dir/x.png", *m, {.width = 8, .height = 8}).code() == status_code::io_error);
 }
+
+TEST_CASE("mesh preview: coarse, huge and far-away grids finish quickly", "[mesh_preview][bad_input]") {
+  const auto m = make_ring_exemplar({.size = 3, .ring_segments = 8, .tube_segments = 4});
+  REQUIRE(m.ok());
+  // `tessera render --grid 1e9` stepped along lines ~1e11 pixels long; 1e20 converted a double out
+  // of index_t's range. Lines are now clipped to the image first.
+  for (double g : {1e9, 1e20, 1e300, std::numeric_limits<double>::max()}) {
+    INFO(g);
+    REQUIRE(render_mesh_preview(*m, {.width = 64, .height = 48, .grid_spacing = g}).ok());
+  }
+  REQUIRE_FALSE(render_mesh_preview(*m, {.grid_spacing = std::numeric_limits<double>::infinity()}).ok());
+  REQUIRE_FALSE(render_mesh_preview(*m, {.grid_spacing = std::nan("")}).ok());
+  REQUIRE_FALSE(render_mesh_preview(*m, {.grid_spacing = 1e-300}).ok());  // too fine
+  REQUIRE_FALSE(render_mesh_preview(*m, {.grid_spacing = 1, .grid_line_width = 0}).ok());
+  REQUIRE_FALSE(render_mesh_preview(*m, {.grid_spacing = 1, .grid_line_width = 1 << 30}).ok());
+  // far from the origin, x += spacing would not advance (1e17 + 1 == 1e17)
+  tri_mesh far;
+  far.positions = {{1e17, 0, 0}, {1e17 + 64, 0, 0}, {1e17, 64, 0}};
+  far.faces = {{0, 1, 2}};
+  REQUIRE(render_mesh_preview(far, {.width = 32, .height = 32, .elevation_degrees = 90, .grid_spacing = 1}).ok());
+}

@@ -109,3 +109,16 @@ TEST_CASE("off: write errors", "[off]") {
   REQUIRE(tessera::write_off(samples::out_path("no/dir.off"), samples::grid(1, 1, false)).code() ==
           status_code::io_error);
 }
+
+TEST_CASE("off: counts reserve only what the file can hold", "[off][bad_input]") {
+  // 10^7 vertices need at least 60 MB; a short file claiming them is refused before any allocation
+  const auto claims = tessera::parse_off("OFF\n10000000 0 0\n0 0 0\n", "claims.off");
+  REQUIRE(claims.error().code() == status_code::parse_error);
+  REQUIRE_THAT(claims.error().message(), Catch::Contains("10000000 vertices"));
+  // a file whose claim fits its size but whose data is garbage: a parse error at the first bad line
+  std::string text = "OFF\n100000 0 0\n0 0 0\n";
+  for (int i = 0; i < 120000; ++i) text += "x y z\n";
+  const auto garbage = tessera::parse_off(text, "garbage.off");
+  REQUIRE(garbage.error().code() == status_code::parse_error);
+  REQUIRE_THAT(garbage.error().message(), Catch::Contains("garbage.off, line 4"));
+}

@@ -303,3 +303,47 @@ TEST_CASE("ply: an element without properties holds no data, whatever count it d
     CHECK(r->num_faces() == 1);
   }
 }
+
+TEST_CASE("ply: uvs and positions beyond float range are written so that they read back", "[ply][bad_input]") {
+  // a float texcoord would store 1e300 as inf, which no reader accepts: such uvs are written as double
+  tri_mesh m = samples::grid(2, 1, true);
+  m.uvs[0][1] = vec2{1e300, -3.5e38};
+  m.uvs[1][2] = vec2{0.25, 1e-320};  // tiny values are fine either way
+  m.positions[2] = vec3{1e300, -1e-300, 2.5e38};
+  for (const encoding& e : encodings) {
+    INFO(e.name);
+    const std::string text = tessera::format_ply(m, {.binary = e.binary, .big_endian = e.big});
+    REQUIRE(text.find("property list uchar double texcoord") != std::string::npos);
+    const auto back = tessera::parse_ply(text, "wide.ply");
+    REQUIRE(back.ok());
+    REQUIRE(back->positions == m.positions);
+    REQUIRE(back->uvs == m.uvs);
+  }
+  // ordinary uvs stay float
+  const tri_mesh plain = samples::grid(2, 1, true);
+  REQUIRE(tessera::format_ply(plain).find("property list uchar float texcoord") != std::string::npos);
+  const std::string path = samples::out_path("wide_uv.ply");
+  REQUIRE(tessera::write_ply(path, m, {.binary = true}).ok());
+  REQUIRE(tessera::read_ply(path).ok());
+}
+
+TEST_CASE("ply: element counts do not reserve memory the file cannot hold", "[ply][bad_input]") {
+  using tessera::detail::bounded_reserve;
+  REQUIRE(bounded_reserve(-5, 100, 2) == 0);
+  REQUIRE(bounded_reserve(10, 1000, 2) == 10);
+  REQUIRE(bounded_reserve(1000, 100, 8) == 13);                              // 100 bytes hold 12.5 triangles
+  REQUIRE(bounded_reserve(100000000, std::size_t{1} << 30, 2) == 1u << 20);  // at most 2^20 up front
+  // a header claiming 10^8 faces over a few bytes of garbage: a parse error, no 2.4 GB reservation
+  for (const encoding& e : encodings) {
+    INFO(e.name);
+    std::string text = "ply\n" + format_line(e.binary, e.big) +
+                       "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                       "element face 100000000\nproperty list uchar int vertex_indices\nend_header\n";
+    body b{e.binary, e.big, {}};
+    for (int v = 0; v < 3; ++v) b.put(float(v)).put(float(v == 2)).put(0.0f).endl();
+    b.put(std::uint8_t{3}).put(0).put(1).put(2).endl();
+    text += b.out + std::string(1000, e.binary ? '\0' : '9');
+    const auto r = tessera::parse_ply(text, "claims.ply");
+    REQUIRE(r.error().code() == status_code::parse_error);
+  }
+}

@@ -265,3 +265,68 @@ TEST_CASE("png: write errors", "[png]") {
   REQUIRE(tessera::write_png(out_path("empty_image.png"), image_buffer<std::uint8_t, 3>{}).code() ==
           status_code::invalid_argument);
 }
+
+TEST_CASE("png: a small valid file inflating to gigabytes stops at the decoded-size limit", "[png][bad_input]") {
+  // 32000 x 32000 grey declared over ~1 MB of IDAT: passes the compression-ratio check (deflate can
+  // expand ~1000:1, so a real file this small exists), but would decode to 1 GB (4 GB as float).
+  // The limit is checked before stb sees the data, so the IDAT bytes need not inflate.
+  using namespace tessera::detail;
+  std::vector<unsigned char> file(png_signature, png_signature + 8), ihdr;
+  put_be32(ihdr, 32000);
+  put_be32(ihdr, 32000);
+  ihdr.insert(ihdr.end(), {8, 0, 0, 0, 0});
+  put_png_chunk(file, "IHDR", ihdr.data(), ihdr.size());
+  const std::vector<unsigned char> idat(995 * 1024, 0);
+  put_png_chunk(file, "IDAT", idat.data(), idat.size());
+  put_png_chunk(file, "IEND", nullptr, 0);
+  REQUIRE(tessera::decode_png_info(file.data(), file.size()).ok());  // the structure is fine
+  auto r = tessera::decode_png<float, 1>(file.data(), file.size(), "bomb.png");
+  REQUIRE(r.error().code() == status_code::size_overflow);
+  REQUIRE_THAT(r.error().message(), Catch::StartsWith("bomb.png") && Catch::Contains("32000 x 32000") &&
+                                        Catch::Contains("1024000000 pixels") && Catch::Contains("limit"));
+  // raising the limits reaches the decoder (which then finds the zeros are not a zlib stream)
+  auto raised =
+      tessera::decode_png<std::uint8_t, 1>(file.data(), file.size(), "bomb.png",
+                                           {.max_pixels = std::uint64_t{1} << 31, .max_bytes = std::uint64_t{1} << 31});
+  REQUIRE(raised.error().code() == status_code::parse_error);
+}
+
+TEST_CASE("png: the decoded-size limits are options", "[png][bad_input]") {
+  const auto png = encode(noise<std::uint8_t, 3>(64, 32, 9));
+  REQUIRE(tessera::decode_png<std::uint8_t, 3>(png.data(), png.size()).ok());
+  auto few = tessera::decode_png<std::uint8_t, 3>(png.data(), png.size(), "p.png", {.max_pixels = 2047});
+  REQUIRE(few.error().code() == status_code::size_overflow);
+  REQUIRE_THAT(few.error().message(), Catch::Contains("64 x 32") && Catch::Contains("2047 pixels"));
+  REQUIRE(tessera::decode_png<std::uint8_t, 3>(png.data(), png.size(), "p.png", {.max_pixels = 2048}).ok());
+  // bytes count the larger of the decoder's buffer (6144) and the output (float RGBA: 32768)
+  REQUIRE(tessera::decode_png<std::uint8_t, 3>(png.data(), png.size(), "p.png", {.max_bytes = 6144}).ok());
+  REQUIRE(tessera::decode_png<float, 4>(png.data(), png.size(), "p.png", {.max_bytes = 32767}).error().code() ==
+          status_code::size_overflow);
+  REQUIRE(tessera::decode_png<float, 4>(png.data(), png.size(), "p.png", {.max_bytes = 32768}).ok());
+  const std::string path = out_path("limits.png");
+  REQUIRE(tessera::write_png(path, noise<std::uint8_t, 3>(64, 32, 9)).ok());
+  REQUIRE(tessera::read_png<std::uint8_t, 3>(path, {.max_pixels = 100}).error().code() == status_code::size_overflow);
+}
+
+TEST_CASE("png: zero-length IDAT chunks are skipped, not handed to the decoder", "[png][bad_input]") {
+  // a zero-length first IDAT is valid PNG; stb would memcpy from its (still null) buffer
+  const std::vector<unsigned char> filtered = {0, 10, 20, 30, 0, 40, 50, 60};  // 3 x 2 grey, filter 0
+  const auto plain = handmade_png(3, 2, 8, 0, false, filtered, {});
+  const auto empty_first = handmade_png(3, 2, 8, 0, false, filtered, {{"IDAT", {}}});
+  REQUIRE(empty_first.size() == plain.size() + 12);
+  auto a = tessera::decode_png<std::uint8_t, 1>(plain.data(), plain.size());
+  auto b = tessera::decode_png<std::uint8_t, 1>(empty_first.data(), empty_first.size(), "empty_idat.png");
+  REQUIRE(a.ok());
+  REQUIRE(b.ok());
+  for (index_t y = 0; y < 2; ++y)
+    for (index_t x = 0; x < 3; ++x) REQUIRE(*b->pixel_ptr(x, y) == *a->pixel_ptr(x, y));
+  REQUIRE(*b->pixel_ptr(2, 1) == 60);
+  // an empty IDAT after the data too, and bytes after IEND
+  auto tail = empty_first;
+  tail.insert(tail.end(), {1, 2, 3});
+  REQUIRE(tessera::decode_png<std::uint8_t, 1>(tail.data(), tail.size()).ok());
+  // only empty IDATs: no image data
+  std::vector<unsigned char> none(empty_first.begin(), empty_first.begin() + 8 + 25 + 12);
+  tessera::detail::put_png_chunk(none, "IEND", nullptr, 0);
+  REQUIRE(tessera::decode_png<std::uint8_t, 1>(none.data(), none.size()).error().code() == status_code::parse_error);
+}

@@ -2,10 +2,12 @@
 // (io/tile_manifest.hpp). Internal; no stability promise.
 //
 // Reads standard JSON and also tolerates what hand-edited files contain: trailing commas, // and
-// /* */ comments, and a UTF-8 byte-order mark. Errors report line and column. Numbers are doubles;
+// /* */ comments, and a UTF-8 byte-order mark. A member name repeated in one object is an error.
+// Errors report line and column. Numbers are doubles;
 // strings support the standard escapes (\uXXXX is encoded as UTF-8, surrogate pairs included).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -254,6 +256,18 @@ class json_parser {
       return fail("expected ',' or ']' in an array");
     }
   }
+  /// Called when an object closes: a member name given twice is an error (which value would count
+  /// is ambiguous, and a rewritten file would keep both). O(n log n).
+  status unique_members(const json_value& obj) {
+    if (obj.object.size() < 2) return {};
+    std::vector<std::string_view> keys;
+    keys.reserve(obj.object.size());
+    for (const auto& m : obj.object) keys.emplace_back(m.first);
+    std::sort(keys.begin(), keys.end());
+    const auto dup = std::adjacent_find(keys.begin(), keys.end());
+    if (dup != keys.end()) return fail(cat("duplicate member \"", *dup, "\" in an object"));
+    return {};
+  }
   status object(json_value& out, int depth) {
     ++pos_;
     out.type = json_value::kind::object;
@@ -261,7 +275,7 @@ class json_parser {
       skip();
       if (pos_ < text_.size() && text_[pos_] == '}') {
         ++pos_;
-        return {};
+        return unique_members(out);
       }
       if (pos_ >= text_.size() || text_[pos_] != '"') return fail("expected a member name in quotes");
       std::string key;
@@ -280,7 +294,7 @@ class json_parser {
       }
       if (text_[pos_] == '}') {
         ++pos_;
-        return {};
+        return unique_members(out);
       }
       return fail("expected ',' or '}' in an object");
     }

@@ -54,7 +54,8 @@ inline std::array<float, 3> tint(std::array<float, 3> c, index_t id) {
 }  // namespace detail
 
 /// Renders a shaded preview of any valid Mesh. Errors: invalid mesh (validate_mesh), a mesh without
-/// faces, an image size outside 1 to 8192 pixels a side, non-finite angles, a negative grid spacing.
+/// faces, an image size outside 1 to 8192 pixels a side, non-finite angles, a negative or non-finite
+/// grid spacing, a grid finer than 4096 lines over the mesh, a grid line width outside 1 to 64.
 /// O(F + pixels); rasterization runs through `exec` (same image for every executor).
 template <Mesh M, Executor E = serial_executor>
 result<image_buffer<std::uint8_t, 3>> render_mesh_preview(const M& mesh, const mesh_preview_options& o = {},
@@ -64,9 +65,12 @@ result<image_buffer<std::uint8_t, 3>> render_mesh_preview(const M& mesh, const m
         detail::cat("render_mesh_preview: image size must be 1 to 8192 a side, got ", o.width, " x ", o.height));
   if (!std::isfinite(o.azimuth_degrees) || !std::isfinite(o.elevation_degrees) || !(o.margin >= 0 && o.margin < 0.5))
     return status::invalid_argument("render_mesh_preview: angles must be finite and margin in [0, 0.5)");
-  if (!(o.grid_spacing >= 0) || !std::isfinite(o.grid_height))
+  if (!(o.grid_spacing >= 0) || !std::isfinite(o.grid_spacing) || !std::isfinite(o.grid_height))
+    return status::invalid_argument(detail::cat("render_mesh_preview: grid_spacing must be finite and >= 0, got ",
+                                                o.grid_spacing, " (grid_height ", o.grid_height, ")"));
+  if (o.grid_line_width < 1 || o.grid_line_width > 64)
     return status::invalid_argument(
-        detail::cat("render_mesh_preview: grid_spacing must be >= 0, got ", o.grid_spacing));
+        detail::cat("render_mesh_preview: grid_line_width must be 1 to 64, got ", o.grid_line_width));
   auto tm = to_tri_mesh(mesh, "render_mesh_preview: mesh");
   if (!tm) return tm.error();
   const tri_mesh& m = *tm;
@@ -139,7 +143,30 @@ result<image_buffer<std::uint8_t, 3>> render_mesh_preview(const M& mesh, const m
     }
   if (o.grid_spacing > 0) {
     auto line = [&](vec3 a, vec3 b) {
-      const raster_vertex pa = project(a), pb = project(b);
+      raster_vertex pa = project(a), pb = project(b);
+      if (!std::isfinite(pa.x) || !std::isfinite(pa.y) || !std::isfinite(pb.x) || !std::isfinite(pb.y)) return;
+      // clip to the image (plus the line width) first, Liang-Barsky: a coarse grid over a small mesh
+      // projects to lines far longer than the image, and stepping along all of them would never end
+      const double pad = o.grid_line_width + 1.0;
+      const double dx0 = pb.x - pa.x, dy0 = pb.y - pa.y;
+      double t0 = 0, t1 = 1;
+      const double p[4] = {-dx0, dx0, -dy0, dy0};
+      const double q[4] = {pa.x + pad, o.width + pad - pa.x, pa.y + pad, o.height + pad - pa.y};
+      for (int k = 0; k < 4; ++k) {
+        if (p[k] == 0) {
+          if (q[k] < 0) return;  // parallel to this edge and outside
+          continue;
+        }
+        const double t = q[k] / p[k];
+        if (p[k] < 0)
+          t0 = std::max(t0, t);
+        else
+          t1 = std::min(t1, t);
+      }
+      if (!(t0 <= t1)) return;
+      pb = {pa.x + dx0 * t1, pa.y + dy0 * t1, 0, 1};
+      pa = {pa.x + dx0 * t0, pa.y + dy0 * t0, 0, 1};
+      // now inside the padded image: at most its diagonal long
       const double len = std::max(std::abs(pb.x - pa.x), std::abs(pb.y - pa.y));
       const auto steps = static_cast<index_t>(std::ceil(len)) + 1;
       for (index_t s = 0; s <= steps; ++s) {
@@ -158,10 +185,20 @@ result<image_buffer<std::uint8_t, 3>> render_mesh_preview(const M& mesh, const m
     const double g = o.grid_spacing;
     const double gx0 = std::floor(box.min.x / g) * g, gx1 = std::ceil(box.max.x / g) * g;
     const double gy0 = std::floor(box.min.y / g) * g, gy1 = std::ceil(box.max.y / g) * g;
-    if ((gx1 - gx0) / g + (gy1 - gy0) / g > 4096)
-      return status::invalid_argument("render_mesh_preview: grid_spacing is too fine");
-    for (double x = gx0; x <= gx1 + 1e-9 * g; x += g) line({x, gy0, o.grid_height}, {x, gy1, o.grid_height});
-    for (double y = gy0; y <= gy1 + 1e-9 * g; y += g) line({gx0, y, o.grid_height}, {gx1, y, o.grid_height});
+    if (!((gx1 - gx0) / g + (gy1 - gy0) / g <= 4096))
+      return status::invalid_argument(
+          detail::cat("render_mesh_preview: grid_spacing ", g, " is too fine for the mesh (more than 4096 lines)"));
+    // counted loops: at coordinates far larger than g, x += g would not advance
+    const auto nx = static_cast<index_t>(std::round((gx1 - gx0) / g)),
+               ny = static_cast<index_t>(std::round((gy1 - gy0) / g));
+    for (index_t k = 0; k <= nx; ++k) {
+      const double x = gx0 + double(k) * g;
+      line({x, gy0, o.grid_height}, {x, gy1, o.grid_height});
+    }
+    for (index_t k = 0; k <= ny; ++k) {
+      const double y = gy0 + double(k) * g;
+      line({gx0, y, o.grid_height}, {gx1, y, o.grid_height});
+    }
   }
   return img;
 }

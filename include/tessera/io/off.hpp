@@ -7,7 +7,7 @@
 // line or the next one (`nv nf [ne]`), `#` comments, blank lines and any line endings. Each face is
 // `n i0 .. i(n-1) [colour]` with 0-based indices; polygons are fan-triangulated. 4OFF / nOFF
 // (other dimensions) and binary OFF are unsupported. Counts are checked against the file size
-// before anything is allocated. Errors: parse_error "PATH, line N: ...".
+// before anything is allocated, and memory is reserved only for what the remaining bytes can hold. Errors: parse_error "PATH, line N: ...".
 #pragma once
 
 #include <algorithm>
@@ -76,8 +76,8 @@ inline result<tri_mesh> parse_off(std::string_view text, std::string_view name =
     return err(detail::cat("truncated or corrupt: the header declares ", nv, " vertices and ", nf, " faces but only ",
                            lines.remaining(), " bytes follow"));
   tri_mesh m;
-  m.positions.reserve(static_cast<std::size_t>(nv));
-  m.faces.reserve(static_cast<std::size_t>(nf));
+  m.positions.reserve(detail::bounded_reserve(nv, lines.remaining(), 6));
+  m.faces.reserve(detail::bounded_reserve(nf, lines.remaining(), 8));
   for (long long v = 0; v < nv; ++v) {
     got = next_content();
     if (got <= 0)

@@ -9,11 +9,12 @@
 // the bytes that remain before anything is allocated. A successful read passes validate_mesh;
 // errors are parse_errors naming the file and the line (ASCII) or byte offset (binary).
 // Writing: double x, y, z; `list uchar int vertex_indices`; `list uchar float texcoord` when the
-// mesh has uvs.
+// mesh has uvs (`double` when a uv lies beyond float range, so every written file reads back).
 #pragma once
 
 #include <array>
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <limits>
@@ -70,8 +71,9 @@ status read_ply_elements(const ply_header& h, Source& src, std::string_view name
           return parse_error_at_line(name, e.header_line, "the vertex element needs scalar properties x, y and z");
       have_vertex_uv = uv[0] >= 0 && !e.properties[static_cast<std::size_t>(uv[0])].is_list &&
                        !e.properties[static_cast<std::size_t>(uv[1])].is_list;
-      m.positions.reserve(static_cast<std::size_t>(e.count));
-      if (have_vertex_uv) vertex_uv.reserve(static_cast<std::size_t>(e.count));
+      const std::size_t n = bounded_reserve(e.count, src.remaining(), least);
+      m.positions.reserve(n);
+      if (have_vertex_uv) vertex_uv.reserve(n);
     } else if (is_face) {
       indices = e.find("vertex_indices") >= 0 ? e.find("vertex_indices") : e.find("vertex_index");
       texcoord = e.find("texcoord");
@@ -81,7 +83,9 @@ status read_ply_elements(const ply_header& h, Source& src, std::string_view name
         return parse_error_at_line(name, e.header_line, "faces without a vertex element");
       if (texcoord >= 0 && !e.properties[static_cast<std::size_t>(texcoord)].is_list) texcoord = -1;
       have_face_uv = texcoord >= 0;
-      m.faces.reserve(static_cast<std::size_t>(e.count));
+      // a triangle holds its count and three indices at the very least
+      const ply_property& ip = e.properties[static_cast<std::size_t>(indices)];
+      m.faces.reserve(bounded_reserve(e.count, src.remaining(), least + 3 * Source::min_value_bytes(ip.value_type)));
     }
     if (e.properties.empty()) continue;  // holds no data, however many it declares (no 2^63-step loop)
     std::vector<vec2> corner_uv;
@@ -209,7 +213,19 @@ std::string format_ply(const M& m, const ply_write_options& opts = {}) {
   out += "\nproperty double x\nproperty double y\nproperty double z\nelement face ";
   detail::append_number(out, nf);
   out += "\nproperty list uchar int vertex_indices\n";
-  if (uvs) out += "property list uchar float texcoord\n";
+  // uvs as float, or as double when one lies beyond float range (a float would store inf, which no
+  // reader accepts: whatever is written must read back)
+  bool double_uvs = false;
+  if constexpr (UVMesh<M>) {
+    for (index_t f = 0; uvs && f < nf && !double_uvs; ++f)
+      for (int k = 0; k < 3; ++k) {
+        const vec2 t = tessera::corner_uv(m, f, k);
+        if (!(std::fabs(t.x) <= std::numeric_limits<float>::max() &&
+              std::fabs(t.y) <= std::numeric_limits<float>::max()))
+          double_uvs = true;
+      }
+  }
+  if (uvs) out += double_uvs ? "property list uchar double texcoord\n" : "property list uchar float texcoord\n";
   out += "end_header\n";
   out.reserve(out.size() + static_cast<std::size_t>(opts.binary ? 24 * nv + 13 * nf + (uvs ? 25 * nf : 0)
                                                                 : 40 * nv + 24 * nf + (uvs ? 60 * nf : 0)));
@@ -244,12 +260,18 @@ std::string format_ply(const M& m, const ply_write_options& opts = {}) {
           out += " 6";
         for (int k = 0; k < 3; ++k) {
           const vec2 t = tessera::corner_uv(m, f, k);
-          for (float c : {static_cast<float>(t.x), static_cast<float>(t.y)}) {
+          for (double c : {t.x, t.y}) {
             if (opts.binary) {
-              detail::put_binary(out, c, big);
+              if (double_uvs)
+                detail::put_binary(out, c, big);
+              else
+                detail::put_binary(out, static_cast<float>(c), big);
             } else {
               out += ' ';
-              detail::append_number(out, c);
+              if (double_uvs)
+                detail::append_number(out, c);
+              else
+                detail::append_number(out, static_cast<float>(c));
             }
           }
         }

@@ -1,6 +1,6 @@
 // tessera/io/png.hpp: PNG files (link tessera::io; Debian libstb-dev).
 //   read_png_info(path)            size, channels and bit depth without decoding pixels
-//   read_png<T, C>(path)           decode into an image_buffer<T, C> (channels and depth converted)
+//   read_png<T, C>(path, limits)   decode into an image_buffer<T, C> (channels and depth converted)
 //   write_png(path, image)         encode any Image (uint8 -> 8-bit PNG; uint16 and float -> 16-bit)
 //   decode_png<T, C>(bytes, name)  / encode_png(image): the same on memory, for engines with their
 //                                  own file systems or packed archives
@@ -8,16 +8,21 @@
 // compressed data) before stb inflates and unfilters it, so a truncated or corrupt file is a
 // parse_error naming the file and the byte offset, never a crash or an absurd allocation. Grey,
 // grey + alpha, RGB, RGBA and palette images at every bit depth are read; channel and depth
-// conversion follow convert_pixel / convert_channel (16 -> 8 bits rounds to nearest). Thread-safe.
+// conversion follow convert_pixel / convert_channel (16 -> 8 bits rounds to nearest). A valid file
+// of a few hundred kilobytes can inflate to gigabytes, so decoding also stops at an absolute size
+// (png_read_options: 2^28 pixels and 1 GiB decoded by default; raise them for larger images).
+// Thread-safe.
 // (If the host itself calls stb's stbi_set_flip_vertically_on_load(1), decoded images come out
 // flipped; tessera never calls it.)
 #pragma once
 
 #include <stb_image.h>
 
+#include <algorithm>
 #include <climits>
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -70,7 +75,39 @@ inline result<png_info> read_png_info(const std::string& path) {
   return decode_png_info(reinterpret_cast<const unsigned char*>(bytes->data()), bytes->size(), path);
 }
 
+/// Limits on what decode_png / read_png inflate. The chunk walk already refuses a header declaring
+/// more pixels than the compressed data can hold, but deflate legitimately expands ~1000:1: a valid
+/// 1 MB PNG can declare 32000 x 32000 pixels. These bound the absolute size; raise them to read
+/// larger images (the `tessera` command: environment variable TESSERA_MAX_PIXELS).
+struct png_read_options {
+  std::uint64_t max_pixels = std::uint64_t{1} << 28;  ///< width x height at most (default 268 M pixels)
+  std::uint64_t max_bytes = std::uint64_t{1} << 30;   ///< bytes of the decoded image at most (default 1 GiB),
+                                                      ///< counting the decoder's buffer and the output image
+};
+
 namespace detail {
+/// Removes zero-length IDAT chunks (valid PNG, but stb then copies from a null pointer). The data
+/// has passed check_png, so every chunk lies inside it. Returns an empty vector when there is none.
+inline std::vector<unsigned char> without_empty_idat(const unsigned char* data, std::size_t size) {
+  std::vector<unsigned char> out;
+  bool any = false;
+  for (std::size_t pos = 8; size - pos >= 12;) {
+    const std::size_t len = get_be32(data + pos);
+    if (size - pos - 12 < len) break;  // not reached after check_png; kept for safety
+    const bool iend = std::memcmp(data + pos + 4, "IEND", 4) == 0;
+    if (len == 0 && std::memcmp(data + pos + 4, "IDAT", 4) == 0) {
+      if (!any) out.assign(data, data + pos);
+      any = true;
+    } else if (any) {
+      out.insert(out.end(), data + pos, data + pos + 12 + len);
+    }
+    pos += 12 + len;
+    if (iend) break;
+  }
+  if (!any) out.clear();
+  return out;
+}
+
 struct stbi_deleter {
   void operator()(void* p) const noexcept { stbi_image_free(p); }
 };
@@ -91,18 +128,33 @@ void convert_decoded(const S* src, image_buffer<T, C>& out) {
 /// (grey expands, colour reduces to Rec. 601 luma, alpha added opaque or dropped) and its samples
 /// like convert_channel (16-bit files keep their precision in uint16_t and float). Errors:
 /// parse_error (structure, CRC, truncation, corrupt compressed data; message names `name` and the
-/// byte), size_overflow / unsupported for images too large to decode. O(pixels).
+/// byte), size_overflow for an image beyond `limits` (message names the size and the limit),
+/// unsupported for one too large for the decoder (2 GB). O(pixels).
 template <Channel T, int C>
-result<image_buffer<T, C>> decode_png(const unsigned char* data, std::size_t size, std::string_view name = "png") {
+result<image_buffer<T, C>> decode_png(const unsigned char* data, std::size_t size, std::string_view name = "png",
+                                      const png_read_options& limits = {}) {
   auto info = decode_png_info(data, size, name);
   if (!info) return info.error();
-  if (auto s = validate_image_extent(info->width, info->height, C, name); !s) return s;
   const int fc = info->channels;
   const bool wide = info->bit_depth == 16;
+  const std::uint64_t pixels = static_cast<std::uint64_t>(info->width) * static_cast<std::uint64_t>(info->height);
+  const std::uint64_t per_pixel =
+      std::max<std::uint64_t>(std::uint64_t(fc) * (wide ? 2u : 1u), std::uint64_t(C) * sizeof(T));
+  // pixels < 2^62: compared by division, so that a raised limit cannot make the product wrap
+  if (pixels > limits.max_pixels || pixels > limits.max_bytes / per_pixel) {
+    const std::uint64_t bytes = pixels <= UINT64_MAX / per_pixel ? pixels * per_pixel : UINT64_MAX;
+    return status::size_overflow(detail::cat(name, ": ", info->width, " x ", info->height, " = ", pixels, " pixels (",
+                                             bytes, " bytes decoded) exceeds the decoding limit of ", limits.max_pixels,
+                                             " pixels and ", limits.max_bytes,
+                                             " bytes; raise png_read_options to read it"));
+  }
+  if (auto s = validate_image_extent(info->width, info->height, C, name); !s) return s;
   if (size > INT_MAX ||
       static_cast<double>(info->width) * static_cast<double>(info->height) * fc * (wide ? 2 : 1) > INT_MAX)
     return status::unsupported(
         detail::cat(name, ": ", info->width, " x ", info->height, " is too large for the PNG decoder (2 GB limit)"));
+  const std::vector<unsigned char> cleaned = detail::without_empty_idat(data, size);
+  if (!cleaned.empty()) data = cleaned.data(), size = cleaned.size();
   int w = 0, h = 0, got = 0;
   const int len = static_cast<int>(size);
   std::unique_ptr<void, detail::stbi_deleter> raw(
@@ -129,12 +181,13 @@ result<image_buffer<T, C>> decode_png(const unsigned char* data, std::size_t siz
   return out;
 }
 
-/// Reads a PNG file into C channels of T (see decode_png). io_error when the file cannot be read.
+/// Reads a PNG file into C channels of T (see decode_png; `limits` bounds the decoded size).
+/// io_error when the file cannot be read.
 template <Channel T, int C>
-result<image_buffer<T, C>> read_png(const std::string& path) {
+result<image_buffer<T, C>> read_png(const std::string& path, const png_read_options& limits = {}) {
   auto bytes = detail::read_file(path);
   if (!bytes) return bytes.error();
-  return decode_png<T, C>(reinterpret_cast<const unsigned char*>(bytes->data()), bytes->size(), path);
+  return decode_png<T, C>(reinterpret_cast<const unsigned char*>(bytes->data()), bytes->size(), path, limits);
 }
 
 /// Encodes any Image as PNG bytes: uint8 channels as an 8-bit PNG, uint16 and float as 16-bit

@@ -67,14 +67,58 @@ struct tile_manifest {
   friend bool operator==(const tile_manifest&, const tile_manifest&) = default;
 };
 
+namespace detail {
+/// Why `file` cannot name a tile inside its directory, or nullptr when it can: a manifest must never
+/// make a reader or writer leave its directory. A tile file is a relative path of plain components
+/// separated by '/': no absolute path ("/x", "C:x"), no ".." or "." component, no backslash, no
+/// control character (NUL included, which would cut the name short), at most 255 bytes.
+inline const char* tile_file_problem(std::string_view file) noexcept {
+  if (file.empty()) return "is empty";
+  if (file.size() > 255) return "is longer than 255 bytes";
+  for (char c : file) {
+    const auto u = static_cast<unsigned char>(c);
+    if (u < 0x20 || u == 0x7f) return "holds a control character";
+    if (c == '\\') return "holds a backslash";
+    if (c == ':') return "holds a colon (a drive or stream name)";
+  }
+  if (file.front() == '/') return "is an absolute path";
+  std::size_t start = 0;
+  while (start <= file.size()) {
+    const std::size_t end = std::min(file.find('/', start), file.size());
+    const std::string_view part = file.substr(start, end - start);
+    if (part.empty() || part == "." || part == "..") return "has an empty, '.' or '..' component";
+    start = end + 1;
+  }
+  return nullptr;
+}
+/// Extra fields: names unique, not one of `reserved`, values finite (they are written as numbers).
+inline const char* manifest_fields_problem(const std::vector<manifest_field>& fields,
+                                           std::initializer_list<std::string_view> reserved, std::string& which) {
+  for (std::size_t i = 0; i < fields.size(); ++i) {
+    which = fields[i].name;
+    for (std::string_view r : reserved)
+      if (fields[i].name == r) return "uses a reserved name";
+    for (std::size_t j = 0; j < i; ++j)
+      if (fields[j].name == fields[i].name) return "appears twice";
+    if (!std::isfinite(fields[i].value)) return "is not a finite number";
+  }
+  return nullptr;
+}
+}  // namespace detail
+
 /// Checks a manifest's consistency: positive tile size, valid colour counts, at least one tile,
-/// indices forming 0..n-1, edge colours in range, non-empty relative file names without "..".
-/// `name` (the file) starts every message. O(n log n).
+/// indices forming 0..n-1, edge colours in range, tile files that stay inside the directory
+/// (relative, no "..", no backslash, no NUL or other control character), extra fields with unique,
+/// non-reserved names and finite values. `name` (the file) starts every message. O(n log n).
 inline status validate_tile_manifest(const tile_manifest& m, std::string_view name = "tiles.json") {
   auto bad = [&](auto... what) { return status::invalid_argument(detail::cat(name, ": ", what...)); };
   if (m.tile_size <= 0) return bad("tile_size must be positive, got ", m.tile_size);
   if (auto s = validate_color_counts(m.horizontal_colors, m.vertical_colors); !s) return bad(s.message());
   if (m.tiles.empty()) return bad("\"tiles\" is empty");
+  std::string field;
+  if (const char* p = detail::manifest_fields_problem(
+          m.extra, {"tile_size", "horizontal_colors", "vertical_colors", "tiles"}, field))
+    return bad("extra field \"", field, "\" ", p);
   std::vector<char> seen(m.tiles.size(), 0);
   for (const auto& t : m.tiles) {
     if (t.index < 0 || t.index >= static_cast<index_t>(m.tiles.size()))
@@ -82,11 +126,11 @@ inline status validate_tile_manifest(const tile_manifest& m, std::string_view na
     if (seen[static_cast<std::size_t>(t.index)]++) return bad("tile index ", t.index, " appears twice");
     if (auto s = validate_wang_edges(t.edges, m.horizontal_colors, m.vertical_colors); !s)
       return bad("tile ", t.index, ": ", s.message());
-    if (t.file.empty()) return bad("tile ", t.index, " has an empty \"file\"");
-    // absolute on any platform: "/x", "\\x", "C:..."; or climbing out of the directory
-    const bool absolute = t.file[0] == '/' || t.file[0] == '\\' || (t.file.size() >= 2 && t.file[1] == ':');
-    if (absolute || t.file.find("..") != std::string::npos)
-      return bad("tile ", t.index, ": file \"", t.file, "\" must be a plain name inside the tile directory");
+    if (const char* p = detail::tile_file_problem(t.file))
+      return bad("tile ", t.index, ": file ", detail::json_quote(t.file), " ", p,
+                 " (it must be a relative name inside the tile directory)");
+    if (const char* p = detail::manifest_fields_problem(t.extra, {"index", "file", "edges"}, field))
+      return bad("tile ", t.index, ": extra field \"", field, "\" ", p);
   }
   return {};
 }

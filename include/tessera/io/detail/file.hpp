@@ -4,6 +4,7 @@
 // Internal: no stability promise.
 #pragma once
 
+#include <algorithm>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -48,7 +49,8 @@ inline status write_file(const std::string& path, std::string_view data) {
   if (f == nullptr)
     return status::io_error(
         cat(path, ": cannot open for writing (", errno != 0 ? std::strerror(errno) : "unknown error", ")"));
-  const bool ok = std::fwrite(data.data(), 1, data.size(), f) == data.size();
+  // an empty view may hold a null pointer, which fwrite must not receive even for 0 bytes
+  const bool ok = data.empty() || std::fwrite(data.data(), 1, data.size(), f) == data.size();
   if (std::fclose(f) != 0 || !ok) return status::io_error(cat(path, ": write failed (disk full?)"));
   return {};
 }
@@ -151,6 +153,16 @@ void append_number(std::string& out, Int v) {
   char buf[24];
   const auto r = std::to_chars(buf, buf + sizeof buf, v);
   out.append(buf, r.ptr);
+}
+
+/// Capacity to reserve for `claimed` elements a file header announces: never more than the
+/// `remaining` bytes can hold at `least_bytes` each, and at most 2^20 up front (a vector grows past
+/// that as elements are actually read), so a header cannot make a reader allocate before reading.
+inline std::size_t bounded_reserve(long long claimed, std::size_t remaining, std::size_t least_bytes) noexcept {
+  if (claimed <= 0) return 0;
+  std::size_t n = static_cast<std::size_t>(claimed);
+  if (least_bytes > 0) n = std::min(n, remaining / least_bytes + 1);
+  return std::min<std::size_t>(n, std::size_t{1} << 20);
 }
 
 /// "PATH, line N: message" as a parse_error.
