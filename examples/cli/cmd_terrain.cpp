@@ -239,7 +239,7 @@ std::vector<cli::option_spec> terrain_options() {
       {"--scale-out", "F.png", "also write the colour-coded scale field (yellow: scale 1, purple: min-scale)"},
       {"--tiled-out", "F.png", "also write the same frame with plain tiled texture mapping"},
       {"--uv-out", "F.bin",
-       "per-triangle texture coordinates for an engine (TSUV version 2, little-endian: 36-byte header, then per "
+       "per-triangle texture coordinates for an engine (TSUV version 3, little-endian: 40-byte header, then per "
        "face 6 f32 corner uv, 2 f32 offset, i32 level, f32 scale, u32 state; see docs/terrain.md)"},
   };
   for (auto& c : cli::common_options()) o.push_back(c);
