@@ -31,6 +31,11 @@ TEST_CASE("synthesize_anchored_region: congruent, oriented, inside the exemplar,
     patches += st.patches, restarts += st.restarts;
   }
   REQUIRE(restarts < patches + mesh.num_faces() / 20);
+  auto side_of = [&](std::int32_t n, index_t f) {
+    for (std::size_t j = 0; j < 3; ++j)
+      if (mesh.neighbors[static_cast<std::size_t>(n)][j] == f) return static_cast<int>(j);
+    return -1;
+  };
   index_t shared = 0, same = 0;
   for (index_t f = 0; f < mesh.num_faces(); ++f) {
     const auto fi = static_cast<std::size_t>(f);
@@ -61,6 +66,9 @@ TEST_CASE("synthesize_anchored_region: congruent, oriented, inside the exemplar,
           if (mesh.faces[static_cast<std::size_t>(n)][j] == fv[(k + e) % 3])
             eq = eq && corner(u, j).x == corner(t, (k + e) % 3).x && corner(u, j).y == corner(t, (k + e) % 3).y;
       same += eq ? 1 : 0;
+      // a side not marked as a seam has the same coordinates on both faces
+      if (((atlas.seam[fi] >> k) & 1) == 0) REQUIRE(eq);
+      REQUIRE(((atlas.seam[fi] >> k) & 1) == ((atlas.seam[static_cast<std::size_t>(n)] >> side_of(n, f)) & 1));
     }
   }
   REQUIRE(static_cast<double>(same) / static_cast<double>(shared) > 0.95);

@@ -212,6 +212,10 @@ TEST_CASE("terrain_session: bad input gets a clear status", "[terrain][session]"
   REQUIRE(s.update(other, cam).message().find("not the session's") != std::string::npos);
   const auto smaller = terrain_test::prepared_terrain(15);
   REQUIRE(s.update(smaller, cam).message().find("not the session's") != std::string::npos);
+  // the session's mesh changed in place (a face not among the sampled ones): refused, no crash
+  auto changed = mesh;
+  changed.faces[5][0] = 1000000;
+  REQUIRE(s.update(changed, cam).message().find("face 5 names a vertex outside") != std::string::npos);
   // a camera with NaN in it, a degenerate one
   auto nan_cam = cam;
   nan_cam.view[3][0] = std::numeric_limits<double>::quiet_NaN();

@@ -142,13 +142,7 @@ status render_anchored_frame(const terrain_mesh& mesh, const terrain_session& se
             for (std::size_t k = 0; k < 3; ++k) {
               const std::int32_t n = mesh.neighbors[fi][k];
               if (n < 0 || atlas.patch[static_cast<std::size_t>(n)] < 0) continue;
-              const auto& u = atlas.uv[static_cast<std::size_t>(n)];
-              bool same = true;
-              for (std::size_t e = 0; e < 2; ++e)
-                for (std::size_t j = 0; j < 3; ++j)
-                  if (mesh.faces[static_cast<std::size_t>(n)][j] == fv[(k + e) % 3])
-                    same = same && u[2 * j] == t[2 * ((k + e) % 3)] && u[2 * j + 1] == t[2 * ((k + e) % 3) + 1];
-              if (same) continue;
+              if (((atlas.seam[fi] >> k) & 1) == 0) continue;
               // distance to side k in texels: the opposite corner's weight times its height over the side
               const std::size_t opp = (k + 2) % 3;
               const vec2 a{t[2 * k], t[2 * k + 1]}, bb{t[2 * ((k + 1) % 3)], t[2 * ((k + 1) % 3) + 1]},

@@ -51,8 +51,9 @@ TESSERA_NAMESPACE_BEGIN
 struct anchored_atlas {
   std::vector<std::array<float, 6>> uv;   ///< u0 v0 u1 v1 u2 v2, exemplar pixels from its centre (level 0)
   std::vector<std::int32_t> patch;        ///< placement within the face's region (-1: region not grown)
+  std::vector<std::uint8_t> seam;         ///< bit k: side k borders another placement, region or nothing
   std::vector<std::uint8_t> region_done;  ///< per region: grown
-  [[nodiscard]] std::size_t memory_bytes() const noexcept { return 28 * uv.size() + region_done.size(); }
+  [[nodiscard]] std::size_t memory_bytes() const noexcept { return 29 * uv.size() + region_done.size(); }
 };
 
 /// What growing a region did.
@@ -64,6 +65,7 @@ struct anchored_region_stats {
 inline void reset_anchored_atlas(const anchored_regions& plan, index_t faces, anchored_atlas& atlas) {
   atlas.uv.assign(static_cast<std::size_t>(faces), {});
   atlas.patch.assign(static_cast<std::size_t>(faces), -1);
+  atlas.seam.assign(static_cast<std::size_t>(faces), 7);
   atlas.region_done.assign(static_cast<std::size_t>(plan.num_regions()), 0);
 }
 
@@ -135,7 +137,7 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
   if (region < 0 || region >= plan.num_regions())
     return status::invalid_argument(detail::cat("region ", region, " is not one of the plan's ", plan.num_regions()));
   if (static_cast<index_t>(atlas.uv.size()) != nf || static_cast<index_t>(atlas.patch.size()) != nf ||
-      static_cast<index_t>(plan.region.size()) != nf ||
+      static_cast<index_t>(atlas.seam.size()) != nf || static_cast<index_t>(plan.region.size()) != nf ||
       atlas.region_done.size() != static_cast<std::size_t>(plan.num_regions()))
     return status::invalid_argument(detail::cat("synthesize_anchored_region: the atlas (", atlas.uv.size(),
                                                 " faces) and plan (", plan.region.size(),
@@ -199,7 +201,9 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
       const auto& nb = mesh.neighbors[fi];
       int placed = 0, oldest = -1;
       std::int32_t best_patch = -1, oldest_patch = std::numeric_limits<std::int32_t>::max();
-      const vec3 normal = detail::anchored_face_frame(mesh, plan, f).n;
+      const auto& fv3 = mesh.faces[fi];
+      const vec3 normal = normalized(
+          cross(mesh.position(fv3[1]) - mesh.position(fv3[0]), mesh.position(fv3[2]) - mesh.position(fv3[0])));
       detail::tri_uv best_uv{};
       for (int k = 0; k < 3; ++k) {
         const std::int32_t n = nb[static_cast<std::size_t>(k)];
@@ -261,6 +265,17 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
         if (mine(n) && patch[static_cast<std::size_t>(n)] < 0) stack.push_back(n);
       }
     }
+  }
+  // seams: a side is continuous when the neighbour is of this region and placement (then both
+  // corners of the side have the same coordinates, one formula per placement)
+  for (const std::int32_t* f = begin; f != end; ++f) {
+    const auto fi = static_cast<std::size_t>(*f);
+    std::uint8_t bits = 0;
+    for (std::size_t k = 0; k < 3; ++k) {
+      const std::int32_t n = mesh.neighbors[fi][k];
+      if (!mine(n) || patch[static_cast<std::size_t>(n)] != patch[fi]) bits = static_cast<std::uint8_t>(bits | 1u << k);
+    }
+    atlas.seam[fi] = bits;
   }
   atlas.region_done[static_cast<std::size_t>(region)] = 1;
   st.patches = patches;

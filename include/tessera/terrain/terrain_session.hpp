@@ -2,7 +2,9 @@
 // camera (paper 003 made frame-coherent; see docs/terrain.md, "Ground-anchored mode").
 //
 // A terrain_session keeps the state between frames; update() takes the next camera and
-//   1. projects the mesh (project_mesh, §2.1): which faces are visible;
+//   1. projects the mesh (§2.1; detail/session_projection.hpp, a lean project_mesh: the session's
+//      projection() has clip coordinates, states and the visible list, not screen positions or
+//      bounds, which ground-anchored coordinates do not need): which faces are visible;
 //   2. gives each visible face a LEVEL from its view distance D on a fixed, camera-independent
 //      scale (§2.2 made view-independent): g(D) = ln(max(D, D0) / D0) / ln(ratio), raw level
 //      floor(g) clamped to [0, levels - 1]; level l has scale max(min_scale, ratio^-l), a mipmap-
@@ -40,6 +42,7 @@
 #include "project_mesh.hpp"
 #include "synthesize_anchored_region.hpp"
 #include "terrain_camera.hpp"
+#include "detail/session_projection.hpp"
 
 TESSERA_NAMESPACE_BEGIN
 
@@ -120,8 +123,8 @@ class terrain_session {
   [[nodiscard]] std::size_t memory_bytes() const noexcept {
     auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
     return plan_.memory_bytes() + atlas_.memory_bytes() + bytes(uv_) + bytes(level_) + bytes(seen_) +
-           bytes(blend_from_) + bytes(blend_left_) + bytes(dirty_) + bytes(proj_.clip) + bytes(proj_.screen) +
-           bytes(proj_.state) + bytes(proj_.bounds) + bytes(proj_.visible);
+           bytes(blend_from_) + bytes(blend_left_) + bytes(dirty_) + bytes(codes_) + bytes(proj_.clip) +
+           bytes(proj_.screen) + bytes(proj_.state) + bytes(proj_.bounds) + bytes(proj_.visible);
   }
 
  private:
@@ -141,7 +144,8 @@ class terrain_session {
   screen_projection proj_;
   std::vector<std::array<float, 6>> uv_;
   std::vector<std::int32_t> level_, seen_, blend_from_;
-  std::vector<std::uint8_t> blend_left_, dirty_;
+  std::vector<std::uint8_t> blend_left_, dirty_, codes_;
+  std::vector<float> scales_;  ///< per level
   terrain_frame_stats stats_;
 };
 
@@ -201,6 +205,7 @@ inline result<terrain_session> make_terrain_session(const terrain_mesh& mesh, in
   s.d0_ = opts.near_distance > 0 ? opts.near_distance : (d_min > 0 ? d_min : 1.0);
   const double need = std::ceil(std::log(1 / opts.min_scale) / std::log(opts.level_ratio) - 1e-9);
   s.levels_ = std::clamp<index_t>(1 + static_cast<index_t>(std::max(0.0, need)), 1, opts.max_levels);
+  for (index_t l = 0; l < s.levels_; ++l) s.scales_.push_back(static_cast<float>(s.level_scale(l)));
   s.plan_ = std::move(*plan);
   reset_anchored_atlas(s.plan_, s.nf_, s.atlas_);
   const auto nf = static_cast<std::size_t>(s.nf_);
@@ -227,7 +232,7 @@ status update_terrain_session(terrain_session& s, const terrain_mesh& mesh, cons
                                                 mesh.num_vertices(), " vertices) is not the session's (", s.nf_,
                                                 " faces, ", s.nv_, " vertices): make a session per mesh"));
   if (auto st = validate_camera(camera); !st) return st;
-  if (auto st = project_mesh(mesh, camera, s.proj_, s.opts_.projection, exec); !st) {
+  if (auto st = detail::project_for_session(mesh, camera, s.opts_.projection, s.proj_, s.codes_, exec); !st) {
     s.proj_.visible.clear();
     std::fill(s.proj_.state.begin(), s.proj_.state.end(), std::uint8_t{0});
     return st;
@@ -323,28 +328,19 @@ status update_terrain_session(terrain_session& s, const terrain_mesh& mesh, cons
       const auto f = static_cast<std::size_t>(vis[i]);
       if (s.dirty_[f]) {
         s.dirty_[f] = 0;
-        const auto sc = static_cast<float>(s.level_scale(s.level_[f]));
+        const float sc = s.scales_[static_cast<std::size_t>(s.level_[f])];
         const auto& a = s.atlas_.uv[f];
         for (std::size_t k = 0; k < 6; ++k) s.uv_[f][k] = a[k] * sc;
       }
       if (!measure) continue;
-      const auto& fv = mesh.faces[f];
+      const std::uint8_t seam = s.atlas_.seam[f];
+      const std::int32_t lf = s.level_[f];
       for (int k = 0; k < 3; ++k) {
         const std::int32_t n = mesh.neighbors[f][static_cast<std::size_t>(k)];
         if (n <= vis[i] || s.seen_[static_cast<std::size_t>(n)] != fr) continue;
         ++p.shared;
-        p.jump = std::max(p.jump, std::abs(s.level_[f] - s.level_[static_cast<std::size_t>(n)]));
-        const auto& nv = mesh.faces[static_cast<std::size_t>(n)];
-        const auto& ua = s.atlas_.uv[f];
-        const auto& ub = s.atlas_.uv[static_cast<std::size_t>(n)];
-        bool same = true;
-        for (int e = 0; e < 2; ++e) {
-          const auto kf = static_cast<std::size_t>((k + e) % 3);
-          std::size_t kn = 3;
-          for (std::size_t j = 0; j < 3; ++j)
-            if (nv[j] == fv[kf]) kn = j;
-          same = same && kn < 3 && ua[2 * kf] == ub[2 * kn] && ua[2 * kf + 1] == ub[2 * kn + 1];
-        }
+        p.jump = std::max(p.jump, std::abs(lf - s.level_[static_cast<std::size_t>(n)]));
+        const bool same = ((seam >> k) & 1) == 0;
         p.same += same ? 1 : 0;
       }
     }
