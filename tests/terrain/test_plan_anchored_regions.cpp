@@ -13,7 +13,7 @@ using tessera::index_t;
 TEST_CASE("plan_anchored_regions: a partition of the faces into world cells, seeds nearest the centres",
           "[terrain][anchored]") {
   const auto mesh = terrain_test::prepared_terrain(40);
-  const auto p = tessera::plan_anchored_regions(mesh, 128, 128, {}).value();
+  const auto p = tessera::plan_anchored_regions(mesh, 128, 128, {.region_size = 0.3}).value();
   REQUIRE(p.axis_a == 0);
   REQUIRE(p.axis_b == 1);
   REQUIRE(p.texels_per_unit > 0);
@@ -51,9 +51,9 @@ TEST_CASE("plan_anchored_regions: a partition of the faces into world cells, see
   }
   for (int h : hit) REQUIRE(h == 1);
   // density: an exemplar width per auto_edges_per_exemplar mean edges; cells region_size of it
-  REQUIRE(p.cell == Approx(0.6 * 128 / p.texels_per_unit));
+  REQUIRE(p.cell == Approx(0.3 * 128 / p.texels_per_unit));
   // a pure function of its inputs
-  const auto q = tessera::plan_anchored_regions(mesh, 128, 128, {}).value();
+  const auto q = tessera::plan_anchored_regions(mesh, 128, 128, {.region_size = 0.3}).value();
   REQUIRE(q.region == p.region);
   REQUIRE(q.seed == p.seed);
   REQUIRE(p.max_neighbor_distance > 0);

@@ -35,7 +35,7 @@ struct anchored_synthesis_options {
   /// Exemplar pixels per world unit at level 0 (scale 1); 0: automatic (see the file comment).
   double texels_per_unit = 0;
   /// Region cell side as a fraction of the exemplar's world width, in [0.05, 4].
-  double region_size = 0.6;
+  double region_size = 0.8;
   /// Exemplar pixels kept free at the exemplar border (the bilinear footprint of the coarsest level), >= 0.
   double margin = 2.0;
   /// A face whose neighbours' unfolded coordinates all leave the exemplar waits once for more
@@ -44,8 +44,8 @@ struct anchored_synthesis_options {
   /// A new placement keeps the unfolded coordinate along an axis that still fits (a one-dimensional seam).
   bool keep_fitting_axis = true;
   /// A face joins a neighbour's placement only if its plane is tilted at most this much against
-  /// the placement's plane (texture stretch at most 1 / cos: 22 % at 35), degrees in [0, 60].
-  double max_tilt_degrees = 35;
+  /// the placement's plane (texture stretch at most 1 / cos: 31 % at 40), degrees in [0, 60].
+  double max_tilt_degrees = 40;
 };
 
 /// Mean edge lengths covered by one exemplar width when texels_per_unit is automatic.

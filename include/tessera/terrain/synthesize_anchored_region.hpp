@@ -8,7 +8,7 @@
 //            ((P - origin).u, (P - origin).v) * texels_per_unit + offset. Within a plane region this
 //            IS the unfolding of the faces across their neighbours, congruent; faces tilted
 //            against the plane by an angle a are stretched by at most 1 / cos a across the tilt,
-//            and a face joins a placement only while a <= max_tilt (default 35 degrees: 22 %).
+//            and a face joins a placement only while a <= max_tilt (default 40 degrees: 31 %).
 //            Exact unfolding cannot stay continuous on a curved surface (the faces round a vertex
 //            do not close up: Gauss), so the stretch is bounded instead; the coordinates of a
 //            vertex are one formula per placement, so two faces of a placement agree bit for bit
