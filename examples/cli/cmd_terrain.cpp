@@ -455,7 +455,8 @@ const cli::registrar terrain_registrar{{
     "terrain",
     "real-time texture synthesis of a terrain frame (scale field + triangle synthesis, paper 003)",
     "tessera terrain --exemplar E.png [--mesh M.obj | --grid N --seed S] [--eye x,y,z --target x,y,z --fov DEG] "
-    "[--viewport WxH] [--min-scale s] --out frame.png [--uv-out uv.bin] [--stats]",
+    "[--viewport WxH] [--min-scale s] --out frame.png [--uv-out uv.bin] [--stats]; moving cameras: [--anchor "
+    "ground|screen] [--path cameras.txt] [--frames-out DIR]",
     terrain_options(),
     run_terrain,
 }};
