@@ -4,6 +4,13 @@
 //
 // Counters: triangles/s (items), and for the synthesis benchmarks `vs_tiled_render`, the ratio of
 // the measured time to rendering the same frame with plain tiled mapping (timed in the same run).
+//
+// Ground-anchored sessions (issue 18): BM_SessionFirstFrame (a fresh terrain_session's first
+// update), BM_SessionIncremental (the camera moving 1 % of its view distance per frame, back and
+// forth) with counters stable (faces visible in consecutive frames with unchanged coordinates),
+// continuous (shared edges), jump (largest level jump), resynth (faces re-synthesized per frame)
+// and bytes_per_face (session memory); BM_MemcpyFaceOutput, a memcpy of the per-face corner
+// coordinates (24 bytes a face), is their same-run baseline.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -25,6 +32,7 @@
 #include <tessera/terrain/render_terrain_frame.hpp>
 #include <tessera/terrain/render_tiled_frame.hpp>
 #include <tessera/terrain/synthesize_triangles.hpp>
+#include <tessera/terrain/terrain_session.hpp>
 
 namespace {
 
@@ -256,6 +264,97 @@ void BM_MemcpyFrame(benchmark::State& state) {
   state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations()) * static_cast<std::int64_t>(a.size()));
 }
 BENCHMARK(BM_MemcpyFrame)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+/// The overview camera of a grid moved by `t` view distances along x.
+tessera::terrain_camera moved_camera(const tessera::terrain_mesh& mesh, double t) {
+  auto l = tessera::camera_preset_look_at(tessera::camera_preset::overview, tessera::bounding_box(mesh)).value();
+  const double d = tessera::norm(l.target - l.eye);
+  l.eye.x += t * d, l.target.x += t * d;
+  return tessera::make_camera(l, frame_w, frame_h).value();
+}
+
+/// Session options: level 0 up to where a texel covers a pixel of the overview camera (as the CLI).
+tessera::result<tessera::terrain_session> make_session(const tessera::terrain_mesh& mesh) {
+  auto s = tessera::make_terrain_session(mesh, exemplar_side, exemplar_side, {});
+  if (!s) return s;
+  tessera::terrain_session_options o;
+  const double focal = 0.5 * static_cast<double>(frame_h) * moved_camera(mesh, 0).projection[1][1];
+  o.near_distance = std::max(s->near_distance(), focal / s->regions().texels_per_unit);
+  return tessera::make_terrain_session(mesh, exemplar_side, exemplar_side, o);
+}
+
+void BM_SessionFirstFrame(benchmark::State& state) {
+  scene* s = scene_or_skip(state, state.range(0));
+  if (!s) return;
+  const auto cam = moved_camera(s->mesh, 0);
+  for (auto _ : state) {
+    state.PauseTiming();
+    auto session = make_session(s->mesh);
+    state.ResumeTiming();
+    if (!session) return (void)failed(state, session.error());
+    if (failed(state, session->update(s->mesh, cam, pool()))) return;
+    state.counters["visible"] = static_cast<double>(session->stats().visible);
+    state.counters["continuous"] = session->stats().continuous_fraction;
+    state.counters["bytes_per_face"] =
+        static_cast<double>(session->memory_bytes()) / static_cast<double>(s->mesh.num_faces());
+    state.PauseTiming();
+    session = tessera::status::cancelled();  // freed outside the timing
+    state.ResumeTiming();
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * s->proj.num_visible());
+}
+BENCHMARK(BM_SessionFirstFrame)->Arg(100000)->Arg(1000000)->Iterations(3)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_SessionIncremental(benchmark::State& state) {
+  scene* s = scene_or_skip(state, state.range(0));
+  if (!s) return;
+  auto session = make_session(s->mesh);
+  if (!session) return (void)failed(state, session.error());
+  // 40 frames moving 1 % of the view distance each, forth then back
+  std::vector<tessera::terrain_camera> path;
+  for (int i = 0; i < 20; ++i) path.push_back(moved_camera(s->mesh, 0.01 * i));
+  for (int i = 20; i > 0; --i) path.push_back(moved_camera(s->mesh, 0.01 * i));
+  if (failed(state, session->update(s->mesh, path[0], pool()))) return;
+  std::size_t at = 1;
+  double stable = 1, continuous = 1, resynth = 0;
+  int jump = 0;
+  std::int64_t frames = 0;
+  for (auto _ : state) {
+    if (failed(state, session->update(s->mesh, path[at], pool()))) return;
+    at = (at + 1) % path.size();
+    const auto& st = session->stats();
+    stable = std::min(stable, st.stable_fraction);
+    continuous = std::min(continuous, st.continuous_fraction);
+    jump = std::max(jump, st.max_level_jump);
+    resynth += static_cast<double>(st.resynthesized);
+    ++frames;
+  }
+  state.counters["stable_min"] = stable;
+  state.counters["continuous_min"] = continuous;
+  state.counters["jump_max"] = jump;
+  state.counters["resynth"] = frames > 0 ? resynth / static_cast<double>(frames) : 0;
+  state.counters["bytes_per_face"] =
+      static_cast<double>(session->memory_bytes()) / static_cast<double>(s->mesh.num_faces());
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * s->proj.num_visible());
+}
+BENCHMARK(BM_SessionIncremental)
+    ->Arg(100000)
+    ->Arg(1000000)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MeasureProcessCPUTime();
+
+void BM_MemcpyFaceOutput(benchmark::State& state) {
+  std::vector<std::array<float, 6>> a(static_cast<std::size_t>(state.range(0)), {1, 2, 3, 4, 5, 6}), b(a.size());
+  for (auto _ : state) {
+    std::memcpy(b.data(), a.data(), a.size() * sizeof(a[0]));
+    benchmark::DoNotOptimize(b.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations()) *
+                          static_cast<std::int64_t>(a.size() * sizeof(a[0])));
+}
+BENCHMARK(BM_MemcpyFaceOutput)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 

@@ -21,6 +21,13 @@
 #include <tessera/terrain/terrain_camera.hpp>
 #include <tessera/terrain/export_corner_uvs.hpp>
 #include <tessera/io/terrain_uv_file.hpp>
+#include <tessera/terrain/export_session_uvs.hpp>
+#include <tessera/terrain/render_anchored_frame.hpp>
+#include <tessera/terrain/terrain_session.hpp>
+
+#include <cstring>
+#include <filesystem>
+#include <sstream>
 
 #include "cli.hpp"
 #include "image_source.hpp"
@@ -72,7 +79,197 @@ result<tessera::terrain_camera> make_cli_camera(const cli::arguments& args, cons
 /// Largest --grid: 4096 x 4096 cells are 33.5 M triangles (about 3 GB through the pipeline).
 constexpr long long max_grid = 4096;
 
+/// The cameras of --path FILE: one per line, `ex ey ez tx ty tz fov` (blank lines and lines
+/// starting with # skipped); errors name the file, the line and the problem.
+result<std::vector<tessera::terrain_camera>> read_camera_path(const std::string& path, const tessera::aabb& bounds,
+                                                              index_t w, index_t h) {
+  auto text = tessera::detail::read_file(path);
+  if (!text) return text.error();
+  std::vector<tessera::terrain_camera> cams;
+  std::istringstream in(*text);
+  std::string line;
+  const double diag = std::max(tessera::norm(bounds.extent()), 1e-9);
+  for (int n = 1; std::getline(in, line); ++n) {
+    const auto first = line.find_first_not_of(" \t\r");
+    if (first == std::string::npos || line[first] == '#') continue;
+    std::istringstream ls(line);
+    std::vector<double> v;
+    std::string tok;
+    while (ls >> tok) {
+      char* end = nullptr;
+      const double x = std::strtod(tok.c_str(), &end);
+      if (end == tok.c_str() || *end != 0)
+        return status::invalid_argument("--path " + path + " line " + std::to_string(n) + ": '" + tok +
+                                        "' is not a number");
+      v.push_back(x);
+    }
+    if (v.size() != 7)
+      return status::invalid_argument("--path " + path + " line " + std::to_string(n) +
+                                      ": expected 7 numbers (ex ey ez " + "tx ty tz fov), got " +
+                                      std::to_string(v.size()));
+    for (const double x : v)
+      if (!std::isfinite(x))
+        return status::invalid_argument("--path " + path + " line " + std::to_string(n) + ": numbers must be finite");
+    tessera::look_at_camera l;
+    l.eye = {v[0], v[1], v[2]};
+    l.target = {v[3], v[4], v[5]};
+    l.fov_y_degrees = v[6];
+    l.near = std::max(1e-4 * diag, 1e-9);
+    l.far = 2 * (tessera::norm(l.eye - bounds.center()) + diag);
+    auto cam = tessera::make_camera(l, w, h);
+    if (!cam)
+      return status::invalid_argument("--path " + path + " line " + std::to_string(n) + ": " + cam.error().message());
+    cams.push_back(*cam);
+  }
+  if (cams.empty()) return status::invalid_argument("--path " + path + ": no camera in the file");
+  return cams;
+}
+
+/// Faces visible in both buffers (same level) with bit-identical corner coordinates, over faces visible in both.
+double stable_fraction(const tessera::terrain_uv_buffer& a, const tessera::terrain_uv_buffer& b) {
+  std::size_t common = 0, same = 0;
+  for (std::size_t f = 0; f < a.state.size() && f < b.state.size(); ++f) {
+    if (a.state[f] == 0 || b.state[f] == 0) continue;
+    ++common;
+    same += a.level[f] == b.level[f] && std::memcmp(a.corner_uv[f].data(), b.corner_uv[f].data(), 24) == 0 ? 1 : 0;
+  }
+  return common > 0 ? static_cast<double>(same) / static_cast<double>(common) : 1.0;
+}
+
+/// --anchor ground and/or --path: one frame per camera, ground-anchored (terrain_session) or the
+/// paper's screen-space pipeline, with --frames-out DIR and one --stats line per frame.
+int run_terrain_frames(const cli::arguments& args) {
+  auto fail = [&](const status& s) { return cli::fail(args, s); };
+  const std::string anchor = args.str("--anchor", "screen");
+  if (anchor != "ground" && anchor != "screen")
+    return fail(status::invalid_argument("--anchor expects ground or screen, got '" + anchor + "'"));
+  if (!args.has("--out") && !args.has("--frames-out"))
+    return fail(status::invalid_argument("missing required option --out or --frames-out"));
+  if (!args.has("--exemplar")) return fail(status::invalid_argument("missing required option --exemplar"));
+  if (args.has("--mesh") && args.has("--grid"))
+    return fail(status::invalid_argument("give --mesh or --grid, not both"));
+  auto vp = args.has("--viewport") ? args.size("--viewport", tessera::max_viewport_side, index_t{1} << 26)
+                                   : result<std::pair<index_t, index_t>>(std::pair<index_t, index_t>{960, 540});
+  if (!vp) return fail(vp.error());
+  auto min_scale = args.number("--min-scale", 0.5);
+  auto levels = args.integer("--levels", 0, 0, 4096);
+  auto feather = args.number("--feather", anchor == "ground" ? 2.0 : 3.0, 0, 64);
+  auto grid = args.integer("--grid", 128, 1, max_grid);
+  auto relief = args.number("--height", 14.0, 0, 1e6);
+  for (const status* s : {&min_scale.error(), &levels.error(), &feather.error(), &grid.error(), &relief.error()})
+    if (!s->ok()) return fail(*s);
+  if (!(*min_scale > 0 && *min_scale <= 1))
+    return fail(status::invalid_argument("--min-scale must be in (0, 1], got " + args.str("--min-scale")));
+  tessera::thread_pool_executor pool(args.threads());
+  auto exemplar = cli::load_image_source<std::uint8_t, 3>(args, "--exemplar", 256);
+  if (!exemplar) return fail(exemplar.error());
+  result<tessera::tri_mesh> source =
+      args.has("--mesh")
+          ? tessera::read_mesh(args.str("--mesh"))
+          : tessera::make_terrain({.cells_x = *grid, .cells_y = *grid, .height = *relief, .seed = args.seed()}, pool);
+  if (!source) return fail(source.error());
+  auto mesh = tessera::prepare_terrain_mesh(*source, args.has("--mesh") ? args.str("--mesh") : "terrain");
+  if (!mesh) return fail(mesh.error());
+  const tessera::aabb bounds = tessera::bounding_box(*mesh);
+  std::vector<tessera::terrain_camera> cams;
+  if (args.has("--path")) {
+    auto c = read_camera_path(args.str("--path"), bounds, vp->first, vp->second);
+    if (!c) return fail(c.error());
+    cams = std::move(*c);
+  } else {
+    auto c = make_cli_camera(args, bounds, vp->first, vp->second);
+    if (!c) return fail(c.error());
+    cams.push_back(*c);
+  }
+  std::string dir;
+  if (args.has("--frames-out")) {
+    dir = args.str("--frames-out");
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec) return fail(status::io_error("--frames-out " + dir + ": " + ec.message()));
+  }
+  auto pyramid = tessera::build_exemplar_pyramid(*exemplar, {.min_scale = *min_scale, .levels = *levels}, pool);
+  if (!pyramid) return fail(pyramid.error());
+  result<tessera::terrain_session> session = status::invalid_argument("unused");
+  if (anchor == "ground") {
+    tessera::terrain_session_options so{.synthesis = {.seed = args.seed()}, .min_scale = *min_scale};
+    session = tessera::make_terrain_session(*mesh, exemplar->width(), exemplar->height(), so);
+    if (!session) return fail(session.error());
+    // level 0 (no pre-filter) up to where one texel covers one pixel of the first camera: focal
+    // length in pixels / texels per unit (at least the smallest near distance allowed)
+    const double focal = 0.5 * static_cast<double>(vp->second) * cams[0].projection[1][1];
+    so.near_distance = std::max(session->near_distance(), focal / session->regions().texels_per_unit);
+    session = tessera::make_terrain_session(*mesh, exemplar->width(), exemplar->height(), so);
+    if (!session) return fail(session.error());
+  }
+  tessera::screen_projection proj;
+  tessera::scale_field field;
+  tessera::triangle_synthesis syn;
+  tessera::terrain_uv_buffer prev;
+  rgb_image frame(vp->first, vp->second);
+  for (std::size_t i = 0; i < cams.size(); ++i) {
+    status error;
+    result<tessera::terrain_uv_buffer> uv = status::invalid_argument("unused");
+    index_t visible = 0, resynthesized = 0;
+    double continuous = 1;
+    int jump = 0;
+    const double ms = cli::time_ms([&] {
+      if (anchor == "ground") {
+        error = session->update(*mesh, cams[i], pool);
+      } else {
+        error = tessera::project_mesh(*mesh, cams[i], proj, {}, pool);
+        if (error.ok())
+          error = tessera::assign_scale_field(
+              *mesh, proj, {.min_scale = *min_scale, .max_levels = pyramid->num_levels()}, field, pool);
+        if (error.ok())
+          error = tessera::synthesize_triangles(*mesh, proj, field, exemplar->width(), exemplar->height(),
+                                                {.seed = args.seed()}, syn, pool);
+      }
+    });
+    if (!error) return fail(status(error.code(), "frame " + std::to_string(i) + ": " + error.message()));
+    if (anchor == "ground") {
+      const auto& st = session->stats();
+      if (!st.warning.ok()) std::fprintf(stderr, "tessera terrain: warning: %s\n", st.warning.message().c_str());
+      visible = st.visible, resynthesized = st.resynthesized, continuous = st.continuous_fraction;
+      jump = st.max_level_jump;
+      uv = tessera::export_session_uvs(*session);
+      error = tessera::render_anchored_frame(*mesh, *session, *pyramid, frame, {.feather = *feather}, pool);
+    } else {
+      if (proj.num_visible() == 0)
+        std::fprintf(stderr, "tessera terrain: warning: frame %zu: no triangle is visible from this camera\n", i);
+      visible = proj.num_visible(), resynthesized = visible, continuous = syn.continuous_fraction;
+      jump = field.max_level_jump;
+      uv = tessera::export_corner_uvs(*mesh, proj, field, syn);
+      error = tessera::render_terrain_frame(*mesh, proj, field, syn, *pyramid, frame, {.feather = *feather}, pool);
+    }
+    if (!uv) return fail(uv.error());
+    if (!error) return fail(error);
+    if (!dir.empty()) {
+      char name[32];
+      std::snprintf(name, sizeof name, "frame_%04zu", i);
+      const std::filesystem::path base = std::filesystem::path(dir) / name;
+      if (auto s = tessera::write_png(base.string() + ".png", frame); !s) return fail(s);
+      if (auto s = tessera::write_terrain_uv_file(base.string() + ".tsuv", *uv); !s) return fail(s);
+    }
+    if (args.stats())
+      cli::json_line()
+          .add("frame", static_cast<index_t>(i))
+          .add("frame_ms", ms)
+          .add("visible", visible)
+          .add("resynthesized", resynthesized)
+          .add("stable_faces", i == 0 ? 0.0 : stable_fraction(prev, *uv))
+          .add("continuous_edges", continuous)
+          .add("max_level_jump", jump)
+          .print();
+    prev = std::move(*uv);
+  }
+  if (args.has("--out"))
+    if (auto s = tessera::write_png(args.str("--out"), frame); !s) return fail(s);
+  return 0;
+}
+
 int run_terrain(const cli::arguments& args) {
+  if (args.has("--anchor") || args.has("--path") || args.has("--frames-out")) return run_terrain_frames(args);
   auto fail = [&](const status& s) { return cli::fail(args, s); };
   const auto out_path = args.required("--out");
   if (!out_path) return fail(out_path.error());
@@ -239,8 +436,16 @@ std::vector<cli::option_spec> terrain_options() {
       {"--scale-out", "F.png", "also write the colour-coded scale field (yellow: scale 1, purple: min-scale)"},
       {"--tiled-out", "F.png", "also write the same frame with plain tiled texture mapping"},
       {"--uv-out", "F.bin",
-       "per-triangle texture coordinates for an engine (TSUV version 2, little-endian: 36-byte header, then per "
+       "per-triangle texture coordinates for an engine (TSUV version 3, little-endian: 40-byte header, then per "
        "face 6 f32 corner uv, 2 f32 offset, i32 level, f32 scale, u32 state; see docs/terrain.md)"},
+      {"--anchor", "A",
+       "screen (the paper: texture synthesized on the screen every frame; default) or ground (anchored to the "
+       "ground, incremental: terrain_session)"},
+      {"--path", "FILE", "camera path, one camera per line: ex ey ez tx ty tz fov (one frame each)"},
+      {"--frames-out", "DIR",
+       "write DIR/frame_0000.png and DIR/frame_0000.tsuv per camera; with --anchor, --path or --frames-out, "
+       "--stats prints one line per frame: frame, frame_ms, visible, resynthesized, stable_faces, "
+       "continuous_edges, max_level_jump"},
   };
   for (auto& c : cli::common_options()) o.push_back(c);
   return o;
@@ -250,7 +455,8 @@ const cli::registrar terrain_registrar{{
     "terrain",
     "real-time texture synthesis of a terrain frame (scale field + triangle synthesis, paper 003)",
     "tessera terrain --exemplar E.png [--mesh M.obj | --grid N --seed S] [--eye x,y,z --target x,y,z --fov DEG] "
-    "[--viewport WxH] [--min-scale s] --out frame.png [--uv-out uv.bin] [--stats]",
+    "[--viewport WxH] [--min-scale s] --out frame.png [--uv-out uv.bin] [--stats]; moving cameras: [--anchor "
+    "ground|screen] [--path cameras.txt] [--frames-out DIR]",
     terrain_options(),
     run_terrain,
 }};

@@ -61,13 +61,18 @@
 #include "terrain/assign_scale_field.hpp"
 #include "terrain/build_exemplar_pyramid.hpp"
 #include "terrain/export_corner_uvs.hpp"
+#include "terrain/export_session_uvs.hpp"
 #include "terrain/make_terrain.hpp"
+#include "terrain/plan_anchored_regions.hpp"
 #include "terrain/prepare_terrain_mesh.hpp"
 #include "terrain/project_mesh.hpp"
+#include "terrain/render_anchored_frame.hpp"
 #include "terrain/render_terrain_frame.hpp"
 #include "terrain/render_tiled_frame.hpp"
+#include "terrain/synthesize_anchored_region.hpp"
 #include "terrain/synthesize_triangles.hpp"
 #include "terrain/terrain_camera.hpp"
+#include "terrain/terrain_session.hpp"
 
 // geometric textures (paper 000 §2-3); tile-set files are in geometry/geometric_tile_files.hpp
 #include "geometry/bvh.hpp"

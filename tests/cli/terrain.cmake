@@ -65,3 +65,43 @@ tessera_cli_test(NAME "cli: terrain with the paper's literal synthesis rules" RE
           --out ${_o}/terrain_literal.png --stats)
 tessera_cli_test(NAME "cli: terrain rejects an unknown restart rule" CODE 1 REGEX "--restart expects wait or immediate, got 'later'"
   COMMAND terrain ${_small} --restart later --out ${_o}/terrain_bad.png)
+
+# --anchor ground / --path / --frames-out (issue 18): a short fly-through, one --stats line per frame
+file(WRITE ${_o}/terrain_path.txt "# ex ey ez tx ty tz fov\n0 -45 12 0 -15 0 55\n\n0 -44.6 12 0 -14.6 0 55\n0 -44.2 12 0 -14.2 0 55\n")
+set(_frame_line "\\{\"frame\":[0-9]+,\"frame_ms\":[0-9.e-]+,\"visible\":[0-9]+,\"resynthesized\":[0-9]+,\"stable_faces\":[0-9.e-]+,\"continuous_edges\":[0-9.e-]+,\"max_level_jump\":[01]\\}")
+tessera_cli_test(NAME "cli: terrain ground-anchored fly-through"
+  REGEX "^${_frame_line}\n${_frame_line}\n\\{\"frame\":2,[^\n]*\"stable_faces\":(0\\.9[5-9][0-9]*|1)[,}]"
+  COMMAND terrain ${_small} --anchor ground --path ${_o}/terrain_path.txt --frames-out ${_o}/terrain_frames --stats
+          --threads 2)
+tessera_cli_test(NAME "cli: terrain screen-space fly-through" REGEX "^${_frame_line}\n${_frame_line}\n${_frame_line}"
+  COMMAND terrain ${_small} --anchor screen --path ${_o}/terrain_path.txt --frames-out ${_o}/terrain_frames_screen
+          --stats)
+tessera_cli_test(NAME "cli: terrain ground-anchored single frame" REGEX "^${_frame_line}\n?$"
+  COMMAND terrain ${_small} --anchor ground --camera oblique --out ${_o}/terrain_ground.png --stats)
+tessera_cli_test(NAME "cli: terrain ground-anchored empty view warns"
+  REGEX "\"visible\":0,.*warning: terrain_session frame 0: no face is in view"
+  COMMAND terrain ${_small} --anchor ground --eye 0,0,30 --target 0,0,60 --up 0,1,0 --out ${_o}/terrain_ground_empty.png
+          --stats)
+file(WRITE ${_o}/terrain_path_nan.txt "0 -45 12 0 -15 0 55\n0 nan 12 0 -15 0 55\n")
+file(WRITE ${_o}/terrain_path_short.txt "0 -45 12 0 -15 0\n")
+file(WRITE ${_o}/terrain_path_same.txt "0 -45 12 0 -15 0 55\n1 2 3 1 2 3 55\n")
+file(WRITE ${_o}/terrain_path_fov.txt "0 -45 12 0 -15 0 0\n")
+file(WRITE ${_o}/terrain_path_word.txt "0 -45 12 0 -15 zero 55\n")
+file(WRITE ${_o}/terrain_path_empty.txt "# nothing\n")
+foreach(_case
+    "path with NaN|--path ${_o}/terrain_path_nan.txt|line 2: numbers must be finite"
+    "path line too short|--path ${_o}/terrain_path_short.txt|line 1: expected 7 numbers .*got 6"
+    "path eye equals target|--path ${_o}/terrain_path_same.txt|line 2: camera eye .* equals its target"
+    "path fov zero|--path ${_o}/terrain_path_fov.txt|line 1: camera fov_y_degrees must be in"
+    "path word|--path ${_o}/terrain_path_word.txt|line 1: 'zero' is not a number"
+    "empty path|--path ${_o}/terrain_path_empty.txt|no camera in the file"
+    "missing path|--path ${_o}/no_such_path.txt|no_such_path"
+    "unknown anchor|--anchor sky|--anchor expects ground or screen, got 'sky'")
+  string(REPLACE "|" ";" _parts "${_case}")
+  list(GET _parts 0 _name)
+  list(GET _parts 1 _args)
+  list(GET _parts 2 _expect)
+  separate_arguments(_args)
+  tessera_cli_test(NAME "cli: terrain rejects ${_name}" CODE 1 REGEX "${_expect}"
+    COMMAND terrain ${_small} ${_args} --frames-out ${_o}/terrain_bad_frames)
+endforeach()

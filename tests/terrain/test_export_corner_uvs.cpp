@@ -55,9 +55,9 @@ TEST_CASE("terrain uv file: what --uv-out writes reads back and textures every v
   const auto nf = static_cast<std::size_t>(mesh.num_faces());
 
   // the documented layout, decoded here byte by byte (independently of decode_terrain_uvs)
-  REQUIRE(raw.size() == 36 + 44 * nf);
+  REQUIRE(raw.size() == 40 + 44 * nf);
   REQUIRE(std::memcmp(raw.data(), "TSUV", 4) == 0);
-  REQUIRE(le32(raw, 4) == 2);
+  REQUIRE(le32(raw, 4) == 3);
   REQUIRE(le32(raw, 8) == nf);
   REQUIRE(le32(raw, 12) == 64);
   REQUIRE(le32(raw, 16) == 40);
@@ -65,9 +65,10 @@ TEST_CASE("terrain uv file: what --uv-out writes reads back and textures every v
   REQUIRE(le32(raw, 24) == 32);
   REQUIRE(le32(raw, 28) == static_cast<std::uint32_t>(field.levels));
   REQUIRE(lef32(raw, 32) == 0.5f);
+  REQUIRE(le32(raw, 36) == 0);  // screen mapping
   index_t near = 0;
   for (std::size_t f = 0; f < nf; ++f) {
-    const std::size_t r = 36 + 44 * f;
+    const std::size_t r = 40 + 44 * f;
     const auto state = le32(raw, r + 40);
     const auto level = static_cast<std::int32_t>(le32(raw, r + 32));
     REQUIRE(state == proj.state[f]);
@@ -140,6 +141,17 @@ TEST_CASE("terrain uv file: what --uv-out writes reads back and textures every v
   bad[0] = 'X';
   REQUIRE(tessera::decode_terrain_uvs(bad.data(), bad.size()).error().message().find("TSUV") != std::string::npos);
   REQUIRE_FALSE(tessera::decode_terrain_uvs(bad.data(), 3));
+  bad = raw;
+  bad[36] = 7;
+  REQUIRE(tessera::decode_terrain_uvs(bad.data(), bad.size()).error().message().find("mapping 7") != std::string::npos);
+  // a version 2 file (no mapping field) still reads, as screen mapping
+  std::vector<unsigned char> v2(raw.begin(), raw.begin() + 36);
+  v2[4] = 2;
+  v2.insert(v2.end(), raw.begin() + 40, raw.end());
+  const auto old = tessera::decode_terrain_uvs(v2.data(), v2.size());
+  REQUIRE(old);
+  REQUIRE(old->mapping == 0);
+  REQUIRE(old->level == back.level);
   REQUIRE(tessera::read_terrain_uv_file(path + ".missing").error().code() == tessera::status_code::io_error);
   tessera::terrain_uv_buffer uneven = uv;
   uneven.state.pop_back();

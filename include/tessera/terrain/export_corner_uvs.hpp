@@ -6,14 +6,17 @@
 //
 //   offset  size  header
 //        0     4  magic "TSUV"
-//        4     4  u32 version = 2
+//        4     4  u32 version = 3
 //        8     4  u32 F: faces (the mesh's, culled ones included)
 //       12     8  u32 viewport width, u32 viewport height (pixels)
 //       20     8  u32 exemplar width, u32 exemplar height (level 0 of the pyramid)
 //       28     4  u32 levels of the scale field
 //       32     4  f32 min_scale of the scale field
+//       36     4  u32 mapping: 0 screen (paper 003: interpolate corner uv linearly in screen space,
+//                 or use the offset form), 1 ground-anchored (terrain_session: interpolate corner uv
+//                 PERSPECTIVE-correctly; offset NaN)
 //
-//   then F records of 44 bytes, face f at 36 + 44 f:
+//   then F records of 44 bytes, face f at 40 + 44 f:
 //        0    24  f32 u0 v0 u1 v1 u2 v2: corner uv (NaN where a corner is behind the eye, or culled)
 //       24     8  f32 offset x, y: uv = pixel position (y down, centres at +0.5) + offset
 //       32     4  i32 level (-1: culled)
@@ -21,8 +24,9 @@
 //       40     4  u32 state: 0 culled, 1 visible, 2 visible and crossing the near plane
 //
 // uv is in pixels of the exemplar shrunk by `scale`, from its centre: sample it at normalized
-// coordinates 0.5 + uv / (exemplar width * scale, exemplar height * scale). Version 1 (written
-// before) had 32-byte records without offset and state and a 12-byte header.
+// coordinates 0.5 + uv / (exemplar width * scale, exemplar height * scale). Version 2 had no
+// mapping field (a 36-byte header, always screen mapping; still read). Version 1 had 32-byte
+// records without offset and state and a 12-byte header.
 #pragma once
 
 #include <array>
@@ -63,6 +67,7 @@ struct terrain_uv_buffer {
   std::vector<std::int32_t> level;
   std::vector<float> scale;
   std::vector<std::uint8_t> state;
+  std::uint32_t mapping = 0;  ///< 0: screen-space (paper 003), 1: ground-anchored (perspective-correct uv)
 };
 
 /// Collects the engine-facing outputs of a synthesis (see terrain_uv_buffer). Errors
@@ -115,8 +120,8 @@ inline result<terrain_uv_buffer> export_corner_uvs(const terrain_mesh& mesh, con
   return b;
 }
 
-inline constexpr std::uint32_t terrain_uv_file_version = 2;
-inline constexpr std::size_t terrain_uv_header_bytes = 36, terrain_uv_record_bytes = 44;
+inline constexpr std::uint32_t terrain_uv_file_version = 3;
+inline constexpr std::size_t terrain_uv_header_bytes = 40, terrain_uv_record_bytes = 44;
 
 namespace detail {
 inline void put_u32(std::vector<unsigned char>& out, std::uint32_t v) {
@@ -160,6 +165,7 @@ inline result<std::vector<unsigned char>> encode_terrain_uvs(const terrain_uv_bu
                           uv.exemplar_height, uv.levels})
     detail::put_u32(out, static_cast<std::uint32_t>(v));
   detail::put_f32(out, static_cast<float>(uv.min_scale));
+  detail::put_u32(out, uv.mapping);
   for (std::size_t f = 0; f < n; ++f) {
     for (const float c : uv.corner_uv[f]) detail::put_f32(out, c);
     for (const float c : uv.offset[f]) detail::put_f32(out, c);
@@ -170,17 +176,24 @@ inline result<std::vector<unsigned char>> encode_terrain_uvs(const terrain_uv_bu
   return out;
 }
 
-/// Decodes the layout above (version 2). Errors (invalid_argument): wrong magic or version, a size
-/// that does not match the face count. O(F).
+/// Decodes the layout above (version 3, or version 2: no mapping field, screen mapping). Errors
+/// (invalid_argument): wrong magic or version, an unknown mapping, a size that does not match the
+/// face count. O(F).
 inline result<terrain_uv_buffer> decode_terrain_uvs(const unsigned char* data, std::size_t size) {
-  if (size < terrain_uv_header_bytes || std::memcmp(data, "TSUV", 4) != 0)
+  if (size < 36 || std::memcmp(data, "TSUV", 4) != 0)
     return status::invalid_argument(detail::cat("terrain uv file: no 'TSUV' header (", size, " bytes)"));
-  if (const std::uint32_t v = detail::get_u32(data + 4); v != terrain_uv_file_version)
+  const std::uint32_t version = detail::get_u32(data + 4);
+  if (version != terrain_uv_file_version && version != 2)
     return status::invalid_argument(
-        detail::cat("terrain uv file: version ", v, ", expected ", terrain_uv_file_version));
+        detail::cat("terrain uv file: version ", version, ", expected 2 or ", terrain_uv_file_version));
+  const std::size_t header = version == 2 ? 36 : terrain_uv_header_bytes;
+  if (size < header)
+    return status::invalid_argument(detail::cat("terrain uv file: ", size, " bytes are shorter than the header"));
+  const std::uint32_t mapping = version == 2 ? 0 : detail::get_u32(data + 36);
+  if (mapping > 1)
+    return status::invalid_argument(detail::cat("terrain uv file: mapping ", mapping, " (expected 0 or 1)"));
   const std::size_t n = detail::get_u32(data + 8);
-  if ((size - terrain_uv_header_bytes) / terrain_uv_record_bytes != n ||
-      (size - terrain_uv_header_bytes) % terrain_uv_record_bytes != 0)
+  if ((size - header) / terrain_uv_record_bytes != n || (size - header) % terrain_uv_record_bytes != 0)
     return status::invalid_argument(detail::cat("terrain uv file: ", size, " bytes do not hold ", n, " faces"));
   terrain_uv_buffer uv;
   uv.viewport_width = detail::get_u32(data + 12);
@@ -189,13 +202,14 @@ inline result<terrain_uv_buffer> decode_terrain_uvs(const unsigned char* data, s
   uv.exemplar_height = detail::get_u32(data + 24);
   uv.levels = detail::get_u32(data + 28);
   uv.min_scale = detail::get_f32(data + 32);
+  uv.mapping = mapping;
   uv.corner_uv.resize(n);
   uv.offset.resize(n);
   uv.level.resize(n);
   uv.scale.resize(n);
   uv.state.resize(n);
   for (std::size_t f = 0; f < n; ++f) {
-    const unsigned char* r = data + terrain_uv_header_bytes + terrain_uv_record_bytes * f;
+    const unsigned char* r = data + header + terrain_uv_record_bytes * f;
     for (std::size_t k = 0; k < 6; ++k) uv.corner_uv[f][k] = detail::get_f32(r + 4 * k);
     uv.offset[f] = {detail::get_f32(r + 24), detail::get_f32(r + 28)};
     uv.level[f] = static_cast<std::int32_t>(detail::get_u32(r + 32));
