@@ -40,22 +40,26 @@ inline tri_mesh polycube_base_copy(const tri_mesh& m) {
 /// Steps (3) to (5) for a valid labelling.
 template <Executor E>
 result<polycube_map> deform_polycube(tri_mesh base, const std::vector<std::array<index_t, 3>>& nb,
-                                     const std::vector<std::uint8_t>& lab, double t, E& exec) {
+                                     const std::vector<std::uint8_t>& lab, double t, int untangle_iterations, E& exec) {
   const auto cs = find_polycube_charts(base, nb, lab);
   const std::size_t nc = cs.chart_label.size();
   std::vector<int> axis_of(nc);
   for (std::size_t c = 0; c < nc; ++c) axis_of[c] = cs.chart_label[c] / 2;
+  const auto partners = polycube_plane_partners(cs.vertex_charts, cs.chart_label);
   std::vector<vec3> pos(base.positions.size());
+  std::array<polycube_axis_classes, 3> classes;
   for (int a = 0; a < 3; ++a) {
-    auto cl = polycube_classes(base, cs.face_chart, cs.chart_label, a);
-    if (!cl) return cl.error();
+    auto cl_or = polycube_classes(base, cs.face_chart, cs.chart_label, a);
+    if (!cl_or) return cl_or.error();
+    classes[static_cast<std::size_t>(a)] = std::move(*cl_or);
+    const polycube_axis_classes* cl = &classes[static_cast<std::size_t>(a)];
     const auto ncl = cl->class_chart.size();
     auto x = polycube_axis_solve<E>(base, nb, *cl, a, std::vector<double>(ncl, std::numeric_limits<double>::quiet_NaN()));
     if (!x) return x.error();
     std::vector<double> plane(nc, 0.0);
     for (std::size_t k = 0; k < ncl; ++k)
       if (cl->class_chart[k] >= 0) plane[static_cast<std::size_t>(cl->class_chart[k])] = (*x)[k];
-    const auto q = quantize_planes(plane, axis_of, cs.chart_neighbors, a, t);
+    const auto q = quantize_planes(plane, axis_of, partners, a, t);
     std::vector<double> fixed(ncl, std::numeric_limits<double>::quiet_NaN());
     for (std::size_t k = 0; k < ncl; ++k)
       if (cl->class_chart[k] >= 0) fixed[k] = static_cast<double>(q[static_cast<std::size_t>(cl->class_chart[k])]) * t;
@@ -63,6 +67,7 @@ result<polycube_map> deform_polycube(tri_mesh base, const std::vector<std::array
     if (!y) return y.error();
     for (std::size_t v = 0; v < pos.size(); ++v) pos[v][a] = (*y)[static_cast<std::size_t>(cl->vertex_class[v])];
   }
+  untangle_polycube(base, pos, cs.face_chart, cs.chart_label, {&classes[0], &classes[1], &classes[2]}, t, untangle_iterations);
   return assemble_polycube_map(std::move(base), lab, std::move(pos), t, exec);
 }
 }  // namespace detail
@@ -78,7 +83,7 @@ result<polycube_map> build_polycube_map(const M& mesh, const polycube_options& o
   if (auto s = validate_polycube_input(mesh); !s) return s;
   auto t = polycube_tile_size(mesh, options);
   if (!t) return t.error();
-  if (options.max_expansion_cycles < 0 || options.max_repair_iterations < 0 || !(options.compactness >= 0) ||
+  if (options.max_expansion_cycles < 0 || options.max_repair_iterations < 0 || options.untangle_iterations < 0 || !(options.compactness >= 0) ||
       !(options.opposite_penalty >= 1 && options.opposite_penalty <= 2))
     return status::invalid_argument(detail::cat("polycube_options: max_expansion_cycles and max_repair_iterations must be >= 0, compactness >= 0 and opposite_penalty in [1, 2]; got ",
                                                 options.max_expansion_cycles, ", ", options.max_repair_iterations, ", ",
@@ -92,7 +97,7 @@ result<polycube_map> build_polycube_map(const M& mesh, const polycube_options& o
   if (!lab) return lab.error();
   const auto problem = detail::repair_polycube_labels(base, adj.neighbor, en.data, *lab, options.max_repair_iterations);
   if (problem.kind != detail::polycube_label_problem::none) return problem.to_status();
-  return detail::deform_polycube(std::move(base), adj.neighbor, *lab, *t, exec);
+  return detail::deform_polycube(std::move(base), adj.neighbor, *lab, *t, options.untangle_iterations, exec);
 }
 
 /// Builds the polycube map of `mesh` from a user labelling: one label per face (input face order),
@@ -118,7 +123,7 @@ result<polycube_map> build_polycube_map_from_labels(const M& mesh, std::span<con
   const auto cs = detail::find_polycube_charts(base, adj.neighbor, lab);
   if (auto p = detail::find_label_problem(base, adj.neighbor, cs); p.kind != detail::polycube_label_problem::none)
     return p.to_status();
-  return detail::deform_polycube(std::move(base), adj.neighbor, lab, *t, exec);
+  return detail::deform_polycube(std::move(base), adj.neighbor, lab, *t, options.untangle_iterations, exec);
 }
 
 /// Builds the polycube map of `mesh` from `deformed`, a copy of it (same vertex count, same faces)

@@ -135,6 +135,7 @@ struct polycube_options {
   double opposite_penalty = 2; ///< compactness cost factor between opposite labels (<= 2 keeps it metric)
   int max_expansion_cycles = 6;   ///< α-expansion sweeps over the six labels
   int max_repair_iterations = 200;  ///< relabelling steps of the validity repair
+  int untangle_iterations = 300;    ///< smoothing rounds that unflip faces after the final solve
 };
 
 namespace detail {

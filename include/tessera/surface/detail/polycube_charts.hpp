@@ -93,7 +93,7 @@ inline std::vector<index_t> chart_euler(const tri_mesh&, const std::vector<std::
 
 /// What is wrong with a labelling (first problem found, in a fixed order), or kind none.
 struct polycube_label_problem {
-  enum kind_t { none, opposite, genus, island, few_corners, corner_axes } kind = none;
+  enum kind_t { none, opposite, genus, island, few_corners, corner_axes, pinned_face } kind = none;
   index_t chart = -1, other = -1, vertex = -1;
   [[nodiscard]] status to_status() const {
     switch (kind) {
@@ -108,6 +108,9 @@ struct polycube_label_problem {
       case few_corners:
         return status::not_converged(cat("polycube: chart ", chart, " has ", other,
                                          " corners; a polycube face needs at least 4"));
+      case pinned_face:
+        return status::not_converged(cat("polycube: face ", vertex, " of chart ", chart,
+                                         " has all three vertices on chart ", other, ": it would collapse"));
       case corner_axes:
         return status::not_converged(cat("polycube: corner at vertex ", vertex,
                                          " joins 3 charts but not 3 different axes (chart ", chart, ")"));
@@ -130,6 +133,19 @@ inline polycube_label_problem find_label_problem(const tri_mesh& m, const std::v
     for (index_t d : cs.chart_neighbors[static_cast<std::size_t>(c)])
       if ((cs.chart_label[static_cast<std::size_t>(c)] ^ 1) == cs.chart_label[static_cast<std::size_t>(d)])
         return {polycube_label_problem::opposite, c, d, -1};
+  // a face whose three vertices all lie on one other chart would collapse onto that chart's plane
+  for (std::size_t f = 0; f < cs.face_chart.size(); ++f) {
+    const index_t c = cs.face_chart[f];
+    for (index_t d : cs.vertex_charts[static_cast<std::size_t>(m.faces[f][0])]) {
+      if (d == c) continue;
+      bool all = true;
+      for (int k = 1; k < 3 && all; ++k) {
+        const auto& vc = cs.vertex_charts[static_cast<std::size_t>(m.faces[f][static_cast<std::size_t>(k)])];
+        all = std::binary_search(vc.begin(), vc.end(), d);
+      }
+      if (all) return {polycube_label_problem::pinned_face, c, d, static_cast<index_t>(f)};
+    }
+  }
   for (index_t c : order)
     if (cs.chart_neighbors[static_cast<std::size_t>(c)].size() == 1 && nc > 1)
       return {polycube_label_problem::island, c, cs.chart_neighbors[static_cast<std::size_t>(c)][0], -1};
@@ -232,6 +248,19 @@ inline polycube_label_problem repair_polycube_labels(const tri_mesh& m, const st
     const auto p = find_label_problem(m, nb, cs);
     if (p.kind == polycube_label_problem::none || it >= max_iterations) return p;
     switch (p.kind) {
+      case polycube_label_problem::pinned_face: {
+        const auto dl = cs.chart_label[static_cast<std::size_t>(p.other)];
+        // take the other chart's label unless it is opposite to a neighbour of the face
+        bool ok = true;
+        for (index_t g : nb[static_cast<std::size_t>(p.vertex)])
+          if (g >= 0 && (lab[static_cast<std::size_t>(g)] ^ 1) == dl) ok = false;
+        if (ok) {
+          lab[static_cast<std::size_t>(p.vertex)] = dl;
+        } else {
+          return p;
+        }
+        break;
+      }
       case polycube_label_problem::island:
         for (std::size_t f = 0; f < lab.size(); ++f)
           if (cs.face_chart[f] == p.chart) lab[f] = cs.chart_label[static_cast<std::size_t>(p.other)];

@@ -14,6 +14,8 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <map>
+#include <utility>
 #include <numeric>
 #include <vector>
 
@@ -72,8 +74,6 @@ inline result<polycube_axis_classes> polycube_classes(const tri_mesh& m, const s
     }
     out.vertex_class[static_cast<std::size_t>(v)] = id[r];
   }
-  for (index_t c = 0; c < nc; ++c)  // a chart always has vertices, so its class exists
-    (void)c;
   return out;
 }
 
@@ -138,12 +138,40 @@ result<std::vector<double>> polycube_axis_solve(const tri_mesh& m, const std::ve
   return x;
 }
 
+/// Pairs of charts whose planes must stay at least one tile apart: on the boundary between two
+/// adjacent charts C and D (axes a and b), the charts of the third axis met at its corners bound the
+/// polycube edges there, so any two of them must not share a plane. Returns each chart's partners.
+inline std::vector<std::vector<index_t>> polycube_plane_partners(const std::vector<std::vector<index_t>>& vertex_charts,
+                                                                 const std::vector<std::uint8_t>& chart_label) {
+  std::map<std::pair<index_t, index_t>, std::vector<index_t>> on_boundary;
+  for (const auto& vc : vertex_charts) {
+    if (vc.size() < 3) continue;
+    for (index_t c : vc)
+      for (index_t d : vc) {
+        const int a = chart_label[static_cast<std::size_t>(c)] / 2, b = chart_label[static_cast<std::size_t>(d)] / 2;
+        if (c >= d || a == b) continue;
+        for (index_t e : vc)
+          if (chart_label[static_cast<std::size_t>(e)] / 2 == 3 - a - b) on_boundary[{c, d}].push_back(e);
+      }
+  }
+  std::vector<std::vector<index_t>> partners(chart_label.size());
+  for (auto& [cd, es] : on_boundary)
+    for (index_t e : es)
+      for (index_t g : es)
+        if (e != g) partners[static_cast<std::size_t>(e)].push_back(g);
+  for (auto& p : partners) {
+    std::sort(p.begin(), p.end());
+    p.erase(std::unique(p.begin(), p.end()), p.end());
+  }
+  return partners;
+}
+
 /// Integer planes of the charts of one axis from their continuous values `p` (mesh units): each chart
 /// plane is rounded to the nearest multiple of the tile, then, in order of p (ties: chart index),
-/// raised to at least one tile above every chart of the same axis that shares a neighbour chart with it
-/// and comes earlier: a polycube edge never collapses below one tile.
+/// raised to at least one tile above each of its partners (polycube_plane_partners) placed before it:
+/// a polycube edge never collapses below one tile.
 inline std::vector<std::int64_t> quantize_planes(const std::vector<double>& p, const std::vector<int>& axis_of,
-                                                 const std::vector<std::vector<index_t>>& chart_neighbors, int axis,
+                                                 const std::vector<std::vector<index_t>>& partners, int axis,
                                                  double tile) {
   const std::size_t nc = p.size();
   std::vector<index_t> order;
@@ -156,14 +184,84 @@ inline std::vector<std::int64_t> quantize_planes(const std::vector<double>& p, c
   for (index_t c : order) {
     const auto cs = static_cast<std::size_t>(c);
     std::int64_t v = std::llround(p[cs] / tile);
-    for (index_t n : chart_neighbors[cs])
-      for (index_t d : chart_neighbors[static_cast<std::size_t>(n)])
-        if (d != c && done[static_cast<std::size_t>(d)] && axis_of[static_cast<std::size_t>(d)] == axis)
-          v = std::max(v, q[static_cast<std::size_t>(d)] + 1);
+    for (index_t d : partners[cs])
+      if (done[static_cast<std::size_t>(d)]) v = std::max(v, q[static_cast<std::size_t>(d)] + 1);
     q[cs] = v;
     done[cs] = true;
   }
   return q;
+}
+
+/// Faces whose polycube triangle is not positively oriented in its chart plane.
+inline std::vector<index_t> polycube_flipped_faces(const tri_mesh& m, const std::vector<vec3>& pos,
+                                                   const std::vector<index_t>& face_chart,
+                                                   const std::vector<std::uint8_t>& chart_label, double t) {
+  std::vector<index_t> out;
+  for (std::size_t f = 0; f < m.faces.size(); ++f) {
+    const auto l = chart_label[static_cast<std::size_t>(face_chart[f])];
+    const int a = l / 2, u = l % 2 == 0 ? (a + 1) % 3 : (a + 2) % 3, w = l % 2 == 0 ? (a + 2) % 3 : (a + 1) % 3;
+    const vec3 &p0 = pos[static_cast<std::size_t>(m.faces[f][0])], &p1 = pos[static_cast<std::size_t>(m.faces[f][1])],
+               &p2 = pos[static_cast<std::size_t>(m.faces[f][2])];
+    const double area = (p1[u] - p0[u]) * (p2[w] - p0[w]) - (p1[w] - p0[w]) * (p2[u] - p0[u]);
+    if (!(area > 1e-12 * t * t)) out.push_back(static_cast<index_t>(f));
+  }
+  return out;
+}
+
+/// Untangling after the final solve: while faces are flipped (at most `iterations` rounds), every free
+/// coordinate of the vertices within two rings of a flipped face moves to the mean of its neighbours'
+/// (Jacobi steps of a Tutte embedding, which is injective on convex charts). Chart planes never move.
+/// Returns the number of faces still flipped.
+inline index_t untangle_polycube(const tri_mesh& m, std::vector<vec3>& pos, const std::vector<index_t>& face_chart,
+                                 const std::vector<std::uint8_t>& chart_label,
+                                 const std::array<const polycube_axis_classes*, 3>& cl, double t, int iterations) {
+  const auto nv = static_cast<std::size_t>(m.num_vertices());
+  std::vector<std::vector<index_t>> ring(nv);
+  for (const auto& f : m.faces)
+    for (int k = 0; k < 3; ++k) ring[static_cast<std::size_t>(f[static_cast<std::size_t>(k)])].push_back(f[static_cast<std::size_t>((k + 1) % 3)]);
+  auto is_free = [&](std::size_t v, int a) {
+    const auto& c = *cl[static_cast<std::size_t>(a)];
+    return c.class_chart[static_cast<std::size_t>(c.vertex_class[v])] < 0;
+  };
+  auto flipped = polycube_flipped_faces(m, pos, face_chart, chart_label, t);
+  for (int it = 0; it < iterations && !flipped.empty(); ++it) {
+    std::vector<std::uint8_t> mark(nv, 0);
+    for (index_t f : flipped)
+      for (index_t v : m.faces[static_cast<std::size_t>(f)]) mark[static_cast<std::size_t>(v)] = 1;
+    for (int grow = 0; grow < 2; ++grow) {
+      const auto prev = mark;
+      for (std::size_t v = 0; v < nv; ++v)
+        if (prev[v])
+          for (index_t w : ring[v]) mark[static_cast<std::size_t>(w)] = 1;
+    }
+    std::vector<vec3> next = pos;
+    for (std::size_t v = 0; v < nv; ++v) {
+      if (!mark[v]) continue;
+      int free_axes = 0;
+      for (int a = 0; a < 3; ++a) free_axes += is_free(v, a) ? 1 : 0;
+      if (free_axes == 0) continue;
+      // a vertex on a polycube edge (one free axis) averages over its neighbours on the same edge only:
+      // a 1D Tutte map between the edge's corners, so it never passes a corner
+      vec3 mean;
+      index_t n = 0;
+      for (index_t w : ring[v]) {
+        bool same = true;
+        if (free_axes == 1)
+          for (int a = 0; a < 3; ++a)
+            if (!is_free(v, a) && cl[static_cast<std::size_t>(a)]->vertex_class[static_cast<std::size_t>(w)] !=
+                                      cl[static_cast<std::size_t>(a)]->vertex_class[v])
+              same = false;
+        if (same) mean += pos[static_cast<std::size_t>(w)], ++n;
+      }
+      if (n == 0) continue;
+      mean = mean / static_cast<double>(n);
+      for (int a = 0; a < 3; ++a)
+        if (is_free(v, a)) next[v][a] = mean[a];
+    }
+    pos.swap(next);
+    flipped = polycube_flipped_faces(m, pos, face_chart, chart_label, t);
+  }
+  return static_cast<index_t>(flipped.size());
 }
 
 }  // namespace detail
