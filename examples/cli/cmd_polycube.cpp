@@ -6,6 +6,7 @@
 #include <map>
 #include <string>
 
+#include <tessera/core/mesh_topology.hpp>
 #include <tessera/io/detail/file.hpp>
 #include <tessera/io/mesh_file.hpp>
 #include <tessera/io/polycube_file.hpp>
@@ -81,9 +82,13 @@ int run(const cli::arguments& args) {
     if (auto s = save_polycube_map(args.str("--map-out"), *r); !s) return cli::fail(args, s);
   if (args.stats()) {
     const auto d = polycube_distortion(*r);
+    // genus of the (closed) base: V - E + F = 2 (components - genus), E = 3F / 2
+    const index_t chi = r->base.num_vertices() - 3 * r->base.num_faces() / 2 + r->base.num_faces();
+    const index_t genus = (2 * connected_components(r->base).count - chi) / 2;
     cli::json_line()
         .add("polycube_ms", ms)
         .add("faces", r->base.num_faces())
+        .add("genus", genus)
         .add("tile", r->tile_size)
         .add("charts", static_cast<index_t>(r->charts.size()))
         .add("corners", static_cast<index_t>(r->corners.size()))

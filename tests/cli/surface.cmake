@@ -6,7 +6,7 @@ file(MAKE_DIRECTORY ${_pc})
 set(_pcdata ${PROJECT_SOURCE_DIR}/tests/data/surface)
 
 tessera_cli_test(NAME "cli: polycube torus"
-                 REGEX "\"polycube_ms\":[0-9.e+-]+,\"faces\":768,.*\"charts\":[1-9][0-9]*,\"corners\":[1-9][0-9]*,\"quads\":[1-9][0-9]*,\"flipped_faces\":0,\"area_distortion\":[0-9.e+-]+,\"angle_distortion\":[0-9.e+-]+,\"refined\":false,\"valid\":true"
+                 REGEX "\"polycube_ms\":[0-9.e+-]+,\"faces\":768,\"genus\":1,.*\"charts\":[1-9][0-9]*,\"corners\":[1-9][0-9]*,\"quads\":[1-9][0-9]*,\"flipped_faces\":0,\"area_distortion\":[0-9.e+-]+,\"angle_distortion\":[0-9.e+-]+,\"refined\":false,\"valid\":true"
                  COMMAND polycube --mesh ${_pcdata}/torus.obj --out ${_pc}/torus_pc.obj --tiles-across 8 --threads 2 --stats)
 tessera_cli_test(NAME "cli: polycube L outputs" REGEX "wrote .*l_pc\\.obj \\(8 charts, 56 quads\\)"
                  COMMAND polycube --mesh ${_pcdata}/l_shape.off --out ${_pc}/l_pc.obj --tile 0.5 --labels-out ${_pc}/l.labels

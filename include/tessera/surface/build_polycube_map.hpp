@@ -24,6 +24,7 @@
 #include "detail/polycube_assemble.hpp"
 #include "detail/polycube_charts.hpp"
 #include "detail/polycube_deform.hpp"
+#include "detail/polycube_embed.hpp"
 #include "detail/polycube_labeling.hpp"
 #include "polycube_map.hpp"
 
@@ -67,6 +68,7 @@ result<polycube_map> deform_polycube(tri_mesh base, const std::vector<std::array
     if (!y) return y.error();
     for (std::size_t v = 0; v < pos.size(); ++v) pos[v][a] = (*y)[static_cast<std::size_t>(cl->vertex_class[v])];
   }
+  if (auto s = embed_polycube<E>(base, cs, classes, pos); !s) return s;
   untangle_polycube(base, pos, cs.face_chart, cs.chart_label, {&classes[0], &classes[1], &classes[2]}, t, untangle_iterations);
   return assemble_polycube_map(std::move(base), lab, std::move(pos), t, exec);
 }
