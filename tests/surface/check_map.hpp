@@ -22,7 +22,9 @@ inline long long check_polycube(const tessera::polycube_map& m) {
     REQUIRE(ch.label == m.labels[f]);
     const int a = label_axis(ch.label);
     const auto& fv = m.base.faces[f];
-    for (index_t v : fv) REQUIRE(std::abs(m.polycube[static_cast<std::size_t>(v)][a] - double(ch.plane) * t) <= 1e-9 * (1 + std::abs(double(ch.plane) * t)));
+    for (index_t v : fv)
+      REQUIRE(std::abs(m.polycube[static_cast<std::size_t>(v)][a] - double(ch.plane) * t) <=
+              1e-9 * (1 + std::abs(double(ch.plane) * t)));
     const vec3 n = cross(m.polycube[static_cast<std::size_t>(fv[1])] - m.polycube[static_cast<std::size_t>(fv[0])],
                          m.polycube[static_cast<std::size_t>(fv[2])] - m.polycube[static_cast<std::size_t>(fv[0])]);
     REQUIRE(dot(n, label_direction(ch.label)) > 0);  // not flipped
@@ -49,5 +51,6 @@ inline long long check_polycube(const tessera::polycube_map& m) {
       REQUIRE(std::abs(a[static_cast<std::size_t>(e.axis)] - b[static_cast<std::size_t>(e.axis)]) == 1);
     }
   }
-  return static_cast<long long>(verts.size()) - static_cast<long long>(L.edges.size()) + static_cast<long long>(L.quads.size());
+  return static_cast<long long>(verts.size()) - static_cast<long long>(L.edges.size()) +
+         static_cast<long long>(L.quads.size());
 }

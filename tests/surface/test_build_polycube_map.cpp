@@ -20,7 +20,8 @@ TEST_CASE("polycube: voxel solids become themselves, any genus") {
     std::size_t charts, quads;
   };
   for (const auto& s : {shape{"cube", shapes::cube(), 2, 6, 6 * 4}, shape{"L", shapes::l_shape(), 2, 8, 14 * 4},
-                        shape{"ring", shapes::ring(), 0, 4 + 4 + 2, 32 * 4}, shape{"genus 2", shapes::genus2(), -2, 4 + 8 + 2, 50 * 4}}) {
+                        shape{"ring", shapes::ring(), 0, 4 + 4 + 2, 32 * 4},
+                        shape{"genus 2", shapes::genus2(), -2, 4 + 8 + 2, 50 * 4}}) {
     INFO(s.name);
     const auto m = shapes::voxel_surface(s.vox, 2);
     polycube_options o;

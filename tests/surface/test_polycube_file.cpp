@@ -40,7 +40,8 @@ TEST_CASE("polycube file: bad files") {
   CHECK(load_polycube_map(write("a.polycube", "hello\n")).error().code() == status_code::parse_error);
   CHECK(load_polycube_map(write("b.polycube", "tessera-polycube 1\ntile 1\ncounts 100000000 1\n")).error().code() ==
         status_code::parse_error);
-  CHECK(load_polycube_map(write("c.polycube", "tessera-polycube 1\ntile 1\ncounts 1 0\nv 1 2 nan 0 0 0\n")).error().code() ==
-        status_code::parse_error);
+  CHECK(load_polycube_map(write("c.polycube", "tessera-polycube 1\ntile 1\ncounts 1 0\nv 1 2 nan 0 0 0\n"))
+            .error()
+            .code() == status_code::parse_error);
   CHECK(read_polycube_labels(write("d.labels", "0\n1\n6\n")).error().message().find("line 3") != std::string::npos);
 }

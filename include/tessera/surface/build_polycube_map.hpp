@@ -55,7 +55,8 @@ result<polycube_map> deform_polycube(tri_mesh base, const std::vector<std::array
     classes[static_cast<std::size_t>(a)] = std::move(*cl_or);
     const polycube_axis_classes* cl = &classes[static_cast<std::size_t>(a)];
     const auto ncl = cl->class_chart.size();
-    auto x = polycube_axis_solve<E>(base, nb, *cl, a, std::vector<double>(ncl, std::numeric_limits<double>::quiet_NaN()));
+    auto x =
+        polycube_axis_solve<E>(base, nb, *cl, a, std::vector<double>(ncl, std::numeric_limits<double>::quiet_NaN()));
     if (!x) return x.error();
     std::vector<double> plane(nc, 0.0);
     for (std::size_t k = 0; k < ncl; ++k)
@@ -69,7 +70,8 @@ result<polycube_map> deform_polycube(tri_mesh base, const std::vector<std::array
     for (std::size_t v = 0; v < pos.size(); ++v) pos[v][a] = (*y)[static_cast<std::size_t>(cl->vertex_class[v])];
   }
   if (auto s = embed_polycube<E>(base, cs, classes, pos); !s) return s;
-  untangle_polycube(base, pos, cs.face_chart, cs.chart_label, {&classes[0], &classes[1], &classes[2]}, t, untangle_iterations);
+  untangle_polycube(base, pos, cs.face_chart, cs.chart_label, {&classes[0], &classes[1], &classes[2]}, t,
+                    untangle_iterations);
   return assemble_polycube_map(std::move(base), lab, std::move(pos), t, exec);
 }
 }  // namespace detail
@@ -85,11 +87,13 @@ result<polycube_map> build_polycube_map(const M& mesh, const polycube_options& o
   if (auto s = validate_polycube_input(mesh); !s) return s;
   auto t = polycube_tile_size(mesh, options);
   if (!t) return t.error();
-  if (options.max_expansion_cycles < 0 || options.max_repair_iterations < 0 || options.untangle_iterations < 0 || !(options.compactness >= 0) ||
-      !(options.opposite_penalty >= 1 && options.opposite_penalty <= 2))
-    return status::invalid_argument(detail::cat("polycube_options: max_expansion_cycles and max_repair_iterations must be >= 0, compactness >= 0 and opposite_penalty in [1, 2]; got ",
-                                                options.max_expansion_cycles, ", ", options.max_repair_iterations, ", ",
-                                                options.compactness, ", ", options.opposite_penalty));
+  if (options.max_expansion_cycles < 0 || options.max_repair_iterations < 0 || options.untangle_iterations < 0 ||
+      !(options.compactness >= 0) || !(options.opposite_penalty >= 1 && options.opposite_penalty <= 2))
+    return status::invalid_argument(
+        detail::cat("polycube_options: max_expansion_cycles and max_repair_iterations must be >= 0, compactness >= 0 "
+                    "and opposite_penalty in [1, 2]; got ",
+                    options.max_expansion_cycles, ", ", options.max_repair_iterations, ", ", options.compactness, ", ",
+                    options.opposite_penalty));
   auto m = to_tri_mesh(mesh);
   if (!m) return m.error();
   tri_mesh base = detail::polycube_base_copy(*m);
@@ -113,10 +117,12 @@ result<polycube_map> build_polycube_map_from_labels(const M& mesh, std::span<con
   auto t = polycube_tile_size(mesh, options);
   if (!t) return t.error();
   if (static_cast<index_t>(labels.size()) != num_faces(mesh))
-    return status::invalid_argument(detail::cat("polycube labels: ", labels.size(), " labels for ", num_faces(mesh), " faces"));
+    return status::invalid_argument(
+        detail::cat("polycube labels: ", labels.size(), " labels for ", num_faces(mesh), " faces"));
   for (std::size_t f = 0; f < labels.size(); ++f)
     if (labels[f] > 5)
-      return status::invalid_argument(detail::cat("polycube labels: face ", f, " has label ", int(labels[f]), ", outside 0..5"));
+      return status::invalid_argument(
+          detail::cat("polycube labels: face ", f, " has label ", int(labels[f]), ", outside 0..5"));
   auto m = to_tri_mesh(mesh);
   if (!m) return m.error();
   tri_mesh base = detail::polycube_base_copy(*m);

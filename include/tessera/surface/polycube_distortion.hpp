@@ -18,8 +18,8 @@ TESSERA_NAMESPACE_BEGIN
 
 /// Per-face and summary distortion figures of a polycube map.
 struct polycube_distortion_report {
-  std::vector<double> area;   ///< max(r, 1/r) per face
-  std::vector<double> angle;  ///< σ₁/σ₂ per face
+  std::vector<double> area;     ///< max(r, 1/r) per face
+  std::vector<double> angle;    ///< σ₁/σ₂ per face
   double area_distortion = 1;   ///< base-area-weighted mean of `area`
   double angle_distortion = 1;  ///< base-area-weighted mean of `angle`
 };

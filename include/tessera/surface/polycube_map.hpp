@@ -64,8 +64,8 @@ struct polycube_corner {
 /// A polycube edge: the straight boundary between two charts (of different axes) from one corner to
 /// another, along `axis`.
 struct polycube_edge {
-  index_t chart_a = -1, chart_b = -1;  ///< chart_a < chart_b
-  int axis = 0;                        ///< the axis the edge runs along
+  index_t chart_a = -1, chart_b = -1;    ///< chart_a < chart_b
+  int axis = 0;                          ///< the axis the edge runs along
   index_t corner_a = -1, corner_b = -1;  ///< corners at its low and high end along `axis`
   std::int64_t length = 0;               ///< in tiles (>= 1)
 };
@@ -86,9 +86,9 @@ struct grid_edge {
 struct polycube_quad {
   index_t chart = -1;
   std::array<grid_point, 4> corners{};
-  std::array<index_t, 4> edges{};            ///< grid edge id of each side
-  std::array<bool, 4> edge_forward{};        ///< side k runs along +axis of its grid edge
-  std::array<index_t, 4> neighbors{};        ///< quad across each side (also around polycube edges)
+  std::array<index_t, 4> edges{};              ///< grid edge id of each side
+  std::array<bool, 4> edge_forward{};          ///< side k runs along +axis of its grid edge
+  std::array<index_t, 4> neighbors{};          ///< quad across each side (also around polycube edges)
   std::array<std::int8_t, 4> neighbor_side{};  ///< which side of that neighbour is the shared edge
 };
 
@@ -129,11 +129,11 @@ struct polycube_map {
 
 /// Options of build_polycube_map.
 struct polycube_options {
-  double tile_size = 0;        ///< tile edge length in mesh units; 0: use tiles_across
-  index_t tiles_across = 8;    ///< when tile_size is 0: tiles across the largest bounding-box extent
-  double compactness = 1.0;    ///< weight of the dihedral-weighted compactness term against fidelity
-  double opposite_penalty = 2; ///< compactness cost factor between opposite labels (<= 2 keeps it metric)
-  int max_expansion_cycles = 6;   ///< α-expansion sweeps over the six labels
+  double tile_size = 0;             ///< tile edge length in mesh units; 0: use tiles_across
+  index_t tiles_across = 8;         ///< when tile_size is 0: tiles across the largest bounding-box extent
+  double compactness = 1.0;         ///< weight of the dihedral-weighted compactness term against fidelity
+  double opposite_penalty = 2;      ///< compactness cost factor between opposite labels (<= 2 keeps it metric)
+  int max_expansion_cycles = 6;     ///< α-expansion sweeps over the six labels
   int max_repair_iterations = 200;  ///< relabelling steps of the validity repair
   int untangle_iterations = 300;    ///< smoothing rounds that unflip faces after the final solve
 };
@@ -163,8 +163,8 @@ status validate_polycube_input(const M& m, std::string_view what = "mesh") {
     if (!bad.ok()) return;
     const auto& h = hs[first];
     if (count == 1) {
-      bad = status::invalid_argument(detail::cat(what, ": is not closed: edge (", h.a, ", ", h.b, ") of face ", h.f,
-                                                 " is a boundary edge"));
+      bad = status::invalid_argument(
+          detail::cat(what, ": is not closed: edge (", h.a, ", ", h.b, ") of face ", h.f, " is a boundary edge"));
     } else if (count > 2) {
       bad = status::invalid_argument(
           detail::cat(what, ": is not manifold: edge (", h.a, ", ", h.b, ") is shared by ", count, " faces"));
@@ -223,7 +223,8 @@ result<double> polycube_tile_size(const M& m, const polycube_options& o) {
   const double largest = std::max({e.x, e.y, e.z});
   double t = o.tile_size;
   if (!(t >= 0) || !std::isfinite(t))
-    return status::invalid_argument(detail::cat("polycube_options::tile_size must be > 0 (or 0 to use tiles_across), got ", t));
+    return status::invalid_argument(
+        detail::cat("polycube_options::tile_size must be > 0 (or 0 to use tiles_across), got ", t));
   if (t == 0) {
     if (o.tiles_across < 1)
       return status::invalid_argument(detail::cat("polycube_options::tiles_across must be >= 1, got ", o.tiles_across));

@@ -40,11 +40,13 @@ class polycube_projector {
   /// [0, F); invalid_argument for non-finite weights. O(1).
   [[nodiscard]] result<polycube_point> forward(index_t face, vec3 bary) const {
     if (face < 0 || face >= map_->base.num_faces())
-      return status::out_of_range(detail::cat("polycube forward: face ", face, " outside [0, ", map_->base.num_faces(), ")"));
+      return status::out_of_range(
+          detail::cat("polycube forward: face ", face, " outside [0, ", map_->base.num_faces(), ")"));
     if (!is_finite(bary)) return status::invalid_argument("polycube forward: non-finite barycentric weights");
     const auto& f = map_->base.faces[static_cast<std::size_t>(face)];
     polycube_point out;
-    for (int k = 0; k < 3; ++k) out.position += bary[k] * map_->polycube[static_cast<std::size_t>(f[static_cast<std::size_t>(k)])];
+    for (int k = 0; k < 3; ++k)
+      out.position += bary[k] * map_->polycube[static_cast<std::size_t>(f[static_cast<std::size_t>(k)])];
     const auto c = static_cast<std::size_t>(map_->face_chart[static_cast<std::size_t>(face)]);
     locate(c, out);
     return out;
@@ -55,7 +57,8 @@ class polycube_projector {
   /// outside the layout, invalid_argument for (u, v) outside [0, 1]² or not finite. O(log F).
   [[nodiscard]] result<base_surface_point> inverse(index_t quad, double u, double v) const {
     if (quad < 0 || quad >= static_cast<index_t>(map_->layout.quads.size()))
-      return status::out_of_range(detail::cat("polycube inverse: quad ", quad, " outside [0, ", map_->layout.quads.size(), ")"));
+      return status::out_of_range(
+          detail::cat("polycube inverse: quad ", quad, " outside [0, ", map_->layout.quads.size(), ")"));
     if (!(u >= 0 && u <= 1 && v >= 0 && v <= 1))
       return status::invalid_argument(detail::cat("polycube inverse: (u, v) = (", u, ", ", v, ") outside [0, 1]²"));
     const auto& q = map_->layout.quads[static_cast<std::size_t>(quad)];
@@ -86,8 +89,10 @@ class polycube_projector {
     const auto ax = detail::quad_plane_axes(map_->charts[chart].label);
     const double x = p.position[ax[0]] / map_->tile_size - static_cast<double>(g.origin[0]);
     const double y = p.position[ax[1]] / map_->tile_size - static_cast<double>(g.origin[1]);
-    const auto i0 = std::clamp<std::int64_t>(static_cast<std::int64_t>(std::floor(x)), 0, std::max<std::int64_t>(0, g.size[0] - 1));
-    const auto j0 = std::clamp<std::int64_t>(static_cast<std::int64_t>(std::floor(y)), 0, std::max<std::int64_t>(0, g.size[1] - 1));
+    const auto i0 =
+        std::clamp<std::int64_t>(static_cast<std::int64_t>(std::floor(x)), 0, std::max<std::int64_t>(0, g.size[0] - 1));
+    const auto j0 =
+        std::clamp<std::int64_t>(static_cast<std::int64_t>(std::floor(y)), 0, std::max<std::int64_t>(0, g.size[1] - 1));
     // on a square's border the square itself may be outside the chart: take the nearest one inside
     double best = 1e300;
     for (std::int64_t j = std::max<std::int64_t>(0, j0 - 1); j <= std::min(g.size[1] - 1, j0 + 1); ++j)

@@ -23,7 +23,8 @@ namespace detail {
 /// the quad corners run counter-clockwise seen from the label direction.
 constexpr std::array<int, 2> quad_plane_axes(polycube_label l) noexcept {
   const int a = label_axis(l);
-  return label_sign(l) > 0 ? std::array<int, 2>{(a + 1) % 3, (a + 2) % 3} : std::array<int, 2>{(a + 2) % 3, (a + 1) % 3};
+  return label_sign(l) > 0 ? std::array<int, 2>{(a + 1) % 3, (a + 2) % 3}
+                           : std::array<int, 2>{(a + 2) % 3, (a + 1) % 3};
 }
 inline bool point_in_triangle_2d(vec2 p, vec2 a, vec2 b, vec2 c) noexcept {
   const double d = cross(b - a, c - a);
@@ -62,12 +63,13 @@ inline result<quad_layout> build_quad_layout(const polycube_map& map, std::int64
     auto& g = out.chart_grids[c];
     if (!(box[c][2] - box[c][0] < 1e15 && box[c][3] - box[c][1] < 1e15))
       return status::size_overflow(detail::cat("polycube: chart ", c, " spans too many tiles"));
-    g.origin = {static_cast<std::int64_t>(std::floor(box[c][0] + 1e-9)), static_cast<std::int64_t>(std::floor(box[c][1] + 1e-9))};
+    g.origin = {static_cast<std::int64_t>(std::floor(box[c][0] + 1e-9)),
+                static_cast<std::int64_t>(std::floor(box[c][1] + 1e-9))};
     g.size = {std::max<std::int64_t>(0, static_cast<std::int64_t>(std::ceil(box[c][2] - 1e-9)) - g.origin[0]),
               std::max<std::int64_t>(0, static_cast<std::int64_t>(std::ceil(box[c][3] - 1e-9)) - g.origin[1])};
     if (g.size[0] > max_cells || g.size[1] > max_cells || g.size[0] * g.size[1] > max_cells - cells)
-      return status::size_overflow(detail::cat("polycube: the charts' tile rectangles exceed ", max_cells,
-                                                " squares; use a larger tile size"));
+      return status::size_overflow(
+          detail::cat("polycube: the charts' tile rectangles exceed ", max_cells, " squares; use a larger tile size"));
     cells += g.size[0] * g.size[1];
     g.quad.assign(static_cast<std::size_t>(g.size[0] * g.size[1]), -1);
   }
@@ -79,7 +81,8 @@ inline result<quad_layout> build_quad_layout(const polycube_map& map, std::int64
     std::array<vec2, 3> q;
     for (int k = 0; k < 3; ++k) {
       const vec3& p = map.polycube[static_cast<std::size_t>(map.base.faces[f][static_cast<std::size_t>(k)])];
-      q[static_cast<std::size_t>(k)] = {p[ax[0]] / t - static_cast<double>(g.origin[0]), p[ax[1]] / t - static_cast<double>(g.origin[1])};
+      q[static_cast<std::size_t>(k)] = {p[ax[0]] / t - static_cast<double>(g.origin[0]),
+                                        p[ax[1]] / t - static_cast<double>(g.origin[1])};
     }
     chart_area[c] += 0.5 * std::abs(cross(q[1] - q[0], q[2] - q[0]));
     const double x0 = std::min({q[0].x, q[1].x, q[2].x}), x1 = std::max({q[0].x, q[1].x, q[2].x});
@@ -90,7 +93,8 @@ inline result<quad_layout> build_quad_layout(const polycube_map& map, std::int64
     const auto j1 = std::min<std::int64_t>(g.size[1] - 1, static_cast<std::int64_t>(std::ceil(y1 - 0.5)));
     for (std::int64_t j = j0; j <= j1; ++j)
       for (std::int64_t i = i0; i <= i1; ++i)
-        if (detail::point_in_triangle_2d({static_cast<double>(i) + 0.5, static_cast<double>(j) + 0.5}, q[0], q[1], q[2]))
+        if (detail::point_in_triangle_2d({static_cast<double>(i) + 0.5, static_cast<double>(j) + 0.5}, q[0], q[1],
+                                         q[2]))
           g.quad[static_cast<std::size_t>(j * g.size[0] + i)] = -2;
   }
   struct key {
@@ -125,7 +129,8 @@ inline result<quad_layout> build_quad_layout(const polycube_map& map, std::int64
           const grid_point& a = q.corners[static_cast<std::size_t>(k)];
           const grid_point& b = q.corners[static_cast<std::size_t>((k + 1) % 4)];
           const int axis = a[0] != b[0] ? 0 : a[1] != b[1] ? 1 : 2;
-          q.edge_forward[static_cast<std::size_t>(k)] = b[static_cast<std::size_t>(axis)] > a[static_cast<std::size_t>(axis)];
+          q.edge_forward[static_cast<std::size_t>(k)] =
+              b[static_cast<std::size_t>(axis)] > a[static_cast<std::size_t>(axis)];
           keys.push_back({axis, q.edge_forward[static_cast<std::size_t>(k)] ? a : b, slot, k});
         }
         out.quads.push_back(q);
@@ -143,8 +148,8 @@ inline result<quad_layout> build_quad_layout(const polycube_map& map, std::int64
     const auto id = static_cast<index_t>(out.edges.size());
     const auto& k0 = keys[i];
     if (j - i != 2)
-      return status::not_converged(detail::cat("polycube: grid edge at (", k0.origin[0], ", ", k0.origin[1], ", ", k0.origin[2],
-                                               ") along ", "XYZ"[k0.axis], " is shared by ", j - i,
+      return status::not_converged(detail::cat("polycube: grid edge at (", k0.origin[0], ", ", k0.origin[1], ", ",
+                                               k0.origin[2], ") along ", "XYZ"[k0.axis], " is shared by ", j - i,
                                                " quads, not 2: the polycube surface is not closed there"));
     const auto& k1 = keys[i + 1];
     auto& q0 = out.quads[static_cast<std::size_t>(k0.quad)];
@@ -154,7 +159,8 @@ inline result<quad_layout> build_quad_layout(const polycube_map& map, std::int64
                                                " traverse their shared grid edge in the same direction"));
     out.edges.push_back({k0.axis, k0.origin, {k0.quad, k1.quad}});
     q0.edges[static_cast<std::size_t>(k0.side)] = id, q1.edges[static_cast<std::size_t>(k1.side)] = id;
-    q0.neighbors[static_cast<std::size_t>(k0.side)] = k1.quad, q1.neighbors[static_cast<std::size_t>(k1.side)] = k0.quad;
+    q0.neighbors[static_cast<std::size_t>(k0.side)] = k1.quad,
+    q1.neighbors[static_cast<std::size_t>(k1.side)] = k0.quad;
     q0.neighbor_side[static_cast<std::size_t>(k0.side)] = static_cast<std::int8_t>(k1.side);
     q1.neighbor_side[static_cast<std::size_t>(k1.side)] = static_cast<std::int8_t>(k0.side);
     i = j;

@@ -36,11 +36,13 @@ result<polycube_map> assemble_polycube_map(tri_mesh base, const std::vector<std:
   polycube_map pm;
   pm.tile_size = t;
   pm.charts.resize(cs.chart_label.size());
-  for (std::size_t c = 0; c < pm.charts.size(); ++c) pm.charts[c].label = static_cast<polycube_label>(cs.chart_label[c]);
+  for (std::size_t c = 0; c < pm.charts.size(); ++c)
+    pm.charts[c].label = static_cast<polycube_label>(cs.chart_label[c]);
   for (index_t f = 0; f < nf; ++f) {
     auto& ch = pm.charts[static_cast<std::size_t>(cs.face_chart[static_cast<std::size_t>(f)])];
     if (ch.faces.empty())
-      ch.plane = std::llround(positions[static_cast<std::size_t>(base.faces[static_cast<std::size_t>(f)][0])][label_axis(ch.label)] / t);
+      ch.plane = std::llround(
+          positions[static_cast<std::size_t>(base.faces[static_cast<std::size_t>(f)][0])][label_axis(ch.label)] / t);
     ch.faces.push_back(f);
   }
   // flatness, then orientation (in parallel; first offender by smallest face)
@@ -51,7 +53,8 @@ result<polycube_map> assemble_polycube_map(tri_mesh base, const std::vector<std:
     const auto ax = quad_plane_axes(ch.label);
     std::array<vec2, 3> q;
     for (int k = 0; k < 3; ++k) {
-      const vec3& p = positions[static_cast<std::size_t>(base.faces[static_cast<std::size_t>(f)][static_cast<std::size_t>(k)])];
+      const vec3& p =
+          positions[static_cast<std::size_t>(base.faces[static_cast<std::size_t>(f)][static_cast<std::size_t>(k)])];
       if (!(std::abs(p[a] - static_cast<double>(ch.plane) * t) <= tol)) bad[static_cast<std::size_t>(f)] = 1;
       q[static_cast<std::size_t>(k)] = {p[ax[0]], p[ax[1]]};
     }
@@ -61,14 +64,20 @@ result<polycube_map> assemble_polycube_map(tri_mesh base, const std::vector<std:
   index_t flipped = 0, first_flip = -1;
   for (index_t f = 0; f < nf; ++f) {
     if (bad[static_cast<std::size_t>(f)] == 1)
-      return status::not_converged(cat("polycube: face ", f, " is not flat in the plane of its chart ",
-                                       cs.face_chart[static_cast<std::size_t>(f)], " (", "XYZ"[label_axis(pm.charts[static_cast<std::size_t>(cs.face_chart[static_cast<std::size_t>(f)])].label)],
-                                       " = ", static_cast<double>(pm.charts[static_cast<std::size_t>(cs.face_chart[static_cast<std::size_t>(f)])].plane) * t, ")"));
+      return status::not_converged(cat(
+          "polycube: face ", f, " is not flat in the plane of its chart ", cs.face_chart[static_cast<std::size_t>(f)],
+          " (",
+          "XYZ"[label_axis(pm.charts[static_cast<std::size_t>(cs.face_chart[static_cast<std::size_t>(f)])].label)],
+          " = ",
+          static_cast<double>(pm.charts[static_cast<std::size_t>(cs.face_chart[static_cast<std::size_t>(f)])].plane) *
+              t,
+          ")"));
     if (bad[static_cast<std::size_t>(f)] == 2 && flipped++ == 0) first_flip = f;
   }
   if (flipped > 0)
-    return status::not_converged(cat("polycube: ", flipped, " faces are flipped or collapsed in their chart plane (first: face ",
-                                     first_flip, " in chart ", cs.face_chart[static_cast<std::size_t>(first_flip)], ")"));
+    return status::not_converged(cat("polycube: ", flipped,
+                                     " faces are flipped or collapsed in their chart plane (first: face ", first_flip,
+                                     " in chart ", cs.face_chart[static_cast<std::size_t>(first_flip)], ")"));
   // corners on the grid
   std::map<grid_point, index_t> corner_at;
   for (index_t v = 0; v < nv; ++v) {
@@ -84,8 +93,9 @@ result<polycube_map> assemble_polycube_map(tri_mesh base, const std::vector<std:
         return status::not_converged(cat("polycube: corner at vertex ", v, " is off the tile grid along ", "XYZ"[a]));
     }
     if (!corner_at.emplace(c.grid, static_cast<index_t>(pm.corners.size())).second)
-      return status::not_converged(cat("polycube: corners at vertices ", pm.corners[static_cast<std::size_t>(corner_at[c.grid])].vertex,
-                                       " and ", v, " coincide: the polycube touches itself"));
+      return status::not_converged(cat("polycube: corners at vertices ",
+                                       pm.corners[static_cast<std::size_t>(corner_at[c.grid])].vertex, " and ", v,
+                                       " coincide: the polycube touches itself"));
     pm.corners.push_back(std::move(c));
   }
   // polycube edges: boundary mesh edges between two charts, grouped by chart pair and line, merged into
@@ -96,16 +106,20 @@ result<polycube_map> assemble_polycube_map(tri_mesh base, const std::vector<std:
       const index_t g = adj.neighbor[static_cast<std::size_t>(f)][static_cast<std::size_t>(k)];
       const index_t ca = cs.face_chart[static_cast<std::size_t>(f)], cb = cs.face_chart[static_cast<std::size_t>(g)];
       if (ca >= cb) continue;
-      const int aa = cs.chart_label[static_cast<std::size_t>(ca)] / 2, ab = cs.chart_label[static_cast<std::size_t>(cb)] / 2;
+      const int aa = cs.chart_label[static_cast<std::size_t>(ca)] / 2,
+                ab = cs.chart_label[static_cast<std::size_t>(cb)] / 2;
       const int axis = 3 - aa - ab;
-      const vec3& p = positions[static_cast<std::size_t>(base.faces[static_cast<std::size_t>(f)][static_cast<std::size_t>(k)])];
-      const vec3& q = positions[static_cast<std::size_t>(base.faces[static_cast<std::size_t>(f)][static_cast<std::size_t>((k + 1) % 3)])];
-      runs[{ca, cb, pm.charts[static_cast<std::size_t>(ca)].plane, pm.charts[static_cast<std::size_t>(cb)].plane}].push_back(
-          {std::min(p[axis], q[axis]) / t, std::max(p[axis], q[axis]) / t});
+      const vec3& p =
+          positions[static_cast<std::size_t>(base.faces[static_cast<std::size_t>(f)][static_cast<std::size_t>(k)])];
+      const vec3& q = positions[static_cast<std::size_t>(
+          base.faces[static_cast<std::size_t>(f)][static_cast<std::size_t>((k + 1) % 3)])];
+      runs[{ca, cb, pm.charts[static_cast<std::size_t>(ca)].plane, pm.charts[static_cast<std::size_t>(cb)].plane}]
+          .push_back({std::min(p[axis], q[axis]) / t, std::max(p[axis], q[axis]) / t});
     }
   for (auto& [key, iv] : runs) {
     const auto [ca, cb, pa, pb] = key;
-    const int aa = cs.chart_label[static_cast<std::size_t>(ca)] / 2, ab = cs.chart_label[static_cast<std::size_t>(cb)] / 2;
+    const int aa = cs.chart_label[static_cast<std::size_t>(ca)] / 2,
+              ab = cs.chart_label[static_cast<std::size_t>(cb)] / 2;
     const int axis = 3 - aa - ab;
     std::sort(iv.begin(), iv.end());
     for (std::size_t i = 0; i < iv.size();) {
@@ -121,7 +135,8 @@ result<polycube_map> assemble_polycube_map(tri_mesh base, const std::vector<std:
         g[static_cast<std::size_t>(axis)] = x;
         if (auto it = corner_at.find(g); it != corner_at.end()) on.push_back(it->second);
       }
-      if (on.size() < 2 || pm.corners[static_cast<std::size_t>(on.front())].grid[static_cast<std::size_t>(axis)] != std::llround(lo) ||
+      if (on.size() < 2 ||
+          pm.corners[static_cast<std::size_t>(on.front())].grid[static_cast<std::size_t>(axis)] != std::llround(lo) ||
           pm.corners[static_cast<std::size_t>(on.back())].grid[static_cast<std::size_t>(axis)] != std::llround(hi))
         return status::not_converged(cat("polycube: the boundary between charts ", ca, " and ", cb,
                                          " does not run from corner to corner (collapsed polycube edge)"));
@@ -150,7 +165,8 @@ result<polycube_map> assemble_polycube_map(tri_mesh base, const std::vector<std:
         });
     if (fa >= 0)
       return status::not_converged(cat("polycube: the surface intersects itself (faces ", fa, " and ", fb, ", charts ",
-                                       cs.face_chart[static_cast<std::size_t>(fa)], " and ", cs.face_chart[static_cast<std::size_t>(fb)], ")"));
+                                       cs.face_chart[static_cast<std::size_t>(fa)], " and ",
+                                       cs.face_chart[static_cast<std::size_t>(fb)], ")"));
   }
   pm.labels.resize(lab.size());
   for (std::size_t f = 0; f < lab.size(); ++f) pm.labels[f] = static_cast<polycube_label>(lab[f]);

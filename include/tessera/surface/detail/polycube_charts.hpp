@@ -106,14 +106,14 @@ struct polycube_label_problem {
         return status::not_converged(cat("polycube: chart ", chart, " is an island inside chart ", other,
                                          " (its boundary has no polycube corner)"));
       case few_corners:
-        return status::not_converged(cat("polycube: chart ", chart, " has ", other,
-                                         " corners; a polycube face needs at least 4"));
+        return status::not_converged(
+            cat("polycube: chart ", chart, " has ", other, " corners; a polycube face needs at least 4"));
       case pinned_face:
         return status::not_converged(cat("polycube: face ", vertex, " of chart ", chart,
                                          " has all three vertices on chart ", other, ": it would collapse"));
       case corner_axes:
-        return status::not_converged(cat("polycube: corner at vertex ", vertex,
-                                         " joins 3 charts but not 3 different axes (chart ", chart, ")"));
+        return status::not_converged(
+            cat("polycube: corner at vertex ", vertex, " joins 3 charts but not 3 different axes (chart ", chart, ")"));
     }
     return {};
   }
@@ -178,7 +178,8 @@ inline polycube_label_problem find_label_problem(const tri_mesh& m, const std::v
               {m.faces[f][static_cast<std::size_t>(k)], m.faces[f][static_cast<std::size_t>((k + 1) % 3)]});
       }
     for (std::size_t c = 0; c < nc; ++c) {
-      for (const auto& e : bedges[c]) parent[static_cast<std::size_t>(e[0])] = e[0], parent[static_cast<std::size_t>(e[1])] = e[1];
+      for (const auto& e : bedges[c])
+        parent[static_cast<std::size_t>(e[0])] = e[0], parent[static_cast<std::size_t>(e[1])] = e[1];
       for (const auto& e : bedges[c]) {
         const index_t a = find(e[0]), b = find(e[1]);
         if (a != b) parent[static_cast<std::size_t>(std::max(a, b))] = std::min(a, b);
@@ -200,7 +201,8 @@ inline polycube_label_problem find_label_problem(const tri_mesh& m, const std::v
     const auto& vc = cs.vertex_charts[v];
     if (vc.size() != 3) continue;
     std::array<int, 3> axes{};
-    for (int i = 0; i < 3; ++i) axes[static_cast<std::size_t>(i)] = cs.chart_label[static_cast<std::size_t>(vc[static_cast<std::size_t>(i)])] / 2;
+    for (int i = 0; i < 3; ++i)
+      axes[static_cast<std::size_t>(i)] = cs.chart_label[static_cast<std::size_t>(vc[static_cast<std::size_t>(i)])] / 2;
     std::sort(axes.begin(), axes.end());
     if (axes[0] == axes[1] || axes[1] == axes[2])
       return {polycube_label_problem::corner_axes, vc[0], -1, static_cast<index_t>(v)};
@@ -219,7 +221,8 @@ inline void relabel_chart(const polycube_chart_set& cs, index_t c, const std::ve
   for (index_t d : cs.chart_neighbors[cs_]) allowed[cs.chart_label[static_cast<std::size_t>(d)]] = true;
   std::array<bool, 6> forbidden{};
   forbidden[static_cast<std::size_t>(own)] = true;
-  for (index_t d : cs.chart_neighbors[cs_]) forbidden[static_cast<std::size_t>(cs.chart_label[static_cast<std::size_t>(d)] ^ 1)] = true;
+  for (index_t d : cs.chart_neighbors[cs_])
+    forbidden[static_cast<std::size_t>(cs.chart_label[static_cast<std::size_t>(d)] ^ 1)] = true;
   std::array<double, 6> cost{};
   for (std::size_t f = 0; f < lab.size(); ++f)
     if (cs.face_chart[f] == c)

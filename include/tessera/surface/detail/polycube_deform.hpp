@@ -132,7 +132,8 @@ result<std::vector<double>> polycube_axis_solve(const tri_mesh& m, const std::ve
   Eigen::SimplicialLDLT<sparse> solver(A);
   if (solver.info() != Eigen::Success) return status::internal_error("polycube: sparse factorisation failed");
   const vector sol = solver.solve(rhs);
-  if (solver.info() != Eigen::Success || !sol.allFinite()) return status::internal_error("polycube: sparse solve failed");
+  if (solver.info() != Eigen::Success || !sol.allFinite())
+    return status::internal_error("polycube: sparse solve failed");
   for (index_t k = 0; k < ncl; ++k)
     if (col[static_cast<std::size_t>(k)] >= 0) x[static_cast<std::size_t>(k)] = sol[col[static_cast<std::size_t>(k)]];
   return x;
@@ -177,8 +178,9 @@ inline std::vector<std::int64_t> quantize_planes(const std::vector<double>& p, c
   std::vector<index_t> order;
   for (std::size_t c = 0; c < nc; ++c)
     if (axis_of[c] == axis) order.push_back(static_cast<index_t>(c));
-  std::stable_sort(order.begin(), order.end(),
-                   [&](index_t a, index_t b) { return p[static_cast<std::size_t>(a)] < p[static_cast<std::size_t>(b)]; });
+  std::stable_sort(order.begin(), order.end(), [&](index_t a, index_t b) {
+    return p[static_cast<std::size_t>(a)] < p[static_cast<std::size_t>(b)];
+  });
   std::vector<std::int64_t> q(nc, 0);
   std::vector<bool> done(nc, false);
   for (index_t c : order) {
@@ -218,7 +220,9 @@ inline index_t untangle_polycube(const tri_mesh& m, std::vector<vec3>& pos, cons
   const auto nv = static_cast<std::size_t>(m.num_vertices());
   std::vector<std::vector<index_t>> ring(nv);
   for (const auto& f : m.faces)
-    for (int k = 0; k < 3; ++k) ring[static_cast<std::size_t>(f[static_cast<std::size_t>(k)])].push_back(f[static_cast<std::size_t>((k + 1) % 3)]);
+    for (int k = 0; k < 3; ++k)
+      ring[static_cast<std::size_t>(f[static_cast<std::size_t>(k)])].push_back(
+          f[static_cast<std::size_t>((k + 1) % 3)]);
   auto is_free = [&](std::size_t v, int a) {
     const auto& c = *cl[static_cast<std::size_t>(a)];
     return c.class_chart[static_cast<std::size_t>(c.vertex_class[v])] < 0;

@@ -27,8 +27,8 @@ namespace detail {
 /// Places edge and interior vertices (see the file comment); `pos` holds the planes' coordinates on
 /// entry (from polycube_axis_solve with fixed planes) and is updated in place.
 template <class Dep>
-status embed_polycube(const tri_mesh& m, const polycube_chart_set& cs,
-                      const std::array<polycube_axis_classes, 3>& cl, std::vector<vec3>& pos) {
+status embed_polycube(const tri_mesh& m, const polycube_chart_set& cs, const std::array<polycube_axis_classes, 3>& cl,
+                      std::vector<vec3>& pos) {
   using real = dependent_t<double, Dep>;
   using sparse = Eigen::SparseMatrix<real>;
   using vector = Eigen::Matrix<real, Eigen::Dynamic, 1>;
@@ -92,7 +92,8 @@ status embed_polycube(const tri_mesh& m, const polycube_chart_set& cs,
       if (!closed) continue;
       std::vector<double> s(path.size(), 0.0);
       for (std::size_t k = 1; k < path.size(); ++k)
-        s[k] = s[k - 1] + distance(m.position(static_cast<index_t>(path[k])), m.position(static_cast<index_t>(path[k - 1])));
+        s[k] = s[k - 1] +
+               distance(m.position(static_cast<index_t>(path[k])), m.position(static_cast<index_t>(path[k - 1])));
       const vec3 p0 = pos[path.front()], p1 = pos[path.back()];
       for (std::size_t k = 1; k + 1 < path.size(); ++k) {
         const std::size_t v = path[k];
@@ -128,9 +129,11 @@ status embed_polycube(const tri_mesh& m, const polycube_chart_set& cs,
     A.setFromTriplets(t.begin(), t.end());
     // symmetric only for symmetric weights: they are (the sum over both sides of each edge)
     Eigen::SimplicialLDLT<sparse> solver(A);
-    if (solver.info() != Eigen::Success) return status::internal_error("polycube: chart embedding factorisation failed");
+    if (solver.info() != Eigen::Success)
+      return status::internal_error("polycube: chart embedding factorisation failed");
     const vector x = solver.solve(rhs);
-    if (solver.info() != Eigen::Success || !x.allFinite()) return status::internal_error("polycube: chart embedding solve failed");
+    if (solver.info() != Eigen::Success || !x.allFinite())
+      return status::internal_error("polycube: chart embedding solve failed");
     for (std::size_t v = 0; v < nv; ++v)
       if (col[v] >= 0) pos[v][a] = x[col[v]];
   }

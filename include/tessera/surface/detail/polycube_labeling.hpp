@@ -84,7 +84,8 @@ inline double polycube_labeling_energy(const polycube_energy& en, const std::vec
     for (int k = 0; k < 3; ++k) {
       const index_t g = en.neighbor[f][static_cast<std::size_t>(k)];
       if (g > static_cast<index_t>(f))
-        e += en.smooth[f][static_cast<std::size_t>(k)] * polycube_pair_cost(en, lab[f], lab[static_cast<std::size_t>(g)]);
+        e += en.smooth[f][static_cast<std::size_t>(k)] *
+             polycube_pair_cost(en, lab[f], lab[static_cast<std::size_t>(g)]);
     }
   }
   return e;
