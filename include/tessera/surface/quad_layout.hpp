@@ -168,8 +168,8 @@ inline result<quad_layout> build_quad_layout(const polycube_map& map, std::int64
   return out;
 }
 
-/// The quad layout as a quad mesh: the polycube surface's squares, corners in mesh units (faces as two
-/// triangles each when `triangulate`, else returned as quads by the caller through `quads`).
+/// The quad layout as a triangle mesh: each quad as two triangles (corners 0-1-2 and 0-2-3) over its own
+/// four vertices, in mesh units, in quad order (face 2q and 2q + 1 are quad q). O(quads).
 inline tri_mesh quad_layout_mesh(const polycube_map& map) {
   tri_mesh m;
   for (const auto& q : map.layout.quads) {
