@@ -57,6 +57,13 @@
 // rendering
 #include "render/triangle_rasterizer.hpp"
 
+// surface (paper 000 §4: polycube maps)
+#include "surface/build_polycube_map.hpp"
+#include "surface/polycube_distortion.hpp"
+#include "surface/polycube_map.hpp"
+#include "surface/polycube_projection.hpp"
+#include "surface/quad_layout.hpp"
+
 // terrain (paper 003)
 #include "terrain/assign_scale_field.hpp"
 #include "terrain/build_exemplar_pyramid.hpp"

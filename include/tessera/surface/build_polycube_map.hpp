@@ -1,0 +1,179 @@
+// tessera/surface/build_polycube_map.hpp: automatic construction of the polycube map of a closed,
+// manifold, oriented triangle mesh of any genus (paper 000 §4 after Tarini et al. 2004), and the two
+// user-supplied paths: from a per-face labelling, or from a polycube-deformed copy of the mesh.
+//
+// Pipeline: (1) labelling by α-expansion graph cut (detail/polycube_labeling.hpp); (2) validity repair,
+// bounded (detail/polycube_charts.hpp); (3) deformation, one unknown per chart plane, least squares of
+// the edge vectors (detail/polycube_deform.hpp); (4) quantization of every chart plane to the tile grid,
+// never collapsing a polycube edge below one tile, then a final solve with the planes fixed;
+// (5) verification and the quad layout (detail/polycube_assemble.hpp, quad_layout.hpp).
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <vector>
+
+#include "../core/config.hpp"
+#include "../core/executor.hpp"
+#include "../core/mesh.hpp"
+#include "../core/mesh_topology.hpp"
+#include "../core/status.hpp"
+#include "../core/tri_mesh.hpp"
+#include "detail/polycube_assemble.hpp"
+#include "detail/polycube_charts.hpp"
+#include "detail/polycube_deform.hpp"
+#include "detail/polycube_embed.hpp"
+#include "detail/polycube_labeling.hpp"
+#include "polycube_map.hpp"
+
+TESSERA_NAMESPACE_BEGIN
+
+namespace detail {
+inline tri_mesh polycube_base_copy(const tri_mesh& m) {
+  tri_mesh b;
+  b.positions = m.positions;
+  b.faces = m.faces;
+  return b;
+}
+
+/// Steps (3) to (5) for a valid labelling.
+template <Executor E>
+result<polycube_map> deform_polycube(tri_mesh base, const std::vector<std::array<index_t, 3>>& nb,
+                                     const std::vector<std::uint8_t>& lab, double t, int untangle_iterations, E& exec) {
+  const auto cs = find_polycube_charts(base, nb, lab);
+  const std::size_t nc = cs.chart_label.size();
+  std::vector<int> axis_of(nc);
+  for (std::size_t c = 0; c < nc; ++c) axis_of[c] = cs.chart_label[c] / 2;
+  const auto partners = polycube_plane_partners(cs.vertex_charts, cs.chart_label);
+  std::vector<vec3> pos(base.positions.size());
+  std::array<polycube_axis_classes, 3> classes;
+  for (int a = 0; a < 3; ++a) {
+    auto cl_or = polycube_classes(base, cs.face_chart, cs.chart_label, a);
+    if (!cl_or) return cl_or.error();
+    classes[static_cast<std::size_t>(a)] = std::move(*cl_or);
+    const polycube_axis_classes* cl = &classes[static_cast<std::size_t>(a)];
+    const auto ncl = cl->class_chart.size();
+    auto x =
+        polycube_axis_solve<E>(base, nb, *cl, a, std::vector<double>(ncl, std::numeric_limits<double>::quiet_NaN()));
+    if (!x) return x.error();
+    std::vector<double> plane(nc, 0.0);
+    for (std::size_t k = 0; k < ncl; ++k)
+      if (cl->class_chart[k] >= 0) plane[static_cast<std::size_t>(cl->class_chart[k])] = (*x)[k];
+    const auto q = quantize_planes(plane, axis_of, partners, a, t);
+    std::vector<double> fixed(ncl, std::numeric_limits<double>::quiet_NaN());
+    for (std::size_t k = 0; k < ncl; ++k)
+      if (cl->class_chart[k] >= 0) fixed[k] = static_cast<double>(q[static_cast<std::size_t>(cl->class_chart[k])]) * t;
+    auto y = polycube_axis_solve<E>(base, nb, *cl, a, fixed);
+    if (!y) return y.error();
+    for (std::size_t v = 0; v < pos.size(); ++v) pos[v][a] = (*y)[static_cast<std::size_t>(cl->vertex_class[v])];
+  }
+  if (auto s = embed_polycube<E>(base, cs, classes, pos); !s) return s;
+  untangle_polycube(base, pos, cs.face_chart, cs.chart_label, {&classes[0], &classes[1], &classes[2]}, t,
+                    untangle_iterations);
+  return assemble_polycube_map(std::move(base), lab, std::move(pos), t, exec);
+}
+}  // namespace detail
+
+/// Builds the polycube map of `mesh` automatically (see the file comment). The map keeps the input's
+/// vertex and face order (no refinement: every face lies in one chart). Deterministic: the same output
+/// for every executor and thread count. Errors: invalid_argument from validate_polycube_input and
+/// polycube_tile_size; not_converged naming the chart, corner, face or edge when the repaired labelling
+/// or the deformed polycube is not valid (never a half-valid map); internal_error for a failed solve.
+/// Typical cost: O(F log F) plus six max-flows per α-expansion sweep and six sparse factorisations.
+template <Mesh M, Executor E = serial_executor>
+result<polycube_map> build_polycube_map(const M& mesh, const polycube_options& options = {}, E&& exec = E{}) {
+  if (auto s = validate_polycube_input(mesh); !s) return s;
+  auto t = polycube_tile_size(mesh, options);
+  if (!t) return t.error();
+  if (options.max_expansion_cycles < 0 || options.max_repair_iterations < 0 || options.untangle_iterations < 0 ||
+      !(options.compactness >= 0) || !(options.opposite_penalty >= 1 && options.opposite_penalty <= 2))
+    return status::invalid_argument(
+        detail::cat("polycube_options: max_expansion_cycles and max_repair_iterations must be >= 0, compactness >= 0 "
+                    "and opposite_penalty in [1, 2]; got ",
+                    options.max_expansion_cycles, ", ", options.max_repair_iterations, ", ", options.compactness, ", ",
+                    options.opposite_penalty));
+  auto m = to_tri_mesh(mesh);
+  if (!m) return m.error();
+  tri_mesh base = detail::polycube_base_copy(*m);
+  const auto adj = face_adjacency(base);
+  const auto en = detail::make_polycube_energy(base, adj.neighbor, options, exec);
+  auto lab = detail::alpha_expansion_labels(en, options.max_expansion_cycles);
+  if (!lab) return lab.error();
+  const auto problem = detail::repair_polycube_labels(base, adj.neighbor, en.data, *lab, options.max_repair_iterations);
+  if (problem.kind != detail::polycube_label_problem::none) return problem.to_status();
+  return detail::deform_polycube(std::move(base), adj.neighbor, *lab, *t, options.untangle_iterations, exec);
+}
+
+/// Builds the polycube map of `mesh` from a user labelling: one label per face (input face order),
+/// used as given (no graph cut, no repair). Errors: as build_polycube_map; invalid_argument when
+/// `labels` has the wrong length or a value outside 0..5 (naming the face); not_converged naming the
+/// chart when the labelling is not a valid polycube labelling.
+template <Mesh M, Executor E = serial_executor>
+result<polycube_map> build_polycube_map_from_labels(const M& mesh, std::span<const std::uint8_t> labels,
+                                                    const polycube_options& options = {}, E&& exec = E{}) {
+  if (auto s = validate_polycube_input(mesh); !s) return s;
+  auto t = polycube_tile_size(mesh, options);
+  if (!t) return t.error();
+  if (static_cast<index_t>(labels.size()) != num_faces(mesh))
+    return status::invalid_argument(
+        detail::cat("polycube labels: ", labels.size(), " labels for ", num_faces(mesh), " faces"));
+  for (std::size_t f = 0; f < labels.size(); ++f)
+    if (labels[f] > 5)
+      return status::invalid_argument(
+          detail::cat("polycube labels: face ", f, " has label ", int(labels[f]), ", outside 0..5"));
+  auto m = to_tri_mesh(mesh);
+  if (!m) return m.error();
+  tri_mesh base = detail::polycube_base_copy(*m);
+  const auto adj = face_adjacency(base);
+  std::vector<std::uint8_t> lab(labels.begin(), labels.end());
+  const auto cs = detail::find_polycube_charts(base, adj.neighbor, lab);
+  if (auto p = detail::find_label_problem(base, adj.neighbor, cs); p.kind != detail::polycube_label_problem::none)
+    return p.to_status();
+  return detail::deform_polycube(std::move(base), adj.neighbor, lab, *t, options.untangle_iterations, exec);
+}
+
+/// Builds the polycube map of `mesh` from `deformed`, a copy of it (same vertex count, same faces)
+/// whose vertices already lie on a polycube with chart planes on the grid of `tile_size`. Each face's
+/// label is read from its deformed normal. Errors: invalid_argument when the connectivity differs or a
+/// deformed face is not axis-aligned (naming the face), or tile_size is not positive and finite;
+/// not_converged when the deformed mesh is not a valid polycube (as build_polycube_map).
+template <Mesh M, Mesh D, Executor E = serial_executor>
+result<polycube_map> polycube_map_from_deformed(const M& mesh, const D& deformed, double tile_size, E&& exec = E{}) {
+  if (auto s = validate_polycube_input(mesh); !s) return s;
+  if (auto s = validate_mesh(deformed, "deformed mesh"); !s) return s;
+  if (!(tile_size > 0) || !std::isfinite(tile_size))
+    return status::invalid_argument(detail::cat("polycube: tile_size must be > 0 and finite, got ", tile_size));
+  if (num_vertices(deformed) != num_vertices(mesh) || num_faces(deformed) != num_faces(mesh))
+    return status::invalid_argument(detail::cat("deformed mesh: has ", num_vertices(deformed), " vertices and ",
+                                                num_faces(deformed), " faces, the mesh ", num_vertices(mesh), " and ",
+                                                num_faces(mesh)));
+  const index_t nf = num_faces(mesh);
+  std::vector<std::uint8_t> lab(static_cast<std::size_t>(nf));
+  for (index_t f = 0; f < nf; ++f) {
+    for (int k = 0; k < 3; ++k)
+      if (face_vertex(deformed, f, k) != face_vertex(mesh, f, k))
+        return status::invalid_argument(detail::cat("deformed mesh: face ", f, " has other vertices than in the mesh"));
+    const vec3 n = normalized(face_area_normal(deformed, f));
+    int best = -1;
+    for (int l = 0; l < 6; ++l)
+      if (dot(n, label_direction(static_cast<polycube_label>(l))) > 1 - 1e-9) best = l;
+    if (best < 0)
+      return status::invalid_argument(detail::cat("deformed mesh: face ", f, " is not axis-aligned (normal ", n.x, ", ",
+                                                  n.y, ", ", n.z, "): not a polycube"));
+    lab[static_cast<std::size_t>(f)] = static_cast<std::uint8_t>(best);
+  }
+  auto m = to_tri_mesh(mesh);
+  if (!m) return m.error();
+  auto d = to_tri_mesh(deformed);
+  if (!d) return d.error();
+  tri_mesh base = detail::polycube_base_copy(*m);
+  const auto adj = face_adjacency(base);
+  const auto cs = detail::find_polycube_charts(base, adj.neighbor, lab);
+  if (auto p = detail::find_label_problem(base, adj.neighbor, cs); p.kind != detail::polycube_label_problem::none)
+    return p.to_status();
+  return detail::assemble_polycube_map(std::move(base), lab, std::move(d->positions), tile_size, exec);
+}
+
+TESSERA_NAMESPACE_END

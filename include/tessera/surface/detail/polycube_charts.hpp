@@ -1,0 +1,279 @@
+// tessera/surface/detail/polycube_charts.hpp: charts of a face labelling (connected faces of one label),
+// their validity as polycube faces (no two adjacent charts with opposite labels, every chart of genus 0
+// and not an island inside one other chart, at least four corners per chart, valence-3 corners with
+// three different axes) and the bounded repair loop that relabels charts until the labelling is valid.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <numeric>
+#include <vector>
+
+#include "../../core/config.hpp"
+#include "../../core/status.hpp"
+#include "../../core/tri_mesh.hpp"
+#include "../polycube_map.hpp"
+
+TESSERA_NAMESPACE_BEGIN
+namespace detail {
+
+struct polycube_chart_set {
+  std::vector<index_t> face_chart;
+  std::vector<std::uint8_t> chart_label;
+  std::vector<index_t> chart_size;
+  std::vector<std::vector<index_t>> chart_neighbors;  ///< ascending
+  std::vector<std::vector<index_t>> vertex_charts;    ///< ascending, per vertex
+};
+
+/// Charts by flood fill over face adjacency, numbered in order of their smallest face.
+inline polycube_chart_set find_polycube_charts(const tri_mesh& m, const std::vector<std::array<index_t, 3>>& nb,
+                                               const std::vector<std::uint8_t>& lab) {
+  polycube_chart_set cs;
+  const auto nf = static_cast<std::size_t>(m.num_faces());
+  cs.face_chart.assign(nf, -1);
+  std::vector<index_t> stack;
+  for (std::size_t f0 = 0; f0 < nf; ++f0) {
+    if (cs.face_chart[f0] >= 0) continue;
+    const auto c = static_cast<index_t>(cs.chart_label.size());
+    cs.chart_label.push_back(lab[f0]);
+    cs.chart_size.push_back(0);
+    cs.face_chart[f0] = c;
+    stack.assign(1, static_cast<index_t>(f0));
+    while (!stack.empty()) {
+      const auto f = static_cast<std::size_t>(stack.back());
+      stack.pop_back();
+      ++cs.chart_size[static_cast<std::size_t>(c)];
+      for (index_t g : nb[f])
+        if (g >= 0 && cs.face_chart[static_cast<std::size_t>(g)] < 0 && lab[static_cast<std::size_t>(g)] == lab[f]) {
+          cs.face_chart[static_cast<std::size_t>(g)] = c;
+          stack.push_back(g);
+        }
+    }
+  }
+  cs.chart_neighbors.resize(cs.chart_label.size());
+  cs.vertex_charts.resize(static_cast<std::size_t>(m.num_vertices()));
+  for (std::size_t f = 0; f < nf; ++f) {
+    const index_t c = cs.face_chart[f];
+    for (int k = 0; k < 3; ++k) {
+      const index_t g = nb[f][static_cast<std::size_t>(k)];
+      if (g >= 0 && cs.face_chart[static_cast<std::size_t>(g)] != c)
+        cs.chart_neighbors[static_cast<std::size_t>(c)].push_back(cs.face_chart[static_cast<std::size_t>(g)]);
+      cs.vertex_charts[static_cast<std::size_t>(m.faces[f][static_cast<std::size_t>(k)])].push_back(c);
+    }
+  }
+  auto uniq = [](std::vector<index_t>& v) {
+    std::sort(v.begin(), v.end());
+    v.erase(std::unique(v.begin(), v.end()), v.end());
+  };
+  for (auto& v : cs.chart_neighbors) uniq(v);
+  for (auto& v : cs.vertex_charts) uniq(v);
+  return cs;
+}
+
+/// Euler characteristic V - E + F of each chart's faces.
+inline std::vector<index_t> chart_euler(const tri_mesh&, const std::vector<std::array<index_t, 3>>& nb,
+                                        const polycube_chart_set& cs) {
+  const std::size_t nc = cs.chart_label.size();
+  std::vector<index_t> chi(nc, 0);
+  for (std::size_t f = 0; f < cs.face_chart.size(); ++f) {
+    const auto c = static_cast<std::size_t>(cs.face_chart[f]);
+    chi[c] += 1;  // F
+    for (int k = 0; k < 3; ++k) {
+      const index_t g = nb[f][static_cast<std::size_t>(k)];
+      // an edge counts once: from its smaller face when both are in the chart
+      if (g < 0 || cs.face_chart[static_cast<std::size_t>(g)] != cs.face_chart[f] || g > static_cast<index_t>(f))
+        chi[c] -= 1;
+    }
+  }
+  for (std::size_t v = 0; v < cs.vertex_charts.size(); ++v)
+    for (index_t c : cs.vertex_charts[v]) chi[static_cast<std::size_t>(c)] += 1;
+  return chi;
+}
+
+/// What is wrong with a labelling (first problem found, in a fixed order), or kind none.
+struct polycube_label_problem {
+  enum kind_t { none, opposite, genus, island, few_corners, corner_axes, pinned_face } kind = none;
+  index_t chart = -1, other = -1, vertex = -1;
+  [[nodiscard]] status to_status() const {
+    switch (kind) {
+      case none: return {};
+      case opposite:
+        return status::not_converged(cat("polycube: charts ", chart, " and ", other,
+                                         " are adjacent with opposite labels (their planes would coincide)"));
+      case genus: return status::not_converged(cat("polycube: chart ", chart, " has a handle (genus > 0): not planar"));
+      case island:
+        return status::not_converged(cat("polycube: chart ", chart, " is an island inside chart ", other,
+                                         " (its boundary has no polycube corner)"));
+      case few_corners:
+        return status::not_converged(
+            cat("polycube: chart ", chart, " has ", other, " corners; a polycube face needs at least 4"));
+      case pinned_face:
+        return status::not_converged(cat("polycube: face ", vertex, " of chart ", chart,
+                                         " has all three vertices on chart ", other, ": it would collapse"));
+      case corner_axes:
+        return status::not_converged(
+            cat("polycube: corner at vertex ", vertex, " joins 3 charts but not 3 different axes (chart ", chart, ")"));
+    }
+    return {};
+  }
+};
+
+inline polycube_label_problem find_label_problem(const tri_mesh& m, const std::vector<std::array<index_t, 3>>& nb,
+                                                 const polycube_chart_set& cs) {
+  const std::size_t nc = cs.chart_label.size();
+  polycube_label_problem p;
+  // candidates are visited by ascending chart size, then index: repairs touch the smallest charts first
+  std::vector<index_t> order(nc);
+  std::iota(order.begin(), order.end(), index_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](index_t a, index_t b) {
+    return cs.chart_size[static_cast<std::size_t>(a)] < cs.chart_size[static_cast<std::size_t>(b)];
+  });
+  for (index_t c : order)
+    for (index_t d : cs.chart_neighbors[static_cast<std::size_t>(c)])
+      if ((cs.chart_label[static_cast<std::size_t>(c)] ^ 1) == cs.chart_label[static_cast<std::size_t>(d)])
+        return {polycube_label_problem::opposite, c, d, -1};
+  // a face whose three vertices all lie on one other chart would collapse onto that chart's plane
+  for (std::size_t f = 0; f < cs.face_chart.size(); ++f) {
+    const index_t c = cs.face_chart[f];
+    for (index_t d : cs.vertex_charts[static_cast<std::size_t>(m.faces[f][0])]) {
+      if (d == c) continue;
+      bool all = true;
+      for (int k = 1; k < 3 && all; ++k) {
+        const auto& vc = cs.vertex_charts[static_cast<std::size_t>(m.faces[f][static_cast<std::size_t>(k)])];
+        all = std::binary_search(vc.begin(), vc.end(), d);
+      }
+      if (all) return {polycube_label_problem::pinned_face, c, d, static_cast<index_t>(f)};
+    }
+  }
+  for (index_t c : order)
+    if (cs.chart_neighbors[static_cast<std::size_t>(c)].size() == 1 && nc > 1)
+      return {polycube_label_problem::island, c, cs.chart_neighbors[static_cast<std::size_t>(c)][0], -1};
+  const auto chi = chart_euler(m, nb, cs);
+  // boundary loops per chart are not counted directly: chi = 2 - 2g - b, and b >= 1, so chi > 1 never
+  // happens and g > 0 shows as chi <= 2 - 2 - b. A chart of genus 0 has chi = 2 - b, where b is at most
+  // the number of its boundary components; count those through its boundary vertices' loops below.
+  std::vector<index_t> corners(nc, 0), loops(nc, 0);
+  for (std::size_t v = 0; v < cs.vertex_charts.size(); ++v)
+    if (cs.vertex_charts[v].size() >= 3)
+      for (index_t c : cs.vertex_charts[v]) ++corners[static_cast<std::size_t>(c)];
+  // boundary loops: count boundary edges and boundary vertices per chart; on a chart whose boundary
+  // vertices are all visited once, b = number of cycles = components of the boundary graph
+  {
+    std::vector<index_t> parent(cs.vertex_charts.size());
+    std::iota(parent.begin(), parent.end(), index_t{0});
+    auto find = [&](index_t x) {
+      while (parent[static_cast<std::size_t>(x)] != x)
+        x = parent[static_cast<std::size_t>(x)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(x)])];
+      return x;
+    };
+    // per chart, union the boundary edge endpoints; loops = distinct roots among its boundary vertices.
+    // A vertex on several charts' boundaries would merge different charts' loops, so do it chart by chart.
+    std::vector<std::vector<std::array<index_t, 2>>> bedges(nc);
+    for (std::size_t f = 0; f < cs.face_chart.size(); ++f)
+      for (int k = 0; k < 3; ++k) {
+        const index_t g = nb[f][static_cast<std::size_t>(k)];
+        if (g >= 0 && cs.face_chart[static_cast<std::size_t>(g)] != cs.face_chart[f])
+          bedges[static_cast<std::size_t>(cs.face_chart[f])].push_back(
+              {m.faces[f][static_cast<std::size_t>(k)], m.faces[f][static_cast<std::size_t>((k + 1) % 3)]});
+      }
+    for (std::size_t c = 0; c < nc; ++c) {
+      for (const auto& e : bedges[c])
+        parent[static_cast<std::size_t>(e[0])] = e[0], parent[static_cast<std::size_t>(e[1])] = e[1];
+      for (const auto& e : bedges[c]) {
+        const index_t a = find(e[0]), b = find(e[1]);
+        if (a != b) parent[static_cast<std::size_t>(std::max(a, b))] = std::min(a, b);
+      }
+      std::vector<index_t> roots;
+      for (const auto& e : bedges[c]) roots.push_back(find(e[0]));
+      std::sort(roots.begin(), roots.end());
+      loops[c] = static_cast<index_t>(std::unique(roots.begin(), roots.end()) - roots.begin());
+    }
+  }
+  for (index_t c : order) {
+    const auto cs_ = static_cast<std::size_t>(c);
+    if (nc > 1 && chi[cs_] != 2 - loops[cs_]) return {polycube_label_problem::genus, c, -1, -1};
+  }
+  for (index_t c : order)
+    if (nc > 1 && corners[static_cast<std::size_t>(c)] < 4)
+      return {polycube_label_problem::few_corners, c, corners[static_cast<std::size_t>(c)], -1};
+  for (std::size_t v = 0; v < cs.vertex_charts.size(); ++v) {
+    const auto& vc = cs.vertex_charts[v];
+    if (vc.size() != 3) continue;
+    std::array<int, 3> axes{};
+    for (int i = 0; i < 3; ++i)
+      axes[static_cast<std::size_t>(i)] = cs.chart_label[static_cast<std::size_t>(vc[static_cast<std::size_t>(i)])] / 2;
+    std::sort(axes.begin(), axes.end());
+    if (axes[0] == axes[1] || axes[1] == axes[2])
+      return {polycube_label_problem::corner_axes, vc[0], -1, static_cast<index_t>(v)};
+  }
+  return p;
+}
+
+/// Relabels all faces of chart c to the label minimizing their summed fidelity cost among the labels
+/// of its neighbour charts that are neither its own nor opposite to any neighbour it would touch
+/// (ties: smallest label). Falls back to the best label of another axis.
+inline void relabel_chart(const polycube_chart_set& cs, index_t c, const std::vector<std::array<double, 6>>& data,
+                          std::vector<std::uint8_t>& lab, bool to_neighbor_only) {
+  const auto cs_ = static_cast<std::size_t>(c);
+  const int own = cs.chart_label[cs_];
+  std::array<bool, 6> allowed{};
+  for (index_t d : cs.chart_neighbors[cs_]) allowed[cs.chart_label[static_cast<std::size_t>(d)]] = true;
+  std::array<bool, 6> forbidden{};
+  forbidden[static_cast<std::size_t>(own)] = true;
+  for (index_t d : cs.chart_neighbors[cs_])
+    forbidden[static_cast<std::size_t>(cs.chart_label[static_cast<std::size_t>(d)] ^ 1)] = true;
+  std::array<double, 6> cost{};
+  for (std::size_t f = 0; f < lab.size(); ++f)
+    if (cs.face_chart[f] == c)
+      for (std::size_t l = 0; l < 6; ++l) cost[l] += data[f][l];
+  int best = -1;
+  for (int pass = 0; pass < 3 && best < 0; ++pass)
+    for (int l = 0; l < 6; ++l) {
+      const auto ls = static_cast<std::size_t>(l);
+      if (l == own) continue;
+      if (pass == 0 && (!allowed[ls] || forbidden[ls])) continue;
+      if (pass == 1 && (to_neighbor_only ? !allowed[ls] : forbidden[ls])) continue;
+      if (best < 0 || cost[ls] < cost[static_cast<std::size_t>(best)]) best = l;
+    }
+  for (std::size_t f = 0; f < lab.size(); ++f)
+    if (cs.face_chart[f] == c) lab[f] = static_cast<std::uint8_t>(best);
+}
+
+/// The repair loop: while a problem remains and fewer than max_iterations steps ran, relabel the
+/// chart it names (an island takes its surrounding chart's label). Returns the last problem (kind none
+/// when the labelling became valid).
+inline polycube_label_problem repair_polycube_labels(const tri_mesh& m, const std::vector<std::array<index_t, 3>>& nb,
+                                                     const std::vector<std::array<double, 6>>& data,
+                                                     std::vector<std::uint8_t>& lab, int max_iterations) {
+  for (int it = 0;; ++it) {
+    const auto cs = find_polycube_charts(m, nb, lab);
+    const auto p = find_label_problem(m, nb, cs);
+    if (p.kind == polycube_label_problem::none || it >= max_iterations) return p;
+    switch (p.kind) {
+      case polycube_label_problem::pinned_face: {
+        const auto dl = cs.chart_label[static_cast<std::size_t>(p.other)];
+        // take the other chart's label unless it is opposite to a neighbour of the face
+        bool ok = true;
+        for (index_t g : nb[static_cast<std::size_t>(p.vertex)])
+          if (g >= 0 && (lab[static_cast<std::size_t>(g)] ^ 1) == dl) ok = false;
+        if (ok) {
+          lab[static_cast<std::size_t>(p.vertex)] = dl;
+        } else {
+          return p;
+        }
+        break;
+      }
+      case polycube_label_problem::island:
+        for (std::size_t f = 0; f < lab.size(); ++f)
+          if (cs.face_chart[f] == p.chart) lab[f] = cs.chart_label[static_cast<std::size_t>(p.other)];
+        break;
+      case polycube_label_problem::opposite:
+      case polycube_label_problem::few_corners: relabel_chart(cs, p.chart, data, lab, true); break;
+      default: relabel_chart(cs, p.chart, data, lab, false); break;
+    }
+  }
+}
+
+}  // namespace detail
+TESSERA_NAMESPACE_END

@@ -1,0 +1,144 @@
+// tessera/surface/detail/polycube_embed.hpp: the final placement of a polycube once its chart planes are
+// on the tile grid. Corners are fixed by their three planes. The vertices of each polycube edge (the
+// boundary path between two corners) are spread along it by the arc length of the base mesh's path, so
+// they stay in order between the corners. The interior vertices of every chart then solve a Tutte-style
+// system (each free coordinate the weighted mean of its neighbours', clamped positive cotangent weights
+// of the base mesh, Floater 1997 / Tutte 1963), which is injective on convex charts.
+#pragma once
+
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "../../core/config.hpp"
+#include "../../core/status.hpp"
+#include "../../core/tri_mesh.hpp"
+#include "polycube_charts.hpp"
+#include "polycube_deform.hpp"
+
+TESSERA_NAMESPACE_BEGIN
+namespace detail {
+
+/// Places edge and interior vertices (see the file comment); `pos` holds the planes' coordinates on
+/// entry (from polycube_axis_solve with fixed planes) and is updated in place.
+template <class Dep>
+status embed_polycube(const tri_mesh& m, const polycube_chart_set& cs, const std::array<polycube_axis_classes, 3>& cl,
+                      std::vector<vec3>& pos) {
+  using real = dependent_t<double, Dep>;
+  using sparse = Eigen::SparseMatrix<real>;
+  using vector = Eigen::Matrix<real, Eigen::Dynamic, 1>;
+  const auto nv = static_cast<std::size_t>(m.num_vertices());
+  auto is_free = [&](std::size_t v, int a) {
+    const auto& c = cl[static_cast<std::size_t>(a)];
+    return c.class_chart[static_cast<std::size_t>(c.vertex_class[v])] < 0;
+  };
+  // edge weights: clamped cotangents of the base mesh, per directed neighbour list
+  std::vector<std::vector<std::pair<index_t, double>>> nbr(nv);
+  auto add = [&](index_t i, index_t j, double w) {
+    auto& l = nbr[static_cast<std::size_t>(i)];
+    for (auto& e : l)
+      if (e.first == j) {
+        e.second += w;
+        return;
+      }
+    l.push_back({j, w});
+  };
+  for (const auto& f : m.faces)
+    for (int k = 0; k < 3; ++k) {
+      const index_t o = f[static_cast<std::size_t>(k)], i = f[static_cast<std::size_t>((k + 1) % 3)],
+                    j = f[static_cast<std::size_t>((k + 2) % 3)];
+      const vec3 a = m.position(i) - m.position(o), b = m.position(j) - m.position(o);
+      const double s = norm(cross(a, b));
+      const double cot = s > 0 ? dot(a, b) / s : 0;
+      add(i, j, 0.5 * cot), add(j, i, 0.5 * cot);
+    }
+  for (auto& l : nbr)
+    for (auto& e : l) e.second = std::clamp(e.second, 1e-2, 1e2);
+  // 1) polycube edges: walk boundary paths between corners, spread by arc length
+  std::vector<std::uint8_t> placed(nv, 0);
+  for (std::size_t c = 0; c < nv; ++c) {
+    if (cs.vertex_charts[c].size() < 3) continue;
+    for (const auto& [w0, w_] : nbr[c]) {
+      (void)w_;
+      if (cs.vertex_charts[static_cast<std::size_t>(w0)].size() != 2 || placed[static_cast<std::size_t>(w0)]) continue;
+      const auto& pair = cs.vertex_charts[static_cast<std::size_t>(w0)];
+      auto on_pair = [&](std::size_t v) {
+        const auto& vc = cs.vertex_charts[v];
+        return std::binary_search(vc.begin(), vc.end(), pair[0]) && std::binary_search(vc.begin(), vc.end(), pair[1]);
+      };
+      if (!on_pair(c)) continue;
+      std::vector<std::size_t> path{c, static_cast<std::size_t>(w0)};
+      bool closed = false;
+      for (std::size_t guard = 0; guard < nv && !closed; ++guard) {
+        const std::size_t v = path.back(), prev = path[path.size() - 2];
+        std::size_t next = nv;
+        for (const auto& e : nbr[v]) {
+          const auto u = static_cast<std::size_t>(e.first);
+          if (u == prev || !on_pair(u)) continue;
+          if (cs.vertex_charts[u].size() == 2 && placed[u]) continue;
+          // the mesh edge (v, u) must separate the two charts: u and v both on the pair suffices here
+          next = u;
+          if (cs.vertex_charts[u].size() >= 3) break;  // prefer closing at a corner
+        }
+        if (next == nv) break;
+        path.push_back(next);
+        if (cs.vertex_charts[next].size() >= 3) closed = true;
+      }
+      if (!closed) continue;
+      std::vector<double> s(path.size(), 0.0);
+      for (std::size_t k = 1; k < path.size(); ++k)
+        s[k] = s[k - 1] +
+               distance(m.position(static_cast<index_t>(path[k])), m.position(static_cast<index_t>(path[k - 1])));
+      const vec3 p0 = pos[path.front()], p1 = pos[path.back()];
+      for (std::size_t k = 1; k + 1 < path.size(); ++k) {
+        const std::size_t v = path[k];
+        for (int a = 0; a < 3; ++a)
+          if (is_free(v, a)) pos[v][a] = p0[a] + (p1[a] - p0[a]) * (s[k] / s.back());
+        placed[v] = 1;
+      }
+    }
+  }
+  // 2) chart interiors: per axis, the free coordinates of interior vertices
+  for (int a = 0; a < 3; ++a) {
+    std::vector<int> col(nv, -1);
+    int n = 0;
+    for (std::size_t v = 0; v < nv; ++v)
+      if (cs.vertex_charts[v].size() == 1 && is_free(v, a)) col[v] = n++;
+    if (n == 0) continue;
+    std::vector<Eigen::Triplet<real>> t;
+    vector rhs = vector::Zero(n);
+    for (std::size_t v = 0; v < nv; ++v) {
+      if (col[v] < 0) continue;
+      double sum = 0;
+      for (const auto& [u, w] : nbr[v]) {
+        sum += w;
+        const int cu = col[static_cast<std::size_t>(u)];
+        if (cu >= 0)
+          t.emplace_back(col[v], cu, -w);
+        else
+          rhs[col[v]] += w * pos[static_cast<std::size_t>(u)][a];
+      }
+      t.emplace_back(col[v], col[v], sum);
+    }
+    sparse A(n, n);
+    A.setFromTriplets(t.begin(), t.end());
+    // symmetric only for symmetric weights: they are (the sum over both sides of each edge)
+    Eigen::SimplicialLDLT<sparse> solver(A);
+    if (solver.info() != Eigen::Success)
+      return status::internal_error("polycube: chart embedding factorisation failed");
+    const vector x = solver.solve(rhs);
+    if (solver.info() != Eigen::Success || !x.allFinite())
+      return status::internal_error("polycube: chart embedding solve failed");
+    for (std::size_t v = 0; v < nv; ++v)
+      if (col[v] >= 0) pos[v][a] = x[col[v]];
+  }
+  return {};
+}
+
+}  // namespace detail
+TESSERA_NAMESPACE_END

@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Real closed meshes for the polycube table of docs/surface.md: fetches Debian's libcgal-demo package
+# (CGAL 5.5's data directory; the meshes are not committed), extracts the closed meshes of genus 0-3
+# with 2k-80k faces listed below, and runs `tessera polycube --stats` on each at two tile counts.
+#   scripts/polycube_meshes.sh [BUILD_DIR (default build)] [OUT_DIR (default BUILD_DIR/polycube_meshes)]
+# Needs apt-get (run `apt-get update` once first) and a built `tessera` (target tessera_cli).
+set -euo pipefail
+build=${1:-build}
+out=${2:-$build/polycube_meshes}
+meshes="anchor_dense armadillo bear blobby bones bull camel couplingdown cow dino elephant elk fandisk femur hand
+handle homer knot1 rotor_small triceratops turbine"
+mkdir -p "$out"
+if [ ! -f "$out/.fetched" ]; then
+  tmp=$(mktemp -d)
+  (cd "$tmp" && apt-get download libcgal-demo >/dev/null)
+  dpkg -x "$tmp"/libcgal-demo_*.deb "$tmp/x"
+  files=""
+  for m in $meshes; do files="$files data/meshes/$m.off"; done
+  # shellcheck disable=SC2086
+  tar xzf "$tmp/x/usr/share/doc/libcgal-dev/data.tar.gz" -C "$tmp" $files
+  mv "$tmp"/data/meshes/*.off "$out/"
+  rm -rf "$tmp"
+  touch "$out/.fetched"
+fi
+for m in $meshes; do
+  for n in 8 16; do
+    printf '%s %s ' "$m" "$n"
+    "$build/bin/tessera" polycube --mesh "$out/$m.off" --out "$out/${m}_pc$n.obj" --tiles-across "$n" --threads 2 \
+      --stats 2>&1 | head -c 400 || true
+    echo
+  done
+done

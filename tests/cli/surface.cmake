@@ -1,0 +1,31 @@
+# CLI tests of the surface family: tessera polycube on small procedural meshes (tests/data/surface),
+# its outputs (deformed mesh, labels, quads, base) feeding a second run, and bad input (exit code 1
+# with the status message).
+set(_pc ${TESSERA_CLI_OUT}/surface)
+file(MAKE_DIRECTORY ${_pc})
+set(_pcdata ${PROJECT_SOURCE_DIR}/tests/data/surface)
+
+tessera_cli_test(NAME "cli: polycube torus"
+                 REGEX "\"polycube_ms\":[0-9.e+-]+,\"faces\":768,\"genus\":1,.*\"charts\":[1-9][0-9]*,\"corners\":[1-9][0-9]*,\"quads\":[1-9][0-9]*,\"flipped_faces\":0,\"area_distortion\":[0-9.e+-]+,\"angle_distortion\":[0-9.e+-]+,\"refined\":false,\"valid\":true"
+                 COMMAND polycube --mesh ${_pcdata}/torus.obj --out ${_pc}/torus_pc.obj --tiles-across 8 --threads 2 --stats)
+tessera_cli_test(NAME "cli: polycube L outputs" REGEX "wrote .*l_pc\\.obj \\(8 charts, 56 quads\\)"
+                 COMMAND polycube --mesh ${_pcdata}/l_shape.off --out ${_pc}/l_pc.obj --tile 0.5 --labels-out ${_pc}/l.labels
+                         --quads-out ${_pc}/l_quads.obj --base-out ${_pc}/l_base.obj --map-out ${_pc}/l.polycube)
+set_tests_properties("cli: polycube L outputs" PROPERTIES FIXTURES_SETUP pc_labels)
+tessera_cli_test(NAME "cli: polycube labels-in" REGEX "\"charts\":8,\"corners\":[0-9]+,\"quads\":56,.*\"valid\":true"
+                 COMMAND polycube --mesh ${_pcdata}/l_shape.off --labels-in ${_pc}/l.labels --out ${_pc}/l_pc2.obj --tile 0.5 --stats)
+set_tests_properties("cli: polycube labels-in" PROPERTIES FIXTURES_REQUIRED pc_labels)
+tessera_cli_test(NAME "cli: polycube labels of another mesh" CODE 1 REGEX "labels for 768 faces"
+                 COMMAND polycube --mesh ${_pcdata}/torus.obj --labels-in ${_pc}/l.labels --out ${_pc}/never.obj)
+set_tests_properties("cli: polycube labels of another mesh" PROPERTIES FIXTURES_REQUIRED pc_labels)
+
+tessera_cli_test(NAME "cli: polycube open mesh" CODE 1 REGEX "not closed"
+                 COMMAND polycube --mesh ${_pcdata}/open_cube.obj --out ${_pc}/never.obj)
+tessera_cli_test(NAME "cli: polycube tile too large" CODE 1 REGEX "larger than the mesh"
+                 COMMAND polycube --mesh ${_pcdata}/torus.obj --out ${_pc}/never.obj --tile 100)
+tessera_cli_test(NAME "cli: polycube negative tile" CODE 1 REGEX "--tile expects"
+                 COMMAND polycube --mesh ${_pcdata}/torus.obj --out ${_pc}/never.obj --tile -1)
+tessera_cli_test(NAME "cli: polycube tile and tiles-across" CODE 1 REGEX "not both"
+                 COMMAND polycube --mesh ${_pcdata}/torus.obj --out ${_pc}/never.obj --tile 1 --tiles-across 3)
+tessera_cli_test(NAME "cli: polycube missing mesh" CODE 1 REGEX "missing required option --mesh"
+                 COMMAND polycube --out ${_pc}/never.obj)
