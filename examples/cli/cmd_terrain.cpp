@@ -125,6 +125,17 @@ result<std::vector<tessera::terrain_camera>> read_camera_path(const std::string&
   return cams;
 }
 
+// The terrain: --mesh FILE, or a generated relief of --grid cells with height --height.
+result<tessera::terrain_mesh> load_terrain_mesh(const cli::arguments& args, long long grid, double relief,
+                                                tessera::thread_pool_executor& pool) {
+  result<tessera::tri_mesh> source =
+      args.has("--mesh")
+          ? tessera::read_mesh(args.str("--mesh"))
+          : tessera::make_terrain({.cells_x = grid, .cells_y = grid, .height = relief, .seed = args.seed()}, pool);
+  if (!source) return source.error();
+  return tessera::prepare_terrain_mesh(*source, args.has("--mesh") ? args.str("--mesh") : "terrain");
+}
+
 /// Faces visible in both buffers (same level) with bit-identical corner coordinates, over faces visible in both.
 double stable_fraction(const tessera::terrain_uv_buffer& a, const tessera::terrain_uv_buffer& b) {
   std::size_t common = 0, same = 0;
@@ -163,12 +174,7 @@ int run_terrain_frames(const cli::arguments& args) {
   tessera::thread_pool_executor pool(args.threads());
   auto exemplar = cli::load_image_source<std::uint8_t, 3>(args, "--exemplar", 256);
   if (!exemplar) return fail(exemplar.error());
-  result<tessera::tri_mesh> source =
-      args.has("--mesh")
-          ? tessera::read_mesh(args.str("--mesh"))
-          : tessera::make_terrain({.cells_x = *grid, .cells_y = *grid, .height = *relief, .seed = args.seed()}, pool);
-  if (!source) return fail(source.error());
-  auto mesh = tessera::prepare_terrain_mesh(*source, args.has("--mesh") ? args.str("--mesh") : "terrain");
+  auto mesh = load_terrain_mesh(args, *grid, *relief, pool);
   if (!mesh) return fail(mesh.error());
   const tessera::aabb bounds = tessera::bounding_box(*mesh);
   std::vector<tessera::terrain_camera> cams;
@@ -303,12 +309,7 @@ int run_terrain(const cli::arguments& args) {
   tessera::thread_pool_executor pool(args.threads());
   auto exemplar = cli::load_image_source<std::uint8_t, 3>(args, "--exemplar", 256);
   if (!exemplar) return fail(exemplar.error());
-  result<tessera::tri_mesh> source =
-      args.has("--mesh")
-          ? tessera::read_mesh(args.str("--mesh"))
-          : tessera::make_terrain({.cells_x = *grid, .cells_y = *grid, .height = *relief, .seed = args.seed()}, pool);
-  if (!source) return fail(source.error());
-  auto mesh = tessera::prepare_terrain_mesh(*source, args.has("--mesh") ? args.str("--mesh") : "terrain");
+  auto mesh = load_terrain_mesh(args, *grid, *relief, pool);
   if (!mesh) return fail(mesh.error());
   auto camera = make_cli_camera(args, tessera::bounding_box(*mesh), vp->first, vp->second);
   if (!camera) return fail(camera.error());

@@ -68,6 +68,17 @@ struct terrain_uv_buffer {
   std::vector<float> scale;
   std::vector<std::uint8_t> state;
   std::uint32_t mapping = 0;  ///< 0: screen-space (paper 003), 1: ground-anchored (perspective-correct uv)
+
+  /// Sizes the per-face arrays for `nf` faces, every face culled: NaN coordinates and offset,
+  /// level -1, scale 0, state 0.
+  void reset_faces(std::size_t nf) {
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    corner_uv.assign(nf, {nan, nan, nan, nan, nan, nan});
+    offset.assign(nf, {nan, nan});
+    level.assign(nf, -1);
+    scale.assign(nf, 0.0f);
+    state.assign(nf, 0);
+  }
 };
 
 /// Collects the engine-facing outputs of a synthesis (see terrain_uv_buffer). Errors
@@ -88,12 +99,7 @@ inline result<terrain_uv_buffer> export_corner_uvs(const terrain_mesh& mesh, con
   b.exemplar_height = syn.exemplar_height;
   b.levels = field.levels;
   b.min_scale = field.min_scale;
-  const float nan = std::numeric_limits<float>::quiet_NaN();
-  b.corner_uv.assign(nf, {nan, nan, nan, nan, nan, nan});
-  b.offset.assign(nf, {nan, nan});
-  b.level.assign(nf, -1);
-  b.scale.assign(nf, 0.0f);
-  b.state.assign(nf, 0);
+  b.reset_faces(nf);
   for (std::size_t i = 0; i < proj.visible.size(); ++i) {
     const std::int32_t f = proj.visible[i];
     if (!detail::is_visible_face(proj, f))

@@ -32,12 +32,7 @@ inline result<terrain_uv_buffer> export_session_uvs(const terrain_session& sessi
   b.levels = session.levels();
   b.min_scale = session.options().min_scale;
   b.mapping = 1;
-  const float nan = std::numeric_limits<float>::quiet_NaN();
-  b.corner_uv.assign(nf, {nan, nan, nan, nan, nan, nan});
-  b.offset.assign(nf, {nan, nan});
-  b.level.assign(nf, -1);
-  b.scale.assign(nf, 0.0f);
-  b.state.assign(nf, 0);
+  b.reset_faces(nf);
   for (const std::int32_t f : proj.visible) {
     const auto fi = static_cast<std::size_t>(f);
     b.corner_uv[fi] = session.corner_uv()[fi];

@@ -65,6 +65,31 @@ struct screen_projection {
   }
 };
 
+namespace detail {
+/// The last pass of a projection: `out.visible` (ascending) and `out.near_clipped` from `out.state`,
+/// given `count[b + 1]`, the number of visible faces in block b of `block` faces (count[0] = 0).
+/// Parallel over blocks through `exec`; the result does not depend on the executor.
+template <class E>
+void gather_visible_faces(screen_projection& out, std::vector<index_t>& count, index_t block, E& exec) {
+  const auto nf = static_cast<index_t>(out.state.size());
+  const auto chunks = static_cast<index_t>(count.size()) - 1;
+  for (index_t b = 0; b < chunks; ++b) count[static_cast<std::size_t>(b + 1)] += count[static_cast<std::size_t>(b)];
+  out.visible.resize(static_cast<std::size_t>(count[static_cast<std::size_t>(chunks)]));
+  std::vector<index_t> near_count(static_cast<std::size_t>(chunks), 0);
+  exec.parallel_for(0, chunks, [&](index_t b) {
+    index_t at = count[static_cast<std::size_t>(b)];
+    for (index_t f = b * block; f < std::min(nf, (b + 1) * block); ++f) {
+      const auto st = out.state[static_cast<std::size_t>(f)];
+      if (st == 0) continue;
+      out.visible[static_cast<std::size_t>(at++)] = static_cast<std::int32_t>(f);
+      if (st == static_cast<std::uint8_t>(face_visibility::near_clipped)) ++near_count[static_cast<std::size_t>(b)];
+    }
+  });
+  out.near_clipped = 0;
+  for (const index_t n : near_count) out.near_clipped += n;
+}
+}  // namespace detail
+
 struct project_options {
   /// Also cull faces whose front side (counter-clockwise corners) faces away from the eye. Off by
   /// default: meshes from elsewhere may be wound either way, and hidden faces are harmless.
@@ -207,20 +232,7 @@ status project_mesh(const terrain_mesh& mesh, const terrain_camera& camera, scre
       out.visible.clear();
       return detail::terrain_face_problem(mesh, f);
     }
-  for (index_t b = 0; b < chunks; ++b) count[static_cast<std::size_t>(b + 1)] += count[static_cast<std::size_t>(b)];
-  out.visible.resize(static_cast<std::size_t>(count[static_cast<std::size_t>(chunks)]));
-  std::vector<index_t> near_count(static_cast<std::size_t>(chunks), 0);
-  exec.parallel_for(0, chunks, [&](index_t b) {
-    index_t at = count[static_cast<std::size_t>(b)];
-    for (index_t f = b * block; f < std::min(nf, (b + 1) * block); ++f) {
-      const auto st = out.state[static_cast<std::size_t>(f)];
-      if (st == 0) continue;
-      out.visible[static_cast<std::size_t>(at++)] = static_cast<std::int32_t>(f);
-      if (st == static_cast<std::uint8_t>(face_visibility::near_clipped)) ++near_count[static_cast<std::size_t>(b)];
-    }
-  });
-  out.near_clipped = 0;
-  for (index_t n : near_count) out.near_clipped += n;
+  detail::gather_visible_faces(out, count, block, exec);
   return {};
 }
 

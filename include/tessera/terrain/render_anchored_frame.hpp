@@ -165,9 +165,7 @@ status render_anchored_frame(const terrain_mesh& mesh, const terrain_session& se
       for (std::size_t k = 0; k < static_cast<std::size_t>(C); ++k) dst[k] = c[k];
     }
   });
-  for (index_t y = 0; y < h; ++y)
-    for (index_t x = 0; x < w; ++x) image_traits<O>::write(out, x, y, convert_pixel<pixel_t<O>>(frame.read(x, y)));
-  return {};
+  return copy_image(frame, out);
 }
 
 TESSERA_NAMESPACE_END

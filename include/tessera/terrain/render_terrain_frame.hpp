@@ -179,8 +179,7 @@ status render_terrain_frame(const terrain_mesh& mesh, const screen_projection& p
     }
   });
   if (!opts.progress.report(0.95, "render terrain frame")) return status::cancelled();
-  for (index_t y = 0; y < h; ++y)
-    for (index_t x = 0; x < w; ++x) image_traits<O>::write(out, x, y, convert_pixel<pixel_t<O>>(frame.read(x, y)));
+  if (status s = copy_image(frame, out); !s) return s;
   return opts.progress.report(1.0, "render terrain frame") ? status{} : status::cancelled();
 }
 

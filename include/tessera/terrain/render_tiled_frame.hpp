@@ -180,9 +180,7 @@ status render_tiled_frame(const terrain_mesh& mesh, const screen_projection& pro
       for (std::size_t k = 0; k < static_cast<std::size_t>(C); ++k) dst[k] = c[k];
     }
   });
-  for (index_t y = 0; y < h; ++y)
-    for (index_t x = 0; x < w; ++x) image_traits<O>::write(out, x, y, convert_pixel<pixel_t<O>>(frame.read(x, y)));
-  return {};
+  return copy_image(frame, out);
 }
 
 TESSERA_NAMESPACE_END

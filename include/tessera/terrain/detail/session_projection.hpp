@@ -87,20 +87,7 @@ status project_for_session(const terrain_mesh& mesh, const terrain_camera& camer
       return status::out_of_range(detail::cat("terrain_mesh face ", f, " names a vertex outside the mesh's ", nv,
                                               " vertices (the mesh changed since the session was made)"));
     }
-  for (index_t b = 0; b < chunks; ++b) count[static_cast<std::size_t>(b + 1)] += count[static_cast<std::size_t>(b)];
-  out.visible.resize(static_cast<std::size_t>(count[static_cast<std::size_t>(chunks)]));
-  std::vector<index_t> near_count(static_cast<std::size_t>(chunks), 0);
-  exec.parallel_for(0, chunks, [&](index_t b) {
-    index_t at = count[static_cast<std::size_t>(b)];
-    for (index_t f = b * block; f < std::min(nf, (b + 1) * block); ++f) {
-      const auto st = out.state[static_cast<std::size_t>(f)];
-      if (st == 0) continue;
-      out.visible[static_cast<std::size_t>(at++)] = static_cast<std::int32_t>(f);
-      if (st == static_cast<std::uint8_t>(face_visibility::near_clipped)) ++near_count[static_cast<std::size_t>(b)];
-    }
-  });
-  out.near_clipped = 0;
-  for (const index_t n : near_count) out.near_clipped += n;
+  gather_visible_faces(out, count, block, exec);
   return {};
 }
 
