@@ -116,6 +116,18 @@ demo_terrain() {
     --out "$out/grass.png" --tiled-out "$out/grass_tiled.png" --scale-out "$out/scale_field.png" --stats
   run "$TESSERA" terrain --exemplar rock --grid 128 --camera oblique --viewport 960x540 \
     --out "$out/rock.png" --tiled-out "$out/rock_tiled.png" --stats
+  step "terrain: a ground-anchored fly-through (texture fixed to the ground, incremental frames), one line per frame"
+  run "$TESSERA" terrain --exemplar sand --grid 128 --anchor ground --viewport 480x270 \
+    --path "$TESSERA_ROOT/docs/images/terrain/anchored_flythrough_path.txt" --frames-out "$out/flythrough" --stats
+}
+
+demo_surface() {
+  local out=$OUT/surface
+  mkdir -p "$out"
+  step "surface: a polycube map of a torus (8 tiles across), its quad layout, previews"
+  run "$TESSERA" polycube --mesh "$TESSERA_ROOT/tests/data/surface/torus.obj" --out "$out/torus_polycube.obj" \
+    --tiles-across 8 --quads-out "$out/torus_quads.obj" --stats
+  run "$TESSERA" render "$out/torus_polycube.obj" --out "$out/torus_polycube.png"
 }
 
 # ---- geometric textures (paper 000) ---------------------------------------------------------------------
@@ -131,7 +143,7 @@ demo_geometry() {
   run "$TESSERA" render "$out/plane.obj" --out "$out/plane.png" --grid 6.4
 }
 
-DEMO_BLOCKS=(foundation patch wang fabric terrain geometry)
+DEMO_BLOCKS=(foundation patch wang fabric terrain geometry surface)
 for block in "${DEMO_BLOCKS[@]}"; do
   "demo_$block"
 done
