@@ -23,6 +23,7 @@
 #include <tessera/core/executor.hpp>
 #include <tessera/core/status.hpp>
 #include <tessera/core/vec.hpp>
+#include <tessera/io/files.hpp>
 
 namespace cli {
 

@@ -97,8 +97,8 @@ int run_convert(const cli::arguments& args) {
     return cli::fail(args, status::invalid_argument("expects IN and OUT files (see tessera convert --help)"));
   const std::string& in = args.positional()[0];
   const std::string& out = args.positional()[1];
-  const bool in_png = tessera::detail::file_extension(in) == "png",
-             out_png = tessera::detail::file_extension(out) == "png";
+  const bool in_png = tessera::file_extension(in) == "png",
+             out_png = tessera::file_extension(out) == "png";
   if (in_png && out_png) return convert_image(args, in, out);
   if (tessera::is_mesh_path(in) && tessera::is_mesh_path(out)) return convert_mesh(args, in, out);
   if (in_png != out_png && (in_png || tessera::is_mesh_path(in)) && (out_png || tessera::is_mesh_path(out)))

@@ -35,7 +35,7 @@ int build(const cli::arguments& args) {
   if (!ex) return cli::fail(args, ex.error());
   for (const double c : *colors)
     if (!(c >= 0 && c <= max_wang_colors) || c != std::floor(c))
-      return cli::fail(args, status::invalid_argument(detail::cat("--colors expects two integers NH,NV in [1, ",
+      return cli::fail(args, status::invalid_argument(cat("--colors expects two integers NH,NV in [1, ",
                                                                   max_wang_colors, "], got ", c)));
   geometric_wang_options o;
   o.horizontal_colors = static_cast<int>((*colors)[0]);

@@ -103,7 +103,7 @@ int run_info(const cli::arguments& args) {
   if (args.positional().size() != 1)
     return cli::fail(args, tessera::status::invalid_argument("expects exactly one FILE (see tessera info --help)"));
   const std::string& path = args.positional()[0];
-  if (tessera::detail::file_extension(path) == "png") return info_image(args, path);
+  if (tessera::file_extension(path) == "png") return info_image(args, path);
   if (tessera::is_mesh_path(path)) return info_mesh(args, path);
   return cli::fail(args,
                    tessera::status::unsupported(path + ": unknown file type (expected .png, .obj, .off or .ply)"));

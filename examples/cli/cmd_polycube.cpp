@@ -77,7 +77,7 @@ int run(const cli::arguments& args) {
   if (args.has("--labels-out"))
     if (auto s = write_polycube_labels(args.str("--labels-out"), r->labels); !s) return cli::fail(args, s);
   if (args.has("--quads-out"))
-    if (auto s = detail::write_file(args.str("--quads-out"), quad_obj(*r)); !s) return cli::fail(args, s);
+    if (auto s = write_file(args.str("--quads-out"), quad_obj(*r)); !s) return cli::fail(args, s);
   if (args.has("--map-out"))
     if (auto s = save_polycube_map(args.str("--map-out"), *r); !s) return cli::fail(args, s);
   if (args.stats()) {

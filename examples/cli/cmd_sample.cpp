@@ -23,7 +23,7 @@ int run_sample(const cli::arguments& args) {
   if (!kind) return cli::fail(args, kind.error());
   auto out = args.required("--out");
   if (!out) return cli::fail(args, out.error());
-  if (tessera::detail::file_extension(*out) != "png")
+  if (tessera::file_extension(*out) != "png")
     return cli::fail(args, status::invalid_argument("--out must name a .png file, got '" + *out + "'"));
   std::pair<tessera::index_t, tessera::index_t> size{128, 128};
   if (args.has("--size")) {

@@ -83,7 +83,7 @@ constexpr long long max_grid = 4096;
 /// starting with # skipped); errors name the file, the line and the problem.
 result<std::vector<tessera::terrain_camera>> read_camera_path(const std::string& path, const tessera::aabb& bounds,
                                                               index_t w, index_t h) {
-  auto text = tessera::detail::read_file(path);
+  auto text = tessera::read_file(path);
   if (!text) return text.error();
   std::vector<tessera::terrain_camera> cams;
   std::istringstream in(*text);

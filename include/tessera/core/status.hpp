@@ -186,13 +186,20 @@ template <class T>
 requires std::is_enum_v<T>
 void append_to(std::string& out, T v) { append_to(out, static_cast<std::underlying_type_t<T>>(v)); }
 
-/// Concatenates strings and numbers into a message: cat("width must be > 0, got ", w).
+}  // namespace detail
+
+/// Concatenates strings, characters, booleans, integers, floating-point values (9 significant
+/// digits) and enums (their underlying value) into one message:
+/// `cat("width must be > 0, got ", w)`. What the library's error messages are built with; public so
+/// that tools built on tessera word their own messages the same way.
 template <class... Args>
 std::string cat(const Args&... args) {
   std::string out;
-  (append_to(out, args), ...);
+  (detail::append_to(out, args), ...);
   return out;
 }
+namespace detail {
+using tessera::cat;  // the library's own spelling, detail::cat, stays valid
 }  // namespace detail
 
 /// Checks that an enum option holds one of its enumerators, numbered 0 to names.size() - 1 in

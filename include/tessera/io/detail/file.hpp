@@ -18,42 +18,14 @@
 
 #include "../../core/config.hpp"
 #include "../../core/status.hpp"
+#include "../files.hpp"
 
 TESSERA_NAMESPACE_BEGIN
 namespace detail {
 
-/// Reads a whole file into memory. io_error naming the file when it cannot be opened or read.
-inline result<std::string> read_file(const std::string& path) {
-  errno = 0;
-  FILE* f = std::fopen(path.c_str(), "rb");
-  if (f == nullptr)
-    return status::io_error(
-        cat(path, ": cannot open file (", errno != 0 ? std::strerror(errno) : "unknown error", ")"));
-  std::string data;
-  char buf[1 << 16];
-  for (;;) {
-    const std::size_t n = std::fread(buf, 1, sizeof buf, f);
-    data.append(buf, n);
-    if (n < sizeof buf) break;
-  }
-  const bool failed = std::ferror(f) != 0;
-  std::fclose(f);
-  if (failed) return status::io_error(cat(path, ": read error (is it a directory?)"));
-  return data;
-}
-
-/// Writes `data` to a file, replacing it. io_error naming the file on failure.
-inline status write_file(const std::string& path, std::string_view data) {
-  errno = 0;
-  FILE* f = std::fopen(path.c_str(), "wb");
-  if (f == nullptr)
-    return status::io_error(
-        cat(path, ": cannot open for writing (", errno != 0 ? std::strerror(errno) : "unknown error", ")"));
-  // an empty view may hold a null pointer, which fwrite must not receive even for 0 bytes
-  const bool ok = data.empty() || std::fwrite(data.data(), 1, data.size(), f) == data.size();
-  if (std::fclose(f) != 0 || !ok) return status::io_error(cat(path, ": write failed (disk full?)"));
-  return {};
-}
+using tessera::file_extension;  // public in io/files.hpp; the readers' own spelling stays
+using tessera::read_file;
+using tessera::write_file;
 
 /// Splits text into lines, numbering them from 1. Accepts LF, CRLF and lone CR endings.
 class line_scanner {
@@ -172,17 +144,6 @@ inline status parse_error_at_line(std::string_view path, index_t line, std::stri
 /// "PATH, byte N: message" as a parse_error.
 inline status parse_error_at_byte(std::string_view path, std::size_t offset, std::string_view message) {
   return status::parse_error(cat(path, ", byte ", offset, ": ", message));
-}
-
-/// Lower-case file extension without the dot ("Mesh.OBJ" -> "obj"; "" when there is none).
-inline std::string file_extension(std::string_view path) {
-  const std::size_t slash = path.find_last_of("/\\");
-  const std::size_t dot = path.find_last_of('.');
-  if (dot == std::string_view::npos || (slash != std::string_view::npos && dot < slash)) return {};
-  std::string ext(path.substr(dot + 1));
-  for (char& c : ext)
-    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
-  return ext;
 }
 
 }  // namespace detail
