@@ -6,7 +6,7 @@
 #include <string>
 
 #include <tessera/geometry/check_geometric_texture.hpp>
-#include <tessera/geometry/geometric_tile_files.hpp>
+#include <tessera/io/geometric_tiles.hpp>
 #include <tessera/geometry/geometric_wang_tiles.hpp>
 #include <tessera/geometry/mesh_exemplars.hpp>
 #include <tessera/geometry/tile_geometric_plane.hpp>

@@ -4,7 +4,7 @@
 #include <string>
 
 #include <tessera/geometry/check_geometric_texture.hpp>
-#include <tessera/geometry/geometric_tile_files.hpp>
+#include <tessera/io/geometric_tiles.hpp>
 #include <tessera/geometry/geometric_wang_tiles.hpp>
 #include <tessera/geometry/tile_geometric_plane.hpp>
 #include <tessera/io/mesh_file.hpp>

@@ -1,7 +1,6 @@
 // tessera/tessera.hpp: umbrella header. Includes the core vocabulary and every algorithm; optional
-// parts (io/, adapters/) are included separately since they need extra libraries, and so is
-// geometry/geometric_tile_files.hpp (files on disk, like io/). A structural test checks that every
-// other public header is listed here.
+// parts (io/, adapters/) are included separately since they need extra libraries or touch files.
+// A structural test checks that every other public header is listed here.
 // Docs and examples include the specific header instead, which compiles faster.
 #pragma once
 
@@ -81,7 +80,7 @@
 #include "terrain/terrain_camera.hpp"
 #include "terrain/terrain_session.hpp"
 
-// geometric textures (paper 000 §2-3); tile-set files are in geometry/geometric_tile_files.hpp
+// geometric textures (paper 000 §2-3); tile-set files are in io/geometric_tiles.hpp
 #include "geometry/bvh.hpp"
 #include "geometry/check_geometric_texture.hpp"
 #include "geometry/constrained_mesh_quilt.hpp"

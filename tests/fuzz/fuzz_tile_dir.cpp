@@ -2,7 +2,7 @@
 // followed by a line "--tile--" and the bytes of one tile file, which is stored as tile_0.png and
 // as tile_0.obj; then load_wang_tiles (image tiles) and load_geometric_tile_set read the directory.
 // The directory is private to the process (under $TMPDIR); nothing outside it may be read.
-#include <tessera/geometry/geometric_tile_files.hpp>
+#include <tessera/io/geometric_tiles.hpp>
 #include <tessera/io/wang_tiles.hpp>
 
 #include <unistd.h>

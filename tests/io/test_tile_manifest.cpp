@@ -1,6 +1,6 @@
 #include <tessera/io/tile_manifest.hpp>
 
-#include <tessera/geometry/geometric_tile_files.hpp>
+#include <tessera/io/geometric_tiles.hpp>
 #include <tessera/io/obj.hpp>
 #include <tessera/io/png.hpp>
 #include <tessera/io/wang_tiles.hpp>

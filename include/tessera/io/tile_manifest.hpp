@@ -1,6 +1,6 @@
 // tessera/io/tile_manifest.hpp: the `tiles.json` manifest of a Wang tile directory, shared by
-// image tiles (`tessera wang build`) and geometric tiles: the format, and reading and writing
-// DIR/tiles.json. No extra library needed.
+// image tiles (io/wang_tiles.hpp, `tessera wang build`) and geometric tiles (io/geometric_tiles.hpp):
+// the format, its one parser, and reading and writing DIR/tiles.json. No extra library needed.
 //
 //   {
 //     "tile_size": 64, "horizontal_colors": 2, "vertical_colors": 2,
@@ -10,7 +10,10 @@
 //     ]
 //   }
 //
-// Any other numeric member, at the top level or inside a tile, is kept as an extra field (the
+// "tile_size" is the side of a tile: a whole number of pixels for image tiles, any positive number
+// (world units, written shortest round-trip) for geometric tiles. Geometric manifests of older
+// versions wrote a rounded integer "tile_size" and the exact size as "tile_world_size", which then
+// wins. Any other numeric member, at the top level or inside a tile, is kept as an extra field (the
 // geometry side adds e.g. "height"). Reading is tolerant (comments, trailing commas, members in any
 // order); every error names the file and what is wrong.
 #pragma once
@@ -50,9 +53,16 @@ struct tile_manifest_entry {
   friend bool operator==(const tile_manifest_entry&, const tile_manifest_entry&) = default;
 };
 
+/// What the tiles of a directory are: the kind decides what "tile_size" may be (it is not written).
+enum class tile_set_kind {
+  image,     ///< PNG tiles: tile_size is a whole number of pixels
+  geometric  ///< OBJ tiles: tile_size is any positive, finite world size
+};
+
 /// The contents of `tiles.json`.
 struct tile_manifest {
-  index_t tile_size = 0;
+  tile_set_kind kind = tile_set_kind::image;
+  double tile_size = 0;  ///< pixels (a whole number) for image tiles, world units for geometric ones
   int horizontal_colors = 0;
   int vertical_colors = 0;
   std::vector<tile_manifest_entry> tiles;  ///< sorted by index after reading
@@ -106,13 +116,16 @@ inline const char* manifest_fields_problem(const std::vector<manifest_field>& fi
 }
 }  // namespace detail
 
-/// Checks a manifest's consistency: positive tile size, valid colour counts, at least one tile,
+/// Checks a manifest's consistency: positive, finite tile size (a whole number for image tiles),
+/// valid colour counts, at least one tile,
 /// indices forming 0..n-1, edge colours in range, tile files that stay inside the directory
 /// (relative, no "..", no backslash, no NUL or other control character), extra fields with unique,
 /// non-reserved names and finite values. `name` (the file) starts every message. O(n log n).
 inline status validate_tile_manifest(const tile_manifest& m, std::string_view name = "tiles.json") {
   auto bad = [&](auto... what) { return status::invalid_argument(detail::cat(name, ": ", what...)); };
-  if (m.tile_size <= 0) return bad("tile_size must be positive, got ", m.tile_size);
+  if (!(m.tile_size > 0) || !std::isfinite(m.tile_size)) return bad("tile_size must be positive, got ", m.tile_size);
+  if (m.kind == tile_set_kind::image && (m.tile_size != std::floor(m.tile_size) || m.tile_size > 9.0e15))
+    return bad("tile_size of image tiles must be a whole number of pixels, got ", m.tile_size);
   if (auto s = validate_color_counts(m.horizontal_colors, m.vertical_colors); !s) return bad(s.message());
   if (m.tiles.empty()) return bad("\"tiles\" is empty");
   std::string field;
@@ -135,10 +148,14 @@ inline status validate_tile_manifest(const tile_manifest& m, std::string_view na
   return {};
 }
 
-/// Parses manifest text. `name` (usually the file path) starts every message. Errors: malformed
-/// JSON (with line and column), missing or mistyped required members, non-integer counts, and
-/// everything validate_tile_manifest checks. Tiles come back sorted by index. O(text size).
-inline result<tile_manifest> parse_tile_manifest(std::string_view text, std::string_view name = "tiles.json") {
+/// Parses manifest text of a tile set of the given kind (the one parser of tiles.json). `name`
+/// (usually the file path) starts every message. For geometric tiles, "tile_size" may be any
+/// number and an older file's "tile_world_size" wins over it. Errors: malformed JSON (with line and
+/// column), missing or mistyped required members, non-integer counts (and a non-integer tile_size
+/// of image tiles), and everything validate_tile_manifest checks. Tiles come back sorted by index.
+/// O(text size).
+inline result<tile_manifest> parse_tile_manifest(std::string_view text, std::string_view name = "tiles.json",
+                                                 tile_set_kind kind = tile_set_kind::image) {
   auto json = detail::parse_json(text, name);
   if (!json) return json.error();
   auto bad = [&](auto... what) { return status::parse_error(detail::cat(name, ": ", what...)); };
@@ -162,15 +179,28 @@ inline result<tile_manifest> parse_tile_manifest(std::string_view text, std::str
     return out;
   };
   tile_manifest m;
+  m.kind = kind;
+  if (kind == tile_set_kind::image) {
+    index_t pixels = 0;
+    if (auto s = integer(*json, "tile_size", pixels, ""); !s) return s;
+    m.tile_size = static_cast<double>(pixels);
+  } else {
+    const detail::json_value* size = json->find("tile_size");
+    if (size == nullptr || !size->is_number()) return bad("missing \"tile_size\" number");
+    m.tile_size = size->number;
+    const detail::json_value* world = json->find("tile_world_size");  // older versions' exact size
+    if (world != nullptr && world->is_number()) m.tile_size = world->number;
+  }
   index_t nh = 0, nv = 0;
-  if (auto s = integer(*json, "tile_size", m.tile_size, ""); !s) return s;
   if (auto s = integer(*json, "horizontal_colors", nh, ""); !s) return s;
   if (auto s = integer(*json, "vertical_colors", nv, ""); !s) return s;
   if (nh < 1 || nh > max_wang_colors || nv < 1 || nv > max_wang_colors)
     return bad("colour counts must be in [1, ", max_wang_colors, "], got ", nh, " x ", nv);
   m.horizontal_colors = static_cast<int>(nh);
   m.vertical_colors = static_cast<int>(nv);
-  m.extra = extras(*json, {"tile_size", "horizontal_colors", "vertical_colors"});
+  m.extra = kind == tile_set_kind::image
+                ? extras(*json, {"tile_size", "horizontal_colors", "vertical_colors"})
+                : extras(*json, {"tile_size", "horizontal_colors", "vertical_colors", "tile_world_size"});
   const detail::json_value* tiles = json->find("tiles");
   if (tiles == nullptr || !tiles->is_array()) return bad("missing \"tiles\" array");
   for (std::size_t i = 0; i < tiles->array.size(); ++i) {
@@ -204,7 +234,8 @@ inline result<tile_manifest> parse_tile_manifest(std::string_view text, std::str
 /// The manifest as JSON text, one tile per line (what write_tile_manifest stores).
 inline std::string format_tile_manifest(const tile_manifest& m) {
   std::string out = "{\n";
-  out += detail::cat("  \"tile_size\": ", m.tile_size, ",\n  \"horizontal_colors\": ", m.horizontal_colors,
+  out += detail::cat("  \"tile_size\": ", detail::json_number(m.tile_size),
+                     ",\n  \"horizontal_colors\": ", m.horizontal_colors,
                      ",\n  \"vertical_colors\": ", m.vertical_colors, ",\n");
   for (const auto& f : m.extra)
     out += detail::cat("  ", detail::json_quote(f.name), ": ", detail::json_number(f.value), ",\n");
@@ -260,14 +291,14 @@ inline status write_tile_manifest_text(const std::string& dir, std::string_view 
 }
 }  // namespace detail
 
-/// Reads and validates DIR/tiles.json and checks that every listed tile file exists. Errors:
-/// io_error naming DIR/tiles.json or the first missing tile file; parse_error / invalid_argument
-/// from parse_tile_manifest. Thread-safe (reads only).
-inline result<tile_manifest> read_tile_manifest(const std::string& dir) {
+/// Reads and validates DIR/tiles.json of a tile set of the given kind and checks that every listed
+/// tile file exists. Errors: io_error naming DIR/tiles.json or the first missing tile file;
+/// parse_error / invalid_argument from parse_tile_manifest. Thread-safe (reads only).
+inline result<tile_manifest> read_tile_manifest(const std::string& dir, tile_set_kind kind = tile_set_kind::image) {
   auto text = detail::read_tile_manifest_text(dir);
   if (!text) return text.error();
   const std::string path = tile_manifest_path(dir);
-  auto m = parse_tile_manifest(*text, path);
+  auto m = parse_tile_manifest(*text, path, kind);
   if (!m) return m.error();
   for (const auto& t : m->tiles)
     if (auto file = detail::existing_tile_file(dir, t, path); !file) return file.error();

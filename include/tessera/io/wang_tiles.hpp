@@ -26,7 +26,7 @@ template <Channel T, int C>
   std::filesystem::create_directories(dir, ec);
   if (ec) return status::io_error(detail::cat(dir, ": cannot create the tile directory (", ec.message(), ")"));
   tile_manifest m;
-  m.tile_size = set.tile_size();
+  m.tile_size = static_cast<double>(set.tile_size());
   m.horizontal_colors = set.edges().horizontal_colors();
   m.vertical_colors = set.edges().vertical_colors();
   m.extra = std::move(extra);
@@ -57,12 +57,13 @@ template <Channel T, int C>
     const std::string path = (std::filesystem::path(dir) / t.file).string();
     auto img = read_png<T, C>(path);
     if (!img) return img.error();
-    if (img->width() != m->tile_size || img->height() != m->tile_size)
+    const auto size = static_cast<index_t>(m->tile_size);  // a whole number: kind image
+    if (img->width() != size || img->height() != size)
       return status::invalid_argument(detail::cat(path, " is ", img->width(), " x ", img->height(), " but ",
-                                                  tile_manifest_path(dir), " says tile_size ", m->tile_size));
+                                                  tile_manifest_path(dir), " says tile_size ", size));
     tiles.push_back(std::move(*img));
   }
-  return wang_tile_set<T, C>::create(std::move(*edges), m->tile_size, tiles);
+  return wang_tile_set<T, C>::create(std::move(*edges), static_cast<index_t>(m->tile_size), tiles);
 }
 
 TESSERA_NAMESPACE_END

@@ -5,7 +5,7 @@
 
 #include <tessera/io/polycube_file.hpp>
 
-#include "shapes.hpp"
+#include "../surface/shapes.hpp"
 
 using namespace tessera;
 
