@@ -4,7 +4,7 @@
 
 #include <tessera/core/format.hpp>
 #include <tessera/core/image_buffer.hpp>
-#include <tessera/io/detail/file.hpp>
+#include <tessera/io/files.hpp>
 #include <tessera/io/mesh_file.hpp>
 #include <tessera/io/png.hpp>
 
@@ -97,8 +97,7 @@ int run_convert(const cli::arguments& args) {
     return cli::fail(args, status::invalid_argument("expects IN and OUT files (see tessera convert --help)"));
   const std::string& in = args.positional()[0];
   const std::string& out = args.positional()[1];
-  const bool in_png = tessera::file_extension(in) == "png",
-             out_png = tessera::file_extension(out) == "png";
+  const bool in_png = tessera::file_extension(in) == "png", out_png = tessera::file_extension(out) == "png";
   if (in_png && out_png) return convert_image(args, in, out);
   if (tessera::is_mesh_path(in) && tessera::is_mesh_path(out)) return convert_mesh(args, in, out);
   if (in_png != out_png && (in_png || tessera::is_mesh_path(in)) && (out_png || tessera::is_mesh_path(out)))

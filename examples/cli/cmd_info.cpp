@@ -4,7 +4,7 @@
 
 #include <tessera/core/mesh_topology.hpp>
 #include <tessera/core/tri_mesh.hpp>
-#include <tessera/io/detail/file.hpp>
+#include <tessera/io/files.hpp>
 #include <tessera/io/mesh_file.hpp>
 #include <tessera/io/png.hpp>
 

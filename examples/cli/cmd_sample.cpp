@@ -3,7 +3,7 @@
 #include <string>
 
 #include <tessera/image/exemplars.hpp>
-#include <tessera/io/detail/file.hpp>
+#include <tessera/io/files.hpp>
 #include <tessera/io/png.hpp>
 
 #include "cli.hpp"

@@ -55,6 +55,7 @@
 
 // rendering
 #include "render/triangle_rasterizer.hpp"
+#include "render/render_mesh_preview.hpp"
 
 // surface (paper 000 §4: polycube maps)
 #include "surface/build_polycube_map.hpp"

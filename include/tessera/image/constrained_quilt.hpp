@@ -29,7 +29,7 @@
 #include "../core/image_checks.hpp"
 #include "../core/random.hpp"
 #include "../core/status.hpp"
-#include "../detail/quilt_kernel.hpp"
+#include "detail/quilt_kernel.hpp"
 #include "quilt.hpp"
 
 TESSERA_NAMESPACE_BEGIN

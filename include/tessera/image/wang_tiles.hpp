@@ -36,9 +36,9 @@
 #include "../core/progress.hpp"
 #include "../core/random.hpp"
 #include "../core/status.hpp"
-#include "../detail/quilt_kernel.hpp"
+#include "detail/quilt_kernel.hpp"
 #include "quilt.hpp"
-#include "../detail/wang_edge_samples.hpp"
+#include "detail/wang_edge_samples.hpp"
 #include "../tiling/complete_tile_set.hpp"
 #include "../tiling/tile_set_edges.hpp"
 

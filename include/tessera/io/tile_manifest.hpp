@@ -30,7 +30,7 @@
 
 #include "../core/config.hpp"
 #include "../core/status.hpp"
-#include "../detail/json.hpp"
+#include "detail/json.hpp"
 #include "../tiling/complete_tile_set.hpp"
 #include "../tiling/tile_set_edges.hpp"
 #include "detail/file.hpp"

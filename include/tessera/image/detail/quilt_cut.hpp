@@ -1,4 +1,4 @@
-// tessera/detail/quilt_cut.hpp: minimum-error boundary cuts of image quilting (Efros & Freeman
+// tessera/image/detail/quilt_cut.hpp: minimum-error boundary cuts of image quilting (Efros & Freeman
 // 2001 §2.1: dynamic programming on the overlap error surface), used by detail/quilt_kernel.hpp.
 // Internal.
 //
@@ -16,8 +16,8 @@
 #include <limits>
 #include <vector>
 
-#include "../core/config.hpp"
-#include "../core/tile_coloring.hpp"
+#include "../../core/config.hpp"
+#include "../../core/tile_coloring.hpp"
 
 TESSERA_NAMESPACE_BEGIN
 namespace detail {

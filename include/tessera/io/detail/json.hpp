@@ -1,4 +1,4 @@
-// tessera/detail/json.hpp: a small, tolerant JSON reader and writer for tessera's manifests
+// tessera/io/detail/json.hpp: a small, tolerant JSON reader and writer for tessera's manifests
 // (io/tile_manifest.hpp). Internal; no stability promise.
 //
 // Reads standard JSON and also tolerates what hand-edited files contain: trailing commas, // and
@@ -17,8 +17,8 @@
 #include <utility>
 #include <vector>
 
-#include "../core/config.hpp"
-#include "../core/status.hpp"
+#include "../../core/config.hpp"
+#include "../../core/status.hpp"
 
 TESSERA_NAMESPACE_BEGIN
 namespace detail {

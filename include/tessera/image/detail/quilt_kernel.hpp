@@ -1,4 +1,4 @@
-// tessera/detail/quilt_kernel.hpp: the image-quilting engine behind image/quilt.hpp,
+// tessera/image/detail/quilt_kernel.hpp: the image-quilting engine behind image/quilt.hpp,
 // image/constrained_quilt.hpp and image/wang_tiles.hpp (Efros & Freeman 2001). Internal.
 //
 // A canvas holds pixels of (T, C) and a state per pixel: empty (to synthesize), filled (synthesized,
@@ -16,14 +16,14 @@
 #include <limits>
 #include <vector>
 
-#include "../core/config.hpp"
-#include "../core/executor.hpp"
-#include "../core/image.hpp"
-#include "../core/image_buffer.hpp"
-#include "../core/progress.hpp"
-#include "../core/random.hpp"
-#include "../core/status.hpp"
-#include "../core/tile_coloring.hpp"
+#include "../../core/config.hpp"
+#include "../../core/executor.hpp"
+#include "../../core/image.hpp"
+#include "../../core/image_buffer.hpp"
+#include "../../core/progress.hpp"
+#include "../../core/random.hpp"
+#include "../../core/status.hpp"
+#include "../../core/tile_coloring.hpp"
 #include "quilt_cut.hpp"
 
 TESSERA_NAMESPACE_BEGIN

@@ -1,4 +1,4 @@
-// tessera/detail/wang_edge_samples.hpp: the corner sample, the edge samples and the frame of the
+// tessera/image/detail/wang_edge_samples.hpp: the corner sample, the edge samples and the frame of the
 // tiles of an image Wang tile set (image/wang_tiles.hpp). Internal.
 //
 // Cohen et al. take one exemplar strip per edge colour; where two strips meet at a tile corner the
@@ -21,12 +21,12 @@
 #include <limits>
 #include <vector>
 
-#include "../core/config.hpp"
-#include "../core/executor.hpp"
-#include "../core/image_buffer.hpp"
-#include "../core/random.hpp"
-#include "../core/status.hpp"
-#include "../tiling/complete_tile_set.hpp"
+#include "../../core/config.hpp"
+#include "../../core/executor.hpp"
+#include "../../core/image_buffer.hpp"
+#include "../../core/random.hpp"
+#include "../../core/status.hpp"
+#include "../../tiling/complete_tile_set.hpp"
 #include "quilt_kernel.hpp"
 
 TESSERA_NAMESPACE_BEGIN
