@@ -92,5 +92,6 @@
 #include "geometry/mesh_elements.hpp"
 #include "geometry/mesh_exemplars.hpp"
 #include "geometry/mesh_quilt.hpp"
+#include "geometry/mesh_quilt_types.hpp"
 #include "geometry/quilt_exemplar.hpp"
 #include "geometry/tile_geometric_plane.hpp"

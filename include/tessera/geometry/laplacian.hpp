@@ -31,8 +31,8 @@ enum class laplacian_weighting {
 /// The Laplacian matrix L (V x V) with (L x)_i = sum_j w_ij (x_i - x_j), so rows sum to zero.
 /// Input must be valid (validate_mesh); O(F) time.
 template <Mesh M>
-Eigen::SparseMatrix<detail::dependent_t<double, M>> laplacian_matrix(
-    const M& m, laplacian_weighting weighting = laplacian_weighting::cotangent) {
+Eigen::SparseMatrix<double> laplacian_matrix(const M& m,
+                                             laplacian_weighting weighting = laplacian_weighting::cotangent) {
   using sparse = Eigen::SparseMatrix<detail::dependent_t<double, M>>;  // see laplacian_deform
   const index_t nv = num_vertices(m);
   std::vector<Eigen::Triplet<typename sparse::Scalar>> t;

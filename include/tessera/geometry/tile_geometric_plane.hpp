@@ -32,8 +32,7 @@ struct tile_border_layout {
 
 /// Finds the border vertices of a tile covering [0, tile_size]^2 (exact coordinates 0 or tile_size).
 /// Errors: a vertex outside the tile, or on two sides (at a corner: elements must not cross corners).
-template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
-result<tile_border_layout> tile_border_vertices(const tri_mesh& tile, double tile_size) {
+inline result<tile_border_layout> tile_border_vertices(const tri_mesh& tile, double tile_size) {
   tile_border_layout l;
   l.side_of.assign(tile.positions.size(), -1);
   for (std::size_t v = 0; v < tile.positions.size(); ++v) {
@@ -66,8 +65,7 @@ result<tile_border_layout> tile_border_vertices(const tri_mesh& tile, double til
 /// (after Cohen et al.) rules out. An element may touch two opposite sides (a thread across the
 /// tile). A vertex counts as touching a side when its coordinate equals the side exactly (border
 /// vertices are cut exactly on the line). O(V + F).
-template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
-index_t tile_corner_crossings(const tri_mesh& tile, double tile_size) {
+inline index_t tile_corner_crossings(const tri_mesh& tile, double tile_size) {
   const mesh_components comp = connected_components(tile);
   std::vector<unsigned> sides(static_cast<std::size_t>(comp.count), 0);
   for (std::size_t f = 0; f < tile.faces.size(); ++f)
@@ -88,8 +86,7 @@ index_t tile_corner_crossings(const tri_mesh& tile, double tile_size) {
 }
 
 /// tile_corner_crossings summed over the tiles of a set.
-template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
-index_t tile_set_corner_crossings(const geometric_tile_set& set) {
+inline index_t tile_set_corner_crossings(const geometric_tile_set& set) {
   index_t n = 0;
   for (const auto& t : set.tiles) n += tile_corner_crossings(t, set.tile_size);
   return n;
@@ -100,8 +97,7 @@ index_t tile_set_corner_crossings(const geometric_tile_set& set) {
 /// colour): same number of vertices, positions within `tolerance` along the side and in height, and
 /// the same edges along the side. 0 means any valid tiling is continuous. Errors: those of
 /// tile_border_vertices, a set whose sizes disagree.
-template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
-result<index_t> tile_set_border_mismatch(const geometric_tile_set& set, double tolerance = 1e-6) {
+inline result<index_t> tile_set_border_mismatch(const geometric_tile_set& set, double tolerance = 1e-6) {
   if (set.tiles.size() != set.edges.size())
     return status::invalid_argument("tile set: tiles and edges differ in count");
   const double w = set.tile_size;

@@ -42,10 +42,10 @@ enum class face_visibility : std::uint8_t {
 
 /// The mesh as the camera sees it. Per-vertex and per-face arrays are indexed like the mesh.
 struct screen_projection {
-  index_t width = 0, height = 0;  ///< viewport in pixels
-  clip_depth depth = glm_clip_depth;
-  vec3 eye;                                  ///< eye position in world space
-  std::vector<std::array<double, 4>> clip;   ///< per vertex: projection * view * position
+  index_t width = 0, height = 0;                       ///< viewport in pixels
+  clip_depth depth = clip_depth::negative_one_to_one;  ///< the camera's
+  vec3 eye;                                            ///< eye position in world space
+  std::vector<std::array<double, 4>> clip;             ///< per vertex: projection * view * position
   std::vector<vec2> screen;                  ///< per vertex: pixel position (y down); NaN behind the near plane
   std::vector<std::uint8_t> state;           ///< per face: a face_visibility
   std::vector<std::array<float, 4>> bounds;  ///< per face: visible screen box x0, y0, x1, y1 (clipped to the viewport)

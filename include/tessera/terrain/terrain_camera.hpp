@@ -21,11 +21,15 @@
 
 TESSERA_NAMESPACE_BEGIN
 
-/// The clip-space depth convention GLM's projection functions produce in this translation unit.
+/// The clip-space depth convention GLM's projection functions produce in the translation unit that
+/// reads it (GLM_FORCE_DEPTH_ZERO_TO_ONE or not): set `terrain_camera::depth = glm_clip_depth` in
+/// code built with that macro. Deliberately not `inline`: it has internal linkage, one value per
+/// translation unit, and tessera's own definitions never use it, so translation units built with
+/// and without the macro do not see two different definitions of one entity (an ODR violation).
 #ifdef GLM_FORCE_DEPTH_ZERO_TO_ONE
-inline constexpr clip_depth glm_clip_depth = clip_depth::zero_to_one;
+constexpr clip_depth glm_clip_depth = clip_depth::zero_to_one;
 #else
-inline constexpr clip_depth glm_clip_depth = clip_depth::negative_one_to_one;
+constexpr clip_depth glm_clip_depth = clip_depth::negative_one_to_one;
 #endif
 
 /// Largest viewport side accepted by the terrain pipeline.
@@ -38,7 +42,9 @@ struct terrain_camera {
   glm::dmat4 projection{1.0};
   index_t width = 0;
   index_t height = 0;
-  clip_depth depth = glm_clip_depth;  ///< how `projection` maps depth (GLM_FORCE_DEPTH_ZERO_TO_ONE or not)
+  /// How `projection` maps depth: GLM's default, [-1, 1]; set glm_clip_depth (or
+  /// clip_depth::zero_to_one) when GLM_FORCE_DEPTH_ZERO_TO_ONE is defined.
+  clip_depth depth = clip_depth::negative_one_to_one;
 };
 
 /// Checks a camera: viewport 1 to 16384 pixels per side, finite matrices, invertible view and

@@ -27,24 +27,12 @@
 #include "../laplacian.hpp"
 #include "../max_flow.hpp"
 #include "../mesh_elements.hpp"
+#include "../mesh_quilt_types.hpp"
 #include "element_seam.hpp"
 #include "mesh_clip.hpp"
 #include "triangle_geometry.hpp"
 
 TESSERA_NAMESPACE_BEGIN
-
-/// Which SOURCE/SINK rules cut the two elements (§3.3.6).
-///  - `paper`: as the paper words them. C_T: SOURCE = faces outside P_T, border triangles, fixed
-///    faces; SINK = faces around a vertex whose corresponding C_in face lies in the new region, is a
-///    border triangle of C_in, or is on C_in's frontier. C_in "by the same method", roles swapped.
-///  - `tessera` (default; docs/geometry.md says why, with measurements): C_T's vertices whose
-///    corresponding C_in face is a border triangle are not sent to SINK (C_in's border triangles
-///    cross the tile border and are always removed, so C_T must stay there); C_T's corresponded faces
-///    in the new region go to SINK; C_in's border triangles are hard SINK, and the rest of C_in is
-///    made consistent with C_T's cut (dropped where C_T is kept, kept where it was removed).
-/// Both: nothing non-fixed of C_in may cross a constrained domain's sides, and C_in's faces over old
-/// output outside P_T go.
-enum class merge_rules { tessera, paper };
 
 namespace detail {
 

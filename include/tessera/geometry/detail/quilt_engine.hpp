@@ -23,6 +23,7 @@
 #include "../../core/tri_mesh.hpp"
 #include "../bvh.hpp"
 #include "../icp.hpp"
+#include "../mesh_quilt_types.hpp"
 #include "../mesh_elements.hpp"
 #include "../quilt_exemplar.hpp"
 #include "element_merge.hpp"
@@ -30,32 +31,6 @@
 #include "triangle_geometry.hpp"
 
 TESSERA_NAMESPACE_BEGIN
-
-/// Counters of one quilting run (also summed over the tiles of a tile set).
-struct mesh_quilt_stats {
-  index_t patches = 0;           ///< seed cells processed
-  index_t elements_added = 0;    ///< exemplar elements added whole (§3.3.6)
-  index_t elements_merged = 0;   ///< exemplar elements merged with corresponding output elements
-  index_t elements_dropped = 0;  ///< candidates rejected (intersection, border, failed merge)
-  index_t merges_attempted = 0;  ///< pairwise merges tried (one exemplar element may merge several)
-  index_t merges_succeeded = 0;
-  index_t icp_iterations = 0;  ///< total ICP updates (eq. 5)
-  index_t icp_discarded = 0;   ///< ICP results not used (no pairs, or a move of a cell or more)
-  /// Why merges failed: too few correspondences, deformation solve, graph cut (nothing to cut or
-  /// an infinite cut), cut paths that could not be paired, and the final check (self-intersection,
-  /// leaving the tile, open or non-manifold edges).
-  index_t merge_fail_correspondence = 0, merge_fail_deform = 0, merge_fail_cut = 0, merge_fail_loops = 0,
-          merge_fail_check = 0;
-  mesh_quilt_stats& operator+=(const mesh_quilt_stats& o) {
-    merge_fail_correspondence += o.merge_fail_correspondence, merge_fail_deform += o.merge_fail_deform;
-    merge_fail_cut += o.merge_fail_cut, merge_fail_loops += o.merge_fail_loops, merge_fail_check += o.merge_fail_check;
-    patches += o.patches, elements_added += o.elements_added, elements_merged += o.elements_merged;
-    elements_dropped += o.elements_dropped, merges_attempted += o.merges_attempted,
-        merges_succeeded += o.merges_succeeded;
-    icp_iterations += o.icp_iterations, icp_discarded += o.icp_discarded;
-    return *this;
-  }
-};
 
 namespace detail {
 
