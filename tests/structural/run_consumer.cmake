@@ -1,8 +1,9 @@
 # Builds and runs a consumer project (tests/consumer/<MODE>) against this tessera build.
-#   cmake -DMODE=find_package|add_subdirectory -DSOURCE_DIR=<tessera> -DBINARY_DIR=<tessera build>
+#   cmake -DMODE=find_package|build_tree|add_subdirectory -DSOURCE_DIR=<tessera> -DBINARY_DIR=<tessera build>
 #         -DWORK_DIR=<scratch> -DGENERATOR=<gen> -DCXX=<compiler> [-DLAUNCHER=<ccache>] -P run_consumer.cmake
 # find_package: installs the tessera build tree into WORK_DIR/prefix and points CMAKE_PREFIX_PATH
-# there. add_subdirectory: the consumer adds SOURCE_DIR itself.
+# there. build_tree: the find_package project against the build tree's export (tessera_DIR =
+# BINARY_DIR), nothing installed. add_subdirectory: the consumer adds SOURCE_DIR itself.
 cmake_minimum_required(VERSION 3.21)
 foreach(var MODE SOURCE_DIR BINARY_DIR WORK_DIR GENERATOR CXX)
   if(NOT DEFINED ${var})
@@ -29,13 +30,19 @@ endif()
 if(MODE STREQUAL "find_package")
   run(${CMAKE_COMMAND} --install "${BINARY_DIR}" --prefix "${WORK_DIR}/prefix")
   list(APPEND _args -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF)
+elseif(MODE STREQUAL "build_tree")
+  list(APPEND _args -Dtessera_DIR=${BINARY_DIR} -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF)
 elseif(MODE STREQUAL "add_subdirectory")
   list(APPEND _args -DTESSERA_SOURCE_DIR=${SOURCE_DIR})
 else()
   message(FATAL_ERROR "run_consumer.cmake: unknown MODE '${MODE}'")
 endif()
 
-run(${CMAKE_COMMAND} -S "${SOURCE_DIR}/tests/consumer/${MODE}" -B "${WORK_DIR}/build" ${_args})
+set(_project ${MODE})
+if(MODE STREQUAL "build_tree")
+  set(_project find_package)
+endif()
+run(${CMAKE_COMMAND} -S "${SOURCE_DIR}/tests/consumer/${_project}" -B "${WORK_DIR}/build" ${_args})
 run(${CMAKE_COMMAND} --build "${WORK_DIR}/build")
 run("${WORK_DIR}/build/consumer" "${WORK_DIR}/out")
 if(EXISTS "${WORK_DIR}/build/consumer_openmesh")
