@@ -83,7 +83,8 @@ inline result<std::pair<tile_manifest, double>> parse_geometric_manifest(std::st
   index_t nh = 0, nv = 0;
   if (auto s = integer(*json, "horizontal_colors", 1, max_wang_colors, nh, ""); !s) return s;
   if (auto s = integer(*json, "vertical_colors", 1, max_wang_colors, nv, ""); !s) return s;
-  m.horizontal_colors = static_cast<int>(nh), m.vertical_colors = static_cast<int>(nv);
+  m.horizontal_colors = static_cast<int>(nh);
+  m.vertical_colors = static_cast<int>(nv);
   for (const auto& [k, v] : json->object)
     if (v.is_number() && k != "tile_size" && k != "horizontal_colors" && k != "vertical_colors")
       m.extra.push_back({k, v.number});

@@ -130,7 +130,8 @@ result<wang_strip_plan> plan_wang_strips(const quilt_exemplar& exemplar, const g
     auto bigger = prepare_quilt_exemplar(big->mesh, {.cell_size = cell});
     if (!bigger) return bigger.error();
     plan.quilted_source = true;
-    plan.hs.clear(), plan.vs.clear();
+    plan.hs.clear();
+    plan.vs.clear();
     if (auto s =
             choose_strips(*bigger, o.horizontal_colors, o.vertical_colors, plan.sp, o.quilt.seed, plan.hs, plan.vs);
         !s)
@@ -197,7 +198,11 @@ result<geometric_tile_set> build_geometric_wang_tiles(const quilt_exemplar& exem
       if (!errors[static_cast<std::size_t>(t)]) return errors[static_cast<std::size_t>(t)];
   }
   for (const auto& s : stats) set.stats += s;
-  for (const auto& f : frames) set.frame_merges_attempted += f[0], set.frame_merged += f[1], set.frame_dropped += f[2];
+  for (const auto& f : frames) {
+    set.frame_merges_attempted += f[0];
+    set.frame_merged += f[1];
+    set.frame_dropped += f[2];
+  }
   o.progress.report(1.0, "geometric wang tiles");
   return set;
 }

@@ -151,8 +151,11 @@ status assign_scale_field(const terrain_mesh& mesh, const screen_projection& pro
       }
   });
   double dmin = std::numeric_limits<double>::infinity(), dmax = -dmin, delta = 0;
-  for (const partial& p : part)
-    dmin = std::min(dmin, p.dmin), dmax = std::max(dmax, p.dmax), delta = std::max(delta, p.delta);
+  for (const partial& p : part) {
+    dmin = std::min(dmin, p.dmin);
+    dmax = std::max(dmax, p.dmax);
+    delta = std::max(delta, p.delta);
+  }
   for (const partial& p : part) out.adjacent_pairs += p.pairs;
   const double range = dmax - dmin;
   // step 5: slice width h >= maxδ (with a relative margin of 1e-9 that absorbs rounding, so floors
@@ -163,7 +166,10 @@ status assign_scale_field(const terrain_mesh& mesh, const screen_projection& pro
     const double finest = range / (static_cast<double>(opts.max_levels) - 1e-6);
     h = std::max(delta * (1 + 1e-9), finest);
     levels = std::min<index_t>(opts.max_levels, static_cast<index_t>(std::floor(range / h)) + 1);
-    if (levels <= 1) levels = 1, h = 0;
+    if (levels <= 1) {
+      levels = 1;
+      h = 0;
+    }
   }
   out.min_distance = dmin;
   out.max_distance = dmax;

@@ -88,8 +88,13 @@ inline anchored_frame anchored_plane_frame(const anchored_regions& plan, const v
   vec3 u = ea - fr.n * dot(ea, fr.n);
   if (norm(u) < 1e-6) u = eb - fr.n * dot(eb, fr.n);
   vec3 v = cross(fr.n, u);
-  if (!(norm(u) > 1e-12) || !(norm(v) > 1e-12)) u = ea, v = eb, fr.n = cross(ea, eb);  // degenerate face
-  fr.u = normalized(u), fr.v = normalized(v);
+  if (!(norm(u) > 1e-12) || !(norm(v) > 1e-12)) {  // degenerate face
+    u = ea;
+    v = eb;
+    fr.n = cross(ea, eb);
+  }
+  fr.u = normalized(u);
+  fr.v = normalized(v);
   fr.origin = origin;
   return fr;
 }
@@ -112,7 +117,8 @@ inline tri_uv anchored_face_coords(const terrain_mesh& mesh, const anchored_fram
   tri_uv t;
   for (std::size_t k = 0; k < 3; ++k) {
     const vec2 c = anchored_coord(fr, mesh.position(mesh.faces[static_cast<std::size_t>(f)][k]), tpu);
-    t[2 * k] = static_cast<float>(c.x), t[2 * k + 1] = static_cast<float>(c.y);
+    t[2 * k] = static_cast<float>(c.x);
+    t[2 * k + 1] = static_cast<float>(c.y);
   }
   return t;
 }
@@ -210,18 +216,28 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
         if (!mine(n) || patch[static_cast<std::size_t>(n)] < 0) continue;
         ++placed;
         const std::int32_t p = patch[static_cast<std::size_t>(n)];
-        if (p < oldest_patch) oldest_patch = p, oldest = k;
+        if (p < oldest_patch) {
+          oldest_patch = p;
+          oldest = k;
+        }
         if (best_patch >= 0 && p >= best_patch) continue;
         const auto& fr = frames[static_cast<std::size_t>(p)];
         if (!(dot(normal, fr.n) >= cos_tilt)) continue;
         const detail::tri_uv t = detail::anchored_face_coords(mesh, fr, f, tpu);
-        if (detail::anchored_fits_axis(t, 0, hw) && detail::anchored_fits_axis(t, 1, hh)) best_patch = p, best_uv = t;
+        if (detail::anchored_fits_axis(t, 0, hw) && detail::anchored_fits_axis(t, 1, hh)) {
+          best_patch = p;
+          best_uv = t;
+        }
       }
       if (best_patch >= 0) {
         atlas.uv[fi] = best_uv;
         patch[fi] = best_patch;
       } else if (opts.defer_restarts && placed > 0 && !forced) {
-        if (patch[fi] == -1) patch[fi] = -2, deferred.push_back(f), ++st.deferred;
+        if (patch[fi] == -1) {
+          patch[fi] = -2;
+          deferred.push_back(f);
+          ++st.deferred;
+        }
         continue;
       } else {
         // a new placement in the face's own plane; next to a placed neighbour, the midpoint of the
@@ -236,7 +252,8 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
                            0.5;
           const vec2 want = detail::anchored_coord(frames[static_cast<std::size_t>(oldest_patch)], mid, tpu);
           const vec2 got = detail::anchored_coord(fr, mid, tpu);
-          fr.du = want.x - got.x, fr.dv = want.y - got.y;
+          fr.du = want.x - got.x;
+          fr.dv = want.y - got.y;
           const detail::tri_uv t = detail::anchored_face_coords(mesh, fr, f, tpu);
           for (int axis = 0; axis < 2; ++axis)
             keep[axis] = opts.keep_fitting_axis && detail::anchored_fits_axis(t, axis, half[axis]);
@@ -246,11 +263,13 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
           if (keep[axis]) continue;
           const detail::tri_uv t = detail::anchored_face_coords(mesh, fr, f, tpu);
           double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-          for (std::size_t k = 0; k < 3; ++k)
-            lo = std::min(lo, static_cast<double>(t[2 * k + static_cast<std::size_t>(axis)])),
+          for (std::size_t k = 0; k < 3; ++k) {
+            lo = std::min(lo, static_cast<double>(t[2 * k + static_cast<std::size_t>(axis)]));
             hi = std::max(hi, static_cast<double>(t[2 * k + static_cast<std::size_t>(axis)]));
+          }
           const double a = -half[axis] - lo, b = half[axis] - hi;  // feasible shifts [a, b]
-          const double shift = b < a ? (big = true, 0.5 * (a + b)) : a + rng.uniform(f, axis) * (b - a);
+          if (b < a) big = true;
+          const double shift = b < a ? 0.5 * (a + b) : a + rng.uniform(f, axis) * (b - a);
           (axis == 0 ? fr.du : fr.dv) += shift;
         }
         frames.push_back(fr);

@@ -237,13 +237,20 @@ status synthesize_triangles(const terrain_mesh& mesh, const screen_projection& p
         if (r < 0) continue;
         ++synthesized;
         const bool older = best < 0 || (opts.continuation == continuation_rule::oldest_placement && r < best_region);
-        if (older && fits(b, hw, hh, placements[static_cast<std::size_t>(r)])) best = k, best_region = r;
+        if (older && fits(b, hw, hh, placements[static_cast<std::size_t>(r)])) {
+          best = k;
+          best_region = r;
+        }
       }
       if (best >= 0) {
         out.region[fi] = best_region;
       } else if (opts.defer_restarts && synthesized > 0 && !forced) {
         // wait: region -2 marks a face on the deferred list (still unsynthesized)
-        if (out.region[fi] == -1) out.region[fi] = -2, deferred.push_back(f), ++out.deferred;
+        if (out.region[fi] == -1) {
+          out.region[fi] = -2;
+          deferred.push_back(f);
+          ++out.deferred;
+        }
         continue;
       } else {
         // a new congruent placement inside the level image, biased away from the synthesized neighbours
@@ -274,7 +281,11 @@ status synthesize_triangles(const terrain_mesh& mesh, const screen_projection& p
             if (r < 0 || r >= oldest) continue;
             const vec2 p = placements[static_cast<std::size_t>(r)];
             const bool fx = b[0] + p.x >= -hw && b[2] + p.x <= hw, fy = b[1] + p.y >= -hh && b[3] + p.y <= hh;
-            if (fx || fy) oldest = r, keep = fx ? 0 : 1, kept = p;
+            if (fx || fy) {
+              oldest = r;
+              keep = fx ? 0 : 1;
+              kept = p;
+            }
           }
         }
         bool big = false;
@@ -325,18 +336,27 @@ status synthesize_triangles(const terrain_mesh& mesh, const screen_projection& p
         if (!detail::is_face_index(n, nf) || out.region[static_cast<std::size_t>(n)] < 0) continue;
         const bool same = placements[static_cast<std::size_t>(out.region[static_cast<std::size_t>(n)])] == own;
         bits = static_cast<std::uint8_t>(bits | (same ? 0 : 1 << k));
-        if (n > f) p.shared += 1, p.same += same ? 1 : 0;
+        if (n > f) {
+          p.shared += 1;
+          p.same += same ? 1 : 0;
+        }
       }
       out.seam[static_cast<std::size_t>(f)] = bits;
       const double s = field.scale[static_cast<std::size_t>(f)];
       const double ratio = W * H * s * s / std::max(detail::visible_screen_area(mesh, proj, f), 1e-300);
-      if (ratio < p.ratio) p.ratio = ratio, p.face = f;
+      if (ratio < p.ratio) {
+        p.ratio = ratio;
+        p.face = f;
+      }
     }
   });
   for (const partial& p : part) {
     out.shared_edges += p.shared;
     out.continuous_edges += p.same;
-    if (p.ratio < out.min_area_ratio) out.min_area_ratio = p.ratio, out.min_area_face = p.face;
+    if (p.ratio < out.min_area_ratio) {
+      out.min_area_ratio = p.ratio;
+      out.min_area_face = p.face;
+    }
   }
   out.continuous_fraction =
       out.shared_edges > 0 ? static_cast<double>(out.continuous_edges) / static_cast<double>(out.shared_edges) : 1.0;

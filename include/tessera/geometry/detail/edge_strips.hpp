@@ -95,7 +95,10 @@ bool extract_strip(const quilt_exemplar& src, bool horizontal, const strip_param
     if (x.max[a] < c.along0 || x.min[a] > c.along0 + w || x.max[b] < c.across0 - hh || x.min[b] > c.across0 + hh)
       continue;
     tri_mesh m = el.mesh;
-    for (vec3& p : m.positions) p[a] -= c.along0, p[b] -= c.across0;
+    for (vec3& p : m.positions) {
+      p[a] -= c.along0;
+      p[b] -= c.across0;
+    }
     const bool crossing = x.min[b] < c.across0 && x.max[b] > c.across0;
     if (!crossing) {
       // a free element: kept when it lies inside one half, clear of the tile's sides

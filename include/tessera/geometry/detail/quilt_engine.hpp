@@ -47,12 +47,19 @@ struct mesh_quilt_stats {
   index_t merge_fail_correspondence = 0, merge_fail_deform = 0, merge_fail_cut = 0, merge_fail_loops = 0,
           merge_fail_check = 0;
   mesh_quilt_stats& operator+=(const mesh_quilt_stats& o) {
-    merge_fail_correspondence += o.merge_fail_correspondence, merge_fail_deform += o.merge_fail_deform;
-    merge_fail_cut += o.merge_fail_cut, merge_fail_loops += o.merge_fail_loops, merge_fail_check += o.merge_fail_check;
-    patches += o.patches, elements_added += o.elements_added, elements_merged += o.elements_merged;
-    elements_dropped += o.elements_dropped, merges_attempted += o.merges_attempted,
-        merges_succeeded += o.merges_succeeded;
-    icp_iterations += o.icp_iterations, icp_discarded += o.icp_discarded;
+    merge_fail_correspondence += o.merge_fail_correspondence;
+    merge_fail_deform += o.merge_fail_deform;
+    merge_fail_cut += o.merge_fail_cut;
+    merge_fail_loops += o.merge_fail_loops;
+    merge_fail_check += o.merge_fail_check;
+    patches += o.patches;
+    elements_added += o.elements_added;
+    elements_merged += o.elements_merged;
+    elements_dropped += o.elements_dropped;
+    merges_attempted += o.merges_attempted;
+    merges_succeeded += o.merges_succeeded;
+    icp_iterations += o.icp_iterations;
+    icp_discarded += o.icp_discarded;
     return *this;
   }
 };
@@ -292,7 +299,10 @@ class basic_quilt_engine {
                 occ_[static_cast<std::size_t>(b * cols_ + a)])
               ++n;
           }
-        if (n > best_n) best_n = n, best = j * cols_ + i;
+        if (n > best_n) {
+          best_n = n;
+          best = j * cols_ + i;
+        }
       }
     return best;
   }
@@ -380,7 +390,10 @@ class basic_quilt_engine {
       }
       index_t best_e = -1, best_v = 0;
       for (const auto& [e, c] : votes)
-        if (c > best_v) best_v = c, best_e = e;
+        if (c > best_v) {
+          best_v = c;
+          best_e = e;
+        }
       if (best_e >= 0 && best_v >= std::max<index_t>(3, n / 5)) partners[best_e].push_back({-best_v, i});
     }
     const xy_rect inset{domain_.x0 + 1e-6 * cell_, domain_.y0 + 1e-6 * cell_, domain_.x1 - 1e-6 * cell_,
@@ -422,9 +435,11 @@ class basic_quilt_engine {
             auto merged = merge_pair(elems_[pr.second], cur, mp, mc);
             stats_.merges_attempted += mc.attempted;
             stats_.merges_succeeded += mc.merged;
-            stats_.merge_fail_correspondence += mc.fail_correspondence, stats_.merge_fail_deform += mc.fail_deform;
-            stats_.merge_fail_cut += mc.fail_cut, stats_.merge_fail_loops += mc.fail_loops,
-                stats_.merge_fail_check += mc.fail_check;
+            stats_.merge_fail_correspondence += mc.fail_correspondence;
+            stats_.merge_fail_deform += mc.fail_deform;
+            stats_.merge_fail_cut += mc.fail_cut;
+            stats_.merge_fail_loops += mc.fail_loops;
+            stats_.merge_fail_check += mc.fail_check;
             if (!merged) break;
             cur = std::move(*merged);
             consumed.push_back(pr.second);
