@@ -111,7 +111,10 @@ result<wang_strip_plan> plan_wang_strips(const quilt_exemplar& exemplar, const g
                                              " strip windows (at most 2^26 and 2^24); use a larger cell_size"));
   wang_strip_plan plan;
   plan.edge_height = he;
-  plan.sp = {o.tile_size, 0.5 * he, margin, 1e-9 * o.tile_size};
+  plan.sp = {.tile_size = o.tile_size,
+             .half_height = 0.5 * he,
+             .corner_margin = margin,
+             .snap = detail::clip_snap_fraction * o.tile_size};
   const double need = o.tile_size + 2 * cell;
   status picked = status::invalid_argument("geometric wang tiles: exemplar smaller than a tile");
   if (ext.x >= need && ext.y >= need)

@@ -93,6 +93,13 @@ struct cut_terminals {
   bool any_source = false, any_sink = false, conflict = false;
 };
 
+/// Non-fixed vertices of a constrained merge stay this fraction of the grid cell (of the tile side,
+/// for frames) inside the domain: rounding cannot then put them on or across a tile border.
+inline constexpr double inside_margin_fraction = 1e-7;
+/// Vertices this fraction of a grid cell (of a tile side, for strips) from a clipping line are moved
+/// onto it, so that clipping leaves no sliver triangles.
+inline constexpr double clip_snap_fraction = 1e-9;
+
 inline bool strictly_inside(const xy_rect& d, vec3 p, double m) {
   return p.x > d.x0 + m && p.x < d.x1 - m && p.y > d.y0 + m && p.y < d.y1 - m;
 }

@@ -71,7 +71,7 @@ tile_frame_result build_frame(const std::vector<edge_strip>& hs, const std::vect
     for (const auto& el : parts[i].elems) {
       if (el.border) continue;
       bool inside = true;
-      for (const vec3& p : el.mesh.positions) inside = inside && strictly_inside(tile, p, 1e-7 * w);
+      for (const vec3& p : el.mesh.positions) inside = inside && strictly_inside(tile, p, inside_margin_fraction * w);
       if (!inside) {
         ++r.dropped;
         continue;
@@ -91,7 +91,7 @@ tile_frame_result build_frame(const std::vector<edge_strip>& hs, const std::vect
         mp.domain = tile;
         mp.constrained = true;
         mp.corr_dist = 0.5 * cell;
-        mp.margin = 1e-7 * w;
+        mp.margin = inside_margin_fraction * w;
         const xy_rect old_w = parts[owner[k]].window, new_w = parts[i].window;
         mp.is_old = [old_w](vec3 p) { return old_w.contains(p); };
         mp.in_patch = [new_w](vec3 p) { return new_w.contains(p); };
