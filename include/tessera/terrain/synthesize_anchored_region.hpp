@@ -73,6 +73,13 @@ inline void reset_anchored_atlas(const anchored_regions& plan, index_t faces, an
 namespace detail {
 using tri_uv = std::array<float, 6>;
 
+/// A face whose normal is within this (the norm of the axis' projection) of world axis_a takes u
+/// along axis_b instead: the projection of axis_a into its plane is too short to give a direction.
+inline constexpr double anchored_axis_min_projection = 1e-6;
+/// Plane axes shorter than this mean a degenerate face (no normal): the plain world axes are used.
+inline constexpr double anchored_degenerate_axis = 1e-12;
+inline constexpr double anchored_pi = 3.14159265358979323846;
+
 /// A placement: world plane frame and texture offset (see the file comment).
 struct anchored_frame {
   vec3 origin, u, v, n;
@@ -87,9 +94,9 @@ inline anchored_frame anchored_plane_frame(const anchored_regions& plan, const v
   const vec3 ea = plan.axis_a == 0 ? vec3{1, 0, 0} : plan.axis_a == 1 ? vec3{0, 1, 0} : vec3{0, 0, 1};
   const vec3 eb = plan.axis_b == 0 ? vec3{1, 0, 0} : plan.axis_b == 1 ? vec3{0, 1, 0} : vec3{0, 0, 1};
   vec3 u = ea - fr.n * dot(ea, fr.n);
-  if (norm(u) < 1e-6) u = eb - fr.n * dot(eb, fr.n);
+  if (norm(u) < anchored_axis_min_projection) u = eb - fr.n * dot(eb, fr.n);
   vec3 v = cross(fr.n, u);
-  if (!(norm(u) > 1e-12) || !(norm(v) > 1e-12)) {  // degenerate face
+  if (!(norm(u) > anchored_degenerate_axis) || !(norm(v) > anchored_degenerate_axis)) {  // degenerate face
     u = ea;
     v = eb;
     fr.n = cross(ea, eb);
@@ -165,7 +172,7 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
   std::vector<std::int32_t> stack, deferred;
   std::int32_t patches = 0;
   std::vector<detail::anchored_frame> frames;  // placements of this region
-  const double tpu = plan.texels_per_unit, cos_tilt = std::cos(opts.max_tilt_degrees * 3.14159265358979323846 / 180);
+  const double tpu = plan.texels_per_unit, cos_tilt = std::cos(opts.max_tilt_degrees * detail::anchored_pi / 180);
   // the region's mean plane (area-weighted normal): new placements lie in it unless the face is
   // tilted against it by more than max_tilt (then in the face's own plane)
   vec3 mean{};
