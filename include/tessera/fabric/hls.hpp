@@ -51,12 +51,30 @@ inline std::array<float, 3> hls_to_rgb(const hls_color& c) noexcept {
   const double x = chroma * (1.0 - std::abs(std::fmod(hp, 2.0) - 1.0));
   double r = 0, g = 0, b = 0;
   switch (static_cast<int>(hp)) {
-    case 0: r = chroma, g = x; break;
-    case 1: r = x, g = chroma; break;
-    case 2: g = chroma, b = x; break;
-    case 3: g = x, b = chroma; break;
-    case 4: r = x, b = chroma; break;
-    default: r = chroma, b = x; break;
+    case 0:
+      r = chroma;
+      g = x;
+      break;
+    case 1:
+      r = x;
+      g = chroma;
+      break;
+    case 2:
+      g = chroma;
+      b = x;
+      break;
+    case 3:
+      g = x;
+      b = chroma;
+      break;
+    case 4:
+      r = x;
+      b = chroma;
+      break;
+    default:
+      r = chroma;
+      b = x;
+      break;
   }
   const double m = l - chroma / 2;
   auto clamp01 = [](double v) { return static_cast<float>(std::clamp(v, 0.0, 1.0)); };

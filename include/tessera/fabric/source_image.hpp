@@ -210,7 +210,10 @@ std::vector<int> source_labels(index_t w, index_t h, const std::vector<double>& 
               const double dx = static_cast<double>(x) + 0.5 - c[0], dy = static_cast<double>(y) + 0.5 - c[1];
               const double d = dx * dx + dy * dy;
               const index_t k = j * gw + i;
-              if (d < best || (d == best && k < arg)) best = d, arg = k;
+              if (d < best || (d == best && k < arg)) {
+                best = d;
+                arg = k;
+              }
             }
           owner[static_cast<std::size_t>(y * w + x)] = arg;
           ++area[static_cast<std::size_t>(arg)];

@@ -69,7 +69,10 @@ template <Image I>
       for (std::size_t t = 0; t < tones.size(); ++t) {
         const float dr = q.r - tones[t].color[0], dg = q.g - tones[t].color[1], db = q.b - tones[t].color[2];
         const float d = dr * dr + dg * dg + db * db;
-        if (d < best_d) best_d = d, best = t;
+        if (d < best_d) {
+          best_d = d;
+          best = t;
+        }
       }
       count[best] += 1.0;
     }
@@ -112,7 +115,9 @@ template <Image I>
       auto b5 = [](float v) { return std::min(31, static_cast<int>(v * 32.0f)); };
       const auto bin = static_cast<std::size_t>((b5(r) << 10) | (b5(g) << 5) | b5(b));
       bin_w[bin] += 1;
-      bin_sum[bin][0] += r, bin_sum[bin][1] += g, bin_sum[bin][2] += b;
+      bin_sum[bin][0] += r;
+      bin_sum[bin][1] += g;
+      bin_sum[bin][2] += b;
     }
   std::vector<vec> pts;
   std::vector<double> wt;
@@ -149,7 +154,10 @@ template <Image I>
       std::size_t best = 0;
       double best_d = std::numeric_limits<double>::max();
       for (std::size_t c = 0; c < kk; ++c)
-        if (const double d = dist2(pts[i], centre[c]); d < best_d) best_d = d, best = c;
+        if (const double d = dist2(pts[i], centre[c]); d < best_d) {
+          best_d = d;
+          best = c;
+        }
       changed |= assign[i] != best;
       assign[i] = best;
     }

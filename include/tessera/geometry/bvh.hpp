@@ -99,7 +99,10 @@ class triangle_bvh {
         [&](index_t slot) {
           const index_t f = face_of_[static_cast<std::size_t>(slot)];
           const double c = cost(f, tris_[static_cast<std::size_t>(slot)]);
-          if (c < best || (c == best && best_face >= 0 && f < best_face)) best = c, best_face = f;
+          if (c < best || (c == best && best_face >= 0 && f < best_face)) {
+            best = c;
+            best_face = f;
+          }
           return best;
         },
         bound, best);
@@ -302,11 +305,23 @@ class triangle_bvh {
       const double br = bound(nodes_[static_cast<std::size_t>(n.first + 1)].box);
       // push the farther child first so the nearer is visited first
       if (bl <= br) {
-        if (br <= best) stack[top] = n.first + 1, stack_bound[top++] = br;
-        if (bl <= best) stack[top] = n.first, stack_bound[top++] = bl;
+        if (br <= best) {
+          stack[top] = n.first + 1;
+          stack_bound[top++] = br;
+        }
+        if (bl <= best) {
+          stack[top] = n.first;
+          stack_bound[top++] = bl;
+        }
       } else {
-        if (bl <= best) stack[top] = n.first, stack_bound[top++] = bl;
-        if (br <= best) stack[top] = n.first + 1, stack_bound[top++] = br;
+        if (bl <= best) {
+          stack[top] = n.first;
+          stack_bound[top++] = bl;
+        }
+        if (br <= best) {
+          stack[top] = n.first + 1;
+          stack_bound[top++] = br;
+        }
       }
     }
   }

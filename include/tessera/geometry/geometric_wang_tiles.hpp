@@ -111,7 +111,10 @@ result<wang_strip_plan> plan_wang_strips(const quilt_exemplar& exemplar, const g
                                              " strip windows (at most 2^26 and 2^24); use a larger cell_size"));
   wang_strip_plan plan;
   plan.edge_height = he;
-  plan.sp = {o.tile_size, 0.5 * he, margin, 1e-9 * o.tile_size};
+  plan.sp = {.tile_size = o.tile_size,
+             .half_height = 0.5 * he,
+             .corner_margin = margin,
+             .snap = detail::clip_snap_fraction * o.tile_size};
   const double need = o.tile_size + 2 * cell;
   status picked = status::invalid_argument("geometric wang tiles: exemplar smaller than a tile");
   if (ext.x >= need && ext.y >= need)
@@ -130,7 +133,8 @@ result<wang_strip_plan> plan_wang_strips(const quilt_exemplar& exemplar, const g
     auto bigger = prepare_quilt_exemplar(big->mesh, {.cell_size = cell});
     if (!bigger) return bigger.error();
     plan.quilted_source = true;
-    plan.hs.clear(), plan.vs.clear();
+    plan.hs.clear();
+    plan.vs.clear();
     if (auto s =
             choose_strips(*bigger, o.horizontal_colors, o.vertical_colors, plan.sp, o.quilt.seed, plan.hs, plan.vs);
         !s)
@@ -197,7 +201,11 @@ result<geometric_tile_set> build_geometric_wang_tiles(const quilt_exemplar& exem
       if (!errors[static_cast<std::size_t>(t)]) return errors[static_cast<std::size_t>(t)];
   }
   for (const auto& s : stats) set.stats += s;
-  for (const auto& f : frames) set.frame_merges_attempted += f[0], set.frame_merged += f[1], set.frame_dropped += f[2];
+  for (const auto& f : frames) {
+    set.frame_merges_attempted += f[0];
+    set.frame_merged += f[1];
+    set.frame_dropped += f[2];
+  }
   o.progress.report(1.0, "geometric wang tiles");
   return set;
 }

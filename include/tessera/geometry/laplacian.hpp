@@ -40,7 +40,10 @@ Eigen::SparseMatrix<double> laplacian_matrix(const M& m,
   for (index_t f = 0; f < num_faces(m); ++f) {
     index_t v[3];
     vec3 p[3];
-    for (int k = 0; k < 3; ++k) v[k] = face_vertex(m, f, k), p[k] = vertex_position(m, v[k]);
+    for (int k = 0; k < 3; ++k) {
+      v[k] = face_vertex(m, f, k);
+      p[k] = vertex_position(m, v[k]);
+    }
     for (int k = 0; k < 3; ++k) {
       // the edge opposite corner k joins i and j; corner k's angle gives half its weight
       const int i = (k + 1) % 3, j = (k + 2) % 3;

@@ -133,10 +133,19 @@ class max_flow_graph {
       if (n.source_cap == inf && n.sink_cap == inf) return inf;
       flow += std::min(n.source_cap, n.sink_cap);
       n.tr_cap = n.source_cap == inf ? inf : n.sink_cap == inf ? -inf : n.source_cap - n.sink_cap;
-      if (n.tr_cap > 0)
-        n.tree = tree_source, n.parent = terminal, n.ts = 0, n.dist = 1, activate(i);
-      else if (n.tr_cap < 0)
-        n.tree = tree_sink, n.parent = terminal, n.ts = 0, n.dist = 1, activate(i);
+      if (n.tr_cap > 0) {
+        n.tree = tree_source;
+        n.parent = terminal;
+        n.ts = 0;
+        n.dist = 1;
+        activate(i);
+      } else if (n.tr_cap < 0) {
+        n.tree = tree_sink;
+        n.parent = terminal;
+        n.ts = 0;
+        n.dist = 1;
+        activate(i);
+      }
     }
     index_t current = no_arc;  // node being grown, kept across augmentations
     while (true) {
@@ -201,23 +210,35 @@ class max_flow_graph {
         A(down).cap -= b;
         A(pa).cap += b;
         const index_t next = A(pa).head;
-        if (!(A(down).cap > 0)) N(x).parent = orphan, orphans_.push_back(x);
+        if (!(A(down).cap > 0)) {
+          N(x).parent = orphan;
+          orphans_.push_back(x);
+        }
         x = next;
         if (N(x).parent == terminal) break;
       }
       N(root_s).tr_cap -= b;
-      if (!(N(root_s).tr_cap > 0)) N(root_s).parent = orphan, orphans_.push_back(root_s);
+      if (!(N(root_s).tr_cap > 0)) {
+        N(root_s).parent = orphan;
+        orphans_.push_back(root_s);
+      }
       for (index_t x = v; N(x).parent != terminal;) {
         const index_t pa = N(x).parent;  // x -> parent
         A(pa).cap -= b;
         A(A(pa).sister).cap += b;
         const index_t next = A(pa).head;
-        if (!(A(pa).cap > 0)) N(x).parent = orphan, orphans_.push_back(x);
+        if (!(A(pa).cap > 0)) {
+          N(x).parent = orphan;
+          orphans_.push_back(x);
+        }
         x = next;
         if (N(x).parent == terminal) break;
       }
       N(root_t).tr_cap += b;
-      if (!(N(root_t).tr_cap < 0)) N(root_t).parent = orphan, orphans_.push_back(root_t);
+      if (!(N(root_t).tr_cap < 0)) {
+        N(root_t).parent = orphan;
+        orphans_.push_back(root_t);
+      }
       flow += b;
       // --- adoption
       while (!orphans_.empty()) {
@@ -261,7 +282,10 @@ class max_flow_graph {
         x = A(p).head;
       }
       if (!ok) continue;
-      if (d < best_d) best_d = d, best_arc = a;
+      if (d < best_d) {
+        best_d = d;
+        best_arc = a;
+      }
       // mark the walked path with distances
       for (index_t y = j; N(y).ts != time_; y = A(N(y).parent).head) {
         N(y).ts = time_;

@@ -123,7 +123,10 @@ result<std::vector<texture_element>> extract_elements(const M& mesh, const extra
 inline tri_mesh combine_elements(std::span<const texture_element> elements) {
   tri_mesh out;
   std::size_t nv = 0, nf = 0;
-  for (const auto& e : elements) nv += e.mesh.positions.size(), nf += e.mesh.faces.size();
+  for (const auto& e : elements) {
+    nv += e.mesh.positions.size();
+    nf += e.mesh.faces.size();
+  }
   out.positions.reserve(nv);
   out.faces.reserve(nf);
   for (const auto& e : elements) out.append(e.mesh);

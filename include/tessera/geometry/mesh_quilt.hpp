@@ -73,9 +73,22 @@ mesh_quilt_result finish_quilt(Engine& engine) {
   r.mesh = combine_elements(r.elements);
   return r;
 }
+// Each field by name (a positional aggregate would silently accept two swapped doubles).
 inline mesh_quilt_params to_params(const mesh_quilt_options& o, bool constrained, std::uint64_t stream) {
-  return {o.patch_cells,   o.lambda, o.max_samples,  o.tolerance, o.icp,  o.icp_iterations, o.correspondence_distance,
-          o.deform_weight, o.merge,  o.smooth_rings, o.seed,      stream, constrained,      o.rules};
+  return {.patch_cells = o.patch_cells,
+          .lambda = o.lambda,
+          .max_samples = o.max_samples,
+          .tolerance = o.tolerance,
+          .icp = o.icp,
+          .icp_iterations = o.icp_iterations,
+          .correspondence_distance = o.correspondence_distance,
+          .deform_weight = o.deform_weight,
+          .merge = o.merge,
+          .smooth_rings = o.smooth_rings,
+          .seed = o.seed,
+          .stream = stream,
+          .constrained = constrained,
+          .rules = o.rules};
 }
 }  // namespace detail
 

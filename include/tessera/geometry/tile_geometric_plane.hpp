@@ -44,9 +44,10 @@ inline result<tile_border_layout> tile_border_vertices(const tri_mesh& tile, dou
     const int count = on[0] + on[1] + on[2] + on[3];
     if (count > 1) return status::invalid_argument(detail::cat("tile: vertex ", v, " lies on a tile corner"));
     for (int s = 0; s < 4; ++s)
-      if (on[s])
-        l.side_of[v] = static_cast<signed char>(s),
+      if (on[s]) {
+        l.side_of[v] = static_cast<signed char>(s);
         l.side[static_cast<std::size_t>(s)].push_back(static_cast<index_t>(v));
+      }
   }
   for (int s = 0; s < 4; ++s) {
     const int a = is_horizontal_side(s) ? 0 : 1;
@@ -209,8 +210,10 @@ class geometric_plane_layout {
     border.resize(ns + ne);
     index_t extra = base + static_cast<index_t>(no);
     if (r == rows_ - 1) {
-      for (std::size_t k = 0; k < ns; ++k)
-        dst[no + k] = src[static_cast<std::size_t>(P.south[k])] + off, border[k] = extra + static_cast<index_t>(k);
+      for (std::size_t k = 0; k < ns; ++k) {
+        dst[no + k] = src[static_cast<std::size_t>(P.south[k])] + off;
+        border[k] = extra + static_cast<index_t>(k);
+      }
       extra += static_cast<index_t>(ns);
     } else {
       const std::size_t below = static_cast<std::size_t>(cell + cols_);
@@ -219,8 +222,10 @@ class geometric_plane_layout {
     }
     if (c == cols_ - 1) {
       vec3* de = out_pos + extra;
-      for (std::size_t k = 0; k < ne; ++k)
-        de[k] = src[static_cast<std::size_t>(P.east[k])] + off, border[ns + k] = extra + static_cast<index_t>(k);
+      for (std::size_t k = 0; k < ne; ++k) {
+        de[k] = src[static_cast<std::size_t>(P.east[k])] + off;
+        border[ns + k] = extra + static_cast<index_t>(k);
+      }
     } else {
       const std::size_t right = static_cast<std::size_t>(cell + 1);
       const tile_plan& B = plan_[static_cast<std::size_t>(type_[right])];
@@ -291,7 +296,10 @@ result<geometric_plane_layout> plan_geometric_plane(const geometric_tile_set& se
     by_edges.emplace(std::array<int, 4>{e.north, e.east, e.south, e.west}, static_cast<index_t>(t));
   }
   geometric_plane_layout L;
-  L.set_ = &set, L.cols_ = cols, L.rows_ = rows, L.w_ = set.tile_size;
+  L.set_ = &set;
+  L.cols_ = cols;
+  L.rows_ = rows;
+  L.w_ = set.tile_size;
   const std::size_t ncells = static_cast<std::size_t>(cols * rows);
   L.type_.resize(ncells);
   std::vector<unsigned char> used(set.tiles.size(), 0);
@@ -319,8 +327,10 @@ result<geometric_plane_layout> plan_geometric_plane(const geometric_tile_set& se
     std::vector<std::int32_t> local(tile.positions.size(), -1);
     for (std::size_t v = 0; v < tile.positions.size(); ++v) {
       const int s = b->side_of[v];
-      if (s != side_south && s != side_east)
-        local[v] = static_cast<std::int32_t>(P.owned.size()), P.owned.push_back(static_cast<index_t>(v));
+      if (s != side_south && s != side_east) {
+        local[v] = static_cast<std::int32_t>(P.owned.size());
+        P.owned.push_back(static_cast<index_t>(v));
+      }
     }
     P.south = std::move(b->side[side_south]);
     P.east = std::move(b->side[side_east]);
@@ -357,7 +367,8 @@ result<geometric_plane_layout> plan_geometric_plane(const geometric_tile_set& se
                                                     " have different border vertex counts (inconsistent tile set)"));
     }
   // vertex and face offsets per cell
-  L.vbase_.assign(ncells + 1, 0), L.fbase_.assign(ncells + 1, 0);
+  L.vbase_.assign(ncells + 1, 0);
+  L.fbase_.assign(ncells + 1, 0);
   for (index_t r = 0; r < rows; ++r)
     for (index_t c = 0; c < cols; ++c) {
       const std::size_t cell = static_cast<std::size_t>(r * cols + c);

@@ -91,7 +91,10 @@ template <Channel T, int C, Image E>
   for (std::size_t i = 0; i < report.pairs.size(); ++i) {
     const wang_pair_seam& p = report.pairs[i];
     sum += p.ratio;
-    if (i == 0 || p.ratio > report.max_ratio) report.max_ratio = p.ratio, report.worst = p;
+    if (i == 0 || p.ratio > report.max_ratio) {
+      report.max_ratio = p.ratio;
+      report.worst = p;
+    }
   }
   report.mean_ratio = report.pairs.empty() ? 0 : sum / static_cast<double>(report.pairs.size());
   return report;

@@ -65,7 +65,10 @@ status read_ply_elements(const ply_header& h, Source& src, std::string_view name
       static constexpr std::string_view uv_names[4][2] = {
           {"u", "v"}, {"s", "t"}, {"texture_u", "texture_v"}, {"texture_s", "texture_t"}};
       for (const auto& n : uv_names)
-        if (uv[0] < 0 && e.find(n[0]) >= 0 && e.find(n[1]) >= 0) uv[0] = e.find(n[0]), uv[1] = e.find(n[1]);
+        if (uv[0] < 0 && e.find(n[0]) >= 0 && e.find(n[1]) >= 0) {
+          uv[0] = e.find(n[0]);
+          uv[1] = e.find(n[1]);
+        }
       for (int k = 0; k < 3; ++k)
         if (xyz[k] < 0 || e.properties[static_cast<std::size_t>(xyz[k])].is_list)
           return parse_error_at_line(name, e.header_line, "the vertex element needs scalar properties x, y and z");

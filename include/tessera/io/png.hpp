@@ -154,7 +154,10 @@ result<image_buffer<T, C>> decode_png(const unsigned char* data, std::size_t siz
     return status::unsupported(
         detail::cat(name, ": ", info->width, " x ", info->height, " is too large for the PNG decoder (2 GB limit)"));
   const std::vector<unsigned char> cleaned = detail::without_empty_idat(data, size);
-  if (!cleaned.empty()) data = cleaned.data(), size = cleaned.size();
+  if (!cleaned.empty()) {
+    data = cleaned.data();
+    size = cleaned.size();
+  }
   int w = 0, h = 0, got = 0;
   const int len = static_cast<int>(size);
   std::unique_ptr<void, detail::stbi_deleter> raw(

@@ -38,12 +38,18 @@ inline status save_polycube_map(const std::string& path, const polycube_map& map
   for (index_t v = 0; v < map.base.num_vertices(); ++v) {
     s += 'v';
     for (const vec3& p : {map.base.position(v), map.polycube[static_cast<std::size_t>(v)]})
-      for (int a = 0; a < 3; ++a) s += ' ', detail::append_number(s, p[a]);
+      for (int a = 0; a < 3; ++a) {
+        s += ' ';
+        detail::append_number(s, p[a]);
+      }
     s += '\n';
   }
   for (index_t f = 0; f < map.base.num_faces(); ++f) {
     s += 'f';
-    for (index_t v : map.base.faces[static_cast<std::size_t>(f)]) s += ' ', detail::append_number(s, v);
+    for (index_t v : map.base.faces[static_cast<std::size_t>(f)]) {
+      s += ' ';
+      detail::append_number(s, v);
+    }
     s += ' ';
     detail::append_number(s, static_cast<int>(map.labels[static_cast<std::size_t>(f)]));
     s += '\n';
@@ -121,7 +127,10 @@ inline result<polycube_map> load_polycube_map(const std::string& path) {
 inline status write_polycube_labels(const std::string& path, const std::vector<polycube_label>& labels) {
   std::string s;
   s.reserve(labels.size() * 2);
-  for (polycube_label l : labels) s += static_cast<char>('0' + static_cast<int>(l)), s += '\n';
+  for (polycube_label l : labels) {
+    s += static_cast<char>('0' + static_cast<int>(l));
+    s += '\n';
+  }
   return detail::write_file(path, s);
 }
 

@@ -83,9 +83,12 @@ result<image_buffer<std::uint8_t, 3>> render_mesh_preview(const M& mesh, const m
   const aabb box = bounding_box(m);
   double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300, z0 = 1e300, z1 = -1e300;
   for (const vec3& p : m.positions) {
-    x0 = std::min(x0, dot(p, r)), x1 = std::max(x1, dot(p, r));
-    y0 = std::min(y0, dot(p, u)), y1 = std::max(y1, dot(p, u));
-    z0 = std::min(z0, dot(p, f)), z1 = std::max(z1, dot(p, f));
+    x0 = std::min(x0, dot(p, r));
+    x1 = std::max(x1, dot(p, r));
+    y0 = std::min(y0, dot(p, u));
+    y1 = std::max(y1, dot(p, u));
+    z0 = std::min(z0, dot(p, f));
+    z1 = std::max(z1, dot(p, f));
   }
   const double mw = o.width * (1 - 2 * o.margin), mh = o.height * (1 - 2 * o.margin);
   const double scale = std::min(mw / std::max(x1 - x0, 1e-12), mh / std::max(y1 - y0, 1e-12));

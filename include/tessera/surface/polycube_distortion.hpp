@@ -67,7 +67,10 @@ inline polycube_distortion_report polycube_distortion(const polycube_map& map) {
     wa += ab[f] * r.area[f];
     wg += ab[f] * r.angle[f];
   }
-  if (tb > 0) r.area_distortion = wa / tb, r.angle_distortion = wg / tb;
+  if (tb > 0) {
+    r.area_distortion = wa / tb;
+    r.angle_distortion = wg / tb;
+  }
   return r;
 }
 

@@ -55,8 +55,10 @@ inline result<quad_layout> build_quad_layout(const polycube_map& map, std::int64
     const auto ax = detail::quad_plane_axes(map.charts[c].label);
     for (index_t v : map.base.faces[f]) {
       const vec3& p = map.polycube[static_cast<std::size_t>(v)];
-      box[c][0] = std::min(box[c][0], p[ax[0]] / t), box[c][1] = std::min(box[c][1], p[ax[1]] / t);
-      box[c][2] = std::max(box[c][2], p[ax[0]] / t), box[c][3] = std::max(box[c][3], p[ax[1]] / t);
+      box[c][0] = std::min(box[c][0], p[ax[0]] / t);
+      box[c][1] = std::min(box[c][1], p[ax[1]] / t);
+      box[c][2] = std::max(box[c][2], p[ax[0]] / t);
+      box[c][3] = std::max(box[c][3], p[ax[1]] / t);
     }
   }
   for (std::size_t c = 0; c < nc; ++c) {
@@ -158,8 +160,9 @@ inline result<quad_layout> build_quad_layout(const polycube_map& map, std::int64
       return status::not_converged(detail::cat("polycube: quads ", k0.quad, " and ", k1.quad,
                                                " traverse their shared grid edge in the same direction"));
     out.edges.push_back({k0.axis, k0.origin, {k0.quad, k1.quad}});
-    q0.edges[static_cast<std::size_t>(k0.side)] = id, q1.edges[static_cast<std::size_t>(k1.side)] = id;
-    q0.neighbors[static_cast<std::size_t>(k0.side)] = k1.quad,
+    q0.edges[static_cast<std::size_t>(k0.side)] = id;
+    q1.edges[static_cast<std::size_t>(k1.side)] = id;
+    q0.neighbors[static_cast<std::size_t>(k0.side)] = k1.quad;
     q1.neighbors[static_cast<std::size_t>(k1.side)] = k0.quad;
     q0.neighbor_side[static_cast<std::size_t>(k0.side)] = static_cast<std::int8_t>(k1.side);
     q1.neighbor_side[static_cast<std::size_t>(k1.side)] = static_cast<std::int8_t>(k0.side);

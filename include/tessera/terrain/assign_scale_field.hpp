@@ -151,8 +151,11 @@ status assign_scale_field(const terrain_mesh& mesh, const screen_projection& pro
       }
   });
   double dmin = std::numeric_limits<double>::infinity(), dmax = -dmin, delta = 0;
-  for (const partial& p : part)
-    dmin = std::min(dmin, p.dmin), dmax = std::max(dmax, p.dmax), delta = std::max(delta, p.delta);
+  for (const partial& p : part) {
+    dmin = std::min(dmin, p.dmin);
+    dmax = std::max(dmax, p.dmax);
+    delta = std::max(delta, p.delta);
+  }
   for (const partial& p : part) out.adjacent_pairs += p.pairs;
   const double range = dmax - dmin;
   // step 5: slice width h >= maxδ (with a relative margin of 1e-9 that absorbs rounding, so floors
@@ -160,10 +163,15 @@ status assign_scale_field(const terrain_mesh& mesh, const screen_projection& pro
   double h = 0;
   index_t levels = 1;
   if (range > 0) {
-    const double finest = range / (static_cast<double>(opts.max_levels) - 1e-6);
-    h = std::max(delta * (1 + 1e-9), finest);
+    // the relative margin on maxδ, and the slack that keeps range / finest just below max_levels
+    constexpr double delta_margin = 1e-9, level_slack = 1e-6;
+    const double finest = range / (static_cast<double>(opts.max_levels) - level_slack);
+    h = std::max(delta * (1 + delta_margin), finest);
     levels = std::min<index_t>(opts.max_levels, static_cast<index_t>(std::floor(range / h)) + 1);
-    if (levels <= 1) levels = 1, h = 0;
+    if (levels <= 1) {
+      levels = 1;
+      h = 0;
+    }
   }
   out.min_distance = dmin;
   out.max_distance = dmax;

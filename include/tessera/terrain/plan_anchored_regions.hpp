@@ -155,7 +155,10 @@ inline result<anchored_regions> plan_anchored_regions(const terrain_mesh& mesh, 
     ++p.first[r + 1];
     const double da = a - (static_cast<double>(ia) + 0.5), db = b - (static_cast<double>(ib) + 0.5);
     const double d = da * da + db * db;
-    if (d < best[r]) best[r] = d, p.seed[r] = static_cast<std::int32_t>(f);
+    if (d < best[r]) {
+      best[r] = d;
+      p.seed[r] = static_cast<std::int32_t>(f);
+    }
   }
   for (std::size_t r = 0; r < nr; ++r) p.first[r + 1] += p.first[r];
   p.faces.resize(static_cast<std::size_t>(nf));

@@ -198,8 +198,10 @@ status project_mesh(const terrain_mesh& mesh, const terrain_camera& camera, scre
         const vec2 s0 = out.screen[static_cast<std::size_t>(face[0])],
                    s1 = out.screen[static_cast<std::size_t>(face[1])],
                    s2 = out.screen[static_cast<std::size_t>(face[2])];
-        x0 = std::min({s0.x, s1.x, s2.x}), x1 = std::max({s0.x, s1.x, s2.x});
-        y0 = std::min({s0.y, s1.y, s2.y}), y1 = std::max({s0.y, s1.y, s2.y});
+        x0 = std::min({s0.x, s1.x, s2.x});
+        x1 = std::max({s0.x, s1.x, s2.x});
+        y0 = std::min({s0.y, s1.y, s2.y});
+        y1 = std::max({s0.y, s1.y, s2.y});
       } else {
         detail::raster::polygon poly{};  // rare path: zero-filled keeps the compiler sure of initialization
         std::array<std::array<double, 4>, 3> t;
@@ -207,13 +209,20 @@ status project_mesh(const terrain_mesh& mesh, const terrain_camera& camera, scre
           t[static_cast<std::size_t>(k)] = out.clip[static_cast<std::size_t>(face[static_cast<std::size_t>(k)])];
         detail::raster::clip_polygon_to_screen(t, {0, 0, W, H}, zo, poly);
         if (poly.n < 3) continue;
-        x0 = x1 = poly.v[0].x, y0 = y1 = poly.v[0].y;
+        x0 = x1 = poly.v[0].x;
+        y0 = y1 = poly.v[0].y;
         for (int i = 1; i < poly.n; ++i) {
           const auto& q = poly.v[static_cast<std::size_t>(i)];
-          x0 = std::min(x0, q.x), x1 = std::max(x1, q.x), y0 = std::min(y0, q.y), y1 = std::max(y1, q.y);
+          x0 = std::min(x0, q.x);
+          x1 = std::max(x1, q.x);
+          y0 = std::min(y0, q.y);
+          y1 = std::max(y1, q.y);
         }
       }
-      x0 = std::max(x0, 0.0), y0 = std::max(y0, 0.0), x1 = std::min(x1, W), y1 = std::min(y1, H);
+      x0 = std::max(x0, 0.0);
+      y0 = std::max(y0, 0.0);
+      x1 = std::min(x1, W);
+      y1 = std::min(y1, H);
       if (!(x0 <= x1 && y0 <= y1)) continue;  // also rejects NaN
       out.bounds[static_cast<std::size_t>(f)] = {static_cast<float>(x0), static_cast<float>(y0), static_cast<float>(x1),
                                                  static_cast<float>(y1)};

@@ -87,7 +87,8 @@ result<tiled_texture<channel_t<I>, channels_v<I>>> prepare_tiled_texture(const I
   t.levels_.push_back(std::move(*buf));
   auto rows = [&](index_t n, auto&& body) { exec.parallel_for(0, n, body); };
   for (index_t w = w0, h = h0; w > 1 || h > 1;) {
-    w = std::max<index_t>(1, w / 2), h = std::max<index_t>(1, h / 2);
+    w = std::max<index_t>(1, w / 2);
+    h = std::max<index_t>(1, h / 2);
     const std::vector<float> r = detail::resample_image(src.data(), w0, h0, C, w, h, rows);
     image_buffer<T, C> lv(w, h);
     for (std::size_t i = 0; i < r.size(); ++i) lv.data()[i] = unit_to_channel<T>(r[i]);
@@ -120,8 +121,10 @@ inline double auto_tiled_repeat(const terrain_mesh& mesh, const screen_projectio
                r = proj.screen[static_cast<std::size_t>(fv[2])];
     const double screen = 0.5 * std::abs(cross(q - p, r - p));
     const double d = norm(mesh.centroids[static_cast<std::size_t>(f)] - proj.eye);
-    if (screen >= 1 && ground > 0 && d < best)
-      best = d, repeat = static_cast<double>(exemplar_width) * std::sqrt(ground / screen);
+    if (screen >= 1 && ground > 0 && d < best) {
+      best = d;
+      repeat = static_cast<double>(exemplar_width) * std::sqrt(ground / screen);
+    }
   }
   return repeat;
 }
@@ -165,7 +168,10 @@ status render_tiled_frame(const terrain_mesh& mesh, const screen_projection& pro
         if (opts.mipmaps) {  // texel footprint from the neighbouring pixels (as a GPU's quad derivatives)
           auto footprint = [&](index_t dx, index_t dy) {
             index_t nx = x + dx, ny = y + dy;
-            if (nx >= w || ny >= h || vb.face[static_cast<std::size_t>(ny * w + nx)] < 0) nx = x - dx, ny = y - dy;
+            if (nx >= w || ny >= h || vb.face[static_cast<std::size_t>(ny * w + nx)] < 0) {
+              nx = x - dx;
+              ny = y - dy;
+            }
             if (nx < 0 || ny < 0 || vb.face[static_cast<std::size_t>(ny * w + nx)] < 0) return 0.0;
             const auto& q = vb.world[static_cast<std::size_t>(ny * w + nx)];
             return std::hypot(q[0] * su - u, q[1] * sv - v);

@@ -42,6 +42,7 @@
 #include "../core/random.hpp"
 #include "../core/status.hpp"
 #include "../core/vec.hpp"
+#include "detail/stack_growth.hpp"
 #include "plan_anchored_regions.hpp"
 #include "prepare_terrain_mesh.hpp"
 
@@ -72,6 +73,13 @@ inline void reset_anchored_atlas(const anchored_regions& plan, index_t faces, an
 namespace detail {
 using tri_uv = std::array<float, 6>;
 
+/// A face whose normal is within this (the norm of the axis' projection) of world axis_a takes u
+/// along axis_b instead: the projection of axis_a into its plane is too short to give a direction.
+inline constexpr double anchored_axis_min_projection = 1e-6;
+/// Plane axes shorter than this mean a degenerate face (no normal): the plain world axes are used.
+inline constexpr double anchored_degenerate_axis = 1e-12;
+inline constexpr double anchored_pi = 3.14159265358979323846;
+
 /// A placement: world plane frame and texture offset (see the file comment).
 struct anchored_frame {
   vec3 origin, u, v, n;
@@ -86,10 +94,15 @@ inline anchored_frame anchored_plane_frame(const anchored_regions& plan, const v
   const vec3 ea = plan.axis_a == 0 ? vec3{1, 0, 0} : plan.axis_a == 1 ? vec3{0, 1, 0} : vec3{0, 0, 1};
   const vec3 eb = plan.axis_b == 0 ? vec3{1, 0, 0} : plan.axis_b == 1 ? vec3{0, 1, 0} : vec3{0, 0, 1};
   vec3 u = ea - fr.n * dot(ea, fr.n);
-  if (norm(u) < 1e-6) u = eb - fr.n * dot(eb, fr.n);
+  if (norm(u) < anchored_axis_min_projection) u = eb - fr.n * dot(eb, fr.n);
   vec3 v = cross(fr.n, u);
-  if (!(norm(u) > 1e-12) || !(norm(v) > 1e-12)) u = ea, v = eb, fr.n = cross(ea, eb);  // degenerate face
-  fr.u = normalized(u), fr.v = normalized(v);
+  if (!(norm(u) > anchored_degenerate_axis) || !(norm(v) > anchored_degenerate_axis)) {  // degenerate face
+    u = ea;
+    v = eb;
+    fr.n = cross(ea, eb);
+  }
+  fr.u = normalized(u);
+  fr.v = normalized(v);
   fr.origin = origin;
   return fr;
 }
@@ -112,7 +125,8 @@ inline tri_uv anchored_face_coords(const terrain_mesh& mesh, const anchored_fram
   tri_uv t;
   for (std::size_t k = 0; k < 3; ++k) {
     const vec2 c = anchored_coord(fr, mesh.position(mesh.faces[static_cast<std::size_t>(f)][k]), tpu);
-    t[2 * k] = static_cast<float>(c.x), t[2 * k + 1] = static_cast<float>(c.y);
+    t[2 * k] = static_cast<float>(c.x);
+    t[2 * k + 1] = static_cast<float>(c.y);
   }
   return t;
 }
@@ -158,7 +172,7 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
   std::vector<std::int32_t> stack, deferred;
   std::int32_t patches = 0;
   std::vector<detail::anchored_frame> frames;  // placements of this region
-  const double tpu = plan.texels_per_unit, cos_tilt = std::cos(opts.max_tilt_degrees * 3.14159265358979323846 / 180);
+  const double tpu = plan.texels_per_unit, cos_tilt = std::cos(opts.max_tilt_degrees * detail::anchored_pi / 180);
   // the region's mean plane (area-weighted normal): new placements lie in it unless the face is
   // tilted against it by more than max_tilt (then in the face's own plane)
   vec3 mean{};
@@ -174,6 +188,92 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
   };
   const std::int32_t seed_face = plan.seed[static_cast<std::size_t>(region)];
   const std::int32_t* next_start = begin;
+  // §2.3 step (2) on the ground for the popped face f: continue a placed neighbour's placement, wait,
+  // or place anew
+  auto place_face = [&](std::int32_t f, bool forced) {
+    const auto fi = static_cast<std::size_t>(f);
+    if (patch[fi] >= 0) return true;
+    const auto& nb = mesh.neighbors[fi];
+    int placed = 0, oldest = -1;
+    std::int32_t best_patch = -1, oldest_patch = std::numeric_limits<std::int32_t>::max();
+    const auto& fv3 = mesh.faces[fi];
+    const vec3 normal =
+        normalized(cross(mesh.position(fv3[1]) - mesh.position(fv3[0]), mesh.position(fv3[2]) - mesh.position(fv3[0])));
+    detail::tri_uv best_uv{};
+    for (int k = 0; k < 3; ++k) {
+      const std::int32_t n = nb[static_cast<std::size_t>(k)];
+      if (!mine(n) || patch[static_cast<std::size_t>(n)] < 0) continue;
+      ++placed;
+      const std::int32_t p = patch[static_cast<std::size_t>(n)];
+      if (p < oldest_patch) {
+        oldest_patch = p;
+        oldest = k;
+      }
+      if (best_patch >= 0 && p >= best_patch) continue;
+      const auto& fr = frames[static_cast<std::size_t>(p)];
+      if (!(dot(normal, fr.n) >= cos_tilt)) continue;
+      const detail::tri_uv t = detail::anchored_face_coords(mesh, fr, f, tpu);
+      if (detail::anchored_fits_axis(t, 0, hw) && detail::anchored_fits_axis(t, 1, hh)) {
+        best_patch = p;
+        best_uv = t;
+      }
+    }
+    if (best_patch >= 0) {
+      atlas.uv[fi] = best_uv;
+      patch[fi] = best_patch;
+    } else if (opts.defer_restarts && placed > 0 && !forced) {
+      if (patch[fi] == -1) {
+        patch[fi] = -2;
+        deferred.push_back(f);
+        ++st.deferred;
+      }
+      return true;
+    } else {
+      // a new placement in the face's own plane; next to a placed neighbour, the midpoint of the
+      // shared edge keeps its coordinates (the seam only shears), then shifted into the exemplar
+      detail::anchored_frame fr = new_frame(f);
+      const double half[2] = {hw, hh};
+      bool keep[2] = {false, false};
+      if (oldest >= 0) {
+        const auto& fv = mesh.faces[fi];
+        const vec3 mid = (mesh.position(fv[static_cast<std::size_t>(oldest)]) +
+                          mesh.position(fv[static_cast<std::size_t>((oldest + 1) % 3)])) *
+                         0.5;
+        const vec2 want = detail::anchored_coord(frames[static_cast<std::size_t>(oldest_patch)], mid, tpu);
+        const vec2 got = detail::anchored_coord(fr, mid, tpu);
+        fr.du = want.x - got.x;
+        fr.dv = want.y - got.y;
+        const detail::tri_uv t = detail::anchored_face_coords(mesh, fr, f, tpu);
+        for (int axis = 0; axis < 2; ++axis)
+          keep[axis] = opts.keep_fitting_axis && detail::anchored_fits_axis(t, axis, half[axis]);
+      }
+      bool big = false;
+      for (int axis = 0; axis < 2; ++axis) {
+        if (keep[axis]) continue;
+        const detail::tri_uv t = detail::anchored_face_coords(mesh, fr, f, tpu);
+        double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+        for (std::size_t k = 0; k < 3; ++k) {
+          lo = std::min(lo, static_cast<double>(t[2 * k + static_cast<std::size_t>(axis)]));
+          hi = std::max(hi, static_cast<double>(t[2 * k + static_cast<std::size_t>(axis)]));
+        }
+        const double a = -half[axis] - lo, b = half[axis] - hi;  // feasible shifts [a, b]
+        if (b < a) big = true;
+        const double shift = b < a ? 0.5 * (a + b) : a + rng.uniform(f, axis) * (b - a);
+        (axis == 0 ? fr.du : fr.dv) += shift;
+      }
+      frames.push_back(fr);
+      atlas.uv[fi] = detail::anchored_face_coords(mesh, fr, f, tpu);
+      patch[fi] = patches++;
+      st.restarts += oldest >= 0 ? 1 : 0;
+      st.oversized += big ? 1 : 0;
+    }
+    ++st.faces;
+    for (int k = 0; k < 3; ++k) {
+      const std::int32_t n = nb[static_cast<std::size_t>(k)];
+      if (mine(n) && patch[static_cast<std::size_t>(n)] < 0) stack.push_back(n);
+    }
+    return true;
+  };
   while (true) {
     std::int32_t start = -1;
     if (patches == 0 && seed_face >= 0) {
@@ -184,87 +284,7 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
       start = *next_start;
     }
     stack.push_back(start);
-    deferred.clear();
-    std::size_t next_deferred = 0;
-    while (!stack.empty() || next_deferred < deferred.size()) {
-      bool forced = false;
-      std::int32_t f;
-      if (!stack.empty()) {
-        f = stack.back();
-        stack.pop_back();
-      } else {
-        f = deferred[next_deferred++];
-        forced = true;
-      }
-      const auto fi = static_cast<std::size_t>(f);
-      if (patch[fi] >= 0) continue;
-      const auto& nb = mesh.neighbors[fi];
-      int placed = 0, oldest = -1;
-      std::int32_t best_patch = -1, oldest_patch = std::numeric_limits<std::int32_t>::max();
-      const auto& fv3 = mesh.faces[fi];
-      const vec3 normal = normalized(
-          cross(mesh.position(fv3[1]) - mesh.position(fv3[0]), mesh.position(fv3[2]) - mesh.position(fv3[0])));
-      detail::tri_uv best_uv{};
-      for (int k = 0; k < 3; ++k) {
-        const std::int32_t n = nb[static_cast<std::size_t>(k)];
-        if (!mine(n) || patch[static_cast<std::size_t>(n)] < 0) continue;
-        ++placed;
-        const std::int32_t p = patch[static_cast<std::size_t>(n)];
-        if (p < oldest_patch) oldest_patch = p, oldest = k;
-        if (best_patch >= 0 && p >= best_patch) continue;
-        const auto& fr = frames[static_cast<std::size_t>(p)];
-        if (!(dot(normal, fr.n) >= cos_tilt)) continue;
-        const detail::tri_uv t = detail::anchored_face_coords(mesh, fr, f, tpu);
-        if (detail::anchored_fits_axis(t, 0, hw) && detail::anchored_fits_axis(t, 1, hh)) best_patch = p, best_uv = t;
-      }
-      if (best_patch >= 0) {
-        atlas.uv[fi] = best_uv;
-        patch[fi] = best_patch;
-      } else if (opts.defer_restarts && placed > 0 && !forced) {
-        if (patch[fi] == -1) patch[fi] = -2, deferred.push_back(f), ++st.deferred;
-        continue;
-      } else {
-        // a new placement in the face's own plane; next to a placed neighbour, the midpoint of the
-        // shared edge keeps its coordinates (the seam only shears), then shifted into the exemplar
-        detail::anchored_frame fr = new_frame(f);
-        const double half[2] = {hw, hh};
-        bool keep[2] = {false, false};
-        if (oldest >= 0) {
-          const auto& fv = mesh.faces[fi];
-          const vec3 mid = (mesh.position(fv[static_cast<std::size_t>(oldest)]) +
-                            mesh.position(fv[static_cast<std::size_t>((oldest + 1) % 3)])) *
-                           0.5;
-          const vec2 want = detail::anchored_coord(frames[static_cast<std::size_t>(oldest_patch)], mid, tpu);
-          const vec2 got = detail::anchored_coord(fr, mid, tpu);
-          fr.du = want.x - got.x, fr.dv = want.y - got.y;
-          const detail::tri_uv t = detail::anchored_face_coords(mesh, fr, f, tpu);
-          for (int axis = 0; axis < 2; ++axis)
-            keep[axis] = opts.keep_fitting_axis && detail::anchored_fits_axis(t, axis, half[axis]);
-        }
-        bool big = false;
-        for (int axis = 0; axis < 2; ++axis) {
-          if (keep[axis]) continue;
-          const detail::tri_uv t = detail::anchored_face_coords(mesh, fr, f, tpu);
-          double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-          for (std::size_t k = 0; k < 3; ++k)
-            lo = std::min(lo, static_cast<double>(t[2 * k + static_cast<std::size_t>(axis)])),
-            hi = std::max(hi, static_cast<double>(t[2 * k + static_cast<std::size_t>(axis)]));
-          const double a = -half[axis] - lo, b = half[axis] - hi;  // feasible shifts [a, b]
-          const double shift = b < a ? (big = true, 0.5 * (a + b)) : a + rng.uniform(f, axis) * (b - a);
-          (axis == 0 ? fr.du : fr.dv) += shift;
-        }
-        frames.push_back(fr);
-        atlas.uv[fi] = detail::anchored_face_coords(mesh, fr, f, tpu);
-        patch[fi] = patches++;
-        st.restarts += oldest >= 0 ? 1 : 0;
-        st.oversized += big ? 1 : 0;
-      }
-      ++st.faces;
-      for (int k = 0; k < 3; ++k) {
-        const std::int32_t n = nb[static_cast<std::size_t>(k)];
-        if (mine(n) && patch[static_cast<std::size_t>(n)] < 0) stack.push_back(n);
-      }
-    }
+    detail::grow_by_stack(stack, deferred, place_face);
   }
   // seams: a side is continuous when the neighbour is of this region and placement (then both
   // corners of the side have the same coordinates, one formula per placement)

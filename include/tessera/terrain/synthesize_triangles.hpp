@@ -56,6 +56,8 @@
 #include "../core/status.hpp"
 #include "../core/vec.hpp"
 #include "assign_scale_field.hpp"
+#include "detail/stack_growth.hpp"
+#include "detail/triangle_placement.hpp"
 #include "prepare_terrain_mesh.hpp"
 #include "project_mesh.hpp"
 
@@ -122,6 +124,79 @@ inline double visible_screen_area(const terrain_mesh& mesh, const screen_project
              q = proj.screen[static_cast<std::size_t>(face[2])];
   return std::min(box, 0.5 * std::abs(cross(p - a, q - a)));
 }
+/// Faces a synthesize_triangles block handles at once (the parallel reset and measure steps).
+inline constexpr index_t synthesis_block = 16384;
+/// The serial loop reports progress once every progress_interval + 1 faces (a power of two, less 1).
+inline constexpr index_t progress_interval = 0xffff;
+/// Paper 003 §3 (1): the exemplar should be 8 to 12 times the area of the largest screen triangle;
+/// below the lower bound the result carries a warning.
+inline constexpr double min_exemplar_area_ratio = 8;
+/// Floor of a face's screen area in the area ratio (a degenerate face must not divide by zero).
+inline constexpr double min_screen_area = 1e-300;
+
+/// §2.3 step (3) of paper 003 and the figures of the result: each visible face's offset from its
+/// placement, the sides where a synthesized neighbour has other coordinates (marked for the colour
+/// blending of step 3), continuity counts and the exemplar-size check of §3 (1). Independent per
+/// face, in chunks whose partial results combine in chunk order (so ties resolve to the smallest
+/// face, for any executor).
+template <Executor E>
+void measure_synthesis(const terrain_mesh& mesh, const screen_projection& proj, const scale_field& field,
+                       const std::vector<vec2>& placements, index_t exemplar_width, index_t exemplar_height,
+                       triangle_synthesis& out, E&& exec) {
+  struct partial {
+    index_t shared = 0, same = 0;
+    double ratio = std::numeric_limits<double>::infinity();
+    std::int32_t face = -1;
+  };
+  const index_t nf = mesh.num_faces(), nvis = proj.num_visible();
+  const double W = static_cast<double>(exemplar_width), H = static_cast<double>(exemplar_height);
+  const index_t chunks = (nvis + synthesis_block - 1) / synthesis_block;
+  std::vector<partial> part(static_cast<std::size_t>(chunks));
+  exec.parallel_for(0, chunks, [&](index_t c) {
+    partial& p = part[static_cast<std::size_t>(c)];
+    for (index_t i = c * synthesis_block; i < std::min(nvis, (c + 1) * synthesis_block); ++i) {
+      const std::int32_t f = proj.visible[static_cast<std::size_t>(i)];
+      const vec2 own = placements[static_cast<std::size_t>(out.region[static_cast<std::size_t>(f)])];
+      out.offset[static_cast<std::size_t>(f)] = own;
+      const auto& nb = mesh.neighbors[static_cast<std::size_t>(f)];
+      std::uint8_t bits = 0;
+      for (int k = 0; k < 3; ++k) {
+        const std::int32_t n = nb[static_cast<std::size_t>(k)];
+        if (!is_face_index(n, nf) || out.region[static_cast<std::size_t>(n)] < 0) continue;
+        const bool same = placements[static_cast<std::size_t>(out.region[static_cast<std::size_t>(n)])] == own;
+        bits = static_cast<std::uint8_t>(bits | (same ? 0 : 1 << k));
+        if (n > f) {
+          p.shared += 1;
+          p.same += same ? 1 : 0;
+        }
+      }
+      out.seam[static_cast<std::size_t>(f)] = bits;
+      const double s = field.scale[static_cast<std::size_t>(f)];
+      const double ratio = W * H * s * s / std::max(visible_screen_area(mesh, proj, f), min_screen_area);
+      if (ratio < p.ratio) {
+        p.ratio = ratio;
+        p.face = f;
+      }
+    }
+  });
+  for (const partial& p : part) {
+    out.shared_edges += p.shared;
+    out.continuous_edges += p.same;
+    if (p.ratio < out.min_area_ratio) {
+      out.min_area_ratio = p.ratio;
+      out.min_area_face = p.face;
+    }
+  }
+  out.continuous_fraction =
+      out.shared_edges > 0 ? static_cast<double>(out.continuous_edges) / static_cast<double>(out.shared_edges) : 1.0;
+  if (out.min_area_ratio < min_exemplar_area_ratio || out.oversized > 0)
+    out.warning = status::out_of_range(detail::cat(
+        "the exemplar (", exemplar_width, " x ", exemplar_height, ") is only ", out.min_area_ratio,
+        " times the screen area of face ", out.min_area_face, " at its scale; paper 003 advises 8 to 12 times (",
+        out.oversized,
+        " faces do not fit their level image at all and clamp at its border): use a larger exemplar, a larger "
+        "min_scale or a finer mesh"));
+}
 }  // namespace detail
 
 /// Synthesizes texture coordinates for every visible face (paper 003, §2.3; see the file comment)
@@ -156,7 +231,7 @@ status synthesize_triangles(const terrain_mesh& mesh, const screen_projection& p
     fresh.order = std::move(out.order);
     out = std::move(fresh);
   }
-  constexpr index_t block = 16384;
+  constexpr index_t block = detail::synthesis_block;
   out.offset.resize(static_cast<std::size_t>(nf));
   out.region.resize(static_cast<std::size_t>(nf));
   out.seam.resize(static_cast<std::size_t>(nf));
@@ -176,27 +251,76 @@ status synthesize_triangles(const terrain_mesh& mesh, const screen_projection& p
   out.order.reserve(static_cast<std::size_t>(nvis));
   const counter_rng rng(opts.seed, stream_id("terrain.synthesize_triangles"));
   const double W = static_cast<double>(exemplar_width), H = static_cast<double>(exemplar_height), m = opts.margin;
-  auto box = [&](std::int32_t f) -> const std::array<float, 4>& { return proj.bounds[static_cast<std::size_t>(f)]; };
-  auto fits = [](const std::array<float, 4>& b, double hw, double hh, vec2 o) {
-    return b[0] + o.x >= -hw && b[2] + o.x <= hw && b[1] + o.y >= -hh && b[3] + o.y <= hh;
-  };
-  // one axis of a new placement: [lo, hi] are the feasible offsets, `toward` in [0, 1] the preferred
-  // position inside them (0: lo), jittered randomly
-  auto place_axis = [&](double lo, double hi, double u, double toward, bool& oversized) {
-    if (hi < lo) {
-      oversized = true;
-      return 0.5 * (lo + hi);
-    }
-    const double t = opts.placement == placement_strategy::uniform ? u : std::clamp(toward + (u - 0.5) * 1.0, 0.0, 1.0);
-    return lo + t * (hi - lo);
-  };
   // the offset of each placement: faces of one region share it, so the serial loop below reads and
   // writes 4-byte region ids (and this small table) instead of a 16-byte offset per face
   std::vector<vec2> placements;
   std::vector<std::int32_t> stack, deferred;
   stack.reserve(static_cast<std::size_t>(std::min<index_t>(3 * nvis + 1, 1 << 20)));
-  const auto start = static_cast<index_t>(rng.below(static_cast<std::uint64_t>(nvis), 0));
   index_t done = 0;
+  status stopped;  // why a face stopped the growth
+  // §2.3 step (2) for the popped face f: continue a neighbour's placement, wait, or place anew
+  auto synthesize_face = [&](std::int32_t f, bool forced) {
+    const auto fi = static_cast<std::size_t>(f);
+    if (out.region[fi] >= 0) return true;
+    const double s = field.scale[fi];
+    if (!(s > 0 && s <= 1)) {  // e.g. 0 for a face the field's projection culled
+      stopped = status::invalid_argument(detail::cat("synthesize_triangles: visible face ", f, " has scale ", s,
+                                                     " and level ", field.level[fi],
+                                                     " in the scale field: compute the field from this projection"));
+      return false;
+    }
+    const auto& nb = mesh.neighbors[fi];
+    const auto& b = proj.bounds[fi];
+    const double hw = 0.5 * W * s - m, hh = 0.5 * H * s - m;  // half the level image, less the margin
+    int synthesized = 0;
+    const std::int32_t continued =
+        detail::continue_neighbour_placement(nb, nf, out.region, placements, b, hw, hh,
+                                             opts.continuation == continuation_rule::oldest_placement, synthesized);
+    if (continued >= 0) {
+      out.region[fi] = continued;  // step 2.2: the identity map between adjacent levels
+    } else if (opts.defer_restarts && synthesized > 0 && !forced) {
+      if (out.region[fi] == -1) {  // wait: region -2 marks a face on the deferred list (unsynthesized)
+        out.region[fi] = -2;
+        deferred.push_back(f);
+        ++out.deferred;
+      }
+      return true;
+    } else {
+      // step 2.1, or "out of bounds: choose a congruent triangle at random": a new placement inside
+      // the level image, biased away from the synthesized neighbours, keeping a fitting axis
+      const vec2 toward = opts.placement == placement_strategy::uniform
+                              ? vec2{0.5, 0.5}
+                              : detail::placement_preference(nb, nf, out.region, proj.bounds, b, synthesized);
+      vec2 kept{};
+      const int keep =
+          opts.keep_fitting_axis ? detail::fitting_axis(nb, nf, out.region, placements, b, hw, hh, kept) : -1;
+      const bool uniform = opts.placement == placement_strategy::uniform;
+      bool big = false;
+      const vec2 o{
+          keep == 0 ? kept.x : detail::place_axis(-hw - b[0], hw - b[2], rng.uniform(f, 1), toward.x, uniform, big),
+          keep == 1 ? kept.y : detail::place_axis(-hh - b[1], hh - b[3], rng.uniform(f, 2), toward.y, uniform, big)};
+      placements.push_back(o);
+      out.region[fi] = static_cast<std::int32_t>(out.regions++);
+      out.oversized += big ? 1 : 0;
+      out.restarts += synthesized > 0 ? 1 : 0;
+    }
+    out.order.push_back(f);
+    for (int k = 0; k < 3; ++k) {  // step 1: push the unsynthesized visible neighbours
+      const std::int32_t n = nb[static_cast<std::size_t>(k)];
+      if (detail::is_face_index(n, nf) && proj.state[static_cast<std::size_t>(n)] != 0 &&
+          out.region[static_cast<std::size_t>(n)] < 0)
+        stack.push_back(n);
+    }
+    if ((++done & detail::progress_interval) == 0 &&
+        !opts.progress.report(static_cast<double>(done) / static_cast<double>(nvis), "synthesize triangles")) {
+      stopped = status::cancelled();
+      return false;
+    }
+    return true;
+  };
+  // §2.3 step (1): a seeded random start; each connected region of visible faces grows by the stack
+  // from its first unsynthesized face in visible order after the start
+  const auto start = static_cast<index_t>(rng.below(static_cast<std::uint64_t>(nvis), 0));
   for (index_t idx = 0; idx < nvis; ++idx) {
     const index_t at = (start + idx) % nvis;
     const std::int32_t seed_face = proj.visible[static_cast<std::size_t>(at)];
@@ -205,148 +329,14 @@ status synthesize_triangles(const terrain_mesh& mesh, const screen_projection& p
     if (out.region[static_cast<std::size_t>(seed_face)] >= 0) continue;
     ++out.components;
     stack.push_back(seed_face);
-    deferred.clear();  // the previous region took up all of its list
-    std::size_t next_deferred = 0;
-    while (!stack.empty() || next_deferred < deferred.size()) {
-      bool forced = false;
-      std::int32_t f;
-      if (!stack.empty()) {
-        f = stack.back();
-        stack.pop_back();
-      } else {
-        f = deferred[next_deferred++];
-        forced = true;
-      }
-      const auto fi = static_cast<std::size_t>(f);
-      if (out.region[fi] >= 0) continue;
-      const double s = field.scale[fi];
-      if (!(s > 0 && s <= 1))  // e.g. 0 for a face the field's projection culled
-        return status::invalid_argument(detail::cat("synthesize_triangles: visible face ", f, " has scale ", s,
-                                                    " and level ", field.level[fi],
-                                                    " in the scale field: compute the field from this projection"));
-      const auto& nb = mesh.neighbors[fi];
-      const auto& b = box(f);
-      const double hw = 0.5 * W * s - m, hh = 0.5 * H * s - m;  // half the level image, less the margin
-      // candidates: offsets of synthesized neighbours; the oldest placement that fits wins
-      int best = -1, synthesized = 0;
-      std::int32_t best_region = 0;
-      for (int k = 0; k < 3; ++k) {
-        const std::int32_t n = nb[static_cast<std::size_t>(k)];
-        if (!detail::is_face_index(n, nf)) continue;
-        const std::int32_t r = out.region[static_cast<std::size_t>(n)];
-        if (r < 0) continue;
-        ++synthesized;
-        const bool older = best < 0 || (opts.continuation == continuation_rule::oldest_placement && r < best_region);
-        if (older && fits(b, hw, hh, placements[static_cast<std::size_t>(r)])) best = k, best_region = r;
-      }
-      if (best >= 0) {
-        out.region[fi] = best_region;
-      } else if (opts.defer_restarts && synthesized > 0 && !forced) {
-        // wait: region -2 marks a face on the deferred list (still unsynthesized)
-        if (out.region[fi] == -1) out.region[fi] = -2, deferred.push_back(f), ++out.deferred;
-        continue;
-      } else {
-        // a new congruent placement inside the level image, biased away from the synthesized neighbours
-        vec2 toward{0.5, 0.5};
-        if (synthesized > 0) {
-          vec2 away{};
-          for (int k = 0; k < 3; ++k) {
-            const std::int32_t n = nb[static_cast<std::size_t>(k)];
-            if (!detail::is_face_index(n, nf) || out.region[static_cast<std::size_t>(n)] < 0) continue;
-            const auto& bn = box(n);
-            away += vec2{static_cast<double>(bn[0] + bn[2]), static_cast<double>(bn[1] + bn[3])} * 0.5;
-          }
-          const vec2 d =
-              vec2{static_cast<double>(b[0] + b[2]), static_cast<double>(b[1] + b[3])} * 0.5 - away / synthesized;
-          const double len = norm(d);
-          if (len > 0) toward = vec2{0.5 - 0.5 * d.x / len, 0.5 - 0.5 * d.y / len};
-        }
-        // keep the coordinate of the oldest neighbouring placement that still fits along one axis:
-        // the seam is then a shift along the other axis only (blades of grass run on across it)
-        int keep = -1;
-        vec2 kept{};
-        if (opts.keep_fitting_axis) {
-          std::int32_t oldest = std::numeric_limits<std::int32_t>::max();
-          for (int k = 0; k < 3; ++k) {
-            const std::int32_t n = nb[static_cast<std::size_t>(k)];
-            if (!detail::is_face_index(n, nf)) continue;
-            const std::int32_t r = out.region[static_cast<std::size_t>(n)];
-            if (r < 0 || r >= oldest) continue;
-            const vec2 p = placements[static_cast<std::size_t>(r)];
-            const bool fx = b[0] + p.x >= -hw && b[2] + p.x <= hw, fy = b[1] + p.y >= -hh && b[3] + p.y <= hh;
-            if (fx || fy) oldest = r, keep = fx ? 0 : 1, kept = p;
-          }
-        }
-        bool big = false;
-        const vec2 o{keep == 0 ? kept.x : place_axis(-hw - b[0], hw - b[2], rng.uniform(f, 1), toward.x, big),
-                     keep == 1 ? kept.y : place_axis(-hh - b[1], hh - b[3], rng.uniform(f, 2), toward.y, big)};
-        placements.push_back(o);
-        out.region[fi] = static_cast<std::int32_t>(out.regions++);
-        out.oversized += big ? 1 : 0;
-        out.restarts += synthesized > 0 ? 1 : 0;
-      }
-      out.order.push_back(f);
-      for (int k = 0; k < 3; ++k) {
-        const std::int32_t n = nb[static_cast<std::size_t>(k)];
-        if (detail::is_face_index(n, nf) && proj.state[static_cast<std::size_t>(n)] != 0 &&
-            out.region[static_cast<std::size_t>(n)] < 0)
-          stack.push_back(n);
-      }
-      if ((++done & 0xffff) == 0 &&
-          !opts.progress.report(static_cast<double>(done) / static_cast<double>(nvis), "synthesize triangles"))
-        return status::cancelled();
-    }
+    if (!detail::grow_by_stack(stack, deferred, synthesize_face)) return stopped;
   }
   if (static_cast<index_t>(out.order.size()) !=
       nvis)  // a face marked visible but missing from proj.visible was reached
     return status::invalid_argument(detail::cat("synthesize_triangles: the projection marks ", out.order.size(),
                                                 " reachable faces visible but lists ", nvis,
                                                 ": project this mesh first"));
-  // offsets from the placement table, seams, continuity and the exemplar-size check: independent per
-  // face, in chunks whose partial
-  // results combine in chunk order (so ties resolve to the smallest face, for any executor)
-  struct partial {
-    index_t shared = 0, same = 0;
-    double ratio = std::numeric_limits<double>::infinity();
-    std::int32_t face = -1;
-  };
-  const index_t chunks = (nvis + block - 1) / block;
-  std::vector<partial> part(static_cast<std::size_t>(chunks));
-  exec.parallel_for(0, chunks, [&](index_t c) {
-    partial& p = part[static_cast<std::size_t>(c)];
-    for (index_t i = c * block; i < std::min(nvis, (c + 1) * block); ++i) {
-      const std::int32_t f = proj.visible[static_cast<std::size_t>(i)];
-      const vec2 own = placements[static_cast<std::size_t>(out.region[static_cast<std::size_t>(f)])];
-      out.offset[static_cast<std::size_t>(f)] = own;
-      const auto& nb = mesh.neighbors[static_cast<std::size_t>(f)];
-      std::uint8_t bits = 0;
-      for (int k = 0; k < 3; ++k) {
-        const std::int32_t n = nb[static_cast<std::size_t>(k)];
-        if (!detail::is_face_index(n, nf) || out.region[static_cast<std::size_t>(n)] < 0) continue;
-        const bool same = placements[static_cast<std::size_t>(out.region[static_cast<std::size_t>(n)])] == own;
-        bits = static_cast<std::uint8_t>(bits | (same ? 0 : 1 << k));
-        if (n > f) p.shared += 1, p.same += same ? 1 : 0;
-      }
-      out.seam[static_cast<std::size_t>(f)] = bits;
-      const double s = field.scale[static_cast<std::size_t>(f)];
-      const double ratio = W * H * s * s / std::max(detail::visible_screen_area(mesh, proj, f), 1e-300);
-      if (ratio < p.ratio) p.ratio = ratio, p.face = f;
-    }
-  });
-  for (const partial& p : part) {
-    out.shared_edges += p.shared;
-    out.continuous_edges += p.same;
-    if (p.ratio < out.min_area_ratio) out.min_area_ratio = p.ratio, out.min_area_face = p.face;
-  }
-  out.continuous_fraction =
-      out.shared_edges > 0 ? static_cast<double>(out.continuous_edges) / static_cast<double>(out.shared_edges) : 1.0;
-  if (out.min_area_ratio < 8 || out.oversized > 0)
-    out.warning = status::out_of_range(detail::cat(
-        "the exemplar (", exemplar_width, " x ", exemplar_height, ") is only ", out.min_area_ratio,
-        " times the screen area of face ", out.min_area_face, " at its scale; paper 003 advises 8 to 12 times (",
-        out.oversized,
-        " faces do not fit their level image at all and clamp at its border): use a larger exemplar, a larger "
-        "min_scale or a finer mesh"));
+  detail::measure_synthesis(mesh, proj, field, placements, exemplar_width, exemplar_height, out, exec);
   return opts.progress.report(1.0, "synthesize triangles") ? status{} : status::cancelled();
 }
 

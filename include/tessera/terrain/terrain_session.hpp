@@ -161,7 +161,9 @@ inline std::uint64_t terrain_mesh_fingerprint(const terrain_mesh& m) {
   for (index_t i = 0; i < 64 && nv > 0; ++i) {
     const vec3& p = m.positions[static_cast<std::size_t>(i * nv / 64)];
     std::uint64_t b[3];
-    std::memcpy(&b[0], &p.x, 8), std::memcpy(&b[1], &p.y, 8), std::memcpy(&b[2], &p.z, 8);
+    std::memcpy(&b[0], &p.x, 8);
+    std::memcpy(&b[1], &p.y, 8);
+    std::memcpy(&b[2], &p.z, 8);
     h = hash_keys(h, b[0], b[1], b[2]);
   }
   return h;
@@ -192,8 +194,10 @@ inline result<terrain_session> make_terrain_session(const terrain_mesh& mesh, in
   if (!plan) return plan.error();
   terrain_session s;
   s.opts_ = opts;
-  s.ew_ = exemplar_width, s.eh_ = exemplar_height;
-  s.nf_ = mesh.num_faces(), s.nv_ = mesh.num_vertices();
+  s.ew_ = exemplar_width;
+  s.eh_ = exemplar_height;
+  s.nf_ = mesh.num_faces();
+  s.nv_ = mesh.num_vertices();
   s.fingerprint_ = detail::terrain_mesh_fingerprint(mesh);
   const double d_min =
       plan->max_neighbor_distance / ((1 - 2 * opts.hysteresis) * std::log(opts.level_ratio)) * (1 + 1e-9);
@@ -319,7 +323,10 @@ status update_terrain_session(terrain_session& s, const terrain_mesh& mesh, cons
                                      s.atlas_, &grown[static_cast<std::size_t>(i)]);
   });
   out.regions_grown = static_cast<index_t>(grow.size());
-  for (const auto& g : grown) out.faces_grown += g.faces, out.restarts += g.restarts;
+  for (const auto& g : grown) {
+    out.faces_grown += g.faces;
+    out.restarts += g.restarts;
+  }
   // pass 3: write the coordinates of the re-synthesized faces; continuity and level jumps
   const bool measure = s.opts_.measure_continuity;
   exec.parallel_for(0, chunks, [&](index_t c) {
@@ -346,9 +353,13 @@ status update_terrain_session(terrain_session& s, const terrain_mesh& mesh, cons
     }
   });
   for (const partial& p : part) {
-    out.common += p.common, out.stable_faces += p.stable, out.level_changes += p.changes;
-    out.resynthesized += p.resyn, out.blending += p.blending;
-    out.shared_edges += p.shared, out.continuous_edges += p.same;
+    out.common += p.common;
+    out.stable_faces += p.stable;
+    out.level_changes += p.changes;
+    out.resynthesized += p.resyn;
+    out.blending += p.blending;
+    out.shared_edges += p.shared;
+    out.continuous_edges += p.same;
     out.max_level_jump = std::max(out.max_level_jump, p.jump);
   }
   out.stable_fraction = out.common > 0 ? static_cast<double>(out.stable_faces) / static_cast<double>(out.common) : 1.0;

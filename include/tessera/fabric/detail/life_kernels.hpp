@@ -103,8 +103,14 @@ void life_classify(const float* up, const float* mid, const float* down, index_t
       nd -= static_cast<std::int32_t>(lt);
       na += static_cast<std::int32_t>(v > threshold);
     };
-    add(up[x]), add(up[x + 1]), add(up[x + 2]), add(mid[x]);
-    add(mid[x + 2]), add(down[x]), add(down[x + 1]), add(down[x + 2]);
+    add(up[x]);
+    add(up[x + 1]);
+    add(up[x + 2]);
+    add(mid[x]);
+    add(mid[x + 2]);
+    add(down[x]);
+    add(down[x + 1]);
+    add(down[x + 2]);
     const std::int32_t live = ByThreshold ? na : nb;
     const std::int32_t dead = ByThreshold ? 8 - na : nd;
     const std::uint32_t darken = life_mask(dead >= dead_n) | life_mask(live >= crowd);

@@ -33,6 +33,13 @@ struct edge_strip {
   index_t crossing = 0;  ///< elements split on the line
 };
 
+/// Strip windows reach the exemplar's far side up to this absolute slack (a window that ends exactly
+/// there, up to rounding, is a candidate).
+inline constexpr double strip_window_slack = 1e-12;
+/// An element counts as inside a strip (or on one side of its centre line) only when it clears the
+/// strip's ends and centre line by this fraction of the tile side: rounding cannot put it across.
+inline constexpr double strip_clearance_fraction = 1e-7;
+
 struct strip_params {
   double tile_size = 0;      ///< w_T
   double half_height = 0;    ///< h_E / 2
@@ -53,8 +60,8 @@ std::vector<strip_candidate> strip_candidates(const quilt_exemplar& src, bool ho
   const int a = horizontal ? 0 : 1, b = horizontal ? 1 : 0;
   const aabb& bb = src.bounds();
   std::vector<strip_candidate> out;
-  for (double b0 = bb.min[b] + sp.half_height; b0 <= bb.max[b] - sp.half_height + 1e-12; b0 += step)
-    for (double a0 = bb.min[a]; a0 + sp.tile_size <= bb.max[a] + 1e-12; a0 += step) {
+  for (double b0 = bb.min[b] + sp.half_height; b0 <= bb.max[b] - sp.half_height + strip_window_slack; b0 += step)
+    for (double a0 = bb.min[a]; a0 + sp.tile_size <= bb.max[a] + strip_window_slack; a0 += step) {
       bool ok = true;
       index_t crossing = 0;
       for (index_t e = 0; e < src.num_elements() && ok; ++e) {
@@ -88,14 +95,17 @@ bool extract_strip(const quilt_exemplar& src, bool horizontal, const strip_param
   out.origin[a] = c.along0;
   out.origin[b] = c.across0;
   const double hh = sp.half_height, w = sp.tile_size;
-  const double eps = 1e-7 * w;
+  const double eps = strip_clearance_fraction * w;
   for (index_t e = 0; e < src.num_elements(); ++e) {
     const texture_element& el = src.elements()[static_cast<std::size_t>(e)];
     const aabb& x = el.box;
     if (x.max[a] < c.along0 || x.min[a] > c.along0 + w || x.max[b] < c.across0 - hh || x.min[b] > c.across0 + hh)
       continue;
     tri_mesh m = el.mesh;
-    for (vec3& p : m.positions) p[a] -= c.along0, p[b] -= c.across0;
+    for (vec3& p : m.positions) {
+      p[a] -= c.along0;
+      p[b] -= c.across0;
+    }
     const bool crossing = x.min[b] < c.across0 && x.max[b] > c.across0;
     if (!crossing) {
       // a free element: kept when it lies inside one half, clear of the tile's sides

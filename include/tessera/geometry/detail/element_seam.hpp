@@ -1,6 +1,7 @@
 // tessera/geometry/detail/element_seam.hpp: the mesh plumbing of element merging (paper 000 §3.3.6):
 // sub-meshes of the faces a cut keeps, the boundary loops a cut creates, a ladder of triangles joining
-// two facing loops, and the smoothing of the vertices around the seam. The seam join is NOT the
+// two facing loops, the smoothing of the vertices around the seam, and the join step that runs them
+// (join_cut_paths). The seam join is NOT the
 // Poisson mesh merging of Yu et al. 2004 that the paper cites: it is a ladder of new triangles between
 // the two cut paths, then a few Gauss-Seidel sweeps of uniform-Laplacian smoothing that pull the seam
 // ring to the average of its neighbours (delta = 0) and keep the original uniform Laplacian
@@ -11,6 +12,8 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -20,6 +23,7 @@
 #include "../../core/vec.hpp"
 #include "../bvh.hpp"
 #include "../mesh_elements.hpp"
+#include "mesh_clip.hpp"
 
 TESSERA_NAMESPACE_BEGIN
 namespace detail {
@@ -125,7 +129,10 @@ void stitch_loops(tri_mesh& m, const std::vector<index_t>& a, std::vector<index_
   for (std::size_t k = 0; k < nb; ++k) {
     const double d =
         squared_norm(m.positions[static_cast<std::size_t>(b[k])] - m.positions[static_cast<std::size_t>(a[0])]);
-    if (d < best) best = d, start = k;
+    if (d < best) {
+      best = d;
+      start = k;
+    }
   }
   auto A = [&](std::size_t i) { return a[i % na]; };
   auto B = [&](std::size_t k) { return b[(start + k) % nb]; };
@@ -168,7 +175,10 @@ void smooth_seam(texture_element& out, const std::vector<index_t>& seam_vertices
     std::vector<index_t> next;
     for (index_t v : frontier)
       for (index_t w : nbr[static_cast<std::size_t>(v)])
-        if (ring[static_cast<std::size_t>(w)] < 0) ring[static_cast<std::size_t>(w)] = r, next.push_back(w);
+        if (ring[static_cast<std::size_t>(w)] < 0) {
+          ring[static_cast<std::size_t>(w)] = r;
+          next.push_back(w);
+        }
     frontier = std::move(next);
   }
   const auto bverts = border_vertices(out, domain);
@@ -186,6 +196,62 @@ void smooth_seam(texture_element& out, const std::vector<index_t>& seam_vertices
       for (index_t w : nbr[v]) avg += out.mesh.positions[static_cast<std::size_t>(w)];
       out.mesh.positions[v] = avg / double(nbr[v].size()) + delta[v];
     }
+}
+
+/// The join of §3.3.6 (a ladder of triangles, not the paper's Poisson merging; see the file
+/// comment): the kept parts of both elements in one element, each new boundary loop of C_T
+/// stitched to the nearest loop of C_in (greedy by centroid distance; opposite orientation
+/// required), the seam relaxed over `smooth_rings` rings. Fixed flags follow the kept vertices,
+/// B(C) = B(C_T) u B(C_in). Nothing when the cut paths do not pair up. Counts seams into `seams`.
+template <class Deferred = void>
+std::optional<texture_element> join_cut_paths(const texture_element& ct, const tri_mesh& t,
+                                              const std::vector<unsigned char>& keep_t, const texture_element& cin,
+                                              const tri_mesh& in, const std::vector<unsigned char>& keep_in,
+                                              const xy_rect& domain, int smooth_rings, index_t* seams) {
+  std::vector<index_t> map_t, map_in;
+  const tri_mesh kt = submesh(t, keep_t, map_t), ki = submesh(in, keep_in, map_in);
+  std::vector<std::vector<index_t>> loops_t, loops_in;
+  if (!boundary_loops(kt, loops_t) || !boundary_loops(ki, loops_in)) return std::nullopt;
+  // loops that were already boundary before the cut (tile-border cuts) stay open
+  std::vector<std::vector<index_t>> new_t;
+  if (!cut_loops(t, map_t, loops_t, new_t) || !cut_loops(in, map_in, loops_in, loops_in)) return std::nullopt;
+  if (new_t.empty() || new_t.size() != loops_in.size()) return std::nullopt;
+  texture_element out;
+  out.mesh = kt;
+  const auto base = static_cast<index_t>(kt.positions.size());
+  out.mesh.append(ki);
+  out.fixed.assign(out.mesh.positions.size(), 0);
+  for (std::size_t v = 0; v < map_t.size(); ++v)
+    if (map_t[v] >= 0 && v < ct.fixed.size() && ct.fixed[v]) out.fixed[static_cast<std::size_t>(map_t[v])] = 1;
+  for (std::size_t v = 0; v < map_in.size(); ++v)
+    if (map_in[v] >= 0 && v < cin.fixed.size() && cin.fixed[v])
+      out.fixed[static_cast<std::size_t>(base + map_in[v])] = 1;
+  out.border = ct.border | cin.border;  // B(C) = B(C1) u B(C2)
+  auto loop_centroid = [&](const std::vector<index_t>& l, index_t off) {
+    vec3 c;
+    for (index_t v : l) c += out.mesh.positions[static_cast<std::size_t>(v + off)];
+    return c / double(l.size());
+  };
+  std::vector<std::tuple<double, std::size_t, std::size_t>> cand;
+  for (std::size_t i = 0; i < new_t.size(); ++i)
+    for (std::size_t j = 0; j < loops_in.size(); ++j)
+      cand.push_back({norm(loop_centroid(new_t[i], 0) - loop_centroid(loops_in[j], base)), i, j});
+  std::sort(cand.begin(), cand.end());
+  std::vector<unsigned char> used_t(new_t.size(), 0), used_in(loops_in.size(), 0);
+  std::vector<index_t> seam_vertices;
+  for (const auto& [d, i, j] : cand) {
+    if (used_t[i] || used_in[j]) continue;
+    used_t[i] = used_in[j] = 1;
+    std::vector<index_t> b = loops_in[j];
+    for (index_t& v : b) v += base;
+    if (dot(vector_area(out.mesh, new_t[i]), vector_area(out.mesh, b)) >= 0) return std::nullopt;
+    stitch_loops(out.mesh, new_t[i], b);
+    seam_vertices.insert(seam_vertices.end(), new_t[i].begin(), new_t[i].end());
+    seam_vertices.insert(seam_vertices.end(), b.begin(), b.end());
+    if (seams) ++*seams;
+  }
+  smooth_seam(out, seam_vertices, domain, smooth_rings);
+  return out;
 }
 
 }  // namespace detail

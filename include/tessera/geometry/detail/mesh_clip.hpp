@@ -31,7 +31,10 @@ plane_split split_mesh_by_plane(const tri_mesh& m, int axis, double value, doubl
   std::vector<vec3> pos = m.positions;
   for (std::size_t v = 0; v < nv; ++v) {
     s[v] = pos[v][axis] - value;
-    if (std::abs(s[v]) <= snap) s[v] = 0, pos[v][axis] = value;
+    if (std::abs(s[v]) <= snap) {
+      s[v] = 0;
+      pos[v][axis] = value;
+    }
   }
   plane_split out;
   std::vector<index_t> map_below(nv, -1), map_above(nv, -1);
@@ -173,7 +176,10 @@ bool ear_clip(const std::vector<vec2>& poly, std::vector<std::array<index_t, 3>>
       if (!empty) continue;
       const double l = std::max({norm(P(b) - P(a)), norm(P(c) - P(b)), norm(P(a) - P(c))});
       const double q = turn / (l * l);
-      if (q > best_q) best_q = q, best_i = i;
+      if (q > best_q) {
+        best_q = q;
+        best_i = i;
+      }
     }
     if (best_i < m) {
       const std::size_t i = best_i;
@@ -244,7 +250,10 @@ std::vector<index_t> compact_vertices(tri_mesh& m) {
   for (auto& f : m.faces)
     for (auto& v : f) {
       auto& id = map[static_cast<std::size_t>(v)];
-      if (id < 0) id = static_cast<index_t>(pos.size()), pos.push_back(m.positions[static_cast<std::size_t>(v)]);
+      if (id < 0) {
+        id = static_cast<index_t>(pos.size());
+        pos.push_back(m.positions[static_cast<std::size_t>(v)]);
+      }
       v = id;
     }
   m.positions = std::move(pos);

@@ -66,8 +66,8 @@ class basic_quilt_engine {
         for (index_t i = 0; i < n; ++i) fn(i);
       };
     cell_ = ex.cell_size();
-    cols_ = std::max<index_t>(1, static_cast<index_t>(std::ceil(domain.width() / cell_ - 1e-9)));
-    rows_ = std::max<index_t>(1, static_cast<index_t>(std::ceil(domain.height() / cell_ - 1e-9)));
+    cols_ = std::max<index_t>(1, static_cast<index_t>(std::ceil(domain.width() / cell_ - cell_rounding)));
+    rows_ = std::max<index_t>(1, static_cast<index_t>(std::ceil(domain.height() / cell_ - cell_rounding)));
     occ_.assign(static_cast<std::size_t>(cols_ * rows_), 0);
     const vec3 ext = ex.bounds().extent();
     margin_ = 0.25 * ex.element_diameter();
@@ -138,8 +138,8 @@ class basic_quilt_engine {
     const aabb& eb = ex_.bounds();
     const vec3 ext = eb.extent();
     auto range = [&](double lo_edge, double hi_edge, double origin, double ex_size) {
-      const double lo = std::ceil((hi_edge - origin - ex_size + margin_) / cell_ - 1e-9);
-      const double hi = std::floor((lo_edge - origin - margin_) / cell_ + 1e-9);
+      const double lo = std::ceil((hi_edge - origin - ex_size + margin_) / cell_ - cell_rounding);
+      const double hi = std::floor((lo_edge - origin - margin_) / cell_ + cell_rounding);
       if (lo <= hi) return std::pair{static_cast<index_t>(lo), static_cast<index_t>(hi)};
       const auto mid = static_cast<index_t>(std::llround(0.5 * (lo + hi)));
       return std::pair{mid, mid};
@@ -216,7 +216,7 @@ class basic_quilt_engine {
       for (const sample& q : s) pts.push_back(q.p);
       const auto r = icp_translation(pts, ex_.bvh(), t,
                                      {.max_iterations = p_.icp_iterations,
-                                      .tolerance = 1e-3 * cell_,
+                                      .tolerance = icp_tolerance_cells * cell_,
                                       .max_distance = 2 * corr_,
                                       .free_axes = {true, true, false}});
       if (r && r->pairs > 0 && norm(r->translation - t) < cell_) {
@@ -267,7 +267,10 @@ class basic_quilt_engine {
                 occ_[static_cast<std::size_t>(b * cols_ + a)])
               ++n;
           }
-        if (n > best_n) best_n = n, best = j * cols_ + i;
+        if (n > best_n) {
+          best_n = n;
+          best = j * cols_ + i;
+        }
       }
     return best;
   }
@@ -296,7 +299,7 @@ class basic_quilt_engine {
   // The part of an exemplar element inside `clip` (capped where cut); one element per component.
   std::vector<texture_element> clipped(const tri_mesh& m, const xy_rect& clip) {
     tri_mesh cur = m;
-    const double snap = 1e-9 * cell_;
+    const double snap = clip_snap_fraction * cell_;
     const struct {
       int axis;
       double value;
@@ -337,7 +340,7 @@ class basic_quilt_engine {
     mp.mu = p_.deform_weight;
     mp.smooth_rings = p_.smooth_rings;
     mp.rules = p_.rules;
-    mp.margin = 1e-7 * cell_;
+    mp.margin = inside_margin_fraction * cell_;
     mp.is_old = [&](vec3 p) { return occupied(p); };
     mp.in_patch = [&](vec3 p) { return w.contains(p); };
     // §3.3.4: correspondences output element -> exemplar element (votes of its vertices in P_T)
@@ -355,11 +358,15 @@ class basic_quilt_engine {
       }
       index_t best_e = -1, best_v = 0;
       for (const auto& [e, c] : votes)
-        if (c > best_v) best_v = c, best_e = e;
-      if (best_e >= 0 && best_v >= std::max<index_t>(3, n / 5)) partners[best_e].push_back({-best_v, i});
+        if (c > best_v) {
+          best_v = c;
+          best_e = e;
+        }
+      if (best_e >= 0 && best_v >= std::max<index_t>(min_partner_votes, n / partner_vote_share))
+        partners[best_e].push_back({-best_v, i});
     }
-    const xy_rect inset{domain_.x0 + 1e-6 * cell_, domain_.y0 + 1e-6 * cell_, domain_.x1 - 1e-6 * cell_,
-                        domain_.y1 - 1e-6 * cell_};
+    const double in = long_clip_inset_cells * cell_;
+    const xy_rect inset{domain_.x0 + in, domain_.y0 + in, domain_.x1 - in, domain_.y1 - in};
     for (index_t e = 0; e < ex_.num_elements(); ++e) {
       aabb box = ex_.elements()[static_cast<std::size_t>(e)].box;
       box.min += t;
@@ -397,9 +404,11 @@ class basic_quilt_engine {
             auto merged = merge_pair(elems_[pr.second], cur, mp, mc);
             stats_.merges_attempted += mc.attempted;
             stats_.merges_succeeded += mc.merged;
-            stats_.merge_fail_correspondence += mc.fail_correspondence, stats_.merge_fail_deform += mc.fail_deform;
-            stats_.merge_fail_cut += mc.fail_cut, stats_.merge_fail_loops += mc.fail_loops,
-                stats_.merge_fail_check += mc.fail_check;
+            stats_.merge_fail_correspondence += mc.fail_correspondence;
+            stats_.merge_fail_deform += mc.fail_deform;
+            stats_.merge_fail_cut += mc.fail_cut;
+            stats_.merge_fail_loops += mc.fail_loops;
+            stats_.merge_fail_check += mc.fail_check;
             if (!merged) break;
             cur = std::move(*merged);
             consumed.push_back(pr.second);
@@ -418,7 +427,8 @@ class basic_quilt_engine {
         if (!in_new({c.x, c.y, 0})) continue;
         bool ok = true;
         if (p_.constrained)
-          for (const vec3& q : cin.mesh.positions) ok = ok && strictly_inside(domain_, q, 1e-7 * cell_);
+          for (const vec3& q : cin.mesh.positions)
+            ok = ok && strictly_inside(domain_, q, inside_margin_fraction * cell_);
         if (!ok || intersects_alive(cin, {})) {
           ++stats_.elements_dropped;
           continue;
@@ -428,6 +438,19 @@ class basic_quilt_engine {
       }
     }
   }
+
+  /// Grid counts and translation ranges in cells are rounded with this slack, so that a length a
+  /// whole number of cells long (up to floating-point rounding) gets no extra cell.
+  static constexpr double cell_rounding = 1e-9;
+  /// ICP (eq. 5) stops when its translation step is below this fraction of a cell.
+  static constexpr double icp_tolerance_cells = 1e-3;
+  /// An output element in the patch pairs with the exemplar element most of its vertices
+  /// correspond to, when those votes are at least min_partner_votes and 1 / partner_vote_share of
+  /// its vertices in the patch (fewer: the two only touch, and merging them would fail).
+  static constexpr index_t min_partner_votes = 3, partner_vote_share = 5;
+  /// Long elements (threads) are clipped this fraction of a cell inside the domain, so that their
+  /// caps lie strictly inside it.
+  static constexpr double long_clip_inset_cells = 1e-6;
 
   const quilt_exemplar& ex_;
   xy_rect domain_;

@@ -55,7 +55,10 @@ tile_frame_result build_frame(const std::vector<edge_strip>& hs, const std::vect
   std::vector<int> owner;  // which part each frame element came from
   for (int i = 0; i < 4; ++i)
     for (const auto& el : parts[i].elems)
-      if (el.border) out.push_back(el), owner.push_back(i);
+      if (el.border) {
+        out.push_back(el);
+        owner.push_back(i);
+      }
   const xy_rect tile{0, 0, w, w};
   auto collides = [&](const texture_element& x, const texture_element& y) {
     if (!boxes_overlap(x.box, y.box)) return false;
@@ -68,7 +71,7 @@ tile_frame_result build_frame(const std::vector<edge_strip>& hs, const std::vect
     for (const auto& el : parts[i].elems) {
       if (el.border) continue;
       bool inside = true;
-      for (const vec3& p : el.mesh.positions) inside = inside && strictly_inside(tile, p, 1e-7 * w);
+      for (const vec3& p : el.mesh.positions) inside = inside && strictly_inside(tile, p, inside_margin_fraction * w);
       if (!inside) {
         ++r.dropped;
         continue;
@@ -77,7 +80,8 @@ tile_frame_result build_frame(const std::vector<edge_strip>& hs, const std::vect
       for (std::size_t k = 0; k < out.size(); ++k)
         if (collides(out[k], el)) hits.push_back(k);
       if (hits.empty()) {
-        out.push_back(el), owner.push_back(i);
+        out.push_back(el);
+        owner.push_back(i);
         continue;
       }
       // merge with every element it hits, the frame element as C_T (its window is the old region)
@@ -87,7 +91,7 @@ tile_frame_result build_frame(const std::vector<edge_strip>& hs, const std::vect
         mp.domain = tile;
         mp.constrained = true;
         mp.corr_dist = 0.5 * cell;
-        mp.margin = 1e-7 * w;
+        mp.margin = inside_margin_fraction * w;
         const xy_rect old_w = parts[owner[k]].window, new_w = parts[i].window;
         mp.is_old = [old_w](vec3 p) { return old_w.contains(p); };
         mp.in_patch = [new_w](vec3 p) { return new_w.contains(p); };

@@ -128,14 +128,19 @@ inline bool point_in_triangle_2d(const double p[2], const double a[2], const dou
 inline bool coplanar_triangles_intersect(vec3 n, const std::array<vec3, 3>& t, const std::array<vec3, 3>& u) noexcept {
   const double ax = std::abs(n.x), ay = std::abs(n.y), az = std::abs(n.z);
   int i0 = 0, i1 = 1;
-  if (ax >= ay && ax >= az)
-    i0 = 1, i1 = 2;
-  else if (ay >= az)
-    i0 = 0, i1 = 2;
+  if (ax >= ay && ax >= az) {
+    i0 = 1;
+    i1 = 2;
+  } else if (ay >= az) {
+    i0 = 0;
+    i1 = 2;
+  }
   double p[3][2], q[3][2];
   for (int k = 0; k < 3; ++k) {
-    p[k][0] = t[k][i0], p[k][1] = t[k][i1];
-    q[k][0] = u[k][i0], q[k][1] = u[k][i1];
+    p[k][0] = t[k][i0];
+    p[k][1] = t[k][i1];
+    q[k][0] = u[k][i0];
+    q[k][1] = u[k][i1];
   }
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)

@@ -60,7 +60,10 @@ struct pitch_correlation {
   }
   /// The correlation at (dx, dy), |dx| <= mx, |dy| <= my (negative dy by symmetry).
   [[nodiscard]] double operator()(index_t dx, index_t dy) const {
-    if (dy < 0) dx = -dx, dy = -dy;
+    if (dy < 0) {
+      dx = -dx;
+      dy = -dy;
+    }
     const double r = corr[static_cast<std::size_t>(dy * (2 * mx + 1) + dx + mx)];
     return std::isnan(r) ? -1.0 : r;
   }

@@ -251,8 +251,14 @@ patch_plan make_plan(const patch_model<T, C>& m, index_t ox, index_t oy, index_t
     }
   });
   for (std::size_t c = 0; c < static_cast<std::size_t>(ncells); ++c) {
-    if (voff[c] >= 0) p.vseam[c] = p.own_seams.data() + voff[c], ++p.counts.computed_seams;
-    if (hoff[c] >= 0) p.hseam[c] = p.own_seams.data() + hoff[c], ++p.counts.computed_seams;
+    if (voff[c] >= 0) {
+      p.vseam[c] = p.own_seams.data() + voff[c];
+      ++p.counts.computed_seams;
+    }
+    if (hoff[c] >= 0) {
+      p.hseam[c] = p.own_seams.data() + hoff[c];
+      ++p.counts.computed_seams;
+    }
   }
   return p;
 }

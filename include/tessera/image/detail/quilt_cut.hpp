@@ -153,7 +153,11 @@ void plan_cuts(const site_window& win, const index_t band_in[4], cut_plan& plan)
       for (index_t x = 0; x < Sw; ++x) {
         const double c = cum_w[static_cast<std::size_t>(y * Sw + x)] + cum_n[static_cast<std::size_t>(x * Sn + y)] -
                          win.error[win.idx(x, y)];
-        if (c < best) best = c, plan.mx = x, plan.my = y;
+        if (c < best) {
+          best = c;
+          plan.mx = x;
+          plan.my = y;
+        }
       }
     trace_cut(cum_w, p, Sw, plan.my, plan.mx, plan.path[side_west]);
     trace_cut(cum_n, p, Sn, plan.mx, plan.my, plan.path[side_north]);

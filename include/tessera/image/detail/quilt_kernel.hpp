@@ -385,17 +385,27 @@ status fill_canvas(const quilt_source<T, C>& src, quilt_canvas<T, C>& canvas, co
   index_t x0 = W, y0 = H, x1 = 0, y1 = 0;
   for (index_t y = 0; y < H; ++y)
     for (index_t x = 0; x < W; ++x)
-      if (canvas.at(x, y) == pixel_state::empty)
-        x0 = std::min(x0, x), x1 = std::max(x1, x + 1), y0 = std::min(y0, y), y1 = std::max(y1, y + 1);
+      if (canvas.at(x, y) == pixel_state::empty) {
+        x0 = std::min(x0, x);
+        x1 = std::max(x1, x + 1);
+        y0 = std::min(y0, y);
+        y1 = std::max(y1, y + 1);
+      }
   if (x1 <= x0) return {};
-  if (canvas.wrap_x)
-    x0 = 0, x1 = W;
-  else
-    x0 = std::max<index_t>(0, x0 - overlap), x1 = std::min(W, x1 + overlap);
-  if (canvas.wrap_y)
-    y0 = 0, y1 = H;
-  else
-    y0 = std::max<index_t>(0, y0 - overlap), y1 = std::min(H, y1 + overlap);
+  if (canvas.wrap_x) {
+    x0 = 0;
+    x1 = W;
+  } else {
+    x0 = std::max<index_t>(0, x0 - overlap);
+    x1 = std::min(W, x1 + overlap);
+  }
+  if (canvas.wrap_y) {
+    y0 = 0;
+    y1 = H;
+  } else {
+    y0 = std::max<index_t>(0, y0 - overlap);
+    y1 = std::min(H, y1 + overlap);
+  }
   const std::vector<quilt_site> sites =
       plan_sites(x0, y0, x1, y1, prm.patch, overlap, W, H, canvas.wrap_x, canvas.wrap_y);
   quilt_scratch scratch;

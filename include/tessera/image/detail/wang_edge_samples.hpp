@@ -78,7 +78,8 @@ void choose_corner(const quilt_source<T, C>& src, index_t d, double tolerance, c
   ox = oy = 0;
   for (std::size_t i = 0; i < cost.size(); ++i)
     if (cost[i] <= limit && pick-- == 0) {
-      ox = static_cast<index_t>(i) % U, oy = static_cast<index_t>(i) / U;
+      ox = static_cast<index_t>(i) % U;
+      oy = static_cast<index_t>(i) / U;
       return;
     }
 }
@@ -101,7 +102,8 @@ strip_origin choose_strip(const quilt_source<T, C>& src, const image_buffer<T, C
   };
   // (along, across) strip coordinates -> exemplar offsets from the origin
   auto ex = [&](index_t along, index_t across, index_t& x, index_t& y) {
-    x = horizontal ? along : across, y = horizontal ? across : along;
+    x = horizontal ? along : across;
+    y = horizontal ? across : along;
   };
   std::vector<double> cost(static_cast<std::size_t>(U * V));
   std::vector<std::uint8_t> distinct(cost.size(), 1);
@@ -183,7 +185,8 @@ status build_frame_samples(const quilt_source<T, C>& src, index_t ts, index_t ov
         horizontal ? h_origin[static_cast<std::size_t>(k)] : v_origin[static_cast<std::size_t>(k - nh)];
     quilt_canvas<T, C> canvas(horizontal ? ts : 2 * ov, horizontal ? 2 * ov : ts);
     auto xy = [&](index_t along, index_t across, index_t& x, index_t& y) {
-      x = horizontal ? along : across, y = horizontal ? across : along;
+      x = horizontal ? along : across;
+      y = horizontal ? across : along;
     };
     for (index_t along = ov; along < ts - ov; ++along)  // the sample, cuttable
       for (index_t across = 0; across < 2 * ov; ++across) {

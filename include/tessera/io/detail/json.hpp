@@ -88,9 +88,10 @@ class json_parser {
   status fail(std::string_view what) const {
     int line = 1, col = 1;
     for (std::size_t i = 0; i < pos_ && i < text_.size(); ++i) {
-      if (text_[i] == '\n')
-        ++line, col = 1;
-      else
+      if (text_[i] == '\n') {
+        ++line;
+        col = 1;
+      } else
         ++col;
     }
     return status::parse_error(cat(name_, ":", line, ":", col, ": ", what));

@@ -307,7 +307,10 @@ inline std::array<std::int64_t, 4> polygon_bounds(const polygon& p) {
   double minx = p.v[0].x, maxx = minx, miny = p.v[0].y, maxy = miny;
   for (int i = 1; i < p.n; ++i) {
     const auto& v = p.v[static_cast<std::size_t>(i)];
-    minx = std::min(minx, v.x), maxx = std::max(maxx, v.x), miny = std::min(miny, v.y), maxy = std::max(maxy, v.y);
+    minx = std::min(minx, v.x);
+    maxx = std::max(maxx, v.x);
+    miny = std::min(miny, v.y);
+    maxy = std::max(maxy, v.y);
   }
   return {static_cast<std::int64_t>(std::floor(minx)) - 1, static_cast<std::int64_t>(std::floor(miny)) - 1,
           static_cast<std::int64_t>(std::ceil(maxx)) + 1, static_cast<std::int64_t>(std::ceil(maxy)) + 1};

@@ -125,7 +125,10 @@ result<polycube_map> assemble_polycube_map(tri_mesh base, const std::vector<std:
     for (std::size_t i = 0; i < iv.size();) {
       double lo = iv[i][0], hi = iv[i][1];
       std::size_t j = i + 1;
-      while (j < iv.size() && iv[j][0] <= hi + 1e-9) hi = std::max(hi, iv[j][1]), ++j;
+      while (j < iv.size() && iv[j][0] <= hi + 1e-9) {
+        hi = std::max(hi, iv[j][1]);
+        ++j;
+      }
       i = j;
       grid_point g{};
       g[static_cast<std::size_t>(aa)] = pa;
@@ -161,7 +164,10 @@ result<polycube_map> assemble_polycube_map(tri_mesh base, const std::vector<std:
           return false;
         },
         [&](index_t f, index_t g) {
-          if (fa < 0 || f < fa || (f == fa && g < fb)) fa = f, fb = g;
+          if (fa < 0 || f < fa || (f == fa && g < fb)) {
+            fa = f;
+            fb = g;
+          }
         });
     if (fa >= 0)
       return status::not_converged(cat("polycube: the surface intersects itself (faces ", fa, " and ", fb, ", charts ",

@@ -178,8 +178,10 @@ inline polycube_label_problem find_label_problem(const tri_mesh& m, const std::v
               {m.faces[f][static_cast<std::size_t>(k)], m.faces[f][static_cast<std::size_t>((k + 1) % 3)]});
       }
     for (std::size_t c = 0; c < nc; ++c) {
-      for (const auto& e : bedges[c])
-        parent[static_cast<std::size_t>(e[0])] = e[0], parent[static_cast<std::size_t>(e[1])] = e[1];
+      for (const auto& e : bedges[c]) {
+        parent[static_cast<std::size_t>(e[0])] = e[0];
+        parent[static_cast<std::size_t>(e[1])] = e[1];
+      }
       for (const auto& e : bedges[c]) {
         const index_t a = find(e[0]), b = find(e[1]);
         if (a != b) parent[static_cast<std::size_t>(std::max(a, b))] = std::min(a, b);

@@ -123,9 +123,18 @@ result<std::vector<double>> polycube_axis_solve(const tri_mesh& m, const std::ve
       double known = -d;
       if (a < 0) known += x[ci];
       if (b < 0) known -= x[cj];
-      if (a >= 0) t.emplace_back(a, a, 1.0), rhs[a] -= known;
-      if (b >= 0) t.emplace_back(b, b, 1.0), rhs[b] += known;
-      if (a >= 0 && b >= 0) t.emplace_back(a, b, -1.0), t.emplace_back(b, a, -1.0);
+      if (a >= 0) {
+        t.emplace_back(a, a, 1.0);
+        rhs[a] -= known;
+      }
+      if (b >= 0) {
+        t.emplace_back(b, b, 1.0);
+        rhs[b] += known;
+      }
+      if (a >= 0 && b >= 0) {
+        t.emplace_back(a, b, -1.0);
+        t.emplace_back(b, a, -1.0);
+      }
     }
   sparse A(nfree, nfree);
   A.setFromTriplets(t.begin(), t.end());
@@ -255,7 +264,10 @@ inline index_t untangle_polycube(const tri_mesh& m, std::vector<vec3>& pos, cons
             if (!is_free(v, a) && cl[static_cast<std::size_t>(a)]->vertex_class[static_cast<std::size_t>(w)] !=
                                       cl[static_cast<std::size_t>(a)]->vertex_class[v])
               same = false;
-        if (same) mean += pos[static_cast<std::size_t>(w)], ++n;
+        if (same) {
+          mean += pos[static_cast<std::size_t>(w)];
+          ++n;
+        }
       }
       if (n == 0) continue;
       mean = mean / static_cast<double>(n);

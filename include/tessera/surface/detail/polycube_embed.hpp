@@ -55,7 +55,8 @@ status embed_polycube(const tri_mesh& m, const polycube_chart_set& cs, const std
       const vec3 a = m.position(i) - m.position(o), b = m.position(j) - m.position(o);
       const double s = norm(cross(a, b));
       const double cot = s > 0 ? dot(a, b) / s : 0;
-      add(i, j, 0.5 * cot), add(j, i, 0.5 * cot);
+      add(i, j, 0.5 * cot);
+      add(j, i, 0.5 * cot);
     }
   for (auto& l : nbr)
     for (auto& e : l) e.second = std::clamp(e.second, 1e-2, 1e2);

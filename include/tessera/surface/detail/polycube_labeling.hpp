@@ -149,7 +149,10 @@ inline result<std::vector<std::uint8_t>> alpha_expansion_labels(const polycube_e
       for (index_t f = 0; f < nf; ++f)
         if (!g.in_source_set(f)) next[static_cast<std::size_t>(f)] = static_cast<std::uint8_t>(alpha);
       const double e = polycube_labeling_energy(en, next);
-      if (e < energy) energy = e, lab.swap(next);
+      if (e < energy) {
+        energy = e;
+        lab.swap(next);
+      }
     }
     if (!(start - energy > 1e-9 * std::abs(start))) break;
   }

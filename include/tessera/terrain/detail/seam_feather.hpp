@@ -113,7 +113,11 @@ class seam_feather {
       const std::int8_t dx = row_dx_[static_cast<std::size_t>(yy * vb_.width + x)];
       if (dx == none) continue;
       const index_t d2 = static_cast<index_t>(dx) * dx + dy * dy;
-      if (d2 < best) best = d2, qx = x + dx, qy = yy;
+      if (d2 < best) {
+        best = d2;
+        qx = x + dx;
+        qy = yy;
+      }
     }
     if (best > radius_ * radius_) return p;
     const auto q = static_cast<std::size_t>(qy * vb_.width + qx);
