@@ -1,0 +1,32 @@
+// tessera synth, shared by its translation units: the parsed request, and run_synth_format<T, C>
+// (synth_run.hpp), instantiated for the 8-bit PNG formats in cmd_synth_8bit.cpp and for the 16-bit
+// ones in cmd_synth_16bit.cpp, so the two halves of the command's heaviest code compile in parallel.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include <tessera/image/patch_synthesis.hpp>
+
+#include "cli.hpp"
+
+namespace cli::synth {
+
+using tessera::index_t;
+
+/// What `tessera synth` was asked for (parsed and checked by cmd_synth.cpp).
+struct request {
+  std::string exemplar, out, source_map;
+  index_t width = 0, height = 0, patch_w = 0, patch_h = 0, overlap = 0;
+  tessera::texture_offset origin;
+  tessera::seam_mode seams = tessera::seam_mode::feather;
+  std::uint64_t seed = 1;
+  int threads = 0, repeat = 1;
+  bool stats = false;
+};
+
+/// Loads the exemplar as T x C, synthesizes, writes the outputs and prints; returns the exit code.
+template <class T, int C>
+int run_format(const arguments& args, const request& r);
+
+}  // namespace cli::synth
