@@ -5,6 +5,7 @@
 
 #include <tessera/core/executor.hpp>
 #include <tessera/core/format.hpp>
+#include <tessera/core/tile_coloring.hpp>
 #include <tessera/image/compose_tiles.hpp>
 #include <tessera/io/png.hpp>
 #include <tessera/io/tile_manifest.hpp>
@@ -36,24 +37,27 @@ tessera::status tile_with(const cli::arguments& args, const std::string& dir, co
   if (!out) return out.error();
   tessera::thread_pool_executor pool(args.threads());
   const tessera::compose_options options{.outline = args.has("--outline"), .seed = args.seed()};
-  tessera::status composed;
-  double ms = 0;
-  auto compose = [&](const auto& coloring) {
-    ms = cli::median_ms(args.repeat(), [&] { composed = tessera::compose_tiles(*set, coloring, *out, options, pool); });
-  };
+  // every colouring is stored first, so compose_tiles is compiled once per pixel format, not once per
+  // colouring type too (same cells, same tiles: a hash window's cell (c, r) is the plane's (c, r))
+  tessera::stored_tile_coloring coloring;
   if (kind == "scanline") {
     auto c = tessera::scanline_coloring::create(set->edges(), cols, rows, args.seed());
     if (!c) return c.error();
-    compose(*c);
+    coloring = tessera::store_coloring(*c);
   } else if (kind == "hash") {
-    auto c = tessera::hash_coloring::for_set(set->edges(), args.seed());
+    auto h = tessera::hash_coloring::for_set(set->edges(), args.seed());
+    if (!h) return h.error();
+    auto c = h->window(0, 0, cols, rows);
     if (!c) return c.error();
-    compose(*c);
+    coloring = tessera::store_coloring(*c);
   } else {
     auto c = tessera::periodic_coloring::create(set->edges(), *period, *period, cols, rows, args.seed());
     if (!c) return c.error();
-    compose(*c);
+    coloring = tessera::store_coloring(*c);
   }
+  tessera::status composed;
+  const double ms = cli::median_ms(
+      args.repeat(), [&] { composed = tessera::compose_tiles(*set, coloring, cols, *out, options, pool); });
   if (!composed) return composed;
   if (auto s = tessera::write_png(args.str("--out"), *out); !s) return s;
   if (args.stats())
