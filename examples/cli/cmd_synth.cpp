@@ -4,7 +4,9 @@
 //                 [--repeat N] [--stats]
 // This file parses and dispatches; the per-format work is synth_run.hpp, compiled in
 // cmd_synth_8bit.cpp and cmd_synth_16bit.cpp.
+#include <algorithm>
 #include <cmath>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -13,6 +15,34 @@
 #include "cli.hpp"
 #include "image_source.hpp"
 #include "synth_request.hpp"
+
+namespace cli::synth {
+
+template <int C>
+void add_quality(json_line& line, const tessera::image_buffer<float, C>& crop,
+                 const tessera::image_buffer<float, C>& exemplar, std::span<const tessera::seam_segment> seams,
+                 tessera::thread_pool_executor& pool) {
+  const index_t cw = crop.width(), ch = crop.height();
+  const tessera::neighborhood_energy_options eo{.window = 5, .sample_step = 4};
+  if (auto e = tessera::neighborhood_energy(crop, exemplar, eo, pool)) line.add("neighborhood_energy", *e);
+  if (!seams.empty())
+    if (auto g = tessera::seam_gradient_ratio(crop, seams, exemplar)) line.add("seam_gradient_ratio", *g);
+  if (auto h = tessera::histogram_distance(crop, exemplar)) line.add("histogram_distance", *h);
+  if (std::max(cw, ch) >= 32)
+    if (auto rep = tessera::repetition_score(crop, std::min<index_t>(16, std::max(cw, ch) / 2)))
+      line.add("repetition", *rep);
+}
+
+template void add_quality<1>(json_line&, const tessera::image_buffer<float, 1>&, const tessera::image_buffer<float, 1>&,
+                             std::span<const tessera::seam_segment>, tessera::thread_pool_executor&);
+template void add_quality<2>(json_line&, const tessera::image_buffer<float, 2>&, const tessera::image_buffer<float, 2>&,
+                             std::span<const tessera::seam_segment>, tessera::thread_pool_executor&);
+template void add_quality<3>(json_line&, const tessera::image_buffer<float, 3>&, const tessera::image_buffer<float, 3>&,
+                             std::span<const tessera::seam_segment>, tessera::thread_pool_executor&);
+template void add_quality<4>(json_line&, const tessera::image_buffer<float, 4>&, const tessera::image_buffer<float, 4>&,
+                             std::span<const tessera::seam_segment>, tessera::thread_pool_executor&);
+
+}  // namespace cli::synth
 
 namespace {
 

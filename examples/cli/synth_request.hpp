@@ -4,8 +4,12 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <string>
 
+#include <tessera/core/executor.hpp>
+#include <tessera/core/image_buffer.hpp>
+#include <tessera/image/metrics.hpp>
 #include <tessera/image/patch_synthesis.hpp>
 
 #include "cli.hpp"
@@ -24,6 +28,16 @@ struct request {
   int threads = 0, repeat = 1;
   bool stats = false;
 };
+
+/// Adds the quality figures of a synthesized crop to `line` (neighborhood_energy, seam_gradient_ratio
+/// when there are seams, histogram_distance, repetition for crops of at least 32 pixels), given float
+/// copies of the crop and the exemplar: the metrics convert to float themselves, so the figures are
+/// those of the original pixels, and they are compiled for 4 channel counts in cmd_synth.cpp instead of
+/// for 8 formats. A metric that fails is left out.
+template <int C>
+void add_quality(json_line& line, const tessera::image_buffer<float, C>& crop,
+                 const tessera::image_buffer<float, C>& exemplar, std::span<const tessera::seam_segment> seams,
+                 tessera::thread_pool_executor& pool);
 
 /// Loads the exemplar as T x C, synthesizes, writes the outputs and prints; returns the exit code.
 template <class T, int C>

@@ -8,7 +8,6 @@
 #include <string>
 #include <vector>
 
-#include <tessera/image/metrics.hpp>
 #include <tessera/image/patch_model.hpp>
 #include <tessera/image/patch_synthesis.hpp>
 #include <tessera/io/png.hpp>
@@ -84,15 +83,11 @@ int run_format(const arguments& args, const request& r) {
         .add("filled", st->filled)
         .add("empty_intersections", st->empty_intersections)
         .add("model_bytes", static_cast<long long>(model->memory_bytes()));
-    const tessera::neighborhood_energy_options eo{.window = 5, .sample_step = 4};
-    if (auto e = tessera::neighborhood_energy(crop, *ex, eo, pool)) line.add("neighborhood_energy", *e);
+    // the metrics work on float copies (as they do internally), compiled once per channel count
     const auto seams = tessera::patch_seam_lines(*model, cw, ch, {r.origin.x + cx, r.origin.y + cy});
-    if (!seams.empty())
-      if (auto g = tessera::seam_gradient_ratio(crop, seams, *ex)) line.add("seam_gradient_ratio", *g);
-    if (auto h = tessera::histogram_distance(crop, *ex)) line.add("histogram_distance", *h);
-    if (std::max(cw, ch) >= 32)
-      if (auto rep = tessera::repetition_score(crop, std::min<index_t>(16, std::max(cw, ch) / 2)))
-        line.add("repetition", *rep);
+    auto fcrop = tessera::to_buffer<float, C>(crop, "crop");
+    auto fex = tessera::to_buffer<float, C>(*ex, "exemplar");
+    if (fcrop && fex) add_quality<C>(line, *fcrop, *fex, seams, pool);
     line.print();
   } else {
     std::printf("wrote %s (%td x %td, patch %td x %td, overlap %td, %.2f ms)\n", r.out.c_str(), r.width, r.height,
