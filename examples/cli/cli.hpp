@@ -1,7 +1,9 @@
 // The `tessera` command's small framework: subcommand registry, argument parsing with generated
 // --help, one-line JSON statistics and timing helpers. Each subcommand lives in its own
 // cmd_<name>.cpp and registers itself with a static `cli::registrar`, so adding a capability never
-// touches another file.
+// touches another file. The registry adds the options every command shares (--seed, --threads,
+// --stats, --repeat); the parsers below (size, extent, color_pair, ...) are the one vocabulary of
+// docs/cli.md, and an option's older spellings are declared as its `aliases`.
 #pragma once
 
 #include <algorithm>
@@ -30,13 +32,18 @@ namespace cli {
 using tessera::index_t;
 
 /// One option of a subcommand. `value` names the argument ("WxH", "FILE"); empty for a flag.
+/// `aliases` are older spellings still accepted (documented in docs/cli.md as such).
 struct option_spec {
   std::string name;  ///< with dashes: "--out"
   std::string value;
   std::string help;
+  std::vector<std::string> aliases = {};
 };
 
 class arguments;
+
+/// Which of the shared options (common_options) the registry adds to a command.
+enum class shared_options { all, stats_only };
 
 struct command {
   std::string name;     ///< "synth", or "wang build" for a two-word command
@@ -45,14 +52,29 @@ struct command {
   std::vector<option_spec> options;
   std::function<int(const arguments&)> run;
   std::string positional = {};  ///< name of positional arguments ("FILE"), empty if none
+  /// The options positional arguments stand for, in order ({"--in", "--out"}): `tessera info F` is
+  /// `tessera info --in F`. Empty: positional arguments are kept as such (args.positional()).
+  std::vector<std::string> positional_options = {};
+  shared_options shared = shared_options::all;
 };
 
-/// Options most commands share.
+/// Options most commands share; the registry appends those a command does not declare itself.
 inline std::vector<option_spec> common_options() {
   return {{"--seed", "S", "random seed (default 1); same seed, same output"},
           {"--threads", "T", "worker threads (default: all cores); output does not depend on it"},
           {"--stats", "", "print one JSON line of timings and quality figures to stdout"},
           {"--repeat", "N", "run the timed step N times and report the median (default 1)"}};
+}
+
+/// `c` with the shared options it does not declare itself appended (all of them, or --stats only).
+inline command with_shared_options(command c) {
+  for (auto& o : common_options()) {
+    if (c.shared == shared_options::stats_only && o.name != "--stats") continue;
+    const bool declared =
+        std::any_of(c.options.begin(), c.options.end(), [&](const option_spec& d) { return d.name == o.name; });
+    if (!declared) c.options.push_back(std::move(o));
+  }
+  return c;
 }
 
 /// Parsed arguments of one subcommand.
@@ -76,8 +98,9 @@ class arguments {
           arg = arg.substr(0, eq);
           inline_value = true;
         }
-        auto it =
-            std::find_if(cmd.options.begin(), cmd.options.end(), [&](const option_spec& o) { return o.name == arg; });
+        auto it = std::find_if(cmd.options.begin(), cmd.options.end(), [&](const option_spec& o) {
+          return o.name == arg || std::find(o.aliases.begin(), o.aliases.end(), arg) != o.aliases.end();
+        });
         if (it == cmd.options.end()) {
           error = "unknown option " + arg + " (see tessera " + cmd.name + " --help)";
           return std::nullopt;
@@ -89,13 +112,34 @@ class arguments {
           }
           value = argv[++i];
         }
-        a.values_[arg] = value;
+        // an alias stores under the option's name and remembers the spelling for messages
+        if (auto sp = a.spelled_.find(it->name); sp != a.spelled_.end() && sp->second != arg) {
+          error = sp->second + " and " + arg + " are the same option: give one";
+          return std::nullopt;
+        }
+        a.values_[it->name] = value;
+        a.spelled_[it->name] = arg;
       } else {
         if (cmd.positional.empty()) {
           error = "unexpected argument '" + arg + "' (see tessera " + cmd.name + " --help)";
           return std::nullopt;
         }
         a.positional_.push_back(arg);
+      }
+    }
+    if (!cmd.positional_options.empty()) {
+      if (a.positional_.size() > cmd.positional_options.size()) {
+        error = "unexpected argument '" + a.positional_[cmd.positional_options.size()] + "' (see tessera " + cmd.name +
+                " --help)";
+        return std::nullopt;
+      }
+      for (std::size_t k = 0; k < a.positional_.size(); ++k) {
+        const std::string& opt = cmd.positional_options[k];
+        if (a.has(opt)) {
+          error = "'" + a.positional_[k] + "' and " + a.spelled(opt) + " both give " + opt + ": give one";
+          return std::nullopt;
+        }
+        a.values_[opt] = a.positional_[k];
       }
     }
     return a;
@@ -109,9 +153,18 @@ class arguments {
   }
   [[nodiscard]] const std::vector<std::string>& positional() const { return positional_; }
 
+  /// The spelling the user gave for option `name` (an alias, or `name` itself): what messages name.
+  [[nodiscard]] std::string spelled(std::string_view name) const {
+    auto it = spelled_.find(std::string(name));
+    return it == spelled_.end() ? std::string(name) : it->second;
+  }
+  /// The status for a missing required option.
+  static tessera::status missing(std::string_view name) {
+    return tessera::status::invalid_argument("missing required option " + std::string(name));
+  }
   /// A required option: status naming it when absent.
   [[nodiscard]] tessera::result<std::string> required(std::string_view name) const {
-    if (!has(name)) return tessera::status::invalid_argument("missing required option " + std::string(name));
+    if (!has(name)) return missing(name);
     return str(name);
   }
   /// An integer option in [lo, hi]; `fallback` when absent. Overflow and trailing text are errors.
@@ -139,10 +192,11 @@ class arguments {
     if (v < lo || v > hi) return bad(name, s, "a number in [" + format_number(lo) + ", " + format_number(hi) + "]");
     return v;
   }
-  /// "WxH" (or a single "N" meaning N x N): positive integers, each at most `max_side`, and at
-  /// most `max_pixels` in all, so a typo cannot ask for terabytes.
+  /// A required size "WxH" (or a single "N" meaning N x N): positive integers, each at most
+  /// `max_side`, and at most `max_pixels` in all, so a typo cannot ask for terabytes.
   [[nodiscard]] tessera::result<std::pair<index_t, index_t>> size(std::string_view name, index_t max_side = 65536,
                                                                   index_t max_pixels = index_t{1} << 28) const {
+    if (!has(name)) return missing(name);
     const std::string s = str(name);
     std::vector<double> v;
     if (!split_numbers(s, 'x', v) || (v.size() != 1 && v.size() != 2)) return bad(name, s, "WxH");
@@ -153,6 +207,45 @@ class arguments {
       return bad(name, s,
                  "at most " + std::to_string(max_side) + " per side and " + std::to_string(max_pixels) + " in all");
     return std::pair{static_cast<index_t>(wd), static_cast<index_t>(hd)};
+  }
+  /// A required extent in real units "WxH" (or a single "W" meaning W x W; the older "W,H" is an
+  /// accepted alias): finite numbers in (0, max_side].
+  [[nodiscard]] tessera::result<std::pair<double, double>> extent(std::string_view name, double max_side) const {
+    if (!has(name)) return missing(name);
+    const std::string s = str(name);
+    std::vector<double> v;
+    if ((!split_numbers(s, 'x', v) || (v.size() != 1 && v.size() != 2)) &&
+        (v.clear(), !split_numbers(s, ',', v) || v.size() != 2))
+      return bad(name, s, "WxH");
+    const double w = v[0], h = v.size() == 2 ? v[1] : v[0];
+    if (!(w > 0 && h > 0 && w <= max_side && h <= max_side))
+      return bad(name, s, "positive numbers WxH, at most " + format_number(max_side) + " each");
+    return std::pair{w, h};
+  }
+  /// Edge colour counts "NH,NV": integers in [1, max_colors];
+  /// `fallback` when absent. The same rule for every Wang command.
+  [[nodiscard]] tessera::result<std::pair<int, int>> color_pair(std::string_view name, int max_colors,
+                                                                std::pair<int, int> fallback = {2, 2}) const {
+    if (!has(name)) return fallback;
+    const std::string s = str(name);
+    std::vector<double> v;
+    const std::string expected = "two integers NH,NV in [1, " + std::to_string(max_colors) + "]";
+    if (!split_numbers(s, ',', v) || v.size() != 2) return bad(name, s, expected);
+    // range-checked before any conversion to int (1e10 must not wrap)
+    for (double c : v)
+      if (!(c >= 1 && c <= max_colors) || c != std::floor(c)) return bad(name, s, expected);
+    return std::pair{static_cast<int>(v[0]), static_cast<int>(v[1])};
+  }
+  /// One of `choices` (the first is the default when the option is absent).
+  [[nodiscard]] tessera::result<std::string> choice(std::string_view name,
+                                                    const std::vector<std::string>& choices) const {
+    if (!has(name)) return choices.front();
+    const std::string s = str(name);
+    if (std::find(choices.begin(), choices.end(), s) != choices.end()) return s;
+    std::string list;
+    for (std::size_t k = 0; k < choices.size(); ++k)
+      list += (k == 0 ? "" : k + 1 == choices.size() ? " or " : ", ") + choices[k];
+    return bad(name, s, list);
   }
   /// Comma-separated finite numbers, exactly `count` of them ("x,y,z").
   [[nodiscard]] tessera::result<std::vector<double>> numbers(std::string_view name, std::size_t count) const {
@@ -186,8 +279,10 @@ class arguments {
   [[nodiscard]] bool stats() const { return has("--stats"); }
 
  private:
-  static tessera::status bad(std::string_view name, const std::string& value, const std::string& expected) {
-    return tessera::status::invalid_argument(std::string(name) + " expects " + expected + ", got '" + value + "'");
+  /// The error naming the option as the user spelled it (an alias or its name).
+  [[nodiscard]] tessera::status bad(std::string_view name, const std::string& value,
+                                    const std::string& expected) const {
+    return tessera::status::invalid_argument(spelled(name) + " expects " + expected + ", got '" + value + "'");
   }
   static std::string format_number(double v) {
     char buf[32];
@@ -210,6 +305,7 @@ class arguments {
 
   std::string command_;
   std::map<std::string, std::string> values_;
+  std::map<std::string, std::string> spelled_;  ///< option name -> the spelling given (name or alias)
   std::vector<std::string> positional_;
 };
 
@@ -219,7 +315,7 @@ inline std::vector<command>& registry() {
   return commands;
 }
 struct registrar {
-  explicit registrar(command c) { registry().push_back(std::move(c)); }
+  explicit registrar(command c) { registry().push_back(with_shared_options(std::move(c))); }
 };
 
 /// Prints an error for a failed status; returns the process exit code (1).

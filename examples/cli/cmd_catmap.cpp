@@ -65,18 +65,17 @@ int run(const cli::arguments& args) {
                                " is larger than the " + std::to_string(fabric_cli::max_side) + " per side and " +
                                std::to_string(fabric_cli::max_pixels) + " pixels catmap accepts"));
   tessera::thread_pool_executor pool(args.threads());
-  const tessera::pixel_format fmt{info->bit_depth == 16 ? tessera::channel_type::uint16 : tessera::channel_type::uint8,
-                                  info->channels};
   double ms = 0;
-  auto s = tessera::dispatch_format(fmt, [&]<class T, int C>(tessera::format_tag<T, C>) -> tessera::status {
-    auto img = cli::read_png_file<T, C>(*in);
-    if (!img) return img.error();
-    tessera::image_buffer<T, C> result(img->width(), img->height());
-    tessera::status st;
-    ms = cli::median_ms(args.repeat(), [&] { st = tessera::cat_map(*img, result, *steps, options, pool); });
-    if (!st) return st;
-    return tessera::write_png(*out, result);
-  });
+  auto s = cli::dispatch_png_format(
+      cli::png_format(*info), [&]<class T, int C>(tessera::format_tag<T, C>) -> tessera::status {
+        auto img = cli::read_png_file<T, C>(*in);
+        if (!img) return img.error();
+        tessera::image_buffer<T, C> result(img->width(), img->height());
+        tessera::status st;
+        ms = cli::median_ms(args.repeat(), [&] { st = tessera::cat_map(*img, result, *steps, options, pool); });
+        if (!st) return st;
+        return tessera::write_png(*out, result);
+      });
   if (!s) return cli::fail(args, s);
   // the side of the squares that were mapped: the image, its largest centred square, or the tiles
   const tessera::index_t side = info->width == info->height ? info->width
@@ -112,7 +111,6 @@ std::vector<cli::option_spec> options() {
       {"--family", "a,b", "the map [1 a; b ab+1], integers (default 1,1: Arnold's [1 1; 1 2])"},
       {"--non-square", "MODE", "reject (default), center (largest centred square) or tiles"},
       {"--tile", "T", "square tile side for --non-square tiles (default gcd of the sides)"}};
-  for (auto& c : cli::common_options()) o.push_back(c);
   return o;
 }
 

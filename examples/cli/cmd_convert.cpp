@@ -93,10 +93,11 @@ int convert_mesh(const cli::arguments& args, const std::string& in, const std::s
 }
 
 int run_convert(const cli::arguments& args) {
-  if (args.positional().size() != 2)
-    return cli::fail(args, status::invalid_argument("expects IN and OUT files (see tessera convert --help)"));
-  const std::string& in = args.positional()[0];
-  const std::string& out = args.positional()[1];
+  if (!args.has("--in") || !args.has("--out"))
+    return cli::fail(args, status::invalid_argument("expects IN and OUT files (or --in IN --out OUT; see tessera "
+                                                    "convert --help)"));
+  const std::string in = args.str("--in");
+  const std::string out = args.str("--out");
   const bool in_png = tessera::file_extension(in) == "png", out_png = tessera::file_extension(out) == "png";
   if (in_png && out_png) return convert_image(args, in, out);
   if (tessera::is_mesh_path(in) && tessera::is_mesh_path(out)) return convert_mesh(args, in, out);
@@ -111,12 +112,16 @@ const cli::registrar reg({
     .name = "convert",
     .summary = "convert a PNG (channels, bit depth) or a mesh between OBJ, OFF and PLY",
     .usage = "tessera convert IN OUT [--channels C] [--depth 8|16] [--binary] [--stats]",
-    .options = {{"--channels", "C", "PNG: output channels 1-4 (grey, grey+alpha, RGB, RGBA; default: as input)"},
+    .options = {{"--in", "IN", "input PNG or mesh (or IN as the first argument)"},
+                {"--out", "OUT", "output of the same kind (or OUT as the second argument)"},
+                {"--channels", "C", "PNG: output channels 1-4 (grey, grey+alpha, RGB, RGBA; default: as input)"},
                 {"--depth", "8|16", "PNG: output bit depth (default: as input)"},
                 {"--binary", "", "PLY output: binary little-endian instead of ASCII"},
                 {"--stats", "", "print one JSON line instead of text"}},
     .run = run_convert,
     .positional = "IN OUT",
+    .positional_options = {"--in", "--out"},
+    .shared = cli::shared_options::stats_only,
 });
 
 }  // namespace

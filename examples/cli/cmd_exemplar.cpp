@@ -12,13 +12,22 @@ namespace {
 
 int run(const cli::arguments& args) {
   using namespace tessera;
-  if (args.positional().size() != 1)
+  if (!args.has("--kind"))
     return cli::fail(
         args, status::invalid_argument("expects one kind: rings, stones or weave (see tessera exemplar --help)"));
-  const std::string kind = args.positional()[0];
+  const std::string kind = args.str("--kind");
   auto out = args.required("--out");
   if (!out) return cli::fail(args, out.error());
+  // --size L, or LxL (the one size vocabulary; the exemplar is square)
   auto size = args.number("--size", 8.0, 0.5, 256);
+  if (args.str("--size").find('x') != std::string::npos) {
+    auto e = args.extent("--size", 256);
+    if (!e) return cli::fail(args, e.error());
+    if (e->first != e->second || e->first < 0.5)
+      return cli::fail(args, status::invalid_argument("--size expects L or LxL with L in [0.5, 256], got '" +
+                                                      args.str("--size") + "'"));
+    size = e->first;
+  }
   auto density = args.number("--density", 1.0, 1.0 / 16, 16);
   auto detail_level = args.integer("--segments", 0, 0, 256);
   if (!size) return cli::fail(args, size.error());
@@ -71,14 +80,15 @@ const cli::registrar reg{[] {
       "generate a geometric-texture exemplar mesh (rings, stones, weave)",
       "tessera exemplar rings|stones|weave --out E.obj [--seed S] [--size L] [--density D] [--segments N] "
       "[--chain-mail]",
-      {{"--out", "FILE", "output mesh (.obj, .off or .ply)"},
-       {"--size", "L", "the exemplar covers [0, L]^2 (default 8)"},
+      {{"--kind", "KIND", "rings, stones or weave (or KIND as the argument)"},
+       {"--out", "FILE", "output mesh (.obj, .off or .ply)"},
+       {"--size", "L", "the exemplar covers [0, L]^2, L in [0.5, 256] (default 8; LxL also accepted)"},
        {"--density", "D", "relative element density (default 1)"},
        {"--segments", "N", "mesh resolution: ring segments / stone subdivisions / thread segments (0 = default)"},
        {"--chain-mail", "", "rings: interlock them like European 4-in-1 chain mail"}},
       run,
-      "KIND"};
-  for (auto& o : cli::common_options()) c.options.push_back(o);
+      "KIND",
+      {"--kind"}};
   return c;
 }()};
 

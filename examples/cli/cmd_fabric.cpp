@@ -166,7 +166,6 @@ std::vector<cli::option_spec> options() {
       {"--K", "K", "brighten when exactly K neighbours are brighter, 0..8 (default 3)"},
       {"--N", "N", "darken when at least N neighbours are dimmer, 1..8 (default 6)"},
       {"--out", "O.png", "output image (8-bit RGB)"}};
-  for (auto& c : cli::common_options()) o.push_back(c);
   return o;
 }
 

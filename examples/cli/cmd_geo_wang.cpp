@@ -9,6 +9,7 @@
 #include <tessera/geometry/tile_geometric_plane.hpp>
 #include <tessera/io/mesh_file.hpp>
 #include <tessera/tiling/hash_coloring.hpp>
+#include <tessera/tiling/periodic_coloring.hpp>
 #include <tessera/tiling/scanline_coloring.hpp>
 
 #include "cli.hpp"
@@ -21,9 +22,8 @@ int build(const cli::arguments& args) {
   auto dir = args.required("--out");
   if (!in) return cli::fail(args, in.error());
   if (!dir) return cli::fail(args, dir.error());
-  if (!args.has("--colors")) return cli::fail(args, status::invalid_argument("missing required option --colors"));
-  if (!args.has("--tile")) return cli::fail(args, status::invalid_argument("missing required option --tile"));
-  auto colors = args.numbers("--colors", 2);
+  if (!args.has("--tile")) return cli::fail(args, cli::arguments::missing("--tile"));
+  auto colors = args.color_pair("--colors", max_wang_colors);
   auto tile = args.number("--tile", 0, 0, 1e6);
   auto edge = args.number("--edge-height", 0, 0, 1e6);
   if (!colors) return cli::fail(args, colors.error());
@@ -33,13 +33,9 @@ int build(const cli::arguments& args) {
   if (!ex_mesh) return cli::fail(args, ex_mesh.error());
   auto ex = prepare_quilt_exemplar(*ex_mesh);
   if (!ex) return cli::fail(args, ex.error());
-  for (const double c : *colors)
-    if (!(c >= 0 && c <= max_wang_colors) || c != std::floor(c))
-      return cli::fail(args, status::invalid_argument(cat("--colors expects two integers NH,NV in [1, ",
-                                                                  max_wang_colors, "], got ", c)));
   geometric_wang_options o;
-  o.horizontal_colors = static_cast<int>((*colors)[0]);
-  o.vertical_colors = static_cast<int>((*colors)[1]);
+  o.horizontal_colors = colors->first;
+  o.vertical_colors = colors->second;
   o.tile_size = *tile;
   o.edge_height = *edge;
   o.quilt.seed = args.seed();
@@ -98,30 +94,34 @@ int tile(const cli::arguments& args) {
   auto out = args.required("--out");
   if (!dir) return cli::fail(args, dir.error());
   if (!out) return cli::fail(args, out.error());
-  if (!args.has("--grid")) return cli::fail(args, status::invalid_argument("missing required option --grid"));
   // a plane of 2^20 tiles already has tens of millions of vertices: refused before the coloring
   // (hash colouring stores every cell) is allocated
   auto grid = args.size("--grid", 4096, index_t{1} << 20);
   if (!grid) return cli::fail(args, grid.error());
   const index_t cols = grid->first, rows = grid->second;  // not a structured binding: a lambda captures them
+  auto kind = args.choice("--coloring", {"hash", "scanline", "periodic"});
+  if (!kind) return cli::fail(args, kind.error());
+  auto period = args.integer("--period", 4, 1, 8192);
+  if (!period) return cli::fail(args, period.error());
   auto set = load_geometric_tile_set(*dir);
   if (!set) return cli::fail(args, set.error());
-  const std::string kind = args.str("--coloring", "hash");
   auto edges = tile_set_edges::create(set->horizontal_colors, set->vertical_colors, set->edges);
   if (!edges) return cli::fail(args, edges.error());
   stored_tile_coloring coloring;
-  if (kind == "hash") {
+  if (*kind == "hash") {
     auto h = hash_coloring::for_set(*edges, args.seed());
     if (!h) return cli::fail(args, h.error());
     auto w = h->window(0, 0, cols, rows);
     if (!w) return cli::fail(args, w.error());
     coloring = store_coloring(*w);
-  } else if (kind == "scanline") {
+  } else if (*kind == "scanline") {
     auto s = scanline_coloring::create(*edges, cols, rows, args.seed());
     if (!s) return cli::fail(args, s.error());
     coloring = store_coloring(*s);
   } else {
-    return cli::fail(args, status::invalid_argument("--coloring expects hash or scanline, got '" + kind + "'"));
+    auto p = periodic_coloring::create(*edges, *period, *period, cols, rows, args.seed());
+    if (!p) return cli::fail(args, p.error());
+    coloring = store_coloring(*p);
   }
   thread_pool_executor pool(args.threads());
   result<tri_mesh> plane = status::internal_error("not run");
@@ -156,27 +156,28 @@ int tile(const cli::arguments& args) {
 const cli::registrar reg_build{[] {
   cli::command c{"geo-wang build",
                  "build a complete set of planar geometric-texture Wang tiles from an exemplar mesh",
-                 "tessera geo-wang build --exemplar E.obj --colors NH,NV --tile W --out DIR [options]",
+                 "tessera geo-wang build --exemplar E.obj --tile W --out DIR [--colors NH,NV] [options]",
                  {{"--exemplar", "FILE", "exemplar mesh of closed elements"},
-                  {"--colors", "NH,NV", "colours of horizontal (north/south) and vertical (east/west) edges"},
+                  {"--colors", "NH,NV",
+                   "colours of horizontal (north/south) and vertical (east/west) edges, 1 to 4096 (default 2,2)"},
                   {"--tile", "W", "tile size in exemplar units"},
                   {"--edge-height", "H", "edge strip height h_E (default 1.5 x element size)"},
                   {"--out", "DIR", "output directory: tile_<index>.obj and tiles.json"}},
                  build};
-  for (auto& o : cli::common_options()) c.options.push_back(o);
   return c;
 }()};
 
 const cli::registrar reg_tile{[] {
-  cli::command c{"geo-wang tile",
-                 "tile a plane from a geometric Wang tile set into one welded mesh",
-                 "tessera geo-wang tile --tiles DIR --grid COLSxROWS --out O.obj [--seed S] [--coloring hash|scanline]",
-                 {{"--tiles", "DIR", "tile set directory (tiles.json + OBJ tiles)"},
-                  {"--grid", "COLSxROWS", "number of tiles, at most 4096 a side and 2^20 in all"},
-                  {"--coloring", "KIND", "hash (default) or scanline edge colouring"},
-                  {"--out", "FILE", "output mesh"}},
-                 tile};
-  for (auto& o : cli::common_options()) c.options.push_back(o);
+  cli::command c{
+      "geo-wang tile",
+      "tile a plane from a geometric Wang tile set into one welded mesh",
+      "tessera geo-wang tile --tiles DIR --grid COLSxROWS --out O.obj [--seed S] [--coloring hash|scanline|periodic]",
+      {{"--tiles", "DIR", "tile set directory (tiles.json + OBJ tiles)"},
+       {"--grid", "COLSxROWS", "number of tiles, at most 4096 a side and 2^20 in all"},
+       {"--coloring", "KIND", "hash (default; O(1) per cell), scanline (Cohen) or periodic edge colouring"},
+       {"--period", "N", "period in tiles of --coloring periodic (default 4)"},
+       {"--out", "FILE", "output mesh"}},
+      tile};
   return c;
 }()};
 

@@ -100,9 +100,10 @@ int info_mesh(const cli::arguments& args, const std::string& path) {
 }
 
 int run_info(const cli::arguments& args) {
-  if (args.positional().size() != 1)
-    return cli::fail(args, tessera::status::invalid_argument("expects exactly one FILE (see tessera info --help)"));
-  const std::string& path = args.positional()[0];
+  if (!args.has("--in"))
+    return cli::fail(
+        args, tessera::status::invalid_argument("expects exactly one FILE (or --in FILE; see tessera info --help)"));
+  const std::string path = args.str("--in");
   if (tessera::file_extension(path) == "png") return info_image(args, path);
   if (tessera::is_mesh_path(path)) return info_mesh(args, path);
   return cli::fail(args,
@@ -113,9 +114,12 @@ const cli::registrar reg({
     .name = "info",
     .summary = "print what an image (PNG) or mesh (OBJ, OFF, PLY) file holds",
     .usage = "tessera info FILE [--stats]",
-    .options = {{"--stats", "", "print one JSON line with the same figures instead of text"}},
+    .options = {{"--in", "FILE", "the PNG or mesh file (or FILE as the argument)"},
+                {"--stats", "", "print one JSON line with the same figures instead of text"}},
     .run = run_info,
     .positional = "FILE",
+    .positional_options = {"--in"},
+    .shared = cli::shared_options::stats_only,
 });
 
 }  // namespace

@@ -1,4 +1,4 @@
-// tessera mesh-quilt --exemplar E.obj --size X,Y --out O.obj: mesh quilting of a larger geometric
+// tessera mesh-quilt --exemplar E.obj --size WxH --out O.obj: mesh quilting of a larger geometric
 // texture (geometry/mesh_quilt.hpp). Mesh quilting is the subject of US patent US7800627B2.
 #include <string>
 
@@ -16,8 +16,7 @@ int run(const cli::arguments& args) {
   auto out = args.required("--out");
   if (!in) return cli::fail(args, in.error());
   if (!out) return cli::fail(args, out.error());
-  auto size = args.numbers("--size", 2);
-  if (!args.has("--size")) return cli::fail(args, status::invalid_argument("missing required option --size"));
+  auto size = args.extent("--size", 1e6);  // WxH in exemplar units; the older X,Y is an alias
   if (!size) return cli::fail(args, size.error());
   auto lambda = args.number("--lambda", 1.0, 0, 1e6);
   if (!lambda) return cli::fail(args, lambda.error());
@@ -30,7 +29,7 @@ int run(const cli::arguments& args) {
   o.lambda = *lambda;
   thread_pool_executor pool(args.threads());
   result<mesh_quilt_result> r = status::internal_error("not run");
-  const double ms = cli::median_ms(args.repeat(), [&] { r = mesh_quilt(*ex, (*size)[0], (*size)[1], o, pool); });
+  const double ms = cli::median_ms(args.repeat(), [&] { r = mesh_quilt(*ex, size->first, size->second, o, pool); });
   if (!r) return cli::fail(args, r.error());
   if (auto s = write_mesh(*out, r->mesh); !s) return cli::fail(args, s);
   if (args.stats()) {
@@ -68,13 +67,12 @@ int run(const cli::arguments& args) {
 const cli::registrar reg{[] {
   cli::command c{"mesh-quilt",
                  "grow a larger geometric texture from an exemplar mesh (mesh quilting)",
-                 "tessera mesh-quilt --exemplar E.obj --size X,Y --out O.obj [options]",
+                 "tessera mesh-quilt --exemplar E.obj --size WxH --out O.obj [options]",
                  {{"--exemplar", "FILE", "exemplar mesh of closed elements (.obj, .off, .ply)"},
-                  {"--size", "X,Y", "output extent in exemplar units"},
+                  {"--size", "WxH", "output extent in exemplar units (W alone: W x W; the older X,Y is accepted)"},
                   {"--out", "FILE", "output mesh"},
                   {"--lambda", "L", "weight of the normal term of the matching cost (default 1)"}},
                  run};
-  for (auto& o : cli::common_options()) c.options.push_back(o);
   return c;
 }()};
 

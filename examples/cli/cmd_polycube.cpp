@@ -2,12 +2,13 @@
 // (surface/build_polycube_map.hpp, paper 000 §4). PC.obj is the polycube-deformed mesh in the input's
 // vertex and face order (the construction never refines the base mesh, so --base-out writes the base
 // as read and `refined` is always false).
+#include <charconv>
 #include <cstdio>
 #include <map>
 #include <string>
 
 #include <tessera/core/mesh_topology.hpp>
-#include <tessera/io/detail/file.hpp>
+#include <tessera/io/files.hpp>
 #include <tessera/io/mesh_file.hpp>
 #include <tessera/io/polycube_file.hpp>
 #include <tessera/surface/build_polycube_map.hpp>
@@ -16,6 +17,14 @@
 #include "cli.hpp"
 
 namespace {
+
+/// Appends the shortest decimal that reads back as exactly `v` (what the library's OBJ writer writes).
+template <class Number>
+void append_number(std::string& out, Number v) {
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  out.append(buf, r.ptr);
+}
 
 /// The quad layout as an OBJ quad mesh (corners shared between quads).
 std::string quad_obj(const tessera::polycube_map& m) {
@@ -28,11 +37,11 @@ std::string quad_obj(const tessera::polycube_map& m) {
       auto [it, fresh] = id.emplace(p, static_cast<index_t>(id.size()) + 1);
       if (fresh) {
         v += 'v';
-        for (auto c : p) v += ' ', detail::append_number(v, static_cast<double>(c) * m.tile_size);
+        for (auto c : p) v += ' ', append_number(v, static_cast<double>(c) * m.tile_size);
         v += '\n';
       }
       f += ' ';
-      detail::append_number(f, it->second);
+      append_number(f, it->second);
     }
     f += '\n';
   }
@@ -41,7 +50,7 @@ std::string quad_obj(const tessera::polycube_map& m) {
 
 int run(const cli::arguments& args) {
   using namespace tessera;
-  auto in = args.required("--mesh");
+  auto in = args.required("--in");
   auto out = args.required("--out");
   if (!in) return cli::fail(args, in.error());
   if (!out) return cli::fail(args, out.error());
@@ -108,8 +117,8 @@ int run(const cli::arguments& args) {
 const cli::registrar reg{[] {
   cli::command c{"polycube",
                  "polycube map of a closed triangle mesh, with its tile-grid quad layout (paper 000 §4)",
-                 "tessera polycube --mesh IN.(obj|off|ply) --out PC.obj [--tile W | --tiles-across N] [options]",
-                 {{"--mesh", "FILE", "closed, manifold, oriented triangle mesh (.obj, .off, .ply)"},
+                 "tessera polycube --in IN.(obj|off|ply) --out PC.obj [--tile W | --tiles-across N] [options]",
+                 {{"--in", "FILE", "closed, manifold, oriented triangle mesh (.obj, .off, .ply)", {"--mesh"}},
                   {"--out", "FILE", "polycube-deformed mesh, in the input's vertex and face order"},
                   {"--tile", "W", "tile size in mesh units"},
                   {"--tiles-across", "N", "tiles across the largest bounding-box extent (default 8)"},
@@ -119,7 +128,6 @@ const cli::registrar reg{[] {
                   {"--base-out", "FILE", "write the base mesh PC.obj follows (the input: never refined)"},
                   {"--map-out", "FILE", "write the whole map (io/polycube_file.hpp)"}},
                  run};
-  for (auto& o : cli::common_options()) c.options.push_back(o);
   return c;
 }()};
 

@@ -104,7 +104,6 @@ std::vector<cli::option_spec> quilt_options_spec() {
       {"--in", "I.png", "image (PNG or procedural kind) whose masked pixels are filled; other pixels are kept exactly"},
       {"--mask", "M.png", "mask of --in's size: pixels brighter than half are filled"},
   };
-  for (auto& c : cli::common_options()) o.push_back(c);
   return o;
 }
 

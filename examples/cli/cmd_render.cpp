@@ -10,8 +10,9 @@ namespace {
 
 int run(const cli::arguments& args) {
   using namespace tessera;
-  if (args.positional().size() != 1)
-    return cli::fail(args, status::invalid_argument("expects one input mesh (see tessera render --help)"));
+  if (!args.has("--in"))
+    return cli::fail(args,
+                     status::invalid_argument("expects one input mesh (IN or --in IN; see tessera render --help)"));
   auto out = args.required("--out");
   if (!out) return cli::fail(args, out.error());
   mesh_preview_options o;
@@ -28,17 +29,17 @@ int run(const cli::arguments& args) {
     return cli::fail(args, status::invalid_argument("--view expects oblique, top, front or side, got '" + view + "'"));
   auto az = args.number("--azimuth", o.azimuth_degrees);
   auto el = args.number("--elevation", o.elevation_degrees);
-  auto grid = args.number("--grid", 0);
+  auto grid = args.number("--tile", 0);
   if (!az) return cli::fail(args, az.error());
   if (!el) return cli::fail(args, el.error());
   if (!grid) return cli::fail(args, grid.error());
   o.azimuth_degrees = *az, o.elevation_degrees = *el, o.grid_spacing = *grid;
-  if (args.has("--image-size")) {
-    auto sz = args.size("--image-size");
+  if (args.has("--size")) {
+    auto sz = args.size("--size");
     if (!sz) return cli::fail(args, sz.error());
     o.width = sz->first, o.height = sz->second;
   }
-  auto mesh = read_mesh(args.positional()[0]);
+  auto mesh = read_mesh(args.str("--in"));
   if (!mesh) return cli::fail(args, mesh.error());
   thread_pool_executor pool(args.threads());
   result<image_buffer<std::uint8_t, 3>> img = status::internal_error("not run");
@@ -57,20 +58,20 @@ int run(const cli::arguments& args) {
   return 0;
 }
 
-const cli::registrar reg{[] {
-  cli::command c{"render",
-                 "render a shaded preview of a mesh to PNG",
-                 "tessera render IN.obj --out P.png [--view oblique|top|front|side] [options]",
-                 {{"--out", "FILE", "output PNG"},
-                  {"--view", "V", "oblique (default), top, front or side"},
-                  {"--azimuth", "DEG", "camera azimuth around +Z (overrides the view)"},
-                  {"--elevation", "DEG", "camera elevation, 90 = top (overrides the view)"},
-                  {"--image-size", "WxH", "image size (default 800x600)"},
-                  {"--grid", "W", "overlay tile borders every W units"}},
-                 run,
-                 "IN"};
-  for (auto& o : cli::common_options()) c.options.push_back(o);
-  return c;
-}()};
+const cli::registrar reg({
+    .name = "render",
+    .summary = "render a shaded preview of a mesh to PNG",
+    .usage = "tessera render IN.obj --out P.png [--view oblique|top|front|side] [options]",
+    .options = {{"--in", "IN", "the mesh (.obj, .off, .ply; or IN as the argument)"},
+                {"--out", "FILE", "output PNG"},
+                {"--view", "V", "oblique (default), top, front or side"},
+                {"--azimuth", "DEG", "camera azimuth around +Z (overrides the view)"},
+                {"--elevation", "DEG", "camera elevation, 90 = top (overrides the view)"},
+                {"--size", "WxH", "image size (default 800x600)", {"--image-size"}},
+                {"--tile", "W", "draw the borders of W x W tiles (in mesh units) over the mesh", {"--grid"}}},
+    .run = run,
+    .positional = "IN",
+    .positional_options = {"--in"},
+});
 
 }  // namespace

@@ -15,11 +15,11 @@ using tessera::status;
 inline constexpr tessera::index_t max_side = 16384;
 
 int run_sample(const cli::arguments& args) {
-  if (args.positional().size() != 1)
+  if (!args.has("--kind"))
     return cli::fail(
         args, status::invalid_argument(
                   "expects one KIND: grass, sand, rock, bricks, cells, weave or dots (see tessera sample --help)"));
-  const auto kind = tessera::parse_exemplar_kind(args.positional()[0]);
+  const auto kind = tessera::parse_exemplar_kind(args.str("--kind"));
   if (!kind) return cli::fail(args, kind.error());
   auto out = args.required("--out");
   if (!out) return cli::fail(args, out.error());
@@ -57,13 +57,15 @@ const cli::registrar reg({
     .name = "sample",
     .summary = "write a procedural exemplar image (grass sand rock bricks cells weave dots)",
     .usage = "tessera sample KIND --size WxH --out E.png [--seed S] [--stats]",
-    .options = {{"--size", "WxH", "image size (default 128x128; at most 16384 per side)"},
+    .options = {{"--kind", "KIND", "grass, sand, rock, bricks, cells, weave or dots (or KIND as the argument)"},
+                {"--size", "WxH", "image size (default 128x128; at most 16384 per side)"},
                 {"--out", "FILE", "output PNG (required)"},
                 {"--seed", "S", "random seed (default 1); same seed, same image"},
                 {"--repeat", "N", "time the generation N times and report the median (default 1)"},
                 {"--stats", "", "print one JSON line instead of text"}},
     .run = run_sample,
     .positional = "KIND",
+    .positional_options = {"--kind"},
 });
 
 }  // namespace

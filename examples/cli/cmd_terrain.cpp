@@ -448,7 +448,6 @@ std::vector<cli::option_spec> terrain_options() {
        "--stats prints one line per frame: frame, frame_ms, visible, resynthesized, stable_faces, "
        "continuous_edges, max_level_jump"},
   };
-  for (auto& c : cli::common_options()) o.push_back(c);
   return o;
 }
 

@@ -17,9 +17,10 @@ namespace {
 using tessera::status;
 
 int run(const cli::arguments& args) {
-  if (args.positional().size() != 1)
-    return cli::fail(args, status::invalid_argument("expects exactly one image IN.png (see tessera tones --help)"));
-  const std::string& path = args.positional()[0];
+  if (!args.has("--in"))
+    return cli::fail(
+        args, status::invalid_argument("expects exactly one image IN.png (or --in IN.png; see tessera tones --help)"));
+  const std::string path = args.str("--in");
   auto max = args.integer("--max", 4, 1, 64);
   if (!max) return cli::fail(args, max.error());
   tessera::palette given;
@@ -84,11 +85,11 @@ int run(const cli::arguments& args) {
 
 std::vector<cli::option_spec> options() {
   std::vector<cli::option_spec> o = {
+      {"--in", "IN.png", "the image (or IN.png as the argument)"},
       {"--max", "N", "how many dominant tones to find, 1..64 (default 4; fewer if the image has fewer colours)"},
       {"--palette", "LIST",
        "measure these tones instead (\"#000000:1,#ffffff:1\"; weights ignored): each pixel "
        "counts for the nearest"}};
-  for (auto& c : cli::common_options()) o.push_back(c);
   return o;
 }
 
@@ -99,6 +100,7 @@ const cli::registrar reg({
     .options = options(),
     .run = run,
     .positional = "IN.png",
+    .positional_options = {"--in"},
 });
 
 }  // namespace

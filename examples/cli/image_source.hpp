@@ -30,8 +30,7 @@ inline tessera::result<tessera::pixel_format> image_source_format(const argument
   if (std::ifstream(name).good()) {
     auto info = tessera::read_png_info(name);
     if (!info) return info.error();
-    return tessera::pixel_format{info->bit_depth == 16 ? tessera::channel_type::uint16 : tessera::channel_type::uint8,
-                                 info->channels};
+    return png_format(*info);
   }
   if (!tessera::parse_exemplar_kind(name)) return unknown_image_source(option, name);
   return tessera::pixel_format{tessera::channel_type::uint8, 3};
@@ -56,12 +55,13 @@ tessera::result<tessera::image_buffer<T, C>> load_image_source(const arguments& 
                                               .seed = args.seed()});
 }
 
-/// Calls `f(format_tag<T, C>{})` with the format of the image `option` names.
+/// Calls `f(format_tag<T, C>{})` with the format of the image `option` names (8 or 16 bits: see
+/// dispatch_png_format).
 template <class F>
 tessera::status with_image_source(const arguments& args, std::string_view option, F&& f) {
   auto fmt = image_source_format(args, option);
   if (!fmt) return fmt.error();
-  return tessera::dispatch_format(*fmt, std::forward<F>(f));
+  return dispatch_png_format(*fmt, std::forward<F>(f));
 }
 
 /// The --exemplar-size option that goes with image sources.

@@ -68,7 +68,7 @@ _robust("geo-wang build" --edge-height number robust_mesh ${_gwb})
 _robust("geo-wang tile" --grid size robust_geo geo-wang tile --tiles ${_rb}/geo --out ${_rb}/geo_plane.obj)
 
 set(_mq mesh-quilt --exemplar ${_rb}/rings.obj --out ${_rb}/mesh_quilt.obj)
-_robust("mesh-quilt" --size list2 robust_mesh ${_mq})
+_robust("mesh-quilt" --size extent robust_mesh ${_mq})
 _robust("mesh-quilt" --lambda number robust_mesh ${_mq} --size 10,10)
 
 set(_quilt quilt --exemplar sand --exemplar-size 32 --size 24x24 --out ${_rb}/quilt.png)

@@ -27,5 +27,5 @@ tessera_cli_test(NAME "cli: polycube negative tile" CODE 1 REGEX "--tile expects
                  COMMAND polycube --mesh ${_pcdata}/torus.obj --out ${_pc}/never.obj --tile -1)
 tessera_cli_test(NAME "cli: polycube tile and tiles-across" CODE 1 REGEX "not both"
                  COMMAND polycube --mesh ${_pcdata}/torus.obj --out ${_pc}/never.obj --tile 1 --tiles-across 3)
-tessera_cli_test(NAME "cli: polycube missing mesh" CODE 1 REGEX "missing required option --mesh"
+tessera_cli_test(NAME "cli: polycube missing mesh" CODE 1 REGEX "missing required option --in"
                  COMMAND polycube --out ${_pc}/never.obj)

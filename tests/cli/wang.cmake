@@ -82,7 +82,7 @@ _wang_fail("wang build with 1e10 colours" "--colors expects two integers NH,NV i
            wang build --exemplar sand --exemplar-size 48 --colors 1e10,2 --tile 16 --out ${_o}/bad)
 _wang_fail("wang build with fractional colours" "--colors expects two integers NH,NV in \\[1, 4096\\], got '2.5,2'"
            wang build --exemplar sand --exemplar-size 48 --colors 2.5,2 --tile 16 --out ${_o}/bad)
-_wang_fail("wang build with one number for --colors" "--colors expects 2 comma-separated numbers, got '3'"
+_wang_fail("wang build with one number for --colors" "--colors expects two integers NH,NV in \\[1, 4096\\], got '3'"
            wang build --exemplar sand --colors 3 --tile 16 --out ${_o}/bad)
 _wang_fail("wang build with 64 x 64 colours" "size_overflow: wang tile set: 16777216 tiles of 16 x 16 pixels"
            wang build --exemplar sand --exemplar-size 48 --colors 64,64 --tile 16 --out ${_o}/bad)
@@ -125,7 +125,7 @@ set_tests_properties("cli: quilt with a mask of another size" PROPERTIES FIXTURE
 
 _wang_fail("wang tile without a tile directory" "no_such/tiles.json: cannot open"
            wang tile --tiles ${_o}/no_such --grid 2x2 --out ${_o}/bad.png)
-_wang_fail("wang tile with an unknown colouring" "--coloring expects scanline, hash or periodic, got 'spiral'"
+_wang_fail("wang tile with an unknown colouring" "--coloring expects hash, scanline or periodic, got 'spiral'"
            wang tile --tiles ${_o}/tiles --grid 2x2 --coloring spiral --out ${_o}/bad.png)
 _wang_fail("wang tile with a bad grid" "--grid expects positive integers WxH, got '0x2'"
            wang tile --tiles ${_o}/tiles --grid 0x2 --out ${_o}/bad.png)

@@ -3,7 +3,7 @@
 #   - an exit code 0, 1 or 2 (never a signal, an abort or a hang: each run has a timeout);
 #   - any non-zero exit prints "tessera <command>: ..." on stderr;
 #   - values that are never valid (nan, inf, empty, malformed) are refused, naming the option.
-#   cmake -DOPTION=--patch -DKIND=int|number|size|list2|list3|list4 -DOUT=<dir> -P robust_option.cmake -- <command...>
+#   cmake -DOPTION=--patch -DKIND=int|number|size|extent|list2|list3|list4 -DOUT=<dir> -P robust_option.cmake -- <command...>
 set(_cmd "")
 set(_collect OFF)
 math(EXPR _last "${CMAKE_ARGC} - 1")
@@ -32,6 +32,9 @@ elseif(KIND STREQUAL "number")
 elseif(KIND STREQUAL "size")
   set(_maybe "1" "1x1" "3x2")
   set(_never "-1x4" "0x0" "0" "99999999x99999999" "1e300" "nanxnan" "infx4" "EMPTY" "4x" "x4" "4x4x4" "1.5x4")
+elseif(KIND STREQUAL "extent")  # WxH in real units (the older X,Y accepted)
+  set(_maybe "1" "1x1" "3x2" "1.5x4" "2,3")
+  set(_never "-1x4" "0x0" "0" "1e300" "nanxnan" "infx4" "EMPTY" "4x" "x4" "4x4x4" "1,2,3")
 elseif(KIND MATCHES "^list([0-9])$")
   set(_n ${CMAKE_MATCH_1})
   set(_maybe "" )
