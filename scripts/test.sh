@@ -7,7 +7,8 @@
 # The sanitizer build uses -Og, not -O1: GCC 12 compiles the instrumented tests in ~60% of the CPU
 # time of -O1 and they run as fast (tests/geometry/test_element_merge.cpp: compile 31 s against 52 s,
 # run 9.7 s against 10.3 s; -O0 compiles in 27 s but runs 3x slower), and the sanitizers check the
-# same accesses.
+# same accesses. Warnings are errors in the Release build; here they are only printed (the optimizer's
+# flow warnings differ with -Og and the instrumentation, and would fail the run on false positives).
 # Arguments after the options go to ctest (e.g. scripts/test.sh -R adapters).
 set -euo pipefail
 source "$(dirname "$0")/common.sh"
@@ -24,7 +25,7 @@ if ((sanitize)); then
   step "configure $build (ASan + UBSan, -Og)"
   configure "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-Og -g1" \
     -DTESSERA_SANITIZE=ON -DTESSERA_BUILD_TESTS=ON -DTESSERA_BUILD_CLI=ON -DTESSERA_BUILD_EXAMPLES=OFF \
-    -DTESSERA_BUILD_BENCHMARKS=OFF
+    -DTESSERA_BUILD_BENCHMARKS=OFF -DTESSERA_WERROR=OFF
   export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1:strict_string_checks=1}
   export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
 else
