@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
 
   // Fill them with a procedural exemplar (float RGB, converted to RGBA8 on the way) ...
   auto bricks = tessera::make_exemplar<float, 3>(tessera::exemplar_kind::bricks, {.width = 96, .height = 64});
+  if (!bricks) return std::fprintf(stderr, "%s\n", bricks.error().to_string().c_str()), 1;
   if (auto s = tessera::copy_image(*bricks, *view); !s) return std::fprintf(stderr, "%s\n", s.to_string().c_str()), 1;
 
   // ... and save the caller's pixels: any Image can be written.

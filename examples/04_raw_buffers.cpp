@@ -36,10 +36,12 @@ int main(int argc, char** argv) {
     auto region = tessera::make_image_view<4>(atlas.data() + i * tile * 4, tile, tile, stride);
     if (!region) return fail(region.error());
     auto tile_image = tessera::make_exemplar<std::uint8_t, 3>(kinds[i], {.width = tile, .height = tile});
+    if (!tile_image) return fail(tile_image.error());
     if (auto s = tessera::copy_image(*tile_image, *region); !s) return fail(s);
   }
   // [/snippet]
   auto whole = tessera::make_image_view<4>(atlas.data(), atlas_w, atlas_h, stride);
+  if (!whole) return fail(whole.error());
   const std::string atlas_path = dir + "/04_raw_buffers_atlas.png";
   if (auto s = tessera::write_png(atlas_path, *whole); !s) return fail(s);
 
@@ -78,6 +80,7 @@ int main(int argc, char** argv) {
   const auto huge = tessera::make_image_view<4>(atlas.data(), std::ptrdiff_t(1) << 40, 4);
   const std::vector<std::uint32_t> bad_indices = {0, 1, 9};
   const auto bad_mesh = tessera::make_mesh_view(vertices.data(), 8, bad_indices.data(), 1, nullptr, 8);
+  if (!bad_mesh) return fail(bad_mesh.error());  // the pointers and counts are fine: the index is not
   std::printf("stride too small: %s\n", narrow.error().to_string().c_str());
   std::printf("null data:        %s\n", null_data.error().to_string().c_str());
   std::printf("overflowing size: %s\n", huge.error().to_string().c_str());

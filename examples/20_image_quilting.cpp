@@ -58,6 +58,7 @@ int main(int argc, char** argv) {
   for (auto kind : {tessera::exemplar_kind::bricks, tessera::exemplar_kind::cells, tessera::exemplar_kind::grass}) {
     // [snippet:quilt]
     auto exemplar = tessera::make_exemplar<std::uint8_t, 3>(kind, {.width = 96, .height = 96, .seed = 2});
+    if (!exemplar) return std::fprintf(stderr, "%s\n", exemplar.error().to_string().c_str()), 1;
     tessera::image_buffer<std::uint8_t, 3> out(192, 192);
     auto s = tessera::quilt(*exemplar, out, {.patch_size = 24, .overlap = 5, .seed = 7}, pool);
     // [/snippet]

@@ -100,6 +100,7 @@ int main(int argc, char** argv) {
   auto atlas = tessera::build_wang_atlas(*set);
   if (!atlas) return fail(atlas.error());
   auto plane_coloring = tessera::hash_coloring::for_set(set->edges(), /*seed=*/5);  // O(1) per cell
+  if (!plane_coloring) return fail(plane_coloring.error());
   const tessera::vec2 texel = tessera::atlas_coordinates(*atlas, *plane_coloring, 1000.25, -77.5);
   // [/snippet]
   std::printf("plane texel (1000.25, -77.5) -> atlas texel (%.2f, %.2f); exact mip levels: %d\n", texel.x, texel.y,

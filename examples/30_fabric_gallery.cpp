@@ -86,7 +86,9 @@ int main(int argc, char** argv) {
   for (auto layout : {tessera::source_layout::stripes, tessera::source_layout::blocks, tessera::source_layout::cells}) {
     rgb8 img(n, n);
     if (!check(tessera::make_source_image(img, denim, {.layout = layout, .feature_size = 36, .seed = 3}))) return 1;
-    mapped.push_back(*tessera::cat_map(img, 31, {}, pool));
+    auto stepped = tessera::cat_map(img, 31, {}, pool);
+    if (!check(stepped.error())) return 1;
+    mapped.push_back(std::move(*stepped));
     layouts.push_back(std::move(img));
   }
   for (auto& m : mapped) layouts.push_back(std::move(m));

@@ -37,7 +37,9 @@ int main(int argc, char** argv) {
     plot.write(x, h - 1 - std::min<tessera::index_t>(h - 1, 3 * x / 10), {240, 190, 190});  // period = 3N
   }
   for (std::int64_t n = 1; n <= 1000; ++n) {
-    const auto p = static_cast<tessera::index_t>(*tessera::cat_map_period(n));
+    const auto period = tessera::cat_map_period(n);
+    if (!period) return std::fprintf(stderr, "%s\n", period.error().to_string().c_str()), 1;
+    const auto p = static_cast<tessera::index_t>(*period);
     const tessera::index_t x = n - 1, y = h - 1 - p / 10;
     const bool paper = n == 400;
     for (tessera::index_t dy = -1; dy <= 1; ++dy)

@@ -29,6 +29,7 @@ int main(int argc, char** argv) {
   if (auto s = tessera::write_png(path, texture); !s) return std::fprintf(stderr, "%s\n", s.to_string().c_str()), 1;
   // the weave only rearranges pixels and the perturbation only changes lightness, so the main tones stay
   const auto shares = tessera::dominant_tones(texture, 4);
+  if (!shares) return std::fprintf(stderr, "%s\n", shares.error().to_string().c_str()), 1;
   std::printf("wrote %s; dominant tones:", path.c_str());
   for (const auto& t : *shares)
     std::printf(" #%02x%02x%02x %.0f%%", static_cast<int>(t.color[0] * 255 + 0.5f),

@@ -52,8 +52,12 @@ int render_scene(const scene_spec& spec, const std::string& dir, tessera::thread
 
   // [snippet:terrain_pipeline]
   // once per mesh and per exemplar: adjacency, the finely spaced exemplar pyramid
-  auto mesh = tessera::prepare_terrain_mesh(*source).value();
-  auto pyramid = tessera::build_exemplar_pyramid(*exemplar, {.min_scale = 0.5}, pool).value();
+  auto prepared = tessera::prepare_terrain_mesh(*source);
+  if (!prepared) return check(prepared.error());
+  auto levels = tessera::build_exemplar_pyramid(*exemplar, {.min_scale = 0.5}, pool);
+  if (!levels) return check(levels.error());
+  const auto& mesh = *prepared;
+  const auto& pyramid = *levels;
   auto camera = tessera::make_camera(spec.camera, width, height);
   if (!camera) return check(camera.error());  // eye == target, fov outside (0, 180), ...
 
@@ -79,8 +83,9 @@ int render_scene(const scene_spec& spec, const std::string& dir, tessera::thread
   const std::string synthesized = dir + "/" + spec.name + "_synthesized.png",
                     tiled_path = dir + "/" + spec.name + "_tiled.png";
   if (check(tessera::write_png(synthesized, frame))) return 1;
-  const auto tiled = tessera::prepare_tiled_texture(*exemplar, pool).value();
-  if (check(tessera::render_tiled_frame(mesh, proj, tiled, frame, {.sun = sun}, pool))) return 1;
+  const auto tiled = tessera::prepare_tiled_texture(*exemplar, pool);
+  if (!tiled) return check(tiled.error());
+  if (check(tessera::render_tiled_frame(mesh, proj, *tiled, frame, {.sun = sun}, pool))) return 1;
   if (check(tessera::write_png(tiled_path, frame))) return 1;
   std::printf("%-6s %7td visible triangles, %3td levels (max jump %d), %4td restarts, %.1f %% continuous edges\n",
               spec.name, proj.num_visible(), field.levels, field.max_level_jump, syn.restarts,
@@ -125,9 +130,10 @@ int main(int argc, char** argv) {
   frame_t strip(3 * 256 + 2 * 8, 256, {255, 255, 255});
   int i = 0;
   for (auto kind : {tessera::exemplar_kind::grass, tessera::exemplar_kind::sand, tessera::exemplar_kind::rock}) {
-    const auto e = tessera::make_exemplar<std::uint8_t, 3>(kind, {.width = 256, .height = 256}).value();
+    const auto e = tessera::make_exemplar<std::uint8_t, 3>(kind, {.width = 256, .height = 256});
+    if (!e) return check(e.error());
     for (index_t y = 0; y < 256; ++y)
-      for (index_t x = 0; x < 256; ++x) strip.write(i * 264 + x, y, e.read(x, y));
+      for (index_t x = 0; x < 256; ++x) strip.write(i * 264 + x, y, e->read(x, y));
     ++i;
   }
   if (check(tessera::write_png(dir + "/exemplars.png", strip))) return 1;

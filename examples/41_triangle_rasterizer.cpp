@@ -75,7 +75,9 @@ int main(int argc, char** argv) {
   tessera::thread_pool_executor pool;
 
   // [snippet:rasterizer_depth]
-  auto depth = tessera::depth_buffer::create(w, h).value();
+  auto buffer = tessera::depth_buffer::create(w, h);
+  if (!buffer) return std::fprintf(stderr, "example 41: %s\n", buffer.error().to_string().c_str()), 1;
+  auto& depth = *buffer;
   std::vector<std::int32_t> id(w * h, -1);
   std::vector<std::array<double, 3>> bary(w * h);
   auto s = tessera::rasterize_clip_triangles(

@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   const auto quilt = mesh_quilt(*prepared, 16, 12, {.seed = 7}, pool);
   if (!quilt) return std::fprintf(stderr, "%s\n", quilt.error().to_string().c_str()), 1;
   const auto report = check_geometric_texture(quilt->mesh);
+  if (!report) return std::fprintf(stderr, "%s\n", report.error().to_string().c_str()), 1;
   std::printf(
       "quilted %zu elements (%lld merged, %lld dropped); open edges %lld, non-manifold %lld, intersecting pairs %lld\n",
       quilt->elements.size(), static_cast<long long>(quilt->stats.elements_merged),

@@ -33,9 +33,10 @@ int main(int argc, char** argv) {
   const std::string tiles_dir = dir + "/tiles_" + kind;
   if (auto s = save_geometric_tile_set(tiles_dir, *set); !s)
     return std::fprintf(stderr, "%s\n", s.to_string().c_str()), 1;
+  const auto mismatches = tile_set_border_mismatch(*set);
+  if (!mismatches) return std::fprintf(stderr, "%s\n", mismatches.error().to_string().c_str()), 1;
   std::printf("%zu tiles (%lld elements cross edges), border mismatches %lld -> %s\n", set->tiles.size(),
-              static_cast<long long>(set->crossing_elements), static_cast<long long>(*tile_set_border_mismatch(*set)),
-              tiles_dir.c_str());
+              static_cast<long long>(set->crossing_elements), static_cast<long long>(*mismatches), tiles_dir.c_str());
   // the set laid out 4 x 4 with gaps, in complete_tile_index order
   tri_mesh layout;
   const double w = set->tile_size, gap = 0.15 * w;
@@ -46,10 +47,14 @@ int main(int argc, char** argv) {
       !s)
     return 1;
   // a plane of 5 x 4 tiles by a hash colouring
-  const auto coloring = hash_coloring::create(set->horizontal_colors, set->vertical_colors, 5)->window(0, 0, 5, 4);
+  const auto hash = hash_coloring::create(set->horizontal_colors, set->vertical_colors, 5);
+  if (!hash) return std::fprintf(stderr, "%s\n", hash.error().to_string().c_str()), 1;
+  const auto coloring = hash->window(0, 0, 5, 4);
+  if (!coloring) return std::fprintf(stderr, "%s\n", coloring.error().to_string().c_str()), 1;
   const auto plane = tile_geometric_plane(*set, *coloring, 5, 4, pool);
   if (!plane) return std::fprintf(stderr, "%s\n", plane.error().to_string().c_str()), 1;
   const auto rep = check_geometric_texture(*plane, {0, 0, 5 * w, 4 * w});
+  if (!rep) return std::fprintf(stderr, "%s\n", rep.error().to_string().c_str()), 1;
   std::printf(
       "plane: %lld vertices, %lld elements; open edges inside %lld, non-manifold %lld, intersecting pairs %lld\n",
       static_cast<long long>(plane->num_vertices()), static_cast<long long>(rep->elements),

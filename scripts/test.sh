@@ -2,8 +2,13 @@
 # Quick start 2: install what is missing, build everything, run every test.
 #   scripts/test.sh               Release build in build/, all tests (unit, CLI, examples, structural)
 #   scripts/test.sh --sanitize    AddressSanitizer + UndefinedBehaviorSanitizer build in build-asan/
-#                                 (-O1; tests and the tessera command only), same tests except the
+#                                 (-Og; tests and the tessera command only), same tests except the
 #                                 structural build-shape checks and the examples
+# The sanitizer build uses -Og, not -O1: GCC 12 compiles the instrumented tests in ~60% of the CPU
+# time of -O1 and they run about as fast (tests/geometry/test_element_merge.cpp: compile 31 s against
+# 52 s, run 9.7 and 9.6 s against 10.3 and 8.0 s in two runs; -O0 compiles in 27 s but runs 3x
+# slower), and the sanitizers check the same accesses. Warnings are errors in the Release build; here they are only printed (the optimizer's
+# flow warnings differ with -Og and the instrumentation, and would fail the run on false positives).
 # Arguments after the options go to ctest (e.g. scripts/test.sh -R adapters).
 set -euo pipefail
 source "$(dirname "$0")/common.sh"
@@ -17,10 +22,10 @@ fi
 setup
 if ((sanitize)); then
   build=${TESSERA_ASAN_BUILD_DIR:-$TESSERA_ROOT/build-asan}
-  step "configure $build (ASan + UBSan, -O1)"
-  configure "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" \
+  step "configure $build (ASan + UBSan, -Og)"
+  configure "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-Og -g1" \
     -DTESSERA_SANITIZE=ON -DTESSERA_BUILD_TESTS=ON -DTESSERA_BUILD_CLI=ON -DTESSERA_BUILD_EXAMPLES=OFF \
-    -DTESSERA_BUILD_BENCHMARKS=OFF
+    -DTESSERA_BUILD_BENCHMARKS=OFF -DTESSERA_WERROR=OFF
   export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1:strict_string_checks=1}
   export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
 else
