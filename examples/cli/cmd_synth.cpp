@@ -2,47 +2,20 @@
 //   tessera synth --exemplar E.png --size WxH --out O.png [--seed S] [--threads T] [--patch P]
 //                 [--overlap V] [--seams feather|cut] [--window X,Y,W,H] [--source-map M.png]
 //                 [--repeat N] [--stats]
-// This file parses and dispatches; the per-format work is synth_run.hpp, compiled in
-// cmd_synth_8bit.cpp and cmd_synth_16bit.cpp.
 #include <algorithm>
 #include <cmath>
-#include <span>
+#include <cstdint>
 #include <string>
 #include <vector>
 
 #include <tessera/core/format.hpp>
+#include <tessera/image/metrics.hpp>
+#include <tessera/image/patch_model.hpp>
+#include <tessera/image/patch_synthesis.hpp>
+#include <tessera/io/png.hpp>
 
 #include "cli.hpp"
 #include "image_source.hpp"
-#include "synth_request.hpp"
-
-namespace cli::synth {
-
-template <int C>
-void add_quality(json_line& line, const tessera::image_buffer<float, C>& crop,
-                 const tessera::image_buffer<float, C>& exemplar, std::span<const tessera::seam_segment> seams,
-                 tessera::thread_pool_executor& pool) {
-  const index_t cw = crop.width(), ch = crop.height();
-  const tessera::neighborhood_energy_options eo{.window = 5, .sample_step = 4};
-  if (auto e = tessera::neighborhood_energy(crop, exemplar, eo, pool)) line.add("neighborhood_energy", *e);
-  if (!seams.empty())
-    if (auto g = tessera::seam_gradient_ratio(crop, seams, exemplar)) line.add("seam_gradient_ratio", *g);
-  if (auto h = tessera::histogram_distance(crop, exemplar)) line.add("histogram_distance", *h);
-  if (std::max(cw, ch) >= 32)
-    if (auto rep = tessera::repetition_score(crop, std::min<index_t>(16, std::max(cw, ch) / 2)))
-      line.add("repetition", *rep);
-}
-
-template void add_quality<1>(json_line&, const tessera::image_buffer<float, 1>&, const tessera::image_buffer<float, 1>&,
-                             std::span<const tessera::seam_segment>, tessera::thread_pool_executor&);
-template void add_quality<2>(json_line&, const tessera::image_buffer<float, 2>&, const tessera::image_buffer<float, 2>&,
-                             std::span<const tessera::seam_segment>, tessera::thread_pool_executor&);
-template void add_quality<3>(json_line&, const tessera::image_buffer<float, 3>&, const tessera::image_buffer<float, 3>&,
-                             std::span<const tessera::seam_segment>, tessera::thread_pool_executor&);
-template void add_quality<4>(json_line&, const tessera::image_buffer<float, 4>&, const tessera::image_buffer<float, 4>&,
-                             std::span<const tessera::seam_segment>, tessera::thread_pool_executor&);
-
-}  // namespace cli::synth
 
 namespace {
 
@@ -53,8 +26,18 @@ inline constexpr index_t max_side = 32768;
 inline constexpr index_t max_pixels = index_t{1} << 28;
 inline constexpr double max_origin = 4503599627370496.0;  // 2^52, tessera::max_texture_coordinate
 
-tessera::result<cli::synth::request> parse(const cli::arguments& args) {
-  cli::synth::request r;
+struct synth_request {
+  std::string exemplar, out, source_map;
+  index_t width = 0, height = 0, patch_w = 0, patch_h = 0, overlap = 0;
+  tessera::texture_offset origin;
+  tessera::seam_mode seams = tessera::seam_mode::feather;
+  std::uint64_t seed = 1;
+  int threads = 0, repeat = 1;
+  bool stats = false;
+};
+
+tessera::result<synth_request> parse(const cli::arguments& args) {
+  synth_request r;
   auto ex = args.required("--exemplar");
   if (!ex) return ex.error();
   r.exemplar = *ex;
@@ -111,6 +94,86 @@ tessera::result<cli::synth::request> parse(const cli::arguments& args) {
   return r;
 }
 
+template <class T, int C>
+int run_format(const cli::arguments& args, const synth_request& r) {
+  auto ex = cli::load_image_source<T, C>(args, "--exemplar");
+  if (!ex) return cli::fail(args, ex.error());
+  tessera::thread_pool_executor pool(r.threads);
+  const tessera::patch_model_options mo{.patch_width = r.patch_w,
+                                        .patch_height = r.patch_h,
+                                        .overlap = r.overlap,
+                                        .seams = r.seams == tessera::seam_mode::cut};
+  tessera::result<tessera::patch_model<T, C>> model = status::internal_error("not built");
+  const double preprocess_ms = cli::time_ms([&] { model = tessera::build_patch_model(*ex, mo, pool); });
+  if (!model) return cli::fail(args, model.error());
+
+  auto out = tessera::image_buffer<T, C>::create(r.width, r.height);
+  if (!out) return cli::fail(args, out.error());
+  const tessera::patch_synthesis_options so{.origin = r.origin, .seed = r.seed, .seams = r.seams};
+  tessera::result<tessera::patch_synthesis_stats> st = status::internal_error("not run");
+  const double synthesis_ms = cli::median_ms(r.repeat, [&] { st = tessera::synthesize(*model, *out, so, pool); });
+  if (!st) return cli::fail(args, st.error());
+  if (auto s = tessera::write_png(r.out, *out); !s) return cli::fail(args, s);
+
+  if (!r.source_map.empty()) {
+    // exemplar coordinates, shown as 16-bit RGB: red = x, green = y (normalized to the exemplar), blue 0
+    tessera::image_buffer<std::uint16_t, 2> coords(r.width, r.height);
+    if (auto s = tessera::synthesize_source_map(*model, coords, so, pool); !s) return cli::fail(args, s.error());
+    tessera::image_buffer<std::uint16_t, 3> shown(r.width, r.height);
+    const double sx = 65535.0 / static_cast<double>(std::max<index_t>(1, ex->width() - 1));
+    const double sy = 65535.0 / static_cast<double>(std::max<index_t>(1, ex->height() - 1));
+    for (index_t y = 0; y < r.height; ++y)
+      for (index_t x = 0; x < r.width; ++x) {
+        const auto c = coords.read(x, y);
+        shown.write(x, y,
+                    {static_cast<std::uint16_t>(c[0] * sx + 0.5), static_cast<std::uint16_t>(c[1] * sy + 0.5), 0});
+      }
+    if (auto s = tessera::write_png(r.source_map, shown); !s) return cli::fail(args, s);
+  }
+
+  if (r.stats) {
+    // quality figures on a central crop of at most 256 x 256 (keeps --stats fast on large outputs)
+    const index_t cw = std::min<index_t>(r.width, 256), ch = std::min<index_t>(r.height, 256);
+    const index_t cx = (r.width - cw) / 2, cy = (r.height - ch) / 2;
+    tessera::image_buffer<T, C> crop(cw, ch);
+    for (index_t y = 0; y < ch; ++y)
+      for (index_t x = 0; x < cw; ++x) crop.write(x, y, out->read(cx + x, cy + y));
+    cli::json_line line;
+    line.add("command", "synth")
+        .add("width", r.width)
+        .add("height", r.height)
+        .add("exemplar_width", ex->width())
+        .add("exemplar_height", ex->height())
+        .add("patch", model->patch_width())
+        .add("patch_height", model->patch_height())
+        .add("overlap", model->overlap())
+        .add("seams", r.seams == tessera::seam_mode::cut ? "cut" : "feather")
+        .add("threads", pool.concurrency())
+        .add("preprocess_ms", preprocess_ms)
+        .add("synthesis_ms", synthesis_ms)
+        .add("repeat", r.repeat)
+        .add("mpixels_per_s", static_cast<double>(r.width * r.height) / (synthesis_ms * 1e3))
+        .add("cells", st->cells)
+        .add("filled", st->filled)
+        .add("empty_intersections", st->empty_intersections)
+        .add("model_bytes", static_cast<long long>(model->memory_bytes()));
+    const tessera::neighborhood_energy_options eo{.window = 5, .sample_step = 4};
+    if (auto e = tessera::neighborhood_energy(crop, *ex, eo, pool)) line.add("neighborhood_energy", *e);
+    const auto seams = tessera::patch_seam_lines(*model, cw, ch, {r.origin.x + cx, r.origin.y + cy});
+    if (!seams.empty())
+      if (auto g = tessera::seam_gradient_ratio(crop, seams, *ex)) line.add("seam_gradient_ratio", *g);
+    if (auto h = tessera::histogram_distance(crop, *ex)) line.add("histogram_distance", *h);
+    if (std::max(cw, ch) >= 32)
+      if (auto rep = tessera::repetition_score(crop, std::min<index_t>(16, std::max(cw, ch) / 2)))
+        line.add("repetition", *rep);
+    line.print();
+  } else {
+    std::printf("wrote %s (%td x %td, patch %td x %td, overlap %td, %.2f ms)\n", r.out.c_str(), r.width, r.height,
+                model->patch_width(), model->patch_height(), model->overlap(), synthesis_ms);
+  }
+  return 0;
+}
+
 int run_synth(const cli::arguments& args) {
   auto r = parse(args);
   if (!r) return cli::fail(args, r.error());
@@ -118,7 +181,7 @@ int run_synth(const cli::arguments& args) {
   if (!fmt) return cli::fail(args, fmt.error());
   int code = 0;
   const status s = cli::dispatch_png_format(
-      *fmt, [&]<class T, int C>(tessera::format_tag<T, C>) { code = cli::synth::run_format<T, C>(args, *r); });
+      *fmt, [&]<class T, int C>(tessera::format_tag<T, C>) { code = run_format<T, C>(args, *r); });
   if (!s) return cli::fail(args, s);
   return code;
 }

@@ -24,7 +24,10 @@ void print_help(const cli::command& c) {
   if (!c.options.empty()) std::printf("\noptions:\n");
   for (const auto& o : c.options) {
     const std::string left = o.name + (o.value.empty() ? "" : " " + o.value);
-    std::printf("  %-22s %s\n", left.c_str(), o.help.c_str());
+    std::string help = o.help;
+    for (std::size_t k = 0; k < o.aliases.size(); ++k)  // older spellings still accepted (docs/cli.md)
+      help += (k == 0 ? " (also " : ", ") + o.aliases[k] + (k + 1 == o.aliases.size() ? ")" : "");
+    std::printf("  %-22s %s\n", left.c_str(), help.c_str());
   }
 }
 

@@ -115,3 +115,7 @@ foreach(_c default hash periodic)
   set_tests_properties("cli: vocabulary geo-wang tile ${_c}" PROPERTIES FIXTURES_REQUIRED voc_gt FIXTURES_SETUP voc_gt_tiled)
 endforeach()
 _same("geo-wang tile default = --coloring hash" ${_v}/gt_default.obj ${_v}/gt_hash.obj voc_gt_tiled)
+
+# --help names an option's older spellings
+tessera_cli_test(NAME "cli: vocabulary --help lists the aliases"
+                 REGEX "--size WxH .*\\(also --image-size\\).*--tile W .*\\(also --grid\\)" COMMAND render --help)
