@@ -56,7 +56,7 @@ typename M::HalfedgeHandle openmesh_corner(const M& m, index_t f, int k) {
 template <class S, int N>
 struct point_traits<OpenMesh::VectorT<S, N>> {
   static double get(const OpenMesh::VectorT<S, N>& p, int i) noexcept {
-    return i >= 0 && i < N ? static_cast<double>(p[static_cast<std::size_t>(i)]) : 0.0;
+    return i >= 0 && i < N ? static_cast<double>(p[detail::to_size(i)]) : 0.0;
   }
 };
 
@@ -133,7 +133,7 @@ requires detail::openmesh_mesh<OM> result<OM> to_openmesh(const M& m, std::strin
   using scalar = typename OM::Point::value_type;
   OM out;
   const index_t nv = num_vertices(m), nf = num_faces(m);
-  out.reserve(static_cast<std::size_t>(nv), static_cast<std::size_t>(3 * nf / 2 + 1), static_cast<std::size_t>(nf));
+  out.reserve(detail::to_size(nv), detail::to_size(3 * nf / 2 + 1), detail::to_size(nf));
   for (index_t v = 0; v < nv; ++v) {
     const vec3 p = vertex_position(m, v);
     out.add_vertex(typename OM::Point(static_cast<scalar>(p.x), static_cast<scalar>(p.y), static_cast<scalar>(p.z)));

@@ -42,6 +42,13 @@ namespace detail {
 /// that includes the header (the umbrella header's compile-time goal).
 template <class T, class Dependent>
 using dependent_t = std::conditional_t<sizeof(Dependent*) != 0, T, T>;
+
+/// `v` as a std::size_t, the index and size type of std::vector, std::array and std::span: tessera
+/// counts with the signed index_t and converts only where it touches a standard container.
+template <class T>
+[[nodiscard]] constexpr std::size_t to_size(T v) noexcept {
+  return static_cast<std::size_t>(v);
+}
 }  // namespace detail
 
 TESSERA_NAMESPACE_END

@@ -58,7 +58,7 @@ class thread_pool_executor {
   explicit thread_pool_executor(int threads = 0) {
     if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     threads = std::min(threads, max_threads);
-    workers_.reserve(static_cast<std::size_t>(threads - 1));
+    workers_.reserve(detail::to_size(threads - 1));
 #if TESSERA_HAS_EXCEPTIONS
     try {
       for (int t = 1; t < threads; ++t) workers_.emplace_back([this] { worker_loop(); });

@@ -94,8 +94,8 @@ template <class T, std::size_t C>
 struct pixel_traits<std::array<T, C>> {
   using channel_type = T;
   static constexpr int channels = static_cast<int>(C);
-  static constexpr T get(const std::array<T, C>& p, int c) noexcept { return p[static_cast<std::size_t>(c)]; }
-  static constexpr void set(std::array<T, C>& p, int c, T v) noexcept { p[static_cast<std::size_t>(c)] = v; }
+  static constexpr T get(const std::array<T, C>& p, int c) noexcept { return p[detail::to_size(c)]; }
+  static constexpr void set(std::array<T, C>& p, int c, T v) noexcept { p[detail::to_size(c)] = v; }
 };
 
 /// A pixel type tessera can read: known to pixel_traits, 1 to 4 channels of uint8, uint16 or float.
@@ -111,7 +111,7 @@ concept Pixel = requires(const P& p, P& q, typename pixel_traits<P>::channel_typ
 
 /// tessera's own pixel: C channels of T.
 template <Channel T, int C>
-using pixel = std::array<T, static_cast<std::size_t>(C)>;
+using pixel = std::array<T, detail::to_size(C)>;
 
 namespace detail {
 struct unit_rgba {

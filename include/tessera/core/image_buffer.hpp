@@ -37,9 +37,9 @@ class image_buffer {
     if (!validate_image_extent(width, height, C, "image_buffer").ok()) return;
     width_ = width;
     height_ = height;
-    data_.resize(static_cast<std::size_t>(width * height * C));
+    data_.resize(detail::to_size(width * height * C));
     for (index_t i = 0; i < width * height; ++i)
-      for (int c = 0; c < C; ++c) data_[static_cast<std::size_t>(i * C + c)] = fill[static_cast<std::size_t>(c)];
+      for (int c = 0; c < C; ++c) data_[detail::to_size(i * C + c)] = fill[detail::to_size(c)];
   }
 
   /// Validated construction: a status when the size is not positive or overflows, and (in builds
@@ -101,7 +101,7 @@ result<image_buffer<T, C>> to_buffer(const I& img, std::string_view what = "imag
     T* dst = out.row(y);
     for (index_t x = 0; x < w; ++x) {
       const auto p = convert_pixel<pixel<T, C>>(image_traits<I>::read(img, x, y));
-      for (int c = 0; c < C; ++c) dst[x * C + c] = p[static_cast<std::size_t>(c)];
+      for (int c = 0; c < C; ++c) dst[x * C + c] = p[detail::to_size(c)];
     }
   }
   return created;

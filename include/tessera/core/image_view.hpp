@@ -72,13 +72,13 @@ class image_view {
     TESSERA_ASSERT(x >= 0 && x < width_ && y >= 0 && y < height_);
     const T* p = pixel_ptr(x, y);
     pixel_type out;
-    for (int c = 0; c < C; ++c) out[static_cast<std::size_t>(c)] = p[c];
+    for (int c = 0; c < C; ++c) out[detail::to_size(c)] = p[c];
     return out;
   }
   void write(index_t x, index_t y, const pixel_type& v) const noexcept requires(!std::is_const_v<T>) {
     TESSERA_ASSERT(x >= 0 && x < width_ && y >= 0 && y < height_);
     T* p = pixel_ptr(x, y);
-    for (int c = 0; c < C; ++c) p[c] = v[static_cast<std::size_t>(c)];
+    for (int c = 0; c < C; ++c) p[c] = v[detail::to_size(c)];
   }
 
   /// The sub-rectangle [x, x + w) x [y, y + h); unchecked (asserts).

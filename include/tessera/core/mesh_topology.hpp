@@ -38,7 +38,7 @@ template <Mesh M>
 std::vector<half_edge_key> sorted_half_edges(const M& m) {
   const index_t nv = tessera::num_vertices(m), nf = std::max<index_t>(0, tessera::num_faces(m));
   std::vector<half_edge_key> hs;
-  hs.reserve(static_cast<std::size_t>(3 * nf));
+  hs.reserve(to_size(3 * nf));
   for (index_t f = 0; f < nf; ++f) {
     if (!face_in_range(m, f, nv)) continue;
     const index_t v[3] = {tessera::face_vertex(m, f, 0), tessera::face_vertex(m, f, 1), tessera::face_vertex(m, f, 2)};
@@ -94,14 +94,14 @@ struct face_adjacency_result {
 template <Mesh M>
 face_adjacency_result face_adjacency(const M& m) {
   face_adjacency_result r;
-  r.neighbor.assign(static_cast<std::size_t>(std::max<index_t>(0, tessera::num_faces(m))), {-1, -1, -1});
+  r.neighbor.assign(detail::to_size(std::max<index_t>(0, tessera::num_faces(m))), {-1, -1, -1});
   const auto hs = detail::sorted_half_edges(m);
   detail::for_each_edge_group(hs, [&](std::size_t first, std::size_t count) {
     if (count == 2) {
       const auto& a = hs[first];
       const auto& b = hs[first + 1];
-      r.neighbor[static_cast<std::size_t>(a.f)][static_cast<std::size_t>(a.k)] = b.f;
-      r.neighbor[static_cast<std::size_t>(b.f)][static_cast<std::size_t>(b.k)] = a.f;
+      r.neighbor[detail::to_size(a.f)][detail::to_size(a.k)] = b.f;
+      r.neighbor[detail::to_size(b.f)][detail::to_size(b.k)] = a.f;
     } else if (count == 1) {
       ++r.boundary_edges;
     } else {
@@ -149,37 +149,37 @@ struct mesh_components {
 template <Mesh M>
 mesh_components connected_components(const M& m) {
   const index_t nv = std::max<index_t>(0, tessera::num_vertices(m)), nf = std::max<index_t>(0, tessera::num_faces(m));
-  std::vector<index_t> parent(static_cast<std::size_t>(nv));
+  std::vector<index_t> parent(detail::to_size(nv));
   std::iota(parent.begin(), parent.end(), index_t{0});
   auto find = [&](index_t v) {
-    while (parent[static_cast<std::size_t>(v)] != v) {
-      auto& p = parent[static_cast<std::size_t>(v)];
-      p = parent[static_cast<std::size_t>(p)];  // path halving
+    while (parent[detail::to_size(v)] != v) {
+      auto& p = parent[detail::to_size(v)];
+      p = parent[detail::to_size(p)];  // path halving
       v = p;
     }
     return v;
   };
-  std::vector<index_t> size(static_cast<std::size_t>(nv), 1);
+  std::vector<index_t> size(detail::to_size(nv), 1);
   for (index_t f = 0; f < nf; ++f) {
     if (!detail::face_in_range(m, f, nv)) continue;
     for (int k = 1; k < 3; ++k) {
       index_t a = find(tessera::face_vertex(m, f, 0)), b = find(tessera::face_vertex(m, f, k));
       if (a == b) continue;
-      if (size[static_cast<std::size_t>(a)] < size[static_cast<std::size_t>(b)]) std::swap(a, b);
-      parent[static_cast<std::size_t>(b)] = a;  // union by size
-      size[static_cast<std::size_t>(a)] += size[static_cast<std::size_t>(b)];
+      if (size[detail::to_size(a)] < size[detail::to_size(b)]) std::swap(a, b);
+      parent[detail::to_size(b)] = a;  // union by size
+      size[detail::to_size(a)] += size[detail::to_size(b)];
     }
   }
   mesh_components c;
-  c.vertex_component.assign(static_cast<std::size_t>(nv), -1);
-  c.face_component.assign(static_cast<std::size_t>(nf), -1);
-  std::vector<index_t> root_id(static_cast<std::size_t>(nv), -1);
+  c.vertex_component.assign(detail::to_size(nv), -1);
+  c.face_component.assign(detail::to_size(nf), -1);
+  std::vector<index_t> root_id(detail::to_size(nv), -1);
   for (index_t f = 0; f < nf; ++f) {
     if (!detail::face_in_range(m, f, nv)) continue;
-    auto& id = root_id[static_cast<std::size_t>(find(tessera::face_vertex(m, f, 0)))];
+    auto& id = root_id[detail::to_size(find(tessera::face_vertex(m, f, 0)))];
     if (id < 0) id = c.count++;
-    c.face_component[static_cast<std::size_t>(f)] = id;
-    for (int k = 0; k < 3; ++k) c.vertex_component[static_cast<std::size_t>(tessera::face_vertex(m, f, k))] = id;
+    c.face_component[detail::to_size(f)] = id;
+    for (int k = 0; k < 3; ++k) c.vertex_component[detail::to_size(tessera::face_vertex(m, f, k))] = id;
   }
   return c;
 }

@@ -180,7 +180,7 @@ template <std::floating_point T>
 void append_to(std::string& out, T v) {
   char buf[48];
   int n = std::snprintf(buf, sizeof buf, "%.9g", static_cast<double>(v));
-  out.append(buf, static_cast<std::size_t>(n > 0 ? n : 0));
+  out.append(buf, to_size(n > 0 ? n : 0));
 }
 template <class T>
 requires std::is_enum_v<T>

@@ -51,7 +51,7 @@ struct stored_tile_coloring {
     return is_horizontal_side(side) ? horizontal_colors : vertical_colors;
   }
   [[nodiscard]] int edge_color(index_t face, int side) const noexcept {
-    return colors[static_cast<std::size_t>(face)][static_cast<std::size_t>(side)];
+    return colors[detail::to_size(face)][detail::to_size(side)];
   }
 };
 
@@ -60,10 +60,10 @@ template <TileColoring C>
 stored_tile_coloring store_coloring(const C& c) {
   stored_tile_coloring s{static_cast<int>(c.num_colors(side_north)), static_cast<int>(c.num_colors(side_east)), {}};
   if (c.num_faces() <= 0) return s;
-  s.colors.resize(static_cast<std::size_t>(c.num_faces()));
+  s.colors.resize(detail::to_size(c.num_faces()));
   for (index_t f = 0; f < c.num_faces(); ++f)
     for (int side = 0; side < 4; ++side)
-      s.colors[static_cast<std::size_t>(f)][static_cast<std::size_t>(side)] = static_cast<int>(c.edge_color(f, side));
+      s.colors[detail::to_size(f)][detail::to_size(side)] = static_cast<int>(c.edge_color(f, side));
   return s;
 }
 

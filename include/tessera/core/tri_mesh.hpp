@@ -33,12 +33,12 @@ struct tri_mesh {
   [[nodiscard]] index_t num_vertices() const noexcept { return static_cast<index_t>(positions.size()); }
   [[nodiscard]] index_t num_faces() const noexcept { return static_cast<index_t>(faces.size()); }
   [[nodiscard]] index_t face_vertex(index_t f, int k) const noexcept {
-    return faces[static_cast<std::size_t>(f)][static_cast<std::size_t>(k)];
+    return faces[detail::to_size(f)][detail::to_size(k)];
   }
-  [[nodiscard]] const vec3& position(index_t v) const noexcept { return positions[static_cast<std::size_t>(v)]; }
+  [[nodiscard]] const vec3& position(index_t v) const noexcept { return positions[detail::to_size(v)]; }
   [[nodiscard]] bool has_uvs() const noexcept { return !uvs.empty(); }
   [[nodiscard]] const vec2& corner_uv(index_t f, int k) const noexcept {
-    return uvs[static_cast<std::size_t>(f)][static_cast<std::size_t>(k)];
+    return uvs[detail::to_size(f)][detail::to_size(k)];
   }
 
   /// Appends a vertex; returns its index.
@@ -130,19 +130,17 @@ result<tri_mesh> to_tri_mesh(const M& m, std::string_view what = "mesh") {
   if (auto s = validate_mesh(m, what); !s) return s;
   tri_mesh out;
   const index_t nv = tessera::num_vertices(m), nf = tessera::num_faces(m);
-  out.positions.resize(static_cast<std::size_t>(nv));
-  for (index_t v = 0; v < nv; ++v) out.positions[static_cast<std::size_t>(v)] = tessera::vertex_position(m, v);
-  out.faces.resize(static_cast<std::size_t>(nf));
+  out.positions.resize(detail::to_size(nv));
+  for (index_t v = 0; v < nv; ++v) out.positions[detail::to_size(v)] = tessera::vertex_position(m, v);
+  out.faces.resize(detail::to_size(nf));
   for (index_t f = 0; f < nf; ++f)
-    for (int k = 0; k < 3; ++k)
-      out.faces[static_cast<std::size_t>(f)][static_cast<std::size_t>(k)] = tessera::face_vertex(m, f, k);
+    for (int k = 0; k < 3; ++k) out.faces[detail::to_size(f)][detail::to_size(k)] = tessera::face_vertex(m, f, k);
   if constexpr (UVMesh<M>) {
     if (mesh_traits<M>::has_uvs(m)) {
-      out.uvs.resize(static_cast<std::size_t>(nf));
+      out.uvs.resize(detail::to_size(nf));
       for (index_t f = 0; f < nf; ++f)
         for (int k = 0; k < 3; ++k)
-          out.uvs[static_cast<std::size_t>(f)][static_cast<std::size_t>(k)] =
-              to_vec2(mesh_traits<M>::corner_uv(m, f, k));
+          out.uvs[detail::to_size(f)][detail::to_size(k)] = to_vec2(mesh_traits<M>::corner_uv(m, f, k));
     }
   }
   return out;
@@ -167,9 +165,9 @@ vec3 face_area_normal(const M& m, index_t f) {
 template <Mesh M>
 std::vector<vec3> face_normals(const M& m) {
   const index_t nv = tessera::num_vertices(m), nf = std::max<index_t>(0, tessera::num_faces(m));
-  std::vector<vec3> n(static_cast<std::size_t>(nf));
+  std::vector<vec3> n(detail::to_size(nf));
   for (index_t f = 0; f < nf; ++f)
-    if (detail::face_in_range(m, f, nv)) n[static_cast<std::size_t>(f)] = normalized(face_area_normal(m, f));
+    if (detail::face_in_range(m, f, nv)) n[detail::to_size(f)] = normalized(face_area_normal(m, f));
   return n;
 }
 
@@ -178,11 +176,11 @@ std::vector<vec3> face_normals(const M& m) {
 template <Mesh M>
 std::vector<vec3> vertex_normals(const M& m) {
   const index_t nv = std::max<index_t>(0, tessera::num_vertices(m)), nf = std::max<index_t>(0, tessera::num_faces(m));
-  std::vector<vec3> n(static_cast<std::size_t>(nv));
+  std::vector<vec3> n(detail::to_size(nv));
   for (index_t f = 0; f < nf; ++f) {
     if (!detail::face_in_range(m, f, nv)) continue;
     const vec3 an = face_area_normal(m, f);
-    for (int k = 0; k < 3; ++k) n[static_cast<std::size_t>(tessera::face_vertex(m, f, k))] += an;
+    for (int k = 0; k < 3; ++k) n[detail::to_size(tessera::face_vertex(m, f, k))] += an;
   }
   for (vec3& v : n) v = normalized(v);
   return n;

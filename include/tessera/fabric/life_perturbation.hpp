@@ -135,7 +135,7 @@ inline void relight_pixel(const T* in, T* out, float l_old, float l_new) noexcep
     }
   } else {
     const auto c = relight(in[0], in[1], in[2], l_old, l_new);
-    for (int k = 0; k < 3; ++k) out[k] = c[static_cast<std::size_t>(k)];
+    for (int k = 0; k < 3; ++k) out[k] = c[to_size(k)];
   }
   if constexpr (C == 2 || C == 4) out[C - 1] = in[C - 1];
 }
@@ -162,7 +162,7 @@ void life_first_generation(image_view<const T, C> src, image_view<T, C> dst, std
   // plane of q taken first
   std::vector<V> plane;
   if (last && views_overlap(src, dst)) {
-    plane.resize(static_cast<std::size_t>((w + 2) * h));
+    plane.resize(to_size((w + 2) * h));
     exec.parallel_for(0, h, [&](index_t y) { life_q_row<T, C>(src.row(y), w, plane.data() + y * (w + 2)); });
   }
   auto emit = [&](index_t y, const V* q, const life_int_scratch<T>& s, std::size_t n) {
@@ -174,7 +174,7 @@ void life_first_generation(image_view<const T, C> src, image_view<T, C> dst, std
     }
     const T* in = src.row(y);
     T* out = dst.row(y);
-    if (in != out) std::memcpy(out, in, sizeof(T) * static_cast<std::size_t>(w * C));
+    if (in != out) std::memcpy(out, in, sizeof(T) * to_size(w * C));
     life_int_relight_row<T, C>(in, out, s, n);
   };
   constexpr index_t band = 32;
@@ -187,10 +187,7 @@ void life_first_generation(image_view<const T, C> src, image_view<T, C> dst, std
     } else {
       life_int_band<T>(
           w, h, y0, y1, rule, random, scratch,
-          [&](index_t y, V* row) {
-            std::memcpy(row, plane.data() + y * (w + 2), sizeof(V) * static_cast<std::size_t>(w + 2));
-          },
-          emit);
+          [&](index_t y, V* row) { std::memcpy(row, plane.data() + y * (w + 2), sizeof(V) * to_size(w + 2)); }, emit);
     }
   });
 }
@@ -219,7 +216,7 @@ status life_views(image_view<const T, C> src, image_view<T, C> dst, const life_p
   if constexpr (std::is_integral_v<T>) {
     if (w < (index_t{1} << 31)) {  // (column indices are 32-bit there; wider rows take the float path)
       if (!o.progress.report(0.0, "life_perturbation")) return status::cancelled();
-      if (o.generations > 1) cur.resize(static_cast<std::size_t>(w * h));
+      if (o.generations > 1) cur.resize(to_size(w * h));
       life_first_generation<T, C>(src, dst, cur, o, rng, exec);
       if (o.generations == 1) {
         o.progress.report(1.0, "life_perturbation");
@@ -239,7 +236,7 @@ status life_views(image_view<const T, C> src, image_view<T, C> dst, const life_p
   };
   const bool on_the_fly = o.generations == 1 && !views_overlap(src, dst);
   if (!on_the_fly && cur.empty()) {
-    cur.resize(static_cast<std::size_t>(w * h));
+    cur.resize(to_size(w * h));
     if (o.generations > 1) next.resize(cur.size());
     exec.parallel_for(0, h, [&](index_t y) {
       const T* p = src.row(y);
@@ -256,7 +253,7 @@ status life_views(image_view<const T, C> src, image_view<T, C> dst, const life_p
     const bool last = g + 1 == o.generations;
     auto emit = [&](index_t y, const float* l_old, const float* l_new, const index_t* fired, index_t n_fired) {
       if (!last) {
-        std::memcpy(next.data() + y * w, l_new, sizeof(float) * static_cast<std::size_t>(w));
+        std::memcpy(next.data() + y * w, l_new, sizeof(float) * to_size(w));
         return;
       }
       // the last generation relights the output straight from the input pixels
@@ -267,7 +264,7 @@ status life_views(image_view<const T, C> src, image_view<T, C> dst, const life_p
           relight_pixel<T, C>(in + x * C, out + x * C, pixel_lightness<T, C>(in + x * C), l_new[x]);
         return;
       }
-      if (in != out) std::memcpy(out, in, sizeof(T) * static_cast<std::size_t>(w * C));
+      if (in != out) std::memcpy(out, in, sizeof(T) * to_size(w * C));
       for (index_t k = 0; k < n_fired; ++k) {
         const index_t x = fired[k];
         relight_pixel<T, C>(in + x * C, out + x * C, l_old[x], l_new[x]);

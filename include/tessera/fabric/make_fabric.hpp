@@ -172,7 +172,7 @@ inline constexpr std::array<fabric_preset, 4> all_fabric_presets = {fabric_prese
 /// The preset's name ("flannel", "twill", "linen", "tweed"); "unknown" for a value outside the enum.
 constexpr std::string_view to_string(fabric_preset p) noexcept {
   constexpr std::array<std::string_view, 4> names = {"flannel", "twill", "linen", "tweed"};
-  const auto i = static_cast<std::size_t>(p);  // a negative value wraps to a huge index
+  const auto i = detail::to_size(p);  // a negative value wraps to a huge index
   return i < names.size() ? names[i] : std::string_view("unknown");
 }
 

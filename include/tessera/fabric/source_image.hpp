@@ -106,7 +106,7 @@ inline result<palette> parse_palette(std::string_view text) {
     for (int c = 0; c < 3; ++c) {
       int v = 0;
       for (int k = 0; k < 2; ++k) {
-        const char ch = hex[static_cast<std::size_t>(2 * c + k)];
+        const char ch = hex[detail::to_size(2 * c + k)];
         const int d = ch >= '0' && ch <= '9'   ? ch - '0'
                       : ch >= 'a' && ch <= 'f' ? ch - 'a' + 10
                       : ch >= 'A' && ch <= 'F' ? ch - 'A' + 10
@@ -114,7 +114,7 @@ inline result<palette> parse_palette(std::string_view text) {
         if (d < 0) return bad("not a hex digit in the colour");
         v = v * 16 + d;
       }
-      t.color[static_cast<std::size_t>(c)] = static_cast<float>(v) / 255.0f;
+      t.color[detail::to_size(c)] = static_cast<float>(v) / 255.0f;
     }
     const std::string weight(item.substr(colon + 1));
     char* stop = nullptr;
@@ -150,10 +150,8 @@ std::vector<index_t> apportion(const std::vector<double>& w, index_t total) {
 template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
 std::vector<int> shuffled_labels(const std::vector<index_t>& count, const counter_rng& rng) {
   std::vector<int> labels;
-  for (std::size_t i = 0; i < count.size(); ++i)
-    labels.insert(labels.end(), static_cast<std::size_t>(count[i]), static_cast<int>(i));
-  for (std::size_t i = labels.size(); i > 1; --i)
-    std::swap(labels[i - 1], labels[static_cast<std::size_t>(rng.below(i, i))]);
+  for (std::size_t i = 0; i < count.size(); ++i) labels.insert(labels.end(), to_size(count[i]), static_cast<int>(i));
+  for (std::size_t i = labels.size(); i > 1; --i) std::swap(labels[i - 1], labels[to_size(rng.below(i, i))]);
   return labels;
 }
 /// Index of the tone at fraction f in [0, 1) of the cumulative proportions.
@@ -169,7 +167,7 @@ inline int tone_at(const std::vector<double>& p, double f) {
 template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
 std::vector<int> source_labels(index_t w, index_t h, const std::vector<double>& p, const source_image_options& o) {
   const index_t s = o.feature_size > 0 ? o.feature_size : std::max<index_t>(1, std::min(w, h) / 8);
-  std::vector<int> label(static_cast<std::size_t>(w * h));
+  std::vector<int> label(to_size(w * h));
   const counter_rng rng(o.seed, stream_id("fabric.source"));
   switch (o.layout) {
     case source_layout::stripes: {
@@ -177,8 +175,7 @@ std::vector<int> source_labels(index_t w, index_t h, const std::vector<double>& 
       for (index_t y = 0; y < h; ++y)
         for (index_t x = 0; x < w; ++x) {
           const index_t t = o.vertical ? x : y;
-          label[static_cast<std::size_t>(y * w + x)] =
-              tone_at(p, (static_cast<double>(t % s) + 0.5) / static_cast<double>(s));
+          label[to_size(y * w + x)] = tone_at(p, (static_cast<double>(t % s) + 0.5) / static_cast<double>(s));
         }
       break;
     }
@@ -186,17 +183,16 @@ std::vector<int> source_labels(index_t w, index_t h, const std::vector<double>& 
       const index_t bw = (w + s - 1) / s, bh = (h + s - 1) / s;
       const auto labels = shuffled_labels(apportion(p, bw * bh), rng);
       for (index_t y = 0; y < h; ++y)
-        for (index_t x = 0; x < w; ++x)
-          label[static_cast<std::size_t>(y * w + x)] = labels[static_cast<std::size_t>((y / s) * bw + x / s)];
+        for (index_t x = 0; x < w; ++x) label[to_size(y * w + x)] = labels[to_size((y / s) * bw + x / s)];
       break;
     }
     case source_layout::cells: {
       // one jittered site per s x s grid cell; pixels take the nearest site (ties: smallest index)
       const index_t gw = (w + s - 1) / s, gh = (h + s - 1) / s;
-      std::vector<std::array<double, 2>> site(static_cast<std::size_t>(gw * gh));
+      std::vector<std::array<double, 2>> site(to_size(gw * gh));
       for (index_t j = 0; j < gh; ++j)
         for (index_t i = 0; i < gw; ++i)
-          site[static_cast<std::size_t>(j * gw + i)] = {
+          site[to_size(j * gw + i)] = {
               (static_cast<double>(i) + 0.1 + 0.8 * rng.uniform(i, j, 0)) * static_cast<double>(s),
               (static_cast<double>(j) + 0.1 + 0.8 * rng.uniform(i, j, 1)) * static_cast<double>(s)};
       std::vector<index_t> owner(label.size()), area(site.size(), 0);
@@ -206,7 +202,7 @@ std::vector<int> source_labels(index_t w, index_t h, const std::vector<double>& 
           index_t arg = 0;
           for (index_t j = std::max<index_t>(0, y / s - 2); j <= std::min(gh - 1, y / s + 2); ++j)
             for (index_t i = std::max<index_t>(0, x / s - 2); i <= std::min(gw - 1, x / s + 2); ++i) {
-              const auto& c = site[static_cast<std::size_t>(j * gw + i)];
+              const auto& c = site[to_size(j * gw + i)];
               const double dx = static_cast<double>(x) + 0.5 - c[0], dy = static_cast<double>(y) + 0.5 - c[1];
               const double d = dx * dx + dy * dy;
               const index_t k = j * gw + i;
@@ -215,23 +211,22 @@ std::vector<int> source_labels(index_t w, index_t h, const std::vector<double>& 
                 arg = k;
               }
             }
-          owner[static_cast<std::size_t>(y * w + x)] = arg;
-          ++area[static_cast<std::size_t>(arg)];
+          owner[to_size(y * w + x)] = arg;
+          ++area[to_size(arg)];
         }
       // cells in seeded order; each goes to the tone furthest below its target area
       std::vector<index_t> order(site.size());
       std::iota(order.begin(), order.end(), 0);
-      for (std::size_t i = order.size(); i > 1; --i)
-        std::swap(order[i - 1], order[static_cast<std::size_t>(rng.below(i, i, 7))]);
+      for (std::size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[to_size(rng.below(i, i, 7))]);
       std::vector<double> deficit(p.size());
       for (std::size_t t = 0; t < p.size(); ++t) deficit[t] = p[t] * static_cast<double>(w * h);
       std::vector<int> cell_tone(site.size(), 0);
       for (index_t c : order) {
-        const auto t = static_cast<std::size_t>(std::max_element(deficit.begin(), deficit.end()) - deficit.begin());
-        cell_tone[static_cast<std::size_t>(c)] = static_cast<int>(t);
-        deficit[t] -= static_cast<double>(area[static_cast<std::size_t>(c)]);
+        const auto t = to_size(std::max_element(deficit.begin(), deficit.end()) - deficit.begin());
+        cell_tone[to_size(c)] = static_cast<int>(t);
+        deficit[t] -= static_cast<double>(area[to_size(c)]);
       }
-      for (std::size_t k = 0; k < label.size(); ++k) label[k] = cell_tone[static_cast<std::size_t>(owner[k])];
+      for (std::size_t k = 0; k < label.size(); ++k) label[k] = cell_tone[to_size(owner[k])];
       break;
     }
   }
@@ -264,7 +259,7 @@ template <WritableImage O>
   for (const tone& t : tones) colors.push_back(convert_pixel<pixel_t<O>>(t.color));
   for (index_t y = 0; y < h; ++y)
     for (index_t x = 0; x < w; ++x)
-      image_traits<O>::write(out, x, y, colors[static_cast<std::size_t>(label[static_cast<std::size_t>(y * w + x)])]);
+      image_traits<O>::write(out, x, y, colors[detail::to_size(label[detail::to_size(y * w + x)])]);
   return {};
 }
 

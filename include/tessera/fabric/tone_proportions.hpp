@@ -113,7 +113,7 @@ template <Image I>
       const float r = std::clamp(px->r, 0.0f, 1.0f), g = std::clamp(px->g, 0.0f, 1.0f),
                   b = std::clamp(px->b, 0.0f, 1.0f);
       auto b5 = [](float v) { return std::min(31, static_cast<int>(v * 32.0f)); };
-      const auto bin = static_cast<std::size_t>((b5(r) << 10) | (b5(g) << 5) | b5(b));
+      const auto bin = detail::to_size((b5(r) << 10) | (b5(g) << 5) | b5(b));
       bin_w[bin] += 1;
       bin_sum[bin][0] += r;
       bin_sum[bin][1] += g;
@@ -126,13 +126,13 @@ template <Image I>
       pts.push_back({bin_sum[b][0] / bin_w[b], bin_sum[b][1] / bin_w[b], bin_sum[b][2] / bin_w[b]});
       wt.push_back(bin_w[b]);
     }
-  const std::size_t kk = std::min(static_cast<std::size_t>(k), pts.size());
+  const std::size_t kk = std::min(detail::to_size(k), pts.size());
   auto dist2 = [](const vec& a, const vec& b) {
     return (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]);
   };
   // k-means++: the heaviest bin first, then bins drawn with probability ~ weight x squared distance
   const counter_rng rng(options.seed, stream_id("fabric.dominant_tones"));
-  std::vector<vec> centre{pts[static_cast<std::size_t>(std::max_element(wt.begin(), wt.end()) - wt.begin())]};
+  std::vector<vec> centre{pts[detail::to_size(std::max_element(wt.begin(), wt.end()) - wt.begin())]};
   std::vector<double> d2(pts.size());
   while (centre.size() < kk) {
     double total = 0;
@@ -165,8 +165,7 @@ template <Image I>
     std::vector<vec> sum(kk, vec{0, 0, 0});
     std::vector<double> cw(kk, 0.0);
     for (std::size_t i = 0; i < pts.size(); ++i) {
-      for (int c = 0; c < 3; ++c)
-        sum[assign[i]][static_cast<std::size_t>(c)] += wt[i] * pts[i][static_cast<std::size_t>(c)];
+      for (int c = 0; c < 3; ++c) sum[assign[i]][detail::to_size(c)] += wt[i] * pts[i][detail::to_size(c)];
       cw[assign[i]] += wt[i];
     }
     for (std::size_t c = 0; c < kk; ++c)

@@ -45,10 +45,10 @@ class triangle_bvh {
   /// Builds over all faces of any valid Mesh (see validate_mesh).
   template <Mesh M>
   explicit triangle_bvh(const M& m) {
-    std::vector<std::array<vec3, 3>> tris(static_cast<std::size_t>(tessera::num_faces(m)));
+    std::vector<std::array<vec3, 3>> tris(detail::to_size(tessera::num_faces(m)));
     for (index_t f = 0; f < tessera::num_faces(m); ++f)
       for (int k = 0; k < 3; ++k)
-        tris[static_cast<std::size_t>(f)][static_cast<std::size_t>(k)] = vertex_position(m, face_vertex(m, f, k));
+        tris[detail::to_size(f)][detail::to_size(k)] = vertex_position(m, face_vertex(m, f, k));
     build(std::move(tris));
   }
   /// Builds over explicit triangles; face ids are their indices.
@@ -58,7 +58,7 @@ class triangle_bvh {
   [[nodiscard]] bool empty() const noexcept { return tris_.empty(); }
   /// Corners of face f (in the original face order).
   [[nodiscard]] const std::array<vec3, 3>& triangle(index_t f) const noexcept {
-    return tris_[static_cast<std::size_t>(slot_of_[static_cast<std::size_t>(f)])];
+    return tris_[detail::to_size(slot_of_[detail::to_size(f)])];
   }
   /// Bounding box of everything.
   [[nodiscard]] aabb bounds() const noexcept { return nodes_.empty() ? aabb{} : nodes_[0].box; }
@@ -71,12 +71,12 @@ class triangle_bvh {
     if (nodes_.empty()) return best;
     visit_nearest_generic(
         [&](index_t slot) {
-          const auto& t = tris_[static_cast<std::size_t>(slot)];
+          const auto& t = tris_[detail::to_size(slot)];
           const auto c = detail::closest_point_on_triangle(p, t[0], t[1], t[2]);
           const double d2 = squared_norm(c.point - p);
           if (d2 < best.squared_distance ||
-              (d2 == best.squared_distance && face_of_[static_cast<std::size_t>(slot)] < best.face)) {
-            best = {face_of_[static_cast<std::size_t>(slot)], c.point, c.bary, d2};
+              (d2 == best.squared_distance && face_of_[detail::to_size(slot)] < best.face)) {
+            best = {face_of_[detail::to_size(slot)], c.point, c.bary, d2};
           }
           return best.squared_distance;
         },
@@ -97,8 +97,8 @@ class triangle_bvh {
     if (nodes_.empty()) return {best_face, best};
     visit_nearest_generic(
         [&](index_t slot) {
-          const index_t f = face_of_[static_cast<std::size_t>(slot)];
-          const double c = cost(f, tris_[static_cast<std::size_t>(slot)]);
+          const index_t f = face_of_[detail::to_size(slot)];
+          const double c = cost(f, tris_[detail::to_size(slot)]);
           if (c < best || (c == best && best_face >= 0 && f < best_face)) {
             best = c;
             best_face = f;
@@ -120,13 +120,13 @@ class triangle_bvh {
     stack[top++] = 0;
     double best_t = t_max;
     while (top > 0) {
-      const node& n = nodes_[static_cast<std::size_t>(stack[--top])];
+      const node& n = nodes_[detail::to_size(stack[--top])];
       if (!ray_box(origin, inv, n.box, t_min, best_t)) continue;
       if (n.count > 0) {
         for (index_t s = n.first; s < n.first + n.count; ++s) {
-          const auto& t = tris_[static_cast<std::size_t>(s)];
+          const auto& t = tris_[detail::to_size(s)];
           const auto h = detail::ray_triangle(origin, dir, t[0], t[1], t[2], t_min, best_t);
-          const index_t f = face_of_[static_cast<std::size_t>(s)];
+          const index_t f = face_of_[detail::to_size(s)];
           if (std::isfinite(h.t) && (h.t < best_t || (h.t == best_t && (hit.face < 0 || f < hit.face)))) {
             best_t = h.t;
             hit = {f, h.t, {1 - h.u - h.v, h.u, h.v}};
@@ -148,12 +148,11 @@ class triangle_bvh {
     int top = 0;
     stack[top++] = 0;
     while (top > 0) {
-      const node& n = nodes_[static_cast<std::size_t>(stack[--top])];
+      const node& n = nodes_[detail::to_size(stack[--top])];
       if (!detail::boxes_overlap(n.box, box)) continue;
       if (n.count > 0) {
         for (index_t s = n.first; s < n.first + n.count; ++s)
-          if (detail::boxes_overlap(box_of(tris_[static_cast<std::size_t>(s)]), box))
-            fn(face_of_[static_cast<std::size_t>(s)]);
+          if (detail::boxes_overlap(box_of(tris_[detail::to_size(s)]), box)) fn(face_of_[detail::to_size(s)]);
       } else {
         stack[top++] = n.first;
         stack[top++] = n.first + 1;
@@ -170,14 +169,14 @@ class triangle_bvh {
     while (!stack.empty()) {
       const auto [ia, ib] = stack.back();
       stack.pop_back();
-      const node& na = a.nodes_[static_cast<std::size_t>(ia)];
-      const node& nb = b.nodes_[static_cast<std::size_t>(ib)];
+      const node& na = a.nodes_[detail::to_size(ia)];
+      const node& nb = b.nodes_[detail::to_size(ib)];
       if (!detail::boxes_overlap(na.box, nb.box)) continue;
       if (na.count > 0 && nb.count > 0) {
         for (index_t s = na.first; s < na.first + na.count; ++s)
           for (index_t u = nb.first; u < nb.first + nb.count; ++u)
-            if (detail::triangles_intersect(a.tris_[static_cast<std::size_t>(s)], b.tris_[static_cast<std::size_t>(u)]))
-              fn(a.face_of_[static_cast<std::size_t>(s)], b.face_of_[static_cast<std::size_t>(u)]);
+            if (detail::triangles_intersect(a.tris_[detail::to_size(s)], b.tris_[detail::to_size(u)]))
+              fn(a.face_of_[detail::to_size(s)], b.face_of_[detail::to_size(u)]);
       } else if (nb.count > 0 || (na.count == 0 && volume(na.box) >= volume(nb.box))) {
         stack.push_back({na.first, ib});
         stack.push_back({na.first + 1, ib});
@@ -249,29 +248,28 @@ class triangle_bvh {
       todo.pop_back();
       aabb box, cbox;
       for (index_t i = tk.begin; i < tk.end; ++i) {
-        box.extend(box_of(triangles[static_cast<std::size_t>(order[static_cast<std::size_t>(i)])]));
-        cbox.extend(centroid[static_cast<std::size_t>(order[static_cast<std::size_t>(i)])]);
+        box.extend(box_of(triangles[detail::to_size(order[detail::to_size(i)])]));
+        cbox.extend(centroid[detail::to_size(order[detail::to_size(i)])]);
       }
-      nodes_[static_cast<std::size_t>(tk.node)].box = box;
+      nodes_[detail::to_size(tk.node)].box = box;
       const vec3 e = cbox.extent();
       if (tk.end - tk.begin <= 4 || tk.depth >= 60 || (e.x <= 0 && e.y <= 0 && e.z <= 0)) {
-        nodes_[static_cast<std::size_t>(tk.node)].first = tk.begin;
-        nodes_[static_cast<std::size_t>(tk.node)].count = tk.end - tk.begin;
+        nodes_[detail::to_size(tk.node)].first = tk.begin;
+        nodes_[detail::to_size(tk.node)].count = tk.end - tk.begin;
         continue;
       }
       const int axis = e.x >= e.y && e.x >= e.z ? 0 : e.y >= e.z ? 1 : 2;
       const index_t mid = (tk.begin + tk.end) / 2;
       std::nth_element(order.begin() + tk.begin, order.begin() + mid, order.begin() + tk.end,
                        [&](index_t a, index_t b) {
-                         const double ca = centroid[static_cast<std::size_t>(a)][axis],
-                                      cb = centroid[static_cast<std::size_t>(b)][axis];
+                         const double ca = centroid[detail::to_size(a)][axis], cb = centroid[detail::to_size(b)][axis];
                          return ca != cb ? ca < cb : a < b;
                        });
       const auto left = static_cast<index_t>(nodes_.size());
       nodes_.push_back({});
       nodes_.push_back({});
-      nodes_[static_cast<std::size_t>(tk.node)].first = left;
-      nodes_[static_cast<std::size_t>(tk.node)].count = 0;
+      nodes_[detail::to_size(tk.node)].first = left;
+      nodes_[detail::to_size(tk.node)].count = 0;
       todo.push_back({left + 1, mid, tk.end, tk.depth + 1});
       todo.push_back({left, tk.begin, mid, tk.depth + 1});
     }
@@ -279,9 +277,9 @@ class triangle_bvh {
     face_of_.resize(n);
     slot_of_.resize(n);
     for (std::size_t s = 0; s < n; ++s) {
-      tris_[s] = triangles[static_cast<std::size_t>(order[s])];
+      tris_[s] = triangles[detail::to_size(order[s])];
       face_of_[s] = order[s];
-      slot_of_[static_cast<std::size_t>(order[s])] = static_cast<index_t>(s);
+      slot_of_[detail::to_size(order[s])] = static_cast<index_t>(s);
     }
   }
 
@@ -296,13 +294,13 @@ class triangle_bvh {
     while (top > 0) {
       --top;
       if (stack_bound[top] > best) continue;
-      const node& n = nodes_[static_cast<std::size_t>(stack[top])];
+      const node& n = nodes_[detail::to_size(stack[top])];
       if (n.count > 0) {
         for (index_t s = n.first; s < n.first + n.count; ++s) best = leaf(s);
         continue;
       }
-      const double bl = bound(nodes_[static_cast<std::size_t>(n.first)].box);
-      const double br = bound(nodes_[static_cast<std::size_t>(n.first + 1)].box);
+      const double bl = bound(nodes_[detail::to_size(n.first)].box);
+      const double br = bound(nodes_[detail::to_size(n.first + 1)].box);
       // push the farther child first so the nearer is visited first
       if (bl <= br) {
         if (br <= best) {

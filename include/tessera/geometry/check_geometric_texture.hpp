@@ -43,8 +43,8 @@ result<geometric_texture_report> check_geometric_texture(const M& mesh, const xy
   };
   for (const mesh_edge& e : mesh_edges(m)) {
     if (e.faces.size() > 2) ++r.nonmanifold_edges;
-    if (e.faces.size() == 1 && !(on_border(m.positions[static_cast<std::size_t>(e.v0)]) &&
-                                 on_border(m.positions[static_cast<std::size_t>(e.v1)])))
+    if (e.faces.size() == 1 &&
+        !(on_border(m.positions[detail::to_size(e.v0)]) && on_border(m.positions[detail::to_size(e.v1)])))
       ++r.open_edges_inside;
   }
   const mesh_components comp = connected_components(m);
@@ -52,7 +52,7 @@ result<geometric_texture_report> check_geometric_texture(const M& mesh, const xy
   const triangle_bvh bvh(m);
   bvh.for_each_self_intersection(
       [&](index_t f, index_t g) {
-        return comp.face_component[static_cast<std::size_t>(f)] == comp.face_component[static_cast<std::size_t>(g)];
+        return comp.face_component[detail::to_size(f)] == comp.face_component[detail::to_size(g)];
       },
       [&](index_t, index_t) { ++r.intersecting_pairs; });
   return r;

@@ -171,34 +171,34 @@ result<geometric_tile_set> build_geometric_wang_tiles(const quilt_exemplar& exem
 
   // §3.2-3.3: frame and interior of every tile, in parallel
   const index_t n = complete_tile_count(o.horizontal_colors, o.vertical_colors);
-  set.edges.resize(static_cast<std::size_t>(n));
-  set.tiles.resize(static_cast<std::size_t>(n));
-  std::vector<mesh_quilt_stats> stats(static_cast<std::size_t>(n));
-  std::vector<std::array<index_t, 3>> frames(static_cast<std::size_t>(n));
-  std::vector<status> errors(static_cast<std::size_t>(n));
+  set.edges.resize(detail::to_size(n));
+  set.tiles.resize(detail::to_size(n));
+  std::vector<mesh_quilt_stats> stats(detail::to_size(n));
+  std::vector<std::array<index_t, 3>> frames(detail::to_size(n));
+  std::vector<status> errors(detail::to_size(n));
   const index_t batch = 4;
   for (index_t first = 0; first < n; first += batch) {
     if (!o.progress.report(double(first) / double(n), "geometric wang tiles")) return status::cancelled();
     const index_t last = std::min(n, first + batch);
     exec.parallel_for(first, last, [&](index_t t) {
       const wang_edges e = complete_tile_edges(t, o.horizontal_colors, o.vertical_colors);
-      set.edges[static_cast<std::size_t>(t)] = e;
+      set.edges[detail::to_size(t)] = e;
       auto fr = detail::build_frame(plan->hs, plan->vs, e, o.tile_size, plan->sp.half_height, exemplar.cell_size());
-      frames[static_cast<std::size_t>(t)] = {fr.merges_attempted, fr.merged, fr.dropped};
+      frames[detail::to_size(t)] = {fr.merges_attempted, fr.merged, fr.dropped};
       mesh_quilt_options qo = o.quilt;
       qo.progress = {};
       if (o.progress.token) qo.progress.token = o.progress.token;
       auto q = constrained_mesh_quilt(exemplar, {0, 0, o.tile_size, o.tile_size}, std::move(fr.frame), qo,
                                       static_cast<std::uint64_t>(t) + 1);
       if (!q) {
-        errors[static_cast<std::size_t>(t)] = q.error();
+        errors[detail::to_size(t)] = q.error();
         return;
       }
-      stats[static_cast<std::size_t>(t)] = q->stats;
-      set.tiles[static_cast<std::size_t>(t)] = std::move(q->mesh);
+      stats[detail::to_size(t)] = q->stats;
+      set.tiles[detail::to_size(t)] = std::move(q->mesh);
     });
     for (index_t t = first; t < last; ++t)
-      if (!errors[static_cast<std::size_t>(t)]) return errors[static_cast<std::size_t>(t)];
+      if (!errors[detail::to_size(t)]) return errors[detail::to_size(t)];
   }
   for (const auto& s : stats) set.stats += s;
   for (const auto& f : frames) {

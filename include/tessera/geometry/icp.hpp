@@ -80,7 +80,7 @@ inline result<icp_translation_result> icp_translation(std::span<const vec3> poin
     r.mean_distance = mean_dist;
     if (r.pairs == 0) return r;
     for (int a = 0; a < 3; ++a)
-      if (!options.free_axes[static_cast<std::size_t>(a)]) step[a] = 0;
+      if (!options.free_axes[detail::to_size(a)]) step[a] = 0;
     r.translation += step;
     r.iterations = it + 1;
     if (norm(step) < options.tolerance) {

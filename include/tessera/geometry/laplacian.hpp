@@ -36,7 +36,7 @@ Eigen::SparseMatrix<double> laplacian_matrix(const M& m,
   using sparse = Eigen::SparseMatrix<detail::dependent_t<double, M>>;  // see laplacian_deform
   const index_t nv = num_vertices(m);
   std::vector<Eigen::Triplet<typename sparse::Scalar>> t;
-  t.reserve(static_cast<std::size_t>(num_faces(m)) * 12);
+  t.reserve(detail::to_size(num_faces(m)) * 12);
   for (index_t f = 0; f < num_faces(m); ++f) {
     index_t v[3];
     vec3 p[3];
@@ -113,11 +113,10 @@ result<std::vector<vec3>> laplacian_deform(const M& mesh, std::span<const unsign
     if (!is_finite(k.target))
       return status::invalid_argument(detail::cat("laplacian_deform: constraint ", c, " has a non-finite target"));
     for (int j = 0; j < 3; ++j) {
-      if (k.vertices[static_cast<std::size_t>(j)] < -1 || k.vertices[static_cast<std::size_t>(j)] >= nv)
+      if (k.vertices[detail::to_size(j)] < -1 || k.vertices[detail::to_size(j)] >= nv)
         return status::out_of_range(detail::cat("laplacian_deform: constraint ", c, " names vertex ",
-                                                k.vertices[static_cast<std::size_t>(j)], " of a mesh with ", nv,
-                                                " vertices"));
-      if (!std::isfinite(k.weights[static_cast<std::size_t>(j)]))
+                                                k.vertices[detail::to_size(j)], " of a mesh with ", nv, " vertices"));
+      if (!std::isfinite(k.weights[detail::to_size(j)]))
         return status::invalid_argument(detail::cat("laplacian_deform: constraint ", c, " has a non-finite weight"));
     }
   }
@@ -127,19 +126,19 @@ result<std::vector<vec3>> laplacian_deform(const M& mesh, std::span<const unsign
   using dense3 = Eigen::Matrix<real, Eigen::Dynamic, 3>;
   using row3 = Eigen::Matrix<real, 1, 3>;
   using triplet = Eigen::Triplet<real>;
-  std::vector<vec3> x(static_cast<std::size_t>(nv));
-  for (index_t v = 0; v < nv; ++v) x[static_cast<std::size_t>(v)] = vertex_position(mesh, v);
+  std::vector<vec3> x(detail::to_size(nv));
+  for (index_t v = 0; v < nv; ++v) x[detail::to_size(v)] = vertex_position(mesh, v);
   // free-variable numbering
-  std::vector<int> col(static_cast<std::size_t>(nv), -1);
+  std::vector<int> col(detail::to_size(nv), -1);
   int nfree = 0;
   for (index_t v = 0; v < nv; ++v)
-    if (fixed.empty() || !fixed[static_cast<std::size_t>(v)]) col[static_cast<std::size_t>(v)] = nfree++;
+    if (fixed.empty() || !fixed[detail::to_size(v)]) col[detail::to_size(v)] = nfree++;
   if (nfree == 0) return x;
 
   const sparse L = laplacian_matrix(mesh, options.weighting);
   dense3 X(static_cast<int>(nv), 3);
   for (index_t v = 0; v < nv; ++v)
-    for (int d = 0; d < 3; ++d) X(static_cast<int>(v), d) = x[static_cast<std::size_t>(v)][d];
+    for (int d = 0; d < 3; ++d) X(static_cast<int>(v), d) = x[detail::to_size(v)][d];
   const dense3 delta = L * X;  // L(v): the rest Laplacian coordinates
 
   // Split L = [L_f | L_c]; move the fixed part to the right-hand side.
@@ -147,7 +146,7 @@ result<std::vector<vec3>> laplacian_deform(const M& mesh, std::span<const unsign
   dense3 rhs_l = delta;
   for (int k = 0; k < L.outerSize(); ++k)
     for (typename sparse::InnerIterator it(L, k); it; ++it) {
-      const int c = col[static_cast<std::size_t>(it.col())];
+      const int c = col[detail::to_size(it.col())];
       if (c >= 0)
         lf.emplace_back(static_cast<int>(it.row()), c, it.value());
       else
@@ -162,10 +161,10 @@ result<std::vector<vec3>> laplacian_deform(const M& mesh, std::span<const unsign
     const auto& k = constraints[c];
     row3 r(k.target.x, k.target.y, k.target.z);
     for (int j = 0; j < 3; ++j) {
-      const index_t v = k.vertices[static_cast<std::size_t>(j)];
+      const index_t v = k.vertices[detail::to_size(j)];
       if (v < 0) continue;
-      const double w = k.weights[static_cast<std::size_t>(j)];
-      const int cc = col[static_cast<std::size_t>(v)];
+      const double w = k.weights[detail::to_size(j)];
+      const int cc = col[detail::to_size(v)];
       if (cc >= 0)
         cf.emplace_back(static_cast<int>(c), cc, w);
       else
@@ -184,7 +183,7 @@ result<std::vector<vec3>> laplacian_deform(const M& mesh, std::span<const unsign
   const double eps = options.regularization * std::max(mean_diag, 1e-12);
   dense3 x0(nfree, 3);
   for (index_t v = 0; v < nv; ++v)
-    if (col[static_cast<std::size_t>(v)] >= 0) x0.row(col[static_cast<std::size_t>(v)]) = X.row(static_cast<int>(v));
+    if (col[detail::to_size(v)] >= 0) x0.row(col[detail::to_size(v)]) = X.row(static_cast<int>(v));
   {
     sparse I(nfree, nfree);
     I.setIdentity();
@@ -200,8 +199,8 @@ result<std::vector<vec3>> laplacian_deform(const M& mesh, std::span<const unsign
   if (solver.info() != Eigen::Success || !sol.allFinite())
     return status::internal_error("laplacian_deform: sparse solve failed");
   for (index_t v = 0; v < nv; ++v) {
-    const int c = col[static_cast<std::size_t>(v)];
-    if (c >= 0) x[static_cast<std::size_t>(v)] = {sol(c, 0), sol(c, 1), sol(c, 2)};
+    const int c = col[detail::to_size(v)];
+    if (c >= 0) x[detail::to_size(v)] = {sol(c, 0), sol(c, 1), sol(c, 2)};
   }
   return x;
 }

@@ -35,7 +35,7 @@ class max_flow_graph {
   /// Adds n nodes; returns the index of the first.
   index_t add_nodes(index_t n) {
     const auto first = static_cast<index_t>(nodes_.size());
-    if (n > 0) nodes_.resize(nodes_.size() + static_cast<std::size_t>(n));
+    if (n > 0) nodes_.resize(nodes_.size() + detail::to_size(n));
     return first;
   }
   [[nodiscard]] index_t num_nodes() const noexcept { return static_cast<index_t>(nodes_.size()); }
@@ -46,8 +46,8 @@ class max_flow_graph {
     if (!check_node(node, "add_terminal") || !check_cap(source_capacity, "source_capacity") ||
         !check_cap(sink_capacity, "sink_capacity"))
       return;
-    nodes_[static_cast<std::size_t>(node)].source_cap += source_capacity;
-    nodes_[static_cast<std::size_t>(node)].sink_cap += sink_capacity;
+    nodes_[detail::to_size(node)].source_cap += source_capacity;
+    nodes_[detail::to_size(node)].sink_cap += sink_capacity;
   }
 
   /// Adds an arc a -> b with capacity cap_ab and its reverse with cap_ba.
@@ -57,10 +57,10 @@ class max_flow_graph {
       return;
     if (a == b) return;  // a self loop never carries flow
     const auto ia = static_cast<index_t>(arcs_.size());
-    arcs_.push_back({b, nodes_[static_cast<std::size_t>(a)].first, ia + 1, cap_ab});
-    nodes_[static_cast<std::size_t>(a)].first = ia;
-    arcs_.push_back({a, nodes_[static_cast<std::size_t>(b)].first, ia, cap_ba});
-    nodes_[static_cast<std::size_t>(b)].first = ia + 1;
+    arcs_.push_back({b, nodes_[detail::to_size(a)].first, ia + 1, cap_ab});
+    nodes_[detail::to_size(a)].first = ia;
+    arcs_.push_back({a, nodes_[detail::to_size(b)].first, ia, cap_ba});
+    nodes_[detail::to_size(b)].first = ia + 1;
   }
 
   /// Computes the maximum flow (= minimum cut value). Returns +infinity when every cut has infinite
@@ -78,7 +78,7 @@ class max_flow_graph {
   /// node out of range and before solve().
   [[nodiscard]] bool in_source_set(index_t node) const noexcept {
     if (!solved_ || node < 0 || node >= num_nodes()) return false;
-    return nodes_[static_cast<std::size_t>(node)].tree == tree_source;
+    return nodes_[detail::to_size(node)].tree == tree_source;
   }
 
  private:
@@ -116,8 +116,8 @@ class max_flow_graph {
     return false;
   }
 
-  node& N(index_t i) { return nodes_[static_cast<std::size_t>(i)]; }
-  arc& A(index_t a) { return arcs_[static_cast<std::size_t>(a)]; }
+  node& N(index_t i) { return nodes_[detail::to_size(i)]; }
+  arc& A(index_t a) { return arcs_[detail::to_size(a)]; }
 
   void activate(index_t i) {
     if (!N(i).active) {

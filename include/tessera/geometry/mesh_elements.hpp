@@ -89,16 +89,16 @@ result<std::vector<texture_element>> extract_elements(const M& mesh, const extra
   const tri_mesh& m = *tm;
   if (m.faces.empty()) return status::invalid_argument(detail::cat(what, ": has no faces"));
   const mesh_components comp = connected_components(m);
-  std::vector<texture_element> out(static_cast<std::size_t>(comp.count));
+  std::vector<texture_element> out(detail::to_size(comp.count));
   std::vector<index_t> local(m.positions.size(), -1);
   for (index_t f = 0; f < m.num_faces(); ++f) {
-    auto& e = out[static_cast<std::size_t>(comp.face_component[static_cast<std::size_t>(f)])];
+    auto& e = out[detail::to_size(comp.face_component[detail::to_size(f)])];
     std::array<index_t, 3> lf{};
     for (int k = 0; k < 3; ++k) {
-      const index_t v = m.faces[static_cast<std::size_t>(f)][static_cast<std::size_t>(k)];
-      auto& id = local[static_cast<std::size_t>(v)];
-      if (id < 0) id = e.mesh.add_vertex(m.positions[static_cast<std::size_t>(v)]);
-      lf[static_cast<std::size_t>(k)] = id;
+      const index_t v = m.faces[detail::to_size(f)][detail::to_size(k)];
+      auto& id = local[detail::to_size(v)];
+      if (id < 0) id = e.mesh.add_vertex(m.positions[detail::to_size(v)]);
+      lf[detail::to_size(k)] = id;
     }
     e.mesh.add_face(lf[0], lf[1], lf[2]);
   }
@@ -141,7 +141,7 @@ inline std::vector<unsigned char> border_triangles(const texture_element& e, con
   if (e.border == 0) return out;
   for (std::size_t f = 0; f < e.mesh.faces.size(); ++f) {
     aabb b;
-    for (index_t v : e.mesh.faces[f]) b.extend(e.mesh.positions[static_cast<std::size_t>(v)]);
+    for (index_t v : e.mesh.faces[f]) b.extend(e.mesh.positions[detail::to_size(v)]);
     bool hit = false;
     for (int side = 0; side < 4 && !hit; ++side) {
       if (!(e.border & border_bit(side))) continue;
@@ -164,7 +164,7 @@ inline std::vector<unsigned char> border_vertices(const texture_element& e, cons
   const auto tri = border_triangles(e, domain, tolerance);
   for (std::size_t f = 0; f < tri.size(); ++f)
     if (tri[f])
-      for (index_t v : e.mesh.faces[f]) out[static_cast<std::size_t>(v)] = 1;
+      for (index_t v : e.mesh.faces[f]) out[detail::to_size(v)] = 1;
   return out;
 }
 

@@ -86,13 +86,12 @@ inline void add_tube(tri_mesh& m, const std::vector<vec3>& path, double w, doubl
   const index_t base = m.num_vertices();
   const auto n = static_cast<index_t>(path.size());
   for (index_t i = 0; i < n; ++i) {
-    const vec3 t = normalized(path[static_cast<std::size_t>(std::min(i + 1, n - 1))] -
-                              path[static_cast<std::size_t>(std::max<index_t>(i - 1, 0))]);
+    const vec3 t = normalized(path[to_size(std::min(i + 1, n - 1))] - path[to_size(std::max<index_t>(i - 1, 0))]);
     const vec3 side = normalized(cross(vec3{0, 0, 1}, t));
     const vec3 up = normalized(cross(t, side));
     for (int j = 0; j < around; ++j) {
       const double b = 2 * std::numbers::pi * j / around;
-      m.add_vertex(path[static_cast<std::size_t>(i)] + side * (w * std::cos(b)) + up * (h * std::sin(b)));
+      m.add_vertex(path[to_size(i)] + side * (w * std::cos(b)) + up * (h * std::sin(b)));
     }
   }
   for (index_t i = 0; i + 1 < n; ++i)
@@ -127,8 +126,7 @@ inline tri_mesh icosphere(int level) {
       const auto key = std::minmax(a, b);
       auto it = mid.find({key.first, key.second});
       if (it != mid.end()) return it->second;
-      const index_t id =
-          n.add_vertex(normalized(n.positions[static_cast<std::size_t>(a)] + n.positions[static_cast<std::size_t>(b)]));
+      const index_t id = n.add_vertex(normalized(n.positions[to_size(a)] + n.positions[to_size(b)]));
       mid[{key.first, key.second}] = id;
       return id;
     };
@@ -150,8 +148,7 @@ inline bool elements_disjoint(const tri_mesh& m, const std::vector<index_t>& ele
   bool ok = true;
   bvh.for_each_self_intersection(
       [&](index_t f, index_t g) {
-        return element_of_vertex[static_cast<std::size_t>(m.faces[static_cast<std::size_t>(f)][0])] ==
-               element_of_vertex[static_cast<std::size_t>(m.faces[static_cast<std::size_t>(g)][0])];
+        return element_of_vertex[to_size(m.faces[to_size(f)][0])] == element_of_vertex[to_size(m.faces[to_size(g)][0])];
       },
       [&](index_t, index_t) { ok = false; });
   return ok;
@@ -210,7 +207,7 @@ inline result<tri_mesh> make_ring_exemplar(const ring_exemplar_options& o = {}) 
   auto add = [&](vec3 c, vec3 u, vec3 v, vec3 n) {
     const index_t before = m.num_vertices();
     detail::add_torus(m, c, u, v, n, R, r, o.ring_segments, o.tube_segments);
-    element.resize(static_cast<std::size_t>(m.num_vertices()), static_cast<index_t>(before));
+    element.resize(detail::to_size(m.num_vertices()), static_cast<index_t>(before));
   };
   if (!o.chain_mail) {
     if (o.spacing * (1 - 2 * o.jitter) <= 2 * (R + r))

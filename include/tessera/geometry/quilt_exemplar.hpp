@@ -43,10 +43,10 @@ class quilt_exemplar {
   [[nodiscard]] const triangle_bvh& bvh() const noexcept { return bvh_; }
   [[nodiscard]] const std::vector<vec3>& face_normals() const noexcept { return normals_; }
   /// Element of each face of mesh() (elements are stored contiguously, in element order).
-  [[nodiscard]] index_t element_of_face(index_t f) const noexcept { return face_element_[static_cast<std::size_t>(f)]; }
+  [[nodiscard]] index_t element_of_face(index_t f) const noexcept { return face_element_[detail::to_size(f)]; }
   /// First face of element e in mesh(); faces of e are [first_face(e), first_face(e + 1)).
-  [[nodiscard]] index_t first_face(index_t e) const noexcept { return face_offset_[static_cast<std::size_t>(e)]; }
-  [[nodiscard]] bool is_long(index_t e) const noexcept { return long_[static_cast<std::size_t>(e)] != 0; }
+  [[nodiscard]] index_t first_face(index_t e) const noexcept { return face_offset_[detail::to_size(e)]; }
+  [[nodiscard]] bool is_long(index_t e) const noexcept { return long_[detail::to_size(e)] != 0; }
   [[nodiscard]] const aabb& bounds() const noexcept { return bounds_; }
   [[nodiscard]] double cell_size() const noexcept { return cell_; }
   /// Median of the elements' smaller XY extent (a ring's or pebble's diameter, a thread's width).
@@ -120,7 +120,7 @@ result<quilt_exemplar> prepare_quilt_exemplar(const M& exemplar, const quilt_exe
   for (std::size_t e = 0; e < q.elements_.size(); ++e) {
     q.face_offset_.push_back(f);
     f += q.elements_[e].mesh.num_faces();
-    q.face_element_.insert(q.face_element_.end(), static_cast<std::size_t>(q.elements_[e].mesh.num_faces()),
+    q.face_element_.insert(q.face_element_.end(), detail::to_size(q.elements_[e].mesh.num_faces()),
                            static_cast<index_t>(e));
     const vec3 x = q.elements_[e].box.extent();
     q.long_.push_back(std::max(x.x, x.y) > options.long_element_fraction * std::min(ext.x, ext.y) ? 1 : 0);

@@ -46,17 +46,15 @@ inline result<tile_border_layout> tile_border_vertices(const tri_mesh& tile, dou
     for (int s = 0; s < 4; ++s)
       if (on[s]) {
         l.side_of[v] = static_cast<signed char>(s);
-        l.side[static_cast<std::size_t>(s)].push_back(static_cast<index_t>(v));
+        l.side[detail::to_size(s)].push_back(static_cast<index_t>(v));
       }
   }
   for (int s = 0; s < 4; ++s) {
     const int a = is_horizontal_side(s) ? 0 : 1;
-    std::sort(l.side[static_cast<std::size_t>(s)].begin(), l.side[static_cast<std::size_t>(s)].end(),
-              [&](index_t x, index_t y) {
-                const vec3 p = tile.positions[static_cast<std::size_t>(x)],
-                           q = tile.positions[static_cast<std::size_t>(y)];
-                return p[a] != q[a] ? p[a] < q[a] : p.z != q.z ? p.z < q.z : x < y;
-              });
+    std::sort(l.side[detail::to_size(s)].begin(), l.side[detail::to_size(s)].end(), [&](index_t x, index_t y) {
+      const vec3 p = tile.positions[detail::to_size(x)], q = tile.positions[detail::to_size(y)];
+      return p[a] != q[a] ? p[a] < q[a] : p.z != q.z ? p.z < q.z : x < y;
+    });
   }
   return l;
 }
@@ -68,12 +66,12 @@ inline result<tile_border_layout> tile_border_vertices(const tri_mesh& tile, dou
 /// vertices are cut exactly on the line). O(V + F).
 inline index_t tile_corner_crossings(const tri_mesh& tile, double tile_size) {
   const mesh_components comp = connected_components(tile);
-  std::vector<unsigned> sides(static_cast<std::size_t>(comp.count), 0);
+  std::vector<unsigned> sides(detail::to_size(comp.count), 0);
   for (std::size_t f = 0; f < tile.faces.size(); ++f)
     for (index_t v : tile.faces[f]) {
       if (v < 0 || v >= tile.num_vertices()) continue;
-      const vec3 p = tile.positions[static_cast<std::size_t>(v)];
-      auto& b = sides[static_cast<std::size_t>(comp.face_component[f])];
+      const vec3 p = tile.positions[detail::to_size(v)];
+      auto& b = sides[detail::to_size(comp.face_component[f])];
       b |= (p.y == tile_size ? border_bit(side_north) : 0u) | (p.x == tile_size ? border_bit(side_east) : 0u) |
            (p.y == 0 ? border_bit(side_south) : 0u) | (p.x == 0 ? border_bit(side_west) : 0u);
     }
@@ -109,17 +107,16 @@ inline result<index_t> tile_set_border_mismatch(const geometric_tile_set& set, d
   auto border_of = [&](const tri_mesh& t, const tile_border_layout& l, int s) {
     border b;
     const int a = is_horizontal_side(s) ? 0 : 1;
-    const auto& ids = l.side[static_cast<std::size_t>(s)];
+    const auto& ids = l.side[detail::to_size(s)];
     std::map<index_t, index_t> rank;
     for (std::size_t i = 0; i < ids.size(); ++i) {
-      const vec3 p = t.positions[static_cast<std::size_t>(ids[i])];
+      const vec3 p = t.positions[detail::to_size(ids[i])];
       b.pts.push_back({p[a], p.z, 0});
       rank[ids[i]] = static_cast<index_t>(i);
     }
     for (const auto& f : t.faces)
       for (int k = 0; k < 3; ++k) {
-        const auto x = rank.find(f[static_cast<std::size_t>(k)]),
-                   y = rank.find(f[static_cast<std::size_t>((k + 1) % 3)]);
+        const auto x = rank.find(f[detail::to_size(k)]), y = rank.find(f[detail::to_size((k + 1) % 3)]);
         if (x != rank.end() && y != rank.end()) b.edges.push_back(std::minmax(x->second, y->second));
       }
     std::sort(b.edges.begin(), b.edges.end());
@@ -166,7 +163,7 @@ class geometric_plane_layout {
   [[nodiscard]] index_t num_vertices() const noexcept { return vbase_.empty() ? 0 : vbase_.back(); }
   [[nodiscard]] index_t num_faces() const noexcept { return fbase_.empty() ? 0 : fbase_.back(); }
   /// Tile index used at cell `cell` (row * cols + col).
-  [[nodiscard]] index_t tile_at(index_t cell) const noexcept { return type_[static_cast<std::size_t>(cell)]; }
+  [[nodiscard]] index_t tile_at(index_t cell) const noexcept { return type_[detail::to_size(cell)]; }
 
   /// Writes the welded plane into caller storage of exactly num_vertices() positions and
   /// num_faces() faces (any contents: every element is overwritten, nothing is read, so the storage
@@ -197,43 +194,43 @@ class geometric_plane_layout {
 
   void write_cell(index_t cell, vec3* out_pos, std::array<index_t, 3>* out_faces) const {
     const index_t r = cell / cols_, c = cell % cols_;
-    const std::size_t t = static_cast<std::size_t>(type_[static_cast<std::size_t>(cell)]);
+    const std::size_t t = detail::to_size(type_[detail::to_size(cell)]);
     const tile_plan& P = plan_[t];
     const std::vector<vec3>& src = set_->tiles[t].positions;
     const vec3 off{static_cast<double>(c) * w_, static_cast<double>(rows_ - 1 - r) * w_, 0};
-    const index_t base = vbase_[static_cast<std::size_t>(cell)];
+    const index_t base = vbase_[detail::to_size(cell)];
     const std::size_t no = P.owned.size(), ns = P.south.size(), ne = P.east.size();
     vec3* dst = out_pos + base;
-    for (std::size_t i = 0; i < no; ++i) dst[i] = src[static_cast<std::size_t>(P.owned[i])] + off;
+    for (std::size_t i = 0; i < no; ++i) dst[i] = src[detail::to_size(P.owned[i])] + off;
     // global ids of the south and east vertices: new ones on the plane border, else the neighbour's
     thread_local std::vector<index_t> border;
     border.resize(ns + ne);
     index_t extra = base + static_cast<index_t>(no);
     if (r == rows_ - 1) {
       for (std::size_t k = 0; k < ns; ++k) {
-        dst[no + k] = src[static_cast<std::size_t>(P.south[k])] + off;
+        dst[no + k] = src[detail::to_size(P.south[k])] + off;
         border[k] = extra + static_cast<index_t>(k);
       }
       extra += static_cast<index_t>(ns);
     } else {
-      const std::size_t below = static_cast<std::size_t>(cell + cols_);
-      const tile_plan& B = plan_[static_cast<std::size_t>(type_[below])];
+      const std::size_t below = detail::to_size(cell + cols_);
+      const tile_plan& B = plan_[detail::to_size(type_[below])];
       for (std::size_t k = 0; k < ns; ++k) border[k] = vbase_[below] + B.north_rank[k];
     }
     if (c == cols_ - 1) {
       vec3* de = out_pos + extra;
       for (std::size_t k = 0; k < ne; ++k) {
-        de[k] = src[static_cast<std::size_t>(P.east[k])] + off;
+        de[k] = src[detail::to_size(P.east[k])] + off;
         border[ns + k] = extra + static_cast<index_t>(k);
       }
     } else {
-      const std::size_t right = static_cast<std::size_t>(cell + 1);
-      const tile_plan& B = plan_[static_cast<std::size_t>(type_[right])];
+      const std::size_t right = detail::to_size(cell + 1);
+      const tile_plan& B = plan_[detail::to_size(type_[right])];
       for (std::size_t k = 0; k < ne; ++k) border[ns + k] = vbase_[right] + B.west_rank[k];
     }
     const std::int32_t owned = static_cast<std::int32_t>(no);
     const index_t* bd = border.data();
-    std::array<index_t, 3>* df = out_faces + fbase_[static_cast<std::size_t>(cell)];
+    std::array<index_t, 3>* df = out_faces + fbase_[detail::to_size(cell)];
     for (std::size_t f = 0; f < P.faces.size(); ++f) {
       const auto& l = P.faces[f];
       df[f] = {l[0] < owned ? base + l[0] : bd[l[0] - owned], l[1] < owned ? base + l[1] : bd[l[1] - owned],
@@ -300,7 +297,7 @@ result<geometric_plane_layout> plan_geometric_plane(const geometric_tile_set& se
   L.cols_ = cols;
   L.rows_ = rows;
   L.w_ = set.tile_size;
-  const std::size_t ncells = static_cast<std::size_t>(cols * rows);
+  const std::size_t ncells = detail::to_size(cols * rows);
   L.type_.resize(ncells);
   std::vector<unsigned char> used(set.tiles.size(), 0);
   for (index_t f = 0; f < cols * rows; ++f) {
@@ -310,8 +307,8 @@ result<geometric_plane_layout> plan_geometric_plane(const geometric_tile_set& se
     if (it == by_edges.end())
       return status::invalid_argument(detail::cat("tile_geometric_plane: cell ", f, " needs edges [", key[0], ", ",
                                                   key[1], ", ", key[2], ", ", key[3], "] which no tile has"));
-    L.type_[static_cast<std::size_t>(f)] = it->second;
-    used[static_cast<std::size_t>(it->second)] = 1;
+    L.type_[detail::to_size(f)] = it->second;
+    used[detail::to_size(it->second)] = 1;
   }
   // per tile: owned vertices, south/east sides, weld maps of the north/west sides, local faces
   L.plan_.resize(set.tiles.size());
@@ -335,11 +332,11 @@ result<geometric_plane_layout> plan_geometric_plane(const geometric_tile_set& se
     P.south = std::move(b->side[side_south]);
     P.east = std::move(b->side[side_east]);
     for (std::size_t k = 0; k < P.south.size(); ++k)
-      local[static_cast<std::size_t>(P.south[k])] = static_cast<std::int32_t>(P.owned.size() + k);
+      local[detail::to_size(P.south[k])] = static_cast<std::int32_t>(P.owned.size() + k);
     for (std::size_t k = 0; k < P.east.size(); ++k)
-      local[static_cast<std::size_t>(P.east[k])] = static_cast<std::int32_t>(P.owned.size() + P.south.size() + k);
-    for (index_t v : b->side[side_north]) P.north_rank.push_back(local[static_cast<std::size_t>(v)]);
-    for (index_t v : b->side[side_west]) P.west_rank.push_back(local[static_cast<std::size_t>(v)]);
+      local[detail::to_size(P.east[k])] = static_cast<std::int32_t>(P.owned.size() + P.south.size() + k);
+    for (index_t v : b->side[side_north]) P.north_rank.push_back(local[detail::to_size(v)]);
+    for (index_t v : b->side[side_west]) P.west_rank.push_back(local[detail::to_size(v)]);
     P.faces.resize(tile.faces.size());
     for (std::size_t f = 0; f < tile.faces.size(); ++f)
       for (std::size_t k = 0; k < 3; ++k) {
@@ -347,12 +344,12 @@ result<geometric_plane_layout> plan_geometric_plane(const geometric_tile_set& se
         if (v < 0 || v >= tile.num_vertices())
           return status::invalid_argument(
               detail::cat("tile_geometric_plane: tile ", t, " face ", f, " has vertex ", v, " out of range"));
-        P.faces[f][k] = local[static_cast<std::size_t>(v)];
+        P.faces[f][k] = local[detail::to_size(v)];
       }
   }
   // neighbours must agree on their shared border's vertex count
   const auto plan_at = [&](index_t cell) -> const auto& {
-    return L.plan_[static_cast<std::size_t>(L.type_[static_cast<std::size_t>(cell)])];
+    return L.plan_[detail::to_size(L.type_[detail::to_size(cell)])];
   };
   for (index_t r = 0; r < rows; ++r)
     for (index_t c = 0; c < cols; ++c) {
@@ -371,7 +368,7 @@ result<geometric_plane_layout> plan_geometric_plane(const geometric_tile_set& se
   L.fbase_.assign(ncells + 1, 0);
   for (index_t r = 0; r < rows; ++r)
     for (index_t c = 0; c < cols; ++c) {
-      const std::size_t cell = static_cast<std::size_t>(r * cols + c);
+      const std::size_t cell = detail::to_size(r * cols + c);
       const auto& P = plan_at(static_cast<index_t>(cell));
       index_t n = static_cast<index_t>(P.owned.size());
       if (r == rows - 1) n += static_cast<index_t>(P.south.size());
@@ -395,8 +392,8 @@ result<tri_mesh> tile_geometric_plane(const geometric_tile_set& set, const C& co
   auto plan = plan_geometric_plane(set, coloring, cols, rows);
   if (!plan) return plan.error();
   tri_mesh out;
-  out.positions.resize(static_cast<std::size_t>(plan->num_vertices()));
-  out.faces.resize(static_cast<std::size_t>(plan->num_faces()));
+  out.positions.resize(detail::to_size(plan->num_vertices()));
+  out.faces.resize(detail::to_size(plan->num_faces()));
   if (auto s = plan->write(out.positions, out.faces, exec); !s) return s;
   return out;
 }

@@ -89,7 +89,7 @@ requires GridTileColoring<Coloring> || PlaneTileColoring<Coloring>
   }
   // Tile of every cell of the window, validated before anything is written.
   const index_t ncols = c1 - c0 + 1, nrows = r1 - r0 + 1;
-  std::vector<index_t> cell_tile(static_cast<std::size_t>(ncols * nrows));
+  std::vector<index_t> cell_tile(detail::to_size(ncols * nrows));
   for (index_t r = r0; r <= r1; ++r)
     for (index_t c = c0; c <= c1; ++c) {
       const wang_edges e = cell_edges(coloring, c, r);
@@ -98,7 +98,7 @@ requires GridTileColoring<Coloring> || PlaneTileColoring<Coloring>
         return status::invalid_argument(detail::cat(
             "compose_tiles: the colouring violates the tile set: cell (", c, ", ", r, ") needs edges [north ", e.north,
             ", east ", e.east, ", south ", e.south, ", west ", e.west, "] and the set has no such tile"));
-      cell_tile[static_cast<std::size_t>((r - r0) * ncols + (c - c0))] = t;
+      cell_tile[detail::to_size((r - r0) * ncols + (c - c0))] = t;
     }
   const pixel<T, C> line = convert_pixel<pixel<T, C>>(pixel<float, 4>{options.outline_color});
   auto outlined = [&](index_t px, index_t py) { return options.outline && (px % ts == 0 || py % ts == 0); };
@@ -115,21 +115,20 @@ requires GridTileColoring<Coloring> || PlaneTileColoring<Coloring>
         while (ox < w) {
           const index_t px = options.x + ox, c = floor_div(px, ts), tx = px - c * ts;
           const index_t n = std::min(ts - tx, w - ox);
-          std::memcpy(dst + ox * C, set.tile_row(row_tiles[c - c0], ty) + tx * C,
-                      static_cast<std::size_t>(n * C) * sizeof(T));
+          std::memcpy(dst + ox * C, set.tile_row(row_tiles[c - c0], ty) + tx * C, detail::to_size(n * C) * sizeof(T));
           ox += n;
         }
         if (options.outline) {
           const bool whole_row = ty == 0;  // a tile's first row; otherwise only first columns
           for (index_t x = whole_row ? 0 : (ts - (options.x % ts + ts) % ts) % ts; x < w; x += whole_row ? 1 : ts)
-            for (int k = 0; k < C; ++k) dst[x * C + k] = line[static_cast<std::size_t>(k)];
+            for (int k = 0; k < C; ++k) dst[x * C + k] = line[detail::to_size(k)];
         }
       } else {
         for (index_t ox = 0; ox < w; ++ox) {
           const index_t px = options.x + ox, c = floor_div(px, ts), tx = px - c * ts;
           const T* src = set.tile_row(row_tiles[c - c0], ty) + tx * C;
           pixel<T, C> p;
-          for (int k = 0; k < C; ++k) p[static_cast<std::size_t>(k)] = src[k];
+          for (int k = 0; k < C; ++k) p[detail::to_size(k)] = src[k];
           if (outlined(px, py)) p = line;
           image_traits<O>::write(out, ox, oy, convert_pixel<pixel_t<O>>(p));
         }

@@ -39,10 +39,10 @@ namespace detail {
 template <Image M>
 std::vector<std::uint8_t> read_hole_mask(const M& mask) {
   const index_t w = width_of(mask), h = height_of(mask);
-  std::vector<std::uint8_t> hole(static_cast<std::size_t>(w * h));
+  std::vector<std::uint8_t> hole(to_size(w * h));
   for (index_t y = 0; y < h; ++y)
     for (index_t x = 0; x < w; ++x)
-      hole[static_cast<std::size_t>(y * w + x)] =
+      hole[to_size(y * w + x)] =
           channel_to_unit(pixel_traits<pixel_t<M>>::get(image_traits<M>::read(mask, x, y), 0)) >= 0.5f;
   return hole;
 }

@@ -32,7 +32,7 @@ inline constexpr std::array<exemplar_kind, 7> all_exemplar_kinds = {
 
 constexpr std::string_view to_string(exemplar_kind k) noexcept {
   constexpr std::array<std::string_view, 7> names = {"grass", "sand", "rock", "bricks", "cells", "weave", "dots"};
-  return names[static_cast<std::size_t>(k)];
+  return names[detail::to_size(k)];
 }
 
 /// Parses a kind name ("bricks"); an invalid_argument status lists the valid names.

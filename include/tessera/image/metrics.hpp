@@ -92,7 +92,7 @@ result<double> neighborhood_energy(const O& output, const E& exemplar, const nei
   if (!ex) return ex.error();
   const index_t D = w * w * C;
   const index_t enx = ex->width() - w + 1, eny = ex->height() - w + 1, ne = enx * eny;
-  std::vector<float> windows(static_cast<std::size_t>(ne * D));
+  std::vector<float> windows(detail::to_size(ne * D));
   for (index_t y = 0; y < eny; ++y)
     for (index_t x = 0; x < enx; ++x) detail::gather_window(*ex, x, y, w, windows.data() + (y * enx + x) * D);
   const index_t qnx = (out->width() - w) / opts.sample_step + 1, qny = (out->height() - w) / opts.sample_step + 1;
@@ -117,20 +117,20 @@ result<double> neighborhood_energy(const O& output, const E& exemplar, const nei
     }
     basis = detail::pca_basis(std::move(samples), 12);
     const int d = static_cast<int>(basis.cols());
-    std::vector<double> proj(static_cast<std::size_t>(ne * d));
+    std::vector<double> proj(detail::to_size(ne * d));
     column v(D);
     double scale = 0;
     for (index_t i = 0; i < ne; ++i) {
-      for (index_t j = 0; j < D; ++j) v(j) = windows[static_cast<std::size_t>(i * D + j)];
+      for (index_t j = 0; j < D; ++j) v(j) = windows[detail::to_size(i * D + j)];
       Eigen::Map<row>(proj.data() + i * d, d) = v.transpose() * basis;
       scale = std::max(scale, v.squaredNorm());
     }
     index = knn(std::move(proj), ne, d, scale);
   }
 
-  std::vector<double> row_sums(static_cast<std::size_t>(qny), 0.0);
+  std::vector<double> row_sums(detail::to_size(qny), 0.0);
   exec.parallel_for(0, qny, [&](index_t qy) {
-    std::vector<float> q(static_cast<std::size_t>(D));
+    std::vector<float> q(detail::to_size(D));
     std::vector<detail::neighbor> best;
     column qv(D);
     double sum = 0;
@@ -142,7 +142,7 @@ result<double> neighborhood_energy(const O& output, const E& exemplar, const nei
         for (index_t i = 0; i < ne; ++i)
           nearest = std::min(nearest, detail::squared_distance(q.data(), windows.data() + i * D, w, w * C, nearest));
       } else {
-        for (index_t j = 0; j < D; ++j) qv(j) = q[static_cast<std::size_t>(j)];
+        for (index_t j = 0; j < D; ++j) qv(j) = q[detail::to_size(j)];
         const row qp = qv.transpose() * basis;
         index.search(
             qp.data(), 1,
@@ -154,7 +154,7 @@ result<double> neighborhood_energy(const O& output, const E& exemplar, const nei
       }
       sum += std::sqrt(nearest / static_cast<double>(D));
     }
-    row_sums[static_cast<std::size_t>(qy)] = sum;
+    row_sums[detail::to_size(qy)] = sum;
   });
   double total = 0;
   for (double s : row_sums) total += s;
@@ -259,12 +259,12 @@ result<double> histogram_distance(const A& a, const B& b, int bins = 32) {
   if (!fa) return fa.error();
   if (!fb) return fb.error();
   auto histogram = [&](const image_buffer<float, C>& img, int c) {
-    std::vector<double> hist(static_cast<std::size_t>(bins), 0.0);
+    std::vector<double> hist(detail::to_size(bins), 0.0);
     const index_t n = img.width() * img.height();
     for (index_t i = 0; i < n; ++i) {
       const float v = img.data()[i * C + c];
       const double u = v > 0 ? std::min(static_cast<double>(v), 1.0) : 0.0;  // NaN -> 0
-      hist[static_cast<std::size_t>(std::min<index_t>(bins - 1, static_cast<index_t>(u * bins)))] +=
+      hist[detail::to_size(std::min<index_t>(bins - 1, static_cast<index_t>(u * bins)))] +=
           1.0 / static_cast<double>(n);
     }
     return hist;
@@ -272,7 +272,7 @@ result<double> histogram_distance(const A& a, const B& b, int bins = 32) {
   double total = 0;
   for (int c = 0; c < C; ++c) {
     const auto ha = histogram(*fa, c), hb = histogram(*fb, c);
-    for (int i = 0; i < bins; ++i) total += std::abs(ha[static_cast<std::size_t>(i)] - hb[static_cast<std::size_t>(i)]);
+    for (int i = 0; i < bins; ++i) total += std::abs(ha[detail::to_size(i)] - hb[detail::to_size(i)]);
   }
   return total / C;
 }
@@ -304,7 +304,7 @@ result<double> repetition_score(const I& image, index_t min_offset) {
   double best = 0;
   for (index_t dy = 0; dy <= my; ++dy)
     for (index_t dx = -mx; dx <= mx; ++dx) {
-      const double r = corr[static_cast<std::size_t>(dy * (2 * mx + 1) + dx + mx)];
+      const double r = corr[detail::to_size(dy * (2 * mx + 1) + dx + mx)];
       if (std::max(std::abs(dx), dy) >= min_offset && r > best) best = r;
     }
   return best;

@@ -52,7 +52,7 @@ struct patch_model_options {
 
 namespace detail {
 struct patch_model_builder;
-}
+}  // namespace detail
 
 /// Exemplar coordinates of a patch's top-left pixel.
 struct patch_origin {
@@ -103,13 +103,13 @@ class patch_model {
   /// columns against b's first ones, over the full patch height), ascending by overlap_error, ties by
   /// index.
   [[nodiscard]] std::span<const std::uint32_t> compatible(index_t patch, patch_side side) const noexcept {
-    const auto s = static_cast<std::size_t>(side);
-    return {compat_[s].data() + patch * k_, static_cast<std::size_t>(k_)};
+    const auto s = detail::to_size(side);
+    return {compat_[s].data() + patch * k_, detail::to_size(k_)};
   }
   /// The compatible set with its errors ordered by patch index (for set intersections).
   [[nodiscard]] std::span<const indexed_candidate> compatible_by_index(index_t patch, patch_side side) const noexcept {
-    const auto s = static_cast<std::size_t>(side);
-    return {by_index_[s].data() + patch * k_, static_cast<std::size_t>(k_)};
+    const auto s = detail::to_size(side);
+    return {by_index_[s].data() + patch * k_, detail::to_size(k_)};
   }
   /// overlap_error(patch, compatible(patch, side)[r], side) for every r (ascending), as floats.
   [[nodiscard]] std::vector<float> compatible_errors(index_t patch, patch_side side) const {
@@ -122,7 +122,7 @@ class patch_model {
   }
   /// The largest error in the set (its k-th), a lower bound of the error of any patch outside it.
   [[nodiscard]] float kth_error(index_t patch, patch_side side) const noexcept {
-    return worst_[static_cast<std::size_t>(patch * 4 + static_cast<index_t>(side))];
+    return worst_[detail::to_size(patch * 4 + static_cast<index_t>(side))];
   }
   /// The exemplar's normalized autocorrelation at a shift of one patch pitch (mean of the shifts
   /// (patch_width, 0) and (0, patch_height)): near 1 when the texture repeats with the patch grid.
@@ -147,8 +147,8 @@ class patch_model {
   }
   /// The patches of one phase, ascending.
   [[nodiscard]] std::span<const std::uint32_t> phase_patches(index_t phase) const noexcept {
-    const auto b = phase_start_[static_cast<std::size_t>(phase)], e = phase_start_[static_cast<std::size_t>(phase + 1)];
-    return {phase_members_.data() + b, static_cast<std::size_t>(e - b)};
+    const auto b = phase_start_[detail::to_size(phase)], e = phase_start_[detail::to_size(phase + 1)];
+    return {phase_members_.data() + b, detail::to_size(e - b)};
   }
 
   [[nodiscard]] bool has_seams() const noexcept { return !seams_[0].empty(); }
@@ -157,10 +157,10 @@ class patch_model {
   /// along the overlap (row t of a vertical overlap, column t of a horizontal one); pixels before the
   /// cut come from the left/top patch. Empty when the model was built without seams.
   [[nodiscard]] std::span<const std::uint8_t> seam(index_t patch, patch_side side, index_t rank) const noexcept {
-    const auto s = static_cast<std::size_t>(side);
+    const auto s = detail::to_size(side);
     if (seams_[s].empty()) return {};
     const index_t len = seam_length(side);
-    return {seams_[s].data() + (patch * k_ + rank) * len, static_cast<std::size_t>(len)};
+    return {seams_[s].data() + (patch * k_ + rank) * len, detail::to_size(len)};
   }
   /// Length of a seam along an overlap on `side` (patch height + overlap for east/west).
   [[nodiscard]] index_t seam_length(patch_side side) const noexcept {
@@ -262,14 +262,13 @@ struct patch_model_builder {
     if (!opts.progress.report(0.05, "patch model: phases")) return status::cancelled();
 
     // step 2: patches grouped by phase (counting sort, so each phase lists its patches ascending)
-    m.phase_start_.assign(static_cast<std::size_t>(pw * ph + 1), 0);
-    for (index_t p = 0; p < n; ++p) ++m.phase_start_[static_cast<std::size_t>(m.phase_of(p) + 1)];
+    m.phase_start_.assign(to_size(pw * ph + 1), 0);
+    for (index_t p = 0; p < n; ++p) ++m.phase_start_[to_size(m.phase_of(p) + 1)];
     for (std::size_t i = 1; i < m.phase_start_.size(); ++i) m.phase_start_[i] += m.phase_start_[i - 1];
-    m.phase_members_.resize(static_cast<std::size_t>(n));
+    m.phase_members_.resize(to_size(n));
     std::vector<index_t> fill(m.phase_start_.begin(), m.phase_start_.end() - 1);
     for (index_t p = 0; p < n; ++p)
-      m.phase_members_[static_cast<std::size_t>(fill[static_cast<std::size_t>(m.phase_of(p))]++)] =
-          static_cast<std::uint32_t>(p);
+      m.phase_members_[to_size(fill[to_size(m.phase_of(p))]++)] = static_cast<std::uint32_t>(p);
 
     // step 3: compatible sets, stored by error and by patch index (for the intersections)
     const patch_geometry g{pw, ph, v, m.nx_, m.ny_};
@@ -279,19 +278,17 @@ struct patch_model_builder {
       return opts.progress.report(0.05 + 0.8 * f, "patch model: compatible sets");
     });
     if (sets.empty()) return status::cancelled();
-    m.worst_.resize(static_cast<std::size_t>(n * 4));
+    m.worst_.resize(to_size(n * 4));
     for (int si = 0; si < 4; ++si) {
-      const auto& set = sets[static_cast<std::size_t>(si)];
+      const auto& set = sets[to_size(si)];
       m.compat_[si] = set.ids;
       auto& by_id = m.by_index_[si];
-      by_id.resize(static_cast<std::size_t>(n * k));
+      by_id.resize(to_size(n * k));
       for (index_t a = 0; a < n; ++a) {
-        m.worst_[static_cast<std::size_t>(a * 4 + si)] =
-            static_cast<float>(set.dist[static_cast<std::size_t>(a * k + k - 1)]);
+        m.worst_[to_size(a * 4 + si)] = static_cast<float>(set.dist[to_size(a * k + k - 1)]);
         auto* e = by_id.data() + a * k;
         for (index_t r = 0; r < k; ++r)
-          e[r] = {set.ids[static_cast<std::size_t>(a * k + r)],
-                  static_cast<float>(set.dist[static_cast<std::size_t>(a * k + r)])};
+          e[r] = {set.ids[to_size(a * k + r)], static_cast<float>(set.dist[to_size(a * k + r)])};
         std::sort(e, e + k, [](const indexed_candidate& x, const indexed_candidate& y) { return x.patch < y.patch; });
       }
     }

@@ -118,9 +118,9 @@ status render_window(const patch_plan& plan, const image_buffer<T, C>& ex, O& ou
   const index_t groups = report ? std::min<index_t>(bands, 16) : 1;
   for (index_t g = 0; g < groups; ++g) {
     exec.parallel_for(g * bands / groups, (g + 1) * bands / groups, [&](index_t b) {
-      std::vector<T> tmp(static_cast<std::size_t>(w * C));
+      std::vector<T> tmp(to_size(w * C));
       [[maybe_unused]] std::vector<T> row;
-      if constexpr (!direct_rows_v<OT, T, C>) row.resize(static_cast<std::size_t>(w * C));
+      if constexpr (!direct_rows_v<OT, T, C>) row.resize(to_size(w * C));
       for (index_t y = b * band; y < std::min(h, (b + 1) * band); ++y) {
         if constexpr (direct_rows_v<OT, T, C>) {
           renderer.render(y, out.row(y), tmp.data());
@@ -128,7 +128,7 @@ status render_window(const patch_plan& plan, const image_buffer<T, C>& ex, O& ou
           renderer.render(y, row.data(), tmp.data());
           for (index_t x = 0; x < w; ++x) {
             pixel<T, C> p;
-            for (int c = 0; c < C; ++c) p[static_cast<std::size_t>(c)] = row[static_cast<std::size_t>(x * C + c)];
+            for (int c = 0; c < C; ++c) p[to_size(c)] = row[to_size(x * C + c)];
             image_traits<OT>::write(out, x, y, convert_pixel<pixel_t<OT>>(p));
           }
         }

@@ -75,8 +75,8 @@ struct wang_atlas {
 
   /// Atlas texel coordinates of offset (fx, fy) ∈ [0, tile_size)² inside tile `tile`.
   [[nodiscard]] vec2 texel(index_t tile, double fx, double fy) const noexcept {
-    return {static_cast<double>(slot_col[static_cast<std::size_t>(tile)] * slot_size + padding) + fx,
-            static_cast<double>(slot_row[static_cast<std::size_t>(tile)] * slot_size + padding) + fy};
+    return {static_cast<double>(slot_col[detail::to_size(tile)] * slot_size + padding) + fx,
+            static_cast<double>(slot_row[detail::to_size(tile)] * slot_size + padding) + fy};
   }
 };
 
@@ -108,8 +108,8 @@ template <Channel T, int C>
   a.layout = options.layout;
   a.tile_size = ts;
   a.edges = edges;
-  a.slot_col.resize(static_cast<std::size_t>(set.size()));
-  a.slot_row.resize(static_cast<std::size_t>(set.size()));
+  a.slot_col.resize(detail::to_size(set.size()));
+  a.slot_row.resize(detail::to_size(set.size()));
   const int nh = edges.horizontal_colors(), nv = edges.vertical_colors();
   index_t cols = 0, rows = 0;
   if (options.layout == atlas_layout::edge_ordered) {
@@ -127,8 +127,8 @@ template <Channel T, int C>
     rows = static_cast<index_t>(nh) * nh;
     for (index_t t = 0; t < set.size(); ++t) {
       const wang_edges e = edges[t];
-      a.slot_col[static_cast<std::size_t>(t)] = edge_order_index(e.west, e.east);
-      a.slot_row[static_cast<std::size_t>(t)] = edge_order_index(e.north, e.south);
+      a.slot_col[detail::to_size(t)] = edge_order_index(e.west, e.east);
+      a.slot_row[detail::to_size(t)] = edge_order_index(e.north, e.south);
     }
   } else {
     a.padding = options.padding > 0 ? options.padding : levels > 0 ? index_t{1} << (levels - 1) : 1;
@@ -145,8 +145,8 @@ template <Channel T, int C>
     cols = static_cast<index_t>(std::ceil(std::sqrt(static_cast<double>(set.size()))));
     rows = (set.size() + cols - 1) / cols;
     for (index_t t = 0; t < set.size(); ++t) {
-      a.slot_col[static_cast<std::size_t>(t)] = t % cols;
-      a.slot_row[static_cast<std::size_t>(t)] = t / cols;
+      a.slot_col[detail::to_size(t)] = t % cols;
+      a.slot_row[detail::to_size(t)] = t / cols;
     }
   }
   a.slot_size = ts + 2 * a.padding;
@@ -157,7 +157,7 @@ template <Channel T, int C>
   auto copy_block = [&](index_t tile, index_t sx, index_t sy, index_t w, index_t h, index_t dx, index_t dy) {
     for (index_t y = 0; y < h; ++y)
       std::memcpy(a.image.pixel_ptr(dx, dy + y), set.tile_row(tile, sy + y) + sx * C,
-                  static_cast<std::size_t>(w * C) * sizeof(T));
+                  detail::to_size(w * C) * sizeof(T));
   };
   // a neighbour of tile t across `side`, matching its edge (and, for corners, a second edge when possible)
   auto neighbour = [&](index_t t, int side) -> index_t {
@@ -181,8 +181,7 @@ template <Channel T, int C>
   };
   const index_t p = a.padding;
   for (index_t t = 0; t < set.size(); ++t) {
-    const index_t ox = a.slot_col[static_cast<std::size_t>(t)] * a.slot_size,
-                  oy = a.slot_row[static_cast<std::size_t>(t)] * a.slot_size;
+    const index_t ox = a.slot_col[detail::to_size(t)] * a.slot_size, oy = a.slot_row[detail::to_size(t)] * a.slot_size;
     if (options.layout == atlas_layout::edge_ordered && set.edges().find(edges[t]) != t)
       continue;  // first variant only
     copy_block(t, 0, 0, ts, ts, ox + p, oy + p);

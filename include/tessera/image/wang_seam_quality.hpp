@@ -72,7 +72,7 @@ template <Channel T, int C, Image E>
       for (index_t b : partners) {
         image_buffer<T, C>& img = vertical ? side_by_side : stacked;
         for (index_t y = 0; y < ts; ++y) {
-          const std::size_t row = static_cast<std::size_t>(ts * C) * sizeof(T);
+          const std::size_t row = detail::to_size(ts * C) * sizeof(T);
           if (vertical) {
             std::memcpy(img.pixel_ptr(0, y), set.tile_row(a, y), row);
             std::memcpy(img.pixel_ptr(ts, y), set.tile_row(b, y), row);

@@ -110,9 +110,9 @@ struct wang_tile_set_access {
     };
     const tile_set_edges& edges = s.edges();
     for (int side = 0; side < 4; ++side) {
-      std::vector<index_t> first(static_cast<std::size_t>(edges.num_colors(side)), -1);
+      std::vector<index_t> first(to_size(edges.num_colors(side)), -1);
       for (index_t t = 0; t < n; ++t) {
-        index_t& r = first[static_cast<std::size_t>(edges[t][side])];
+        index_t& r = first[to_size(edges[t][side])];
         if (r < 0) {
           r = t;
           continue;
@@ -209,7 +209,7 @@ class wang_tile_set {
   wang_tile_set(tile_set_edges edges, index_t tile_size)
       : edges_(std::move(edges)),
         tile_size_(tile_size),
-        pixels_(static_cast<std::size_t>(edges_.size() * tile_size * tile_size * C)) {}
+        pixels_(detail::to_size(edges_.size() * tile_size * tile_size * C)) {}
 
   tile_set_edges edges_;
   index_t tile_size_ = 0;
@@ -366,7 +366,7 @@ template <Image E, Executor X = serial_executor>
     return s;
 
   const index_t n = set->size();
-  std::vector<status> failures(static_cast<std::size_t>(n));
+  std::vector<status> failures(detail::to_size(n));
   auto build_one = [&](index_t t) {
     detail::quilt_canvas<T, C> canvas(ts, ts);
     // Frame construction (paper 000 §3.2), then interior synthesis (§3.3): constrained quilting of
@@ -375,7 +375,7 @@ template <Image E, Executor X = serial_executor>
     detail::quilt_params local = prm;
     local.key = static_cast<std::uint64_t>(t);
     serial_executor serial;
-    failures[static_cast<std::size_t>(t)] = detail::fill_canvas(src, canvas, local, ov, serial);
+    failures[detail::to_size(t)] = detail::fill_canvas(src, canvas, local, ov, serial);
     std::memcpy(detail::wang_tile_set_access::tile_data(*set, t), canvas.pixels.data(), canvas.pixels.size_bytes());
   };
   constexpr index_t batch = 4;

@@ -117,9 +117,8 @@ inline result<tri_mesh> parse_obj(std::string_view text, std::string_view name =
         if (corner_t.empty())
           face_uvs.push_back({});
         else
-          face_uvs.push_back({texcoords[static_cast<std::size_t>(corner_t[0])],
-                              texcoords[static_cast<std::size_t>(corner_t[i])],
-                              texcoords[static_cast<std::size_t>(corner_t[i + 1])]});
+          face_uvs.push_back({texcoords[detail::to_size(corner_t[0])], texcoords[detail::to_size(corner_t[i])],
+                              texcoords[detail::to_size(corner_t[i + 1])]});
       }
     }
     // everything else (vn, vp, o, g, s, usemtl, mtllib, l, p, curves...) is skipped
@@ -143,7 +142,7 @@ template <Mesh M>
 std::string format_obj(const M& m) {
   const index_t nv = tessera::num_vertices(m), nf = tessera::num_faces(m);
   std::string out;
-  out.reserve(static_cast<std::size_t>(40 * nv + 30 * nf + 64));
+  out.reserve(detail::to_size(40 * nv + 30 * nf + 64));
   out += "# written by tessera: ";
   detail::append_number(out, nv);
   out += " vertices, ";
@@ -164,11 +163,11 @@ std::string format_obj(const M& m) {
     if constexpr (UVMesh<M>) {
       struct key_hash {
         std::size_t operator()(const std::pair<std::uint64_t, std::uint64_t>& k) const noexcept {
-          return static_cast<std::size_t>(k.first * 0x9e3779b97f4a7c15ULL ^ (k.second + 0x632be59bd9b4e019ULL));
+          return detail::to_size(k.first * 0x9e3779b97f4a7c15ULL ^ (k.second + 0x632be59bd9b4e019ULL));
         }
       };
       std::unordered_map<std::pair<std::uint64_t, std::uint64_t>, index_t, key_hash> ids;
-      uv_id.resize(static_cast<std::size_t>(3 * nf));
+      uv_id.resize(detail::to_size(3 * nf));
       for (index_t f = 0; f < nf; ++f)
         for (int k = 0; k < 3; ++k) {
           const vec2 t = tessera::corner_uv(m, f, k);
@@ -183,7 +182,7 @@ std::string format_obj(const M& m) {
             detail::append_number(out, t.y);
             out += '\n';
           }
-          uv_id[static_cast<std::size_t>(3 * f + k)] = it->second;
+          uv_id[detail::to_size(3 * f + k)] = it->second;
         }
     }
   }
@@ -194,7 +193,7 @@ std::string format_obj(const M& m) {
       detail::append_number(out, tessera::face_vertex(m, f, k) + 1);
       if (!uv_id.empty()) {
         out += '/';
-        detail::append_number(out, uv_id[static_cast<std::size_t>(3 * f + k)] + 1);
+        detail::append_number(out, uv_id[detail::to_size(3 * f + k)] + 1);
       }
     }
     out += '\n';

@@ -134,7 +134,7 @@ template <Mesh M>
 std::string format_off(const M& m) {
   const index_t nv = tessera::num_vertices(m), nf = tessera::num_faces(m);
   std::string out = "OFF\n";
-  out.reserve(static_cast<std::size_t>(40 * nv + 24 * nf + 32));
+  out.reserve(detail::to_size(40 * nv + 24 * nf + 32));
   detail::append_number(out, nv);
   out += ' ';
   detail::append_number(out, nf);

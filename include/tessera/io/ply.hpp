@@ -49,7 +49,7 @@ status read_ply_elements(const ply_header& h, Source& src, std::string_view name
     std::size_t least = 0;  // bytes one element occupies at the very least
     for (const ply_property& p : e.properties)
       least += Source::min_value_bytes(p.is_list ? p.count_type : p.value_type);
-    if (least > 0 && static_cast<std::size_t>(e.count) > (src.remaining() + 1) / least) {  // +1: no final newline
+    if (least > 0 && to_size(e.count) > (src.remaining() + 1) / least) {  // +1: no final newline
       const std::string msg = cat("truncated or corrupt: the header (line ", e.header_line, ") declares ", e.count,
                                   " '", e.name, "' elements but only ", src.remaining(), " bytes of data follow");
       if constexpr (std::is_same_v<Source, ply_binary_source>)
@@ -70,24 +70,23 @@ status read_ply_elements(const ply_header& h, Source& src, std::string_view name
           uv[1] = e.find(n[1]);
         }
       for (int k = 0; k < 3; ++k)
-        if (xyz[k] < 0 || e.properties[static_cast<std::size_t>(xyz[k])].is_list)
+        if (xyz[k] < 0 || e.properties[to_size(xyz[k])].is_list)
           return parse_error_at_line(name, e.header_line, "the vertex element needs scalar properties x, y and z");
-      have_vertex_uv = uv[0] >= 0 && !e.properties[static_cast<std::size_t>(uv[0])].is_list &&
-                       !e.properties[static_cast<std::size_t>(uv[1])].is_list;
+      have_vertex_uv = uv[0] >= 0 && !e.properties[to_size(uv[0])].is_list && !e.properties[to_size(uv[1])].is_list;
       const std::size_t n = bounded_reserve(e.count, src.remaining(), least);
       m.positions.reserve(n);
       if (have_vertex_uv) vertex_uv.reserve(n);
     } else if (is_face) {
       indices = e.find("vertex_indices") >= 0 ? e.find("vertex_indices") : e.find("vertex_index");
       texcoord = e.find("texcoord");
-      if (indices < 0 || !e.properties[static_cast<std::size_t>(indices)].is_list)
+      if (indices < 0 || !e.properties[to_size(indices)].is_list)
         return parse_error_at_line(name, e.header_line, "the face element needs a list property vertex_indices");
       if (e.count > 0 && vertex == nullptr)
         return parse_error_at_line(name, e.header_line, "faces without a vertex element");
-      if (texcoord >= 0 && !e.properties[static_cast<std::size_t>(texcoord)].is_list) texcoord = -1;
+      if (texcoord >= 0 && !e.properties[to_size(texcoord)].is_list) texcoord = -1;
       have_face_uv = texcoord >= 0;
       // a triangle holds its count and three indices at the very least
-      const ply_property& ip = e.properties[static_cast<std::size_t>(indices)];
+      const ply_property& ip = e.properties[to_size(indices)];
       m.faces.reserve(bounded_reserve(e.count, src.remaining(), least + 3 * Source::min_value_bytes(ip.value_type)));
     }
     if (e.properties.empty()) continue;  // holds no data, however many it declares (no 2^63-step loop)
@@ -99,7 +98,7 @@ status read_ply_elements(const ply_header& h, Source& src, std::string_view name
       corners.clear();
       corner_uv.clear();
       for (int j = 0; j < static_cast<int>(e.properties.size()); ++j) {
-        const ply_property& prop = e.properties[static_cast<std::size_t>(j)];
+        const ply_property& prop = e.properties[to_size(j)];
         double value = 0;
         if (!prop.is_list) {
           if (!src.read(prop.value_type, value)) return src.error_status(where());
@@ -111,7 +110,7 @@ status read_ply_elements(const ply_header& h, Source& src, std::string_view name
         }
         if (!src.read(prop.count_type, value)) return src.error_status(where());
         if (value < 0) return src.error_here(cat(where(), ": negative list length ", value));
-        const auto count = static_cast<std::size_t>(value);
+        const auto count = to_size(value);
         if (count > (src.remaining() + 1) / Source::min_value_bytes(prop.value_type))
           return src.error_here(cat(where(), ": a list of ", count, " values does not fit in the ", src.remaining(),
                                     " bytes that follow"));
@@ -155,9 +154,7 @@ status read_ply_elements(const ply_header& h, Source& src, std::string_view name
   } else if (have_vertex_uv) {
     m.uvs.resize(m.faces.size());
     for (std::size_t f = 0; f < m.faces.size(); ++f)
-      for (int k = 0; k < 3; ++k)
-        m.uvs[f][static_cast<std::size_t>(k)] =
-            vertex_uv[static_cast<std::size_t>(m.faces[f][static_cast<std::size_t>(k)])];
+      for (int k = 0; k < 3; ++k) m.uvs[f][to_size(k)] = vertex_uv[to_size(m.faces[f][to_size(k)])];
   }
   return {};
 }
@@ -230,8 +227,8 @@ std::string format_ply(const M& m, const ply_write_options& opts = {}) {
   }
   if (uvs) out += double_uvs ? "property list uchar double texcoord\n" : "property list uchar float texcoord\n";
   out += "end_header\n";
-  out.reserve(out.size() + static_cast<std::size_t>(opts.binary ? 24 * nv + 13 * nf + (uvs ? 25 * nf : 0)
-                                                                : 40 * nv + 24 * nf + (uvs ? 60 * nf : 0)));
+  out.reserve(out.size() + detail::to_size(opts.binary ? 24 * nv + 13 * nf + (uvs ? 25 * nf : 0)
+                                                       : 40 * nv + 24 * nf + (uvs ? 60 * nf : 0)));
   for (index_t v = 0; v < nv; ++v) {
     const vec3 p = tessera::vertex_position(m, v);
     for (int k = 0; k < 3; ++k) {

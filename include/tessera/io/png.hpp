@@ -117,9 +117,9 @@ void convert_decoded(const S* src, image_buffer<T, C>& out) {
   T* dst = out.data();
   for (index_t i = 0; i < n; ++i) {
     pixel<S, FC> p;
-    for (int c = 0; c < FC; ++c) p[static_cast<std::size_t>(c)] = src[i * FC + c];
+    for (int c = 0; c < FC; ++c) p[to_size(c)] = src[i * FC + c];
     const auto q = convert_pixel<pixel<T, C>>(p);
-    for (int c = 0; c < C; ++c) dst[i * C + c] = q[static_cast<std::size_t>(c)];
+    for (int c = 0; c < C; ++c) dst[i * C + c] = q[to_size(c)];
   }
 }
 }  // namespace detail
@@ -204,27 +204,26 @@ result<std::vector<unsigned char>> encode_png(const I& img, std::string_view nam
   constexpr bool eight = std::is_same_v<channel_t<I>, std::uint8_t>;
   constexpr std::size_t bytes_per_sample = eight ? 1 : 2;
   const index_t w = width_of(img), h = height_of(img);
-  const std::size_t row_bytes = static_cast<std::size_t>(w) * C * bytes_per_sample;
+  const std::size_t row_bytes = detail::to_size(w) * C * bytes_per_sample;
   if (w > 0x7fffffff || h > 0x7fffffff || static_cast<double>(row_bytes + 1) * static_cast<double>(h) > INT_MAX)
     return status::size_overflow(detail::cat(name, ": ", w, " x ", h, " is too large for one PNG stream (2 GB)"));
-  std::vector<unsigned char> raw(row_bytes * static_cast<std::size_t>(h));
+  std::vector<unsigned char> raw(row_bytes * detail::to_size(h));
   for (index_t y = 0; y < h; ++y) {
-    unsigned char* r = raw.data() + static_cast<std::size_t>(y) * row_bytes;
+    unsigned char* r = raw.data() + detail::to_size(y) * row_bytes;
     for (index_t x = 0; x < w; ++x) {
       if constexpr (eight) {
         const auto p = convert_pixel<pixel<std::uint8_t, C>>(image_traits<I>::read(img, x, y));
-        for (int c = 0; c < C; ++c) r[x * C + c] = p[static_cast<std::size_t>(c)];
+        for (int c = 0; c < C; ++c) r[x * C + c] = p[detail::to_size(c)];
       } else {
         const auto p = convert_pixel<pixel<std::uint16_t, C>>(image_traits<I>::read(img, x, y));
         for (int c = 0; c < C; ++c) {
-          r[2 * (x * C + c)] = static_cast<unsigned char>(p[static_cast<std::size_t>(c)] >> 8);
-          r[2 * (x * C + c) + 1] = static_cast<unsigned char>(p[static_cast<std::size_t>(c)] & 0xff);
+          r[2 * (x * C + c)] = static_cast<unsigned char>(p[detail::to_size(c)] >> 8);
+          r[2 * (x * C + c) + 1] = static_cast<unsigned char>(p[detail::to_size(c)] & 0xff);
         }
       }
     }
   }
-  const auto filtered =
-      detail::png_filter_rows(raw.data(), row_bytes, static_cast<std::size_t>(h), C * bytes_per_sample);
+  const auto filtered = detail::png_filter_rows(raw.data(), row_bytes, detail::to_size(h), C * bytes_per_sample);
   int zlen = 0;
   std::unique_ptr<unsigned char, decltype(&std::free)> z(
       stbi_zlib_compress(const_cast<unsigned char*>(filtered.data()), static_cast<int>(filtered.size()), &zlen, 8),
@@ -236,9 +235,9 @@ result<std::vector<unsigned char>> encode_png(const I& img, std::string_view nam
   detail::put_be32(ihdr, static_cast<std::uint32_t>(w));
   detail::put_be32(ihdr, static_cast<std::uint32_t>(h));
   ihdr.insert(ihdr.end(), {static_cast<unsigned char>(eight ? 8 : 16), color_type[C], 0, 0, 0});
-  file.reserve(static_cast<std::size_t>(zlen) + 64);
+  file.reserve(detail::to_size(zlen) + 64);
   detail::put_png_chunk(file, "IHDR", ihdr.data(), ihdr.size());
-  detail::put_png_chunk(file, "IDAT", z.get(), static_cast<std::size_t>(zlen));
+  detail::put_png_chunk(file, "IDAT", z.get(), detail::to_size(zlen));
   detail::put_png_chunk(file, "IEND", nullptr, 0);
   return file;
 }

@@ -37,7 +37,7 @@ inline status save_polycube_map(const std::string& path, const polycube_map& map
   s += '\n';
   for (index_t v = 0; v < map.base.num_vertices(); ++v) {
     s += 'v';
-    for (const vec3& p : {map.base.position(v), map.polycube[static_cast<std::size_t>(v)]})
+    for (const vec3& p : {map.base.position(v), map.polycube[detail::to_size(v)]})
       for (int a = 0; a < 3; ++a) {
         s += ' ';
         detail::append_number(s, p[a]);
@@ -46,12 +46,12 @@ inline status save_polycube_map(const std::string& path, const polycube_map& map
   }
   for (index_t f = 0; f < map.base.num_faces(); ++f) {
     s += 'f';
-    for (index_t v : map.base.faces[static_cast<std::size_t>(f)]) {
+    for (index_t v : map.base.faces[detail::to_size(f)]) {
       s += ' ';
       detail::append_number(s, v);
     }
     s += ' ';
-    detail::append_number(s, static_cast<int>(map.labels[static_cast<std::size_t>(f)]));
+    detail::append_number(s, static_cast<int>(map.labels[detail::to_size(f)]));
     s += '\n';
   }
   return detail::write_file(path, s);
@@ -88,8 +88,8 @@ inline result<polycube_map> load_polycube_map(const std::string& path) {
     return detail::parse_error_at_line(path, sc.line_number(), "counts exceed what the file holds");
   tri_mesh base, deformed;
   std::vector<std::uint8_t> labels;
-  base.positions.reserve(static_cast<std::size_t>(nv));
-  deformed.positions.reserve(static_cast<std::size_t>(nv));
+  base.positions.reserve(detail::to_size(nv));
+  deformed.positions.reserve(detail::to_size(nv));
   for (index_t v = 0; v < nv; ++v) {
     if (!next(line) || detail::next_token(line) != "v")
       return detail::parse_error_at_line(path, sc.line_number(), "expected a 'v' line");

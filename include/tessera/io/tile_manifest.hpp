@@ -136,7 +136,7 @@ inline status validate_tile_manifest(const tile_manifest& m, std::string_view na
   for (const auto& t : m.tiles) {
     if (t.index < 0 || t.index >= static_cast<index_t>(m.tiles.size()))
       return bad("tile index ", t.index, " is outside [0, ", m.tiles.size(), ") (indices must be 0..n-1)");
-    if (seen[static_cast<std::size_t>(t.index)]++) return bad("tile index ", t.index, " appears twice");
+    if (seen[detail::to_size(t.index)]++) return bad("tile index ", t.index, " appears twice");
     if (auto s = validate_wang_edges(t.edges, m.horizontal_colors, m.vertical_colors); !s)
       return bad("tile ", t.index, ": ", s.message());
     if (const char* p = detail::tile_file_problem(t.file))
@@ -217,7 +217,7 @@ inline result<tile_manifest> parse_tile_manifest(std::string_view text, std::str
       return bad(where, "\"edges\" must be an array of four colours [north, east, south, west]");
     int c[4] = {0, 0, 0, 0};
     for (int k = 0; k < 4; ++k) {
-      const detail::json_value& v = edges->array[static_cast<std::size_t>(k)];
+      const detail::json_value& v = edges->array[detail::to_size(k)];
       if (!v.is_number() || v.number != std::floor(v.number) || std::fabs(v.number) > 1e9)
         return bad(where, "edge colours must be integers");
       c[k] = static_cast<int>(v.number);
@@ -256,7 +256,7 @@ inline std::string format_tile_manifest(const tile_manifest& m) {
 inline result<tile_set_edges> manifest_tile_set(const tile_manifest& m) {
   if (auto s = validate_tile_manifest(m); !s) return s;
   std::vector<wang_edges> edges(m.tiles.size());
-  for (const auto& t : m.tiles) edges[static_cast<std::size_t>(t.index)] = t.edges;
+  for (const auto& t : m.tiles) edges[detail::to_size(t.index)] = t.edges;
   return tile_set_edges::create(m.horizontal_colors, m.vertical_colors, std::move(edges));
 }
 

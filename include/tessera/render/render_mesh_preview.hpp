@@ -102,19 +102,18 @@ result<image_buffer<std::uint8_t, 3>> render_mesh_preview(const M& mesh, const m
   const std::vector<vec3> vn = vertex_normals(m);
   auto depth = depth_buffer::create(o.width, o.height);
   if (!depth) return depth.error();
-  std::vector<std::int32_t> face_at(static_cast<std::size_t>(o.width * o.height), -1);
+  std::vector<std::int32_t> face_at(detail::to_size(o.width * o.height), -1);
   std::vector<std::array<float, 3>> bary_at(face_at.size());
   const auto st = rasterize_triangles(
       m.num_faces(), depth->rect(),
       [&](index_t i, raster_triangle& t) {
-        const auto& fc = m.faces[static_cast<std::size_t>(i)];
-        t = {sv[static_cast<std::size_t>(fc[0])], sv[static_cast<std::size_t>(fc[1])],
-             sv[static_cast<std::size_t>(fc[2])]};
+        const auto& fc = m.faces[detail::to_size(i)];
+        t = {sv[detail::to_size(fc[0])], sv[detail::to_size(fc[1])], sv[detail::to_size(fc[2])]};
         return true;
       },
       [&](index_t i, const fragment& fr) {
         if (!depth->test_and_set(fr.x, fr.y, fr.depth)) return;
-        const auto px = static_cast<std::size_t>(fr.y * o.width + fr.x);
+        const auto px = detail::to_size(fr.y * o.width + fr.x);
         face_at[px] = static_cast<std::int32_t>(i);
         bary_at[px] = {float(fr.bary[0]), float(fr.bary[1]), float(fr.bary[2])};
       },
@@ -127,21 +126,20 @@ result<image_buffer<std::uint8_t, 3>> render_mesh_preview(const M& mesh, const m
   auto to8 = [](float v) { return static_cast<std::uint8_t>(std::clamp(v, 0.0f, 1.0f) * 255.0f + 0.5f); };
   for (index_t y = 0; y < o.height; ++y)
     for (index_t x = 0; x < o.width; ++x) {
-      const auto px = static_cast<std::size_t>(y * o.width + x);
+      const auto px = detail::to_size(y * o.width + x);
       std::uint8_t* out = img.pixel_ptr(x, y);
       const std::int32_t fi = face_at[px];
       if (fi < 0) {
-        for (int c = 0; c < 3; ++c) out[c] = to8(o.background[static_cast<std::size_t>(c)]);
+        for (int c = 0; c < 3; ++c) out[c] = to8(o.background[detail::to_size(c)]);
         continue;
       }
-      const auto& fc = m.faces[static_cast<std::size_t>(fi)];
-      vec3 n = normalized(vn[static_cast<std::size_t>(fc[0])] * bary_at[px][0] +
-                          vn[static_cast<std::size_t>(fc[1])] * bary_at[px][1] +
-                          vn[static_cast<std::size_t>(fc[2])] * bary_at[px][2]);
+      const auto& fc = m.faces[detail::to_size(fi)];
+      vec3 n = normalized(vn[detail::to_size(fc[0])] * bary_at[px][0] + vn[detail::to_size(fc[1])] * bary_at[px][1] +
+                          vn[detail::to_size(fc[2])] * bary_at[px][2]);
       if (dot(n, f) > 0) n = -n;  // back faces lit like front faces
       const double shade = 0.28 + 0.62 * std::max(0.0, dot(n, l1)) + 0.25 * std::max(0.0, dot(n, l2));
-      const auto col = o.tint_elements ? detail::tint(o.color, comp[static_cast<std::size_t>(fi)]) : o.color;
-      for (int c = 0; c < 3; ++c) out[c] = to8(col[static_cast<std::size_t>(c)] * static_cast<float>(shade));
+      const auto col = o.tint_elements ? detail::tint(o.color, comp[detail::to_size(fi)]) : o.color;
+      for (int c = 0; c < 3; ++c) out[c] = to8(col[detail::to_size(c)] * static_cast<float>(shade));
     }
   if (o.grid_spacing > 0) {
     auto line = [&](vec3 a, vec3 b) {
@@ -180,7 +178,7 @@ result<image_buffer<std::uint8_t, 3>> render_mesh_preview(const M& mesh, const m
             const auto iy = static_cast<index_t>(std::floor(cy)) + dy - o.grid_line_width / 2;
             if (ix < 0 || iy < 0 || ix >= o.width || iy >= o.height) continue;
             std::uint8_t* out = img.pixel_ptr(ix, iy);
-            for (int c = 0; c < 3; ++c) out[c] = to8(o.grid_color[static_cast<std::size_t>(c)]);
+            for (int c = 0; c < 3; ++c) out[c] = to8(o.grid_color[detail::to_size(c)]);
           }
       }
     };

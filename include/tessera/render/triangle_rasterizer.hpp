@@ -191,13 +191,13 @@ status rasterize_batch(index_t count, const raster_viewport& vp, const pixel_rec
   while (((clip.width() + ts - 1) / ts) * ((clip.height() + ts - 1) / ts) > (index_t{1} << 16)) ts *= 2;
   const index_t tx = (clip.width() + ts - 1) / ts, ty = (clip.height() + ts - 1) / ts, tiles = tx * ty;
   // 1. tile range of every triangle (parallel), 2. per-chunk counts, 3. bins in index order.
-  std::vector<std::array<std::int32_t, 4>> range(static_cast<std::size_t>(count));
+  std::vector<std::array<std::int32_t, 4>> range(to_size(count));
   const index_t chunks = std::min<index_t>(64, (count + 4095) / 4096), per = (count + chunks - 1) / chunks;
-  std::vector<std::int32_t> counts(static_cast<std::size_t>(chunks * tiles), 0);
+  std::vector<std::int32_t> counts(to_size(chunks * tiles), 0);
   exec.parallel_for(0, chunks, [&](index_t c) {
     std::int32_t* cnt = counts.data() + c * tiles;
     for (index_t i = c * per; i < std::min(count, (c + 1) * per); ++i) {
-      auto& r = range[static_cast<std::size_t>(i)];
+      auto& r = range[to_size(i)];
       r = {0, 0, -1, -1};
       Tri t{};
       polygon p;
@@ -212,32 +212,32 @@ status rasterize_batch(index_t count, const raster_viewport& vp, const pixel_rec
         for (std::int32_t xx = r[0]; xx <= r[2]; ++xx) ++cnt[yy * tx + xx];
     }
   });
-  std::vector<index_t> start(static_cast<std::size_t>(tiles + 1), 0), cursor(static_cast<std::size_t>(chunks * tiles));
+  std::vector<index_t> start(to_size(tiles + 1), 0), cursor(to_size(chunks * tiles));
   index_t total = 0;
   for (index_t t = 0; t < tiles; ++t) {
-    start[static_cast<std::size_t>(t)] = total;
+    start[to_size(t)] = total;
     for (index_t c = 0; c < chunks; ++c) {
-      cursor[static_cast<std::size_t>(c * tiles + t)] = total;
-      total += counts[static_cast<std::size_t>(c * tiles + t)];
+      cursor[to_size(c * tiles + t)] = total;
+      total += counts[to_size(c * tiles + t)];
     }
   }
-  start[static_cast<std::size_t>(tiles)] = total;
-  std::vector<std::int32_t> bins(static_cast<std::size_t>(total));
+  start[to_size(tiles)] = total;
+  std::vector<std::int32_t> bins(to_size(total));
   exec.parallel_for(0, chunks, [&](index_t c) {
     index_t* cur = cursor.data() + c * tiles;
     for (index_t i = c * per; i < std::min(count, (c + 1) * per); ++i) {
-      const auto& r = range[static_cast<std::size_t>(i)];
+      const auto& r = range[to_size(i)];
       for (std::int32_t yy = r[1]; yy <= r[3]; ++yy)
         for (std::int32_t xx = r[0]; xx <= r[2]; ++xx)
-          bins[static_cast<std::size_t>(cur[yy * tx + xx]++)] = static_cast<std::int32_t>(i);
+          bins[to_size(cur[yy * tx + xx]++)] = static_cast<std::int32_t>(i);
     }
   });
   exec.parallel_for(0, tiles, [&](index_t t) {
     const pixel_rect tile{clip.x0 + (t % tx) * ts, clip.y0 + (t / tx) * ts,
                           std::min(clip.x1, clip.x0 + (t % tx + 1) * ts),
                           std::min(clip.y1, clip.y0 + (t / tx + 1) * ts)};
-    for (index_t k = start[static_cast<std::size_t>(t)]; k < start[static_cast<std::size_t>(t + 1)]; ++k) {
-      const index_t i = bins[static_cast<std::size_t>(k)];
+    for (index_t k = start[to_size(t)]; k < start[to_size(t + 1)]; ++k) {
+      const index_t i = bins[to_size(k)];
       Tri tri{};
       polygon p;
       if (!get(i, tri) || !make_polygon(tri, vp, p)) continue;
@@ -295,7 +295,7 @@ class depth_buffer {
     depth_buffer d;
     d.width_ = width;
     d.height_ = height;
-    d.data_.assign(static_cast<std::size_t>(width * height), clear_value);
+    d.data_.assign(detail::to_size(width * height), clear_value);
     return d;
   }
   [[nodiscard]] index_t width() const noexcept { return width_; }
@@ -304,13 +304,13 @@ class depth_buffer {
   void clear(float value = std::numeric_limits<float>::infinity()) { std::fill(data_.begin(), data_.end(), value); }
   [[nodiscard]] float at(index_t x, index_t y) const noexcept {
     TESSERA_ASSERT(x >= 0 && x < width_ && y >= 0 && y < height_);
-    return data_[static_cast<std::size_t>(y * width_ + x)];
+    return data_[detail::to_size(y * width_ + x)];
   }
   /// Passes (returns true and stores the depth) when depth is strictly smaller than the stored
   /// value; ties keep the earlier fragment, so equal-depth overlaps resolve to the lower triangle.
   bool test_and_set(index_t x, index_t y, double depth) noexcept {
     TESSERA_ASSERT(x >= 0 && x < width_ && y >= 0 && y < height_);
-    float& d = data_[static_cast<std::size_t>(y * width_ + x)];
+    float& d = data_[detail::to_size(y * width_ + x)];
     const auto v = static_cast<float>(depth);
     if (!(v < d)) return false;
     d = v;

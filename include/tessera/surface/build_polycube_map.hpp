@@ -52,22 +52,22 @@ result<polycube_map> deform_polycube(tri_mesh base, const std::vector<std::array
   for (int a = 0; a < 3; ++a) {
     auto cl_or = polycube_classes(base, cs.face_chart, cs.chart_label, a);
     if (!cl_or) return cl_or.error();
-    classes[static_cast<std::size_t>(a)] = std::move(*cl_or);
-    const polycube_axis_classes* cl = &classes[static_cast<std::size_t>(a)];
+    classes[to_size(a)] = std::move(*cl_or);
+    const polycube_axis_classes* cl = &classes[to_size(a)];
     const auto ncl = cl->class_chart.size();
     auto x =
         polycube_axis_solve<E>(base, nb, *cl, a, std::vector<double>(ncl, std::numeric_limits<double>::quiet_NaN()));
     if (!x) return x.error();
     std::vector<double> plane(nc, 0.0);
     for (std::size_t k = 0; k < ncl; ++k)
-      if (cl->class_chart[k] >= 0) plane[static_cast<std::size_t>(cl->class_chart[k])] = (*x)[k];
+      if (cl->class_chart[k] >= 0) plane[to_size(cl->class_chart[k])] = (*x)[k];
     const auto q = quantize_planes(plane, axis_of, partners, a, t);
     std::vector<double> fixed(ncl, std::numeric_limits<double>::quiet_NaN());
     for (std::size_t k = 0; k < ncl; ++k)
-      if (cl->class_chart[k] >= 0) fixed[k] = static_cast<double>(q[static_cast<std::size_t>(cl->class_chart[k])]) * t;
+      if (cl->class_chart[k] >= 0) fixed[k] = static_cast<double>(q[to_size(cl->class_chart[k])]) * t;
     auto y = polycube_axis_solve<E>(base, nb, *cl, a, fixed);
     if (!y) return y.error();
-    for (std::size_t v = 0; v < pos.size(); ++v) pos[v][a] = (*y)[static_cast<std::size_t>(cl->vertex_class[v])];
+    for (std::size_t v = 0; v < pos.size(); ++v) pos[v][a] = (*y)[to_size(cl->vertex_class[v])];
   }
   if (auto s = embed_polycube<E>(base, cs, classes, pos); !s) return s;
   untangle_polycube(base, pos, cs.face_chart, cs.chart_label, {&classes[0], &classes[1], &classes[2]}, t,
@@ -150,7 +150,7 @@ result<polycube_map> polycube_map_from_deformed(const M& mesh, const D& deformed
                                                 num_faces(deformed), " faces, the mesh ", num_vertices(mesh), " and ",
                                                 num_faces(mesh)));
   const index_t nf = num_faces(mesh);
-  std::vector<std::uint8_t> lab(static_cast<std::size_t>(nf));
+  std::vector<std::uint8_t> lab(detail::to_size(nf));
   for (index_t f = 0; f < nf; ++f) {
     for (int k = 0; k < 3; ++k)
       if (face_vertex(deformed, f, k) != face_vertex(mesh, f, k))
@@ -162,7 +162,7 @@ result<polycube_map> polycube_map_from_deformed(const M& mesh, const D& deformed
     if (best < 0)
       return status::invalid_argument(detail::cat("deformed mesh: face ", f, " is not axis-aligned (normal ", n.x, ", ",
                                                   n.y, ", ", n.z, "): not a polycube"));
-    lab[static_cast<std::size_t>(f)] = static_cast<std::uint8_t>(best);
+    lab[detail::to_size(f)] = static_cast<std::uint8_t>(best);
   }
   auto m = to_tri_mesh(mesh);
   if (!m) return m.error();

@@ -36,8 +36,8 @@ inline polycube_distortion_report polycube_distortion(const polycube_map& map) {
   for (std::size_t f = 0; f < nf; ++f) {
     const auto& fv = map.base.faces[f];
     const vec3 b0 = map.base.position(fv[0]), b1 = map.base.position(fv[1]), b2 = map.base.position(fv[2]);
-    const vec3 p0 = map.polycube[static_cast<std::size_t>(fv[0])], p1 = map.polycube[static_cast<std::size_t>(fv[1])],
-               p2 = map.polycube[static_cast<std::size_t>(fv[2])];
+    const vec3 p0 = map.polycube[detail::to_size(fv[0])], p1 = map.polycube[detail::to_size(fv[1])],
+               p2 = map.polycube[detail::to_size(fv[2])];
     ab[f] = 0.5 * norm(cross(b1 - b0, b2 - b0));
     ap[f] = 0.5 * norm(cross(p1 - p0, p2 - p0));
     tb += ab[f];

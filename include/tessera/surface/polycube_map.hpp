@@ -178,11 +178,11 @@ status validate_polycube_input(const M& m, std::string_view what = "mesh") {
   });
   if (!bad) return bad;
   // duplicate faces (same vertex set)
-  std::vector<std::array<index_t, 4>> keys(static_cast<std::size_t>(nf));
+  std::vector<std::array<index_t, 4>> keys(detail::to_size(nf));
   for (index_t f = 0; f < nf; ++f) {
     std::array<index_t, 3> v{face_vertex(m, f, 0), face_vertex(m, f, 1), face_vertex(m, f, 2)};
     std::sort(v.begin(), v.end());
-    keys[static_cast<std::size_t>(f)] = {v[0], v[1], v[2], f};
+    keys[detail::to_size(f)] = {v[0], v[1], v[2], f};
   }
   std::sort(keys.begin(), keys.end());
   for (std::size_t i = 1; i < keys.size(); ++i)
@@ -191,23 +191,23 @@ status validate_polycube_input(const M& m, std::string_view what = "mesh") {
           detail::cat(what, ": faces ", keys[i - 1][3], " and ", keys[i][3], " are duplicates (same three vertices)"));
   // vertex manifoldness: the faces around each vertex form a single fan
   const auto adj = face_adjacency(m);
-  std::vector<index_t> count(static_cast<std::size_t>(nv), 0), first_face(static_cast<std::size_t>(nv), -1);
+  std::vector<index_t> count(detail::to_size(nv), 0), first_face(detail::to_size(nv), -1);
   for (index_t f = 0; f < nf; ++f)
     for (int k = 0; k < 3; ++k) {
-      const auto v = static_cast<std::size_t>(face_vertex(m, f, k));
+      const auto v = detail::to_size(face_vertex(m, f, k));
       if (count[v]++ == 0) first_face[v] = f;
     }
   for (index_t v = 0; v < nv; ++v) {
-    const index_t f0 = first_face[static_cast<std::size_t>(v)];
+    const index_t f0 = first_face[detail::to_size(v)];
     if (f0 < 0) return status::invalid_argument(detail::cat(what, ": vertex ", v, " is used by no face"));
     index_t f = f0, walked = 0;
     do {
       int k = 0;
       while (face_vertex(m, f, k) != v) ++k;
-      f = adj.neighbor[static_cast<std::size_t>(f)][static_cast<std::size_t>(k)];  // across the side leaving v
+      f = adj.neighbor[detail::to_size(f)][detail::to_size(k)];  // across the side leaving v
       ++walked;
-    } while (f != f0 && f >= 0 && walked <= count[static_cast<std::size_t>(v)]);
-    if (walked != count[static_cast<std::size_t>(v)])
+    } while (f != f0 && f >= 0 && walked <= count[detail::to_size(v)]);
+    if (walked != count[detail::to_size(v)])
       return status::invalid_argument(
           detail::cat(what, ": is not manifold at vertex ", v, " (its faces form more than one fan)"));
   }

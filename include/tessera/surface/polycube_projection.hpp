@@ -43,11 +43,10 @@ class polycube_projector {
       return status::out_of_range(
           detail::cat("polycube forward: face ", face, " outside [0, ", map_->base.num_faces(), ")"));
     if (!is_finite(bary)) return status::invalid_argument("polycube forward: non-finite barycentric weights");
-    const auto& f = map_->base.faces[static_cast<std::size_t>(face)];
+    const auto& f = map_->base.faces[detail::to_size(face)];
     polycube_point out;
-    for (int k = 0; k < 3; ++k)
-      out.position += bary[k] * map_->polycube[static_cast<std::size_t>(f[static_cast<std::size_t>(k)])];
-    const auto c = static_cast<std::size_t>(map_->face_chart[static_cast<std::size_t>(face)]);
+    for (int k = 0; k < 3; ++k) out.position += bary[k] * map_->polycube[detail::to_size(f[detail::to_size(k)])];
+    const auto c = detail::to_size(map_->face_chart[detail::to_size(face)]);
     locate(c, out);
     return out;
   }
@@ -61,12 +60,12 @@ class polycube_projector {
           detail::cat("polycube inverse: quad ", quad, " outside [0, ", map_->layout.quads.size(), ")"));
     if (!(u >= 0 && u <= 1 && v >= 0 && v <= 1))
       return status::invalid_argument(detail::cat("polycube inverse: (u, v) = (", u, ", ", v, ") outside [0, 1]²"));
-    const auto& q = map_->layout.quads[static_cast<std::size_t>(quad)];
+    const auto& q = map_->layout.quads[detail::to_size(quad)];
     vec3 c0, c1, c3;
     for (int a = 0; a < 3; ++a) {
-      c0[a] = static_cast<double>(q.corners[0][static_cast<std::size_t>(a)]) * map_->tile_size;
-      c1[a] = static_cast<double>(q.corners[1][static_cast<std::size_t>(a)]) * map_->tile_size;
-      c3[a] = static_cast<double>(q.corners[3][static_cast<std::size_t>(a)]) * map_->tile_size;
+      c0[a] = static_cast<double>(q.corners[0][detail::to_size(a)]) * map_->tile_size;
+      c1[a] = static_cast<double>(q.corners[1][detail::to_size(a)]) * map_->tile_size;
+      c3[a] = static_cast<double>(q.corners[3][detail::to_size(a)]) * map_->tile_size;
     }
     return inverse(c0 + u * (c1 - c0) + v * (c3 - c0));
   }
@@ -78,8 +77,8 @@ class polycube_projector {
     if (hit.face < 0) return out;
     out.face = hit.face;
     out.bary = hit.bary;
-    const auto& f = map_->base.faces[static_cast<std::size_t>(hit.face)];
-    for (int k = 0; k < 3; ++k) out.position += hit.bary[k] * map_->base.position(f[static_cast<std::size_t>(k)]);
+    const auto& f = map_->base.faces[detail::to_size(hit.face)];
+    for (int k = 0; k < 3; ++k) out.position += hit.bary[k] * map_->base.position(f[detail::to_size(k)]);
     return out;
   }
 
@@ -97,7 +96,7 @@ class polycube_projector {
     double best = 1e300;
     for (std::int64_t j = std::max<std::int64_t>(0, j0 - 1); j <= std::min(g.size[1] - 1, j0 + 1); ++j)
       for (std::int64_t i = std::max<std::int64_t>(0, i0 - 1); i <= std::min(g.size[0] - 1, i0 + 1); ++i) {
-        const index_t q = g.quad[static_cast<std::size_t>(j * g.size[0] + i)];
+        const index_t q = g.quad[detail::to_size(j * g.size[0] + i)];
         if (q < 0) continue;
         const double dx = std::max({0.0, static_cast<double>(i) - x, x - static_cast<double>(i + 1)});
         const double dy = std::max({0.0, static_cast<double>(j) - y, y - static_cast<double>(j + 1)});

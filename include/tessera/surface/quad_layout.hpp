@@ -51,10 +51,10 @@ inline result<quad_layout> build_quad_layout(const polycube_map& map, std::int64
   std::int64_t cells = 0;
   std::vector<std::array<double, 4>> box(nc, {1e300, 1e300, -1e300, -1e300});
   for (std::size_t f = 0; f < map.base.faces.size(); ++f) {
-    const auto c = static_cast<std::size_t>(map.face_chart[f]);
+    const auto c = detail::to_size(map.face_chart[f]);
     const auto ax = detail::quad_plane_axes(map.charts[c].label);
     for (index_t v : map.base.faces[f]) {
-      const vec3& p = map.polycube[static_cast<std::size_t>(v)];
+      const vec3& p = map.polycube[detail::to_size(v)];
       box[c][0] = std::min(box[c][0], p[ax[0]] / t);
       box[c][1] = std::min(box[c][1], p[ax[1]] / t);
       box[c][2] = std::max(box[c][2], p[ax[0]] / t);
@@ -73,18 +73,18 @@ inline result<quad_layout> build_quad_layout(const polycube_map& map, std::int64
       return status::size_overflow(
           detail::cat("polycube: the charts' tile rectangles exceed ", max_cells, " squares; use a larger tile size"));
     cells += g.size[0] * g.size[1];
-    g.quad.assign(static_cast<std::size_t>(g.size[0] * g.size[1]), -1);
+    g.quad.assign(detail::to_size(g.size[0] * g.size[1]), -1);
   }
   // mark covered squares: -2 = covered, quad ids are given below in row order
   for (std::size_t f = 0; f < map.base.faces.size(); ++f) {
-    const auto c = static_cast<std::size_t>(map.face_chart[f]);
+    const auto c = detail::to_size(map.face_chart[f]);
     auto& g = out.chart_grids[c];
     const auto ax = detail::quad_plane_axes(map.charts[c].label);
     std::array<vec2, 3> q;
     for (int k = 0; k < 3; ++k) {
-      const vec3& p = map.polycube[static_cast<std::size_t>(map.base.faces[f][static_cast<std::size_t>(k)])];
-      q[static_cast<std::size_t>(k)] = {p[ax[0]] / t - static_cast<double>(g.origin[0]),
-                                        p[ax[1]] / t - static_cast<double>(g.origin[1])};
+      const vec3& p = map.polycube[detail::to_size(map.base.faces[f][detail::to_size(k)])];
+      q[detail::to_size(k)] = {p[ax[0]] / t - static_cast<double>(g.origin[0]),
+                               p[ax[1]] / t - static_cast<double>(g.origin[1])};
     }
     chart_area[c] += 0.5 * std::abs(cross(q[1] - q[0], q[2] - q[0]));
     const double x0 = std::min({q[0].x, q[1].x, q[2].x}), x1 = std::max({q[0].x, q[1].x, q[2].x});
@@ -97,7 +97,7 @@ inline result<quad_layout> build_quad_layout(const polycube_map& map, std::int64
       for (std::int64_t i = i0; i <= i1; ++i)
         if (detail::point_in_triangle_2d({static_cast<double>(i) + 0.5, static_cast<double>(j) + 0.5}, q[0], q[1],
                                          q[2]))
-          g.quad[static_cast<std::size_t>(j * g.size[0] + i)] = -2;
+          g.quad[detail::to_size(j * g.size[0] + i)] = -2;
   }
   struct key {
     int axis;
@@ -113,7 +113,7 @@ inline result<quad_layout> build_quad_layout(const polycube_map& map, std::int64
     std::int64_t count = 0;
     for (std::int64_t j = 0; j < g.size[1]; ++j)
       for (std::int64_t i = 0; i < g.size[0]; ++i) {
-        auto& slot = g.quad[static_cast<std::size_t>(j * g.size[0] + i)];
+        auto& slot = g.quad[detail::to_size(j * g.size[0] + i)];
         if (slot != -2) continue;
         ++count;
         slot = static_cast<index_t>(out.quads.size());
@@ -122,18 +122,17 @@ inline result<quad_layout> build_quad_layout(const polycube_map& map, std::int64
         const std::array<std::array<std::int64_t, 2>, 4> uv{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}};
         for (int k = 0; k < 4; ++k) {
           grid_point p{};
-          p[static_cast<std::size_t>(label_axis(l))] = map.charts[c].plane;
-          p[static_cast<std::size_t>(ax[0])] = g.origin[0] + i + uv[static_cast<std::size_t>(k)][0];
-          p[static_cast<std::size_t>(ax[1])] = g.origin[1] + j + uv[static_cast<std::size_t>(k)][1];
-          q.corners[static_cast<std::size_t>(k)] = p;
+          p[detail::to_size(label_axis(l))] = map.charts[c].plane;
+          p[detail::to_size(ax[0])] = g.origin[0] + i + uv[detail::to_size(k)][0];
+          p[detail::to_size(ax[1])] = g.origin[1] + j + uv[detail::to_size(k)][1];
+          q.corners[detail::to_size(k)] = p;
         }
         for (int k = 0; k < 4; ++k) {
-          const grid_point& a = q.corners[static_cast<std::size_t>(k)];
-          const grid_point& b = q.corners[static_cast<std::size_t>((k + 1) % 4)];
+          const grid_point& a = q.corners[detail::to_size(k)];
+          const grid_point& b = q.corners[detail::to_size((k + 1) % 4)];
           const int axis = a[0] != b[0] ? 0 : a[1] != b[1] ? 1 : 2;
-          q.edge_forward[static_cast<std::size_t>(k)] =
-              b[static_cast<std::size_t>(axis)] > a[static_cast<std::size_t>(axis)];
-          keys.push_back({axis, q.edge_forward[static_cast<std::size_t>(k)] ? a : b, slot, k});
+          q.edge_forward[detail::to_size(k)] = b[detail::to_size(axis)] > a[detail::to_size(axis)];
+          keys.push_back({axis, q.edge_forward[detail::to_size(k)] ? a : b, slot, k});
         }
         out.quads.push_back(q);
       }
@@ -154,18 +153,18 @@ inline result<quad_layout> build_quad_layout(const polycube_map& map, std::int64
                                                k0.origin[2], ") along ", "XYZ"[k0.axis], " is shared by ", j - i,
                                                " quads, not 2: the polycube surface is not closed there"));
     const auto& k1 = keys[i + 1];
-    auto& q0 = out.quads[static_cast<std::size_t>(k0.quad)];
-    auto& q1 = out.quads[static_cast<std::size_t>(k1.quad)];
-    if (q0.edge_forward[static_cast<std::size_t>(k0.side)] == q1.edge_forward[static_cast<std::size_t>(k1.side)])
+    auto& q0 = out.quads[detail::to_size(k0.quad)];
+    auto& q1 = out.quads[detail::to_size(k1.quad)];
+    if (q0.edge_forward[detail::to_size(k0.side)] == q1.edge_forward[detail::to_size(k1.side)])
       return status::not_converged(detail::cat("polycube: quads ", k0.quad, " and ", k1.quad,
                                                " traverse their shared grid edge in the same direction"));
     out.edges.push_back({k0.axis, k0.origin, {k0.quad, k1.quad}});
-    q0.edges[static_cast<std::size_t>(k0.side)] = id;
-    q1.edges[static_cast<std::size_t>(k1.side)] = id;
-    q0.neighbors[static_cast<std::size_t>(k0.side)] = k1.quad;
-    q1.neighbors[static_cast<std::size_t>(k1.side)] = k0.quad;
-    q0.neighbor_side[static_cast<std::size_t>(k0.side)] = static_cast<std::int8_t>(k1.side);
-    q1.neighbor_side[static_cast<std::size_t>(k1.side)] = static_cast<std::int8_t>(k0.side);
+    q0.edges[detail::to_size(k0.side)] = id;
+    q1.edges[detail::to_size(k1.side)] = id;
+    q0.neighbors[detail::to_size(k0.side)] = k1.quad;
+    q1.neighbors[detail::to_size(k1.side)] = k0.quad;
+    q0.neighbor_side[detail::to_size(k0.side)] = static_cast<std::int8_t>(k1.side);
+    q1.neighbor_side[detail::to_size(k1.side)] = static_cast<std::int8_t>(k0.side);
     i = j;
   }
   return out;

@@ -84,11 +84,11 @@ status assign_scale_field(const terrain_mesh& mesh, const screen_projection& pro
   const index_t nf = mesh.num_faces();
   constexpr index_t block = 16384;
   // culled faces: distance NaN, level -1, scale 0 (filled in parallel; a 10^6-face mesh has 16 MB of them)
-  out.distance.resize(static_cast<std::size_t>(nf));
-  out.level.resize(static_cast<std::size_t>(nf));
-  out.scale.resize(static_cast<std::size_t>(nf));
+  out.distance.resize(detail::to_size(nf));
+  out.level.resize(detail::to_size(nf));
+  out.scale.resize(detail::to_size(nf));
   exec.parallel_for(0, (nf + block - 1) / block, [&](index_t c) {
-    const auto a = static_cast<std::size_t>(c * block), b = static_cast<std::size_t>(std::min(nf, (c + 1) * block));
+    const auto a = detail::to_size(c * block), b = detail::to_size(std::min(nf, (c + 1) * block));
     std::fill(out.distance.begin() + static_cast<std::ptrdiff_t>(a),
               out.distance.begin() + static_cast<std::ptrdiff_t>(b), std::numeric_limits<double>::quiet_NaN());
     std::fill(out.level.begin() + static_cast<std::ptrdiff_t>(a), out.level.begin() + static_cast<std::ptrdiff_t>(b),
@@ -111,26 +111,25 @@ status assign_scale_field(const terrain_mesh& mesh, const screen_projection& pro
     int jump = 0;
     index_t bad = -1;  ///< first visible entry naming no visible face, or with a non-finite distance
   };
-  std::vector<partial> part(static_cast<std::size_t>(chunks));
+  std::vector<partial> part(detail::to_size(chunks));
   auto for_chunks = [&](auto&& body) {
     exec.parallel_for(0, chunks, [&](index_t c) {
-      for (index_t i = c * block; i < std::min(nvis, (c + 1) * block); ++i)
-        body(part[static_cast<std::size_t>(c)], vis[i]);
+      for (index_t i = c * block; i < std::min(nvis, (c + 1) * block); ++i) body(part[detail::to_size(c)], vis[i]);
     });
   };
   // step 1: view distances (and the check that every visible entry is a visible face)
   exec.parallel_for(0, chunks, [&](index_t c) {
-    partial& p = part[static_cast<std::size_t>(c)];
+    partial& p = part[detail::to_size(c)];
     for (index_t i = c * block; i < std::min(nvis, (c + 1) * block); ++i) {
       const std::int32_t f = vis[i];
       const double d = detail::is_visible_face(projection, f)
-                           ? norm(mesh.centroids[static_cast<std::size_t>(f)] - projection.eye)
+                           ? norm(mesh.centroids[detail::to_size(f)] - projection.eye)
                            : std::numeric_limits<double>::quiet_NaN();
       if (!std::isfinite(d)) {
         if (p.bad < 0) p.bad = i;
         continue;
       }
-      out.distance[static_cast<std::size_t>(f)] = d;
+      out.distance[detail::to_size(f)] = d;
       p.dmin = std::min(p.dmin, d);
       p.dmax = std::max(p.dmax, d);
     }
@@ -143,10 +142,9 @@ status assign_scale_field(const terrain_mesh& mesh, const screen_projection& pro
     }
   // step 2: maxδ over adjacent visible pairs (each pair once: from its smaller face)
   for_chunks([&](partial& p, std::int32_t f) {
-    for (std::int32_t n : mesh.neighbors[static_cast<std::size_t>(f)])
-      if (n > f && n < nf && !std::isnan(out.distance[static_cast<std::size_t>(n)])) {  // visible: has a distance
-        p.delta = std::max(
-            p.delta, std::abs(out.distance[static_cast<std::size_t>(f)] - out.distance[static_cast<std::size_t>(n)]));
+    for (std::int32_t n : mesh.neighbors[detail::to_size(f)])
+      if (n > f && n < nf && !std::isnan(out.distance[detail::to_size(n)])) {  // visible: has a distance
+        p.delta = std::max(p.delta, std::abs(out.distance[detail::to_size(f)] - out.distance[detail::to_size(n)]));
         ++p.pairs;
       }
   });
@@ -190,15 +188,15 @@ status assign_scale_field(const terrain_mesh& mesh, const screen_projection& pro
     return h > 0 ? std::min<index_t>(levels - 1, static_cast<index_t>(std::floor((d - dmin) / h))) : 0;
   };
   for_chunks([&](partial& p, std::int32_t f) {
-    const double d = out.distance[static_cast<std::size_t>(f)];
+    const double d = out.distance[detail::to_size(f)];
     const index_t l = level_of(d);
     const double s =
         opts.mode == scale_mode::continuous ? 1 - span * (range > 0 ? (d - dmin) / range : 0.0) : out.level_scale(l);
-    out.level[static_cast<std::size_t>(f)] = static_cast<std::int32_t>(l);
-    out.scale[static_cast<std::size_t>(f)] = static_cast<float>(std::clamp(s, opts.min_scale, 1.0));
-    for (std::int32_t n : mesh.neighbors[static_cast<std::size_t>(f)])
+    out.level[detail::to_size(f)] = static_cast<std::int32_t>(l);
+    out.scale[detail::to_size(f)] = static_cast<float>(std::clamp(s, opts.min_scale, 1.0));
+    for (std::int32_t n : mesh.neighbors[detail::to_size(f)])
       if (n > f && n < nf) {
-        const double dn = out.distance[static_cast<std::size_t>(n)];
+        const double dn = out.distance[detail::to_size(n)];
         if (!std::isnan(dn))
           p.jump = std::max(p.jump, static_cast<int>(std::abs(l - level_of(dn))));  // visible: has a distance
       }

@@ -57,9 +57,7 @@ class exemplar_pyramid {
     const index_t n = num_levels();
     return n <= 1 ? 1.0 : 1.0 - (1.0 - min_scale_) * static_cast<double>(k) / static_cast<double>(n - 1);
   }
-  [[nodiscard]] const image_buffer<T, C>& level(index_t k) const noexcept {
-    return levels_[static_cast<std::size_t>(k)];
-  }
+  [[nodiscard]] const image_buffer<T, C>& level(index_t k) const noexcept { return levels_[detail::to_size(k)]; }
 
   /// Fractional level index of scale s (clamped to [0, K - 1]; 0 for NaN).
   [[nodiscard]] double level_position(double s) const noexcept {
@@ -83,8 +81,7 @@ class exemplar_pyramid {
     if (f > 0 && k0 + 1 < num_levels()) {
       const std::array<float, C> b = bilinear(k0 + 1, u / s, v / s);
       for (int c = 0; c < C; ++c)
-        a[static_cast<std::size_t>(c)] +=
-            static_cast<float>(f) * (b[static_cast<std::size_t>(c)] - a[static_cast<std::size_t>(c)]);
+        a[detail::to_size(c)] += static_cast<float>(f) * (b[detail::to_size(c)] - a[detail::to_size(c)]);
     }
     return a;
   }
@@ -96,7 +93,7 @@ class exemplar_pyramid {
 
   /// Bilinear sample of level k at exemplar coordinates (ex, ey), clamped at the border.
   [[nodiscard]] std::array<float, C> bilinear(index_t k, double ex, double ey) const noexcept {
-    const image_buffer<T, C>& img = levels_[static_cast<std::size_t>(k)];
+    const image_buffer<T, C>& img = levels_[detail::to_size(k)];
     return detail::bilinear_sample(img, ex * static_cast<double>(img.width()) / static_cast<double>(width_) - 0.5,
                                    ey * static_cast<double>(img.height()) / static_cast<double>(height_) - 0.5,
                                    detail::clamp_index{});
@@ -121,9 +118,9 @@ result<exemplar_pyramid<T, C>> build_pyramid_from_buffer(const image_buffer<T, C
   p.width_ = ex.width();
   p.height_ = ex.height();
   p.min_scale_ = opts.min_scale;
-  p.levels_.resize(static_cast<std::size_t>(n));
+  p.levels_.resize(to_size(n));
   p.levels_[0] = ex;
-  std::vector<float> src(static_cast<std::size_t>(ex.width() * ex.height() * C));
+  std::vector<float> src(to_size(ex.width() * ex.height() * C));
   for (std::size_t i = 0; i < src.size(); ++i) src[i] = channel_to_unit(ex.data()[i]);
   auto rows = [&](index_t count, auto&& body) { exec.parallel_for(0, count, body); };
   for (index_t k = 1; k < n; ++k) {
@@ -135,7 +132,7 @@ result<exemplar_pyramid<T, C>> build_pyramid_from_buffer(const image_buffer<T, C
     const std::vector<float> r = detail::resample_image(src.data(), ex.width(), ex.height(), C, w, h, rows);
     image_buffer<T, C> lv(w, h);
     for (std::size_t i = 0; i < r.size(); ++i) lv.data()[i] = unit_to_channel<T>(r[i]);
-    p.levels_[static_cast<std::size_t>(k)] = std::move(lv);
+    p.levels_[to_size(k)] = std::move(lv);
   }
   if (!opts.progress.report(1.0, "exemplar pyramid")) return status::cancelled();
   return p;

@@ -87,7 +87,7 @@ struct terrain_uv_buffer {
 inline result<terrain_uv_buffer> export_corner_uvs(const terrain_mesh& mesh, const screen_projection& proj,
                                                    const scale_field& field, const triangle_synthesis& syn) {
   if (auto s = detail::check_projection(mesh, proj, "export_corner_uvs"); !s) return s;
-  const auto nf = static_cast<std::size_t>(mesh.num_faces());
+  const auto nf = detail::to_size(mesh.num_faces());
   if (field.level.size() != nf || field.scale.size() != nf || syn.offset.size() != nf || syn.region.size() != nf)
     return status::invalid_argument(detail::cat("export_corner_uvs: the scale field (", field.level.size(),
                                                 " faces) and synthesis (", syn.region.size(),
@@ -104,7 +104,7 @@ inline result<terrain_uv_buffer> export_corner_uvs(const terrain_mesh& mesh, con
     const std::int32_t f = proj.visible[i];
     if (!detail::is_visible_face(proj, f))
       return detail::bad_visible_entry("export_corner_uvs", static_cast<index_t>(i), f);
-    const auto fi = static_cast<std::size_t>(f);
+    const auto fi = detail::to_size(f);
     if (field.level[fi] < 0 || syn.region[fi] < 0)
       return status::invalid_argument(detail::cat("export_corner_uvs: visible face ", f, " has level ", field.level[fi],
                                                   " and region ", syn.region[fi],
@@ -112,9 +112,9 @@ inline result<terrain_uv_buffer> export_corner_uvs(const terrain_mesh& mesh, con
     const vec2 o = syn.offset[fi];
     for (std::size_t k = 0; k < 3; ++k) {
       const std::int32_t v = mesh.faces[fi][k];
-      if (v < 0 || static_cast<std::size_t>(v) >= proj.screen.size())
+      if (v < 0 || detail::to_size(v) >= proj.screen.size())
         return status::out_of_range(detail::cat("export_corner_uvs: face ", f, " corner ", k, " names vertex ", v));
-      const vec2 p = proj.screen[static_cast<std::size_t>(v)] + o;
+      const vec2 p = proj.screen[detail::to_size(v)] + o;
       b.corner_uv[fi][2 * k] = static_cast<float>(p.x);
       b.corner_uv[fi][2 * k + 1] = static_cast<float>(p.y);
     }

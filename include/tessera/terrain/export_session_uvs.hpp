@@ -34,7 +34,7 @@ inline result<terrain_uv_buffer> export_session_uvs(const terrain_session& sessi
   b.mapping = 1;
   b.reset_faces(nf);
   for (const std::int32_t f : proj.visible) {
-    const auto fi = static_cast<std::size_t>(f);
+    const auto fi = detail::to_size(f);
     b.corner_uv[fi] = session.corner_uv()[fi];
     b.level[fi] = session.level()[fi];
     b.scale[fi] = static_cast<float>(session.level_scale(b.level[fi]));

@@ -75,7 +75,7 @@ result<tri_mesh> make_terrain(const terrain_options& o = {}, E&& exec = {}) {
     return status::invalid_argument(detail::cat("terrain octaves must be 1 to 16, got ", o.octaves));
   const index_t nx = o.cells_x + 1, ny = o.cells_y + 1;
   tri_mesh m;
-  m.positions.resize(static_cast<std::size_t>(nx * ny));
+  m.positions.resize(detail::to_size(nx * ny));
   const counter_rng rng(o.seed, stream_id("terrain.heightfield"));
   const double wavelength = o.feature_size * std::max(o.size_x, o.size_y);
   exec.parallel_for(0, ny, [&](index_t j) {
@@ -94,10 +94,10 @@ result<tri_mesh> make_terrain(const terrain_options& o = {}, E&& exec = {}) {
         const double t = std::clamp(0.5 + 0.9 * sum / norm_, 0.0, 1.0);  // about [0, 1]
         z = o.height * t * t * (1.6 - 0.6 * t);                          // flatter lowlands, steeper peaks
       }
-      m.positions[static_cast<std::size_t>(j * nx + i)] = {x, y, z};
+      m.positions[detail::to_size(j * nx + i)] = {x, y, z};
     }
   });
-  m.faces.reserve(static_cast<std::size_t>(2 * o.cells_x * o.cells_y));
+  m.faces.reserve(detail::to_size(2 * o.cells_x * o.cells_y));
   for (index_t j = 0; j < o.cells_y; ++j)
     for (index_t i = 0; i < o.cells_x; ++i) {
       const index_t v00 = j * nx + i, v10 = v00 + 1, v01 = v00 + nx, v11 = v01 + 1;

@@ -105,17 +105,15 @@ inline result<anchored_regions> plan_anchored_regions(const terrain_mesh& mesh, 
   vec3 hi = -lo;
   double edges = 0, maxd = 0;
   for (index_t f = 0; f < nf; ++f) {
-    const auto& fv = mesh.faces[static_cast<std::size_t>(f)];
+    const auto& fv = mesh.faces[detail::to_size(f)];
     for (int k = 0; k < 3; ++k) {
-      const vec3& q = mesh.position(fv[static_cast<std::size_t>(k)]);
+      const vec3& q = mesh.position(fv[detail::to_size(k)]);
       lo = {std::min(lo.x, q.x), std::min(lo.y, q.y), std::min(lo.z, q.z)};
       hi = {std::max(hi.x, q.x), std::max(hi.y, q.y), std::max(hi.z, q.z)};
-      edges += norm(mesh.position(fv[static_cast<std::size_t>((k + 1) % 3)]) - q);
+      edges += norm(mesh.position(fv[detail::to_size((k + 1) % 3)]) - q);
     }
-    for (const std::int32_t n : mesh.neighbors[static_cast<std::size_t>(f)])
-      if (n > f)
-        maxd = std::max(
-            maxd, norm(mesh.centroids[static_cast<std::size_t>(n)] - mesh.centroids[static_cast<std::size_t>(f)]));
+    for (const std::int32_t n : mesh.neighbors[detail::to_size(f)])
+      if (n > f) maxd = std::max(maxd, norm(mesh.centroids[detail::to_size(n)] - mesh.centroids[detail::to_size(f)]));
   }
   p.max_neighbor_distance = maxd;
   const double mean_edge = edges / (3.0 * static_cast<double>(nf));
@@ -139,19 +137,19 @@ inline result<anchored_regions> plan_anchored_regions(const terrain_mesh& mesh, 
   p.cell = cell;
   p.cells_a = static_cast<index_t>(std::floor(ea / cell)) + 1;
   p.cells_b = static_cast<index_t>(std::floor(eb / cell)) + 1;
-  const auto nr = static_cast<std::size_t>(p.cells_a * p.cells_b);
-  p.region.resize(static_cast<std::size_t>(nf));
+  const auto nr = detail::to_size(p.cells_a * p.cells_b);
+  p.region.resize(detail::to_size(nf));
   p.first.assign(nr + 1, 0);
   p.seed.assign(nr, -1);
   std::vector<double> best(nr, std::numeric_limits<double>::infinity());
   for (index_t f = 0; f < nf; ++f) {
-    const vec3& c = mesh.centroids[static_cast<std::size_t>(f)];
+    const vec3& c = mesh.centroids[detail::to_size(f)];
     const double a = (detail::axis_value(c, p.axis_a) - p.origin_a) / cell,
                  b = (detail::axis_value(c, p.axis_b) - p.origin_b) / cell;
     const index_t ia = std::clamp<index_t>(static_cast<index_t>(std::floor(a)), 0, p.cells_a - 1),
                   ib = std::clamp<index_t>(static_cast<index_t>(std::floor(b)), 0, p.cells_b - 1);
-    const auto r = static_cast<std::size_t>(ib * p.cells_a + ia);
-    p.region[static_cast<std::size_t>(f)] = static_cast<std::int32_t>(r);
+    const auto r = detail::to_size(ib * p.cells_a + ia);
+    p.region[detail::to_size(f)] = static_cast<std::int32_t>(r);
     ++p.first[r + 1];
     const double da = a - (static_cast<double>(ia) + 0.5), db = b - (static_cast<double>(ib) + 0.5);
     const double d = da * da + db * db;
@@ -161,11 +159,10 @@ inline result<anchored_regions> plan_anchored_regions(const terrain_mesh& mesh, 
     }
   }
   for (std::size_t r = 0; r < nr; ++r) p.first[r + 1] += p.first[r];
-  p.faces.resize(static_cast<std::size_t>(nf));
+  p.faces.resize(detail::to_size(nf));
   std::vector<std::int32_t> fill(p.first.begin(), p.first.end() - 1);
   for (index_t f = 0; f < nf; ++f)
-    p.faces[static_cast<std::size_t>(fill[static_cast<std::size_t>(p.region[static_cast<std::size_t>(f)])]++)] =
-        static_cast<std::int32_t>(f);
+    p.faces[detail::to_size(fill[detail::to_size(p.region[detail::to_size(f)])]++)] = static_cast<std::int32_t>(f);
   return p;
 }
 

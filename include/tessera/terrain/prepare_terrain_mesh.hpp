@@ -35,9 +35,9 @@ struct terrain_mesh {
   [[nodiscard]] index_t num_vertices() const noexcept { return static_cast<index_t>(positions.size()); }
   [[nodiscard]] index_t num_faces() const noexcept { return static_cast<index_t>(faces.size()); }
   [[nodiscard]] index_t face_vertex(index_t f, int k) const noexcept {
-    return faces[static_cast<std::size_t>(f)][static_cast<std::size_t>(k)];
+    return faces[detail::to_size(f)][detail::to_size(k)];
   }
-  [[nodiscard]] const vec3& position(index_t v) const noexcept { return positions[static_cast<std::size_t>(v)]; }
+  [[nodiscard]] const vec3& position(index_t v) const noexcept { return positions[detail::to_size(v)]; }
 };
 
 namespace detail {
@@ -45,13 +45,10 @@ namespace detail {
 /// and the faces filed under the same (vertex, other vertex) pair are the faces of that edge.
 template <class Deferred = void>  // compiled only where meshes are prepared (see docs/architecture.md)
 void build_terrain_adjacency(terrain_mesh& m) {
-  const auto nv = static_cast<std::size_t>(m.num_vertices()), nf = static_cast<std::size_t>(m.num_faces());
+  const auto nv = to_size(m.num_vertices()), nf = to_size(m.num_faces());
   std::vector<std::int32_t> start(nv + 1, 0);
   for (const auto& f : m.faces)
-    for (int k = 0; k < 3; ++k)
-      ++start[static_cast<std::size_t>(
-                  std::min(f[static_cast<std::size_t>(k)], f[static_cast<std::size_t>((k + 1) % 3)])) +
-              1];
+    for (int k = 0; k < 3; ++k) ++start[to_size(std::min(f[to_size(k)], f[to_size((k + 1) % 3)])) + 1];
   for (std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
   struct half {
     std::int32_t other, face_side;
@@ -60,10 +57,8 @@ void build_terrain_adjacency(terrain_mesh& m) {
   std::vector<std::int32_t> fill(start.begin(), start.end() - 1);
   for (std::size_t f = 0; f < nf; ++f)
     for (int k = 0; k < 3; ++k) {
-      const std::int32_t a = m.faces[f][static_cast<std::size_t>(k)],
-                         b = m.faces[f][static_cast<std::size_t>((k + 1) % 3)];
-      hs[static_cast<std::size_t>(fill[static_cast<std::size_t>(std::min(a, b))]++)] = {
-          std::max(a, b), static_cast<std::int32_t>(3 * f) + k};
+      const std::int32_t a = m.faces[f][to_size(k)], b = m.faces[f][to_size((k + 1) % 3)];
+      hs[to_size(fill[to_size(std::min(a, b))]++)] = {std::max(a, b), static_cast<std::int32_t>(3 * f) + k};
     }
   m.neighbors.assign(nf, {-1, -1, -1});
   m.boundary_edges = m.nonmanifold_edges = m.interior_edges = 0;
@@ -77,10 +72,8 @@ void build_terrain_adjacency(terrain_mesh& m) {
       half* j = i;
       while (j != last && j->other == i->other) ++j;
       if (j - i == 2) {
-        m.neighbors[static_cast<std::size_t>(i[0].face_side / 3)][static_cast<std::size_t>(i[0].face_side % 3)] =
-            i[1].face_side / 3;
-        m.neighbors[static_cast<std::size_t>(i[1].face_side / 3)][static_cast<std::size_t>(i[1].face_side % 3)] =
-            i[0].face_side / 3;
+        m.neighbors[to_size(i[0].face_side / 3)][to_size(i[0].face_side % 3)] = i[1].face_side / 3;
+        m.neighbors[to_size(i[1].face_side / 3)][to_size(i[1].face_side % 3)] = i[0].face_side / 3;
         ++m.interior_edges;
       } else if (j - i == 1) {
         ++m.boundary_edges;
@@ -111,7 +104,7 @@ inline status check_terrain_mesh_sizes(const terrain_mesh& m) {
 inline bool is_face_index(std::int32_t n, index_t nf) noexcept { return n >= 0 && n < nf; }
 /// The structural problem of face f (vertex indices, neighbours, centroid), or ok.
 inline status terrain_face_problem(const terrain_mesh& m, index_t f) {
-  const auto i = static_cast<std::size_t>(f);
+  const auto i = to_size(f);
   const index_t nv = m.num_vertices(), nf = m.num_faces();
   for (std::size_t k = 0; k < 3; ++k) {
     if (m.faces[i][k] < 0 || m.faces[i][k] >= nv)
@@ -157,15 +150,14 @@ result<terrain_mesh> prepare_terrain_mesh(const M& mesh, std::string_view what =
     return status::size_overflow(
         detail::cat(what, ": ", nv, " vertices / ", nf, " faces exceed the terrain limit of ", limit));
   terrain_mesh m;
-  m.positions.resize(static_cast<std::size_t>(nv));
-  for (index_t v = 0; v < nv; ++v) m.positions[static_cast<std::size_t>(v)] = vertex_position(mesh, v);
-  m.faces.resize(static_cast<std::size_t>(nf));
-  m.centroids.resize(static_cast<std::size_t>(nf));
+  m.positions.resize(detail::to_size(nv));
+  for (index_t v = 0; v < nv; ++v) m.positions[detail::to_size(v)] = vertex_position(mesh, v);
+  m.faces.resize(detail::to_size(nf));
+  m.centroids.resize(detail::to_size(nf));
   for (index_t f = 0; f < nf; ++f) {
-    auto& face = m.faces[static_cast<std::size_t>(f)];
-    for (int k = 0; k < 3; ++k) face[static_cast<std::size_t>(k)] = static_cast<std::int32_t>(face_vertex(mesh, f, k));
-    m.centroids[static_cast<std::size_t>(f)] =
-        (m.position(face[0]) + m.position(face[1]) + m.position(face[2])) * (1.0 / 3.0);
+    auto& face = m.faces[detail::to_size(f)];
+    for (int k = 0; k < 3; ++k) face[detail::to_size(k)] = static_cast<std::int32_t>(face_vertex(mesh, f, k));
+    m.centroids[detail::to_size(f)] = (m.position(face[0]) + m.position(face[1]) + m.position(face[2])) * (1.0 / 3.0);
   }
   detail::build_terrain_adjacency(m);
   return m;

@@ -52,14 +52,14 @@ struct screen_projection {
   std::vector<std::int32_t> visible;         ///< faces not culled, ascending
   index_t near_clipped = 0;                  ///< how many visible faces cross the near plane
 
-  [[nodiscard]] bool is_visible(index_t f) const noexcept { return state[static_cast<std::size_t>(f)] != 0; }
+  [[nodiscard]] bool is_visible(index_t f) const noexcept { return state[detail::to_size(f)] != 0; }
   [[nodiscard]] index_t num_visible() const noexcept { return static_cast<index_t>(visible.size()); }
   /// The clip-space corners of face f of `mesh` (for rasterize_clip_triangles).
   [[nodiscard]] clip_triangle clip_face(const terrain_mesh& mesh, index_t f) const noexcept {
     clip_triangle t;
     for (int k = 0; k < 3; ++k) {
-      const auto& c = clip[static_cast<std::size_t>(mesh.face_vertex(f, k))];
-      t[static_cast<std::size_t>(k)] = {c[0], c[1], c[2], c[3]};
+      const auto& c = clip[detail::to_size(mesh.face_vertex(f, k))];
+      t[detail::to_size(k)] = {c[0], c[1], c[2], c[3]};
     }
     return t;
   }
@@ -73,16 +73,16 @@ template <class E>
 void gather_visible_faces(screen_projection& out, std::vector<index_t>& count, index_t block, E& exec) {
   const auto nf = static_cast<index_t>(out.state.size());
   const auto chunks = static_cast<index_t>(count.size()) - 1;
-  for (index_t b = 0; b < chunks; ++b) count[static_cast<std::size_t>(b + 1)] += count[static_cast<std::size_t>(b)];
-  out.visible.resize(static_cast<std::size_t>(count[static_cast<std::size_t>(chunks)]));
-  std::vector<index_t> near_count(static_cast<std::size_t>(chunks), 0);
+  for (index_t b = 0; b < chunks; ++b) count[to_size(b + 1)] += count[to_size(b)];
+  out.visible.resize(to_size(count[to_size(chunks)]));
+  std::vector<index_t> near_count(to_size(chunks), 0);
   exec.parallel_for(0, chunks, [&](index_t b) {
-    index_t at = count[static_cast<std::size_t>(b)];
+    index_t at = count[to_size(b)];
     for (index_t f = b * block; f < std::min(nf, (b + 1) * block); ++f) {
-      const auto st = out.state[static_cast<std::size_t>(f)];
+      const auto st = out.state[to_size(f)];
       if (st == 0) continue;
-      out.visible[static_cast<std::size_t>(at++)] = static_cast<std::int32_t>(f);
-      if (st == static_cast<std::uint8_t>(face_visibility::near_clipped)) ++near_count[static_cast<std::size_t>(b)];
+      out.visible[to_size(at++)] = static_cast<std::int32_t>(f);
+      if (st == static_cast<std::uint8_t>(face_visibility::near_clipped)) ++near_count[to_size(b)];
     }
   });
   out.near_clipped = 0;
@@ -111,7 +111,7 @@ inline status check_projection(const terrain_mesh& mesh, const screen_projection
   if (auto s = check_terrain_mesh_sizes(mesh); !s) return s;
   if (auto s = validate_enum(proj.depth, {"negative_one_to_one", "zero_to_one"}, cat(stage, ": projection depth")); !s)
     return s;
-  const auto nf = static_cast<std::size_t>(mesh.num_faces()), nv = static_cast<std::size_t>(mesh.num_vertices());
+  const auto nf = to_size(mesh.num_faces()), nv = to_size(mesh.num_vertices());
   if (proj.state.size() != nf || proj.bounds.size() != nf || proj.clip.size() != nv || proj.screen.size() != nv ||
       proj.visible.size() > nf)
     return status::invalid_argument(detail::cat(stage, ": the projection (", proj.state.size(), " faces, ",
@@ -122,7 +122,7 @@ inline status check_projection(const terrain_mesh& mesh, const screen_projection
 }
 /// Whether visible entry f names a face the projection marks visible.
 inline bool is_visible_face(const screen_projection& proj, std::int32_t f) noexcept {
-  return f >= 0 && static_cast<std::size_t>(f) < proj.state.size() && proj.state[static_cast<std::size_t>(f)] != 0;
+  return f >= 0 && to_size(f) < proj.state.size() && proj.state[to_size(f)] != 0;
 }
 inline status bad_visible_entry(const char* stage, index_t i, std::int32_t f) {
   return status::invalid_argument(
@@ -147,46 +147,45 @@ status project_mesh(const terrain_mesh& mesh, const terrain_camera& camera, scre
   out.height = camera.height;
   out.depth = camera.depth;
   out.eye = camera_eye(camera);
-  out.clip.resize(static_cast<std::size_t>(nv));
-  out.screen.resize(static_cast<std::size_t>(nv));
-  out.state.resize(static_cast<std::size_t>(nf));
-  out.bounds.resize(static_cast<std::size_t>(nf));
+  out.clip.resize(detail::to_size(nv));
+  out.screen.resize(detail::to_size(nv));
+  out.state.resize(detail::to_size(nf));
+  out.bounds.resize(detail::to_size(nf));
   const double W = static_cast<double>(camera.width), H = static_cast<double>(camera.height);
   constexpr index_t block = 16384;
   constexpr double nan = std::numeric_limits<double>::quiet_NaN();
   // the structure of the mesh is checked in the same passes (validate_terrain_mesh's checks): the
   // smallest bad vertex / face of each block, reported in block order
   const index_t vblocks = (nv + block - 1) / block;
-  std::vector<index_t> bad_vertex(static_cast<std::size_t>(vblocks), -1);
+  std::vector<index_t> bad_vertex(detail::to_size(vblocks), -1);
   exec.parallel_for(0, vblocks, [&](index_t b) {
     for (index_t v = b * block; v < std::min(nv, (b + 1) * block); ++v) {
-      const vec3& p = mesh.positions[static_cast<std::size_t>(v)];
-      if (!is_finite(p) && bad_vertex[static_cast<std::size_t>(b)] < 0) bad_vertex[static_cast<std::size_t>(b)] = v;
+      const vec3& p = mesh.positions[detail::to_size(v)];
+      if (!is_finite(p) && bad_vertex[detail::to_size(b)] < 0) bad_vertex[detail::to_size(b)] = v;
       const glm::dvec4 c = m * glm::dvec4(p.x, p.y, p.z, 1.0);
-      out.clip[static_cast<std::size_t>(v)] = {c.x, c.y, c.z, c.w};
+      out.clip[detail::to_size(v)] = {c.x, c.y, c.z, c.w};
       const bool front = (zo ? c.z >= 0 : c.z >= -c.w) && c.w > 0;
-      out.screen[static_cast<std::size_t>(v)] =
+      out.screen[detail::to_size(v)] =
           front ? vec2{(c.x / c.w + 1) * 0.5 * W, (1 - c.y / c.w) * 0.5 * H} : vec2{nan, nan};
     }
   });
   const index_t chunks = (nf + block - 1) / block;
-  std::vector<index_t> count(static_cast<std::size_t>(chunks + 1), 0), bad_face(static_cast<std::size_t>(chunks), -1);
+  std::vector<index_t> count(detail::to_size(chunks + 1), 0), bad_face(detail::to_size(chunks), -1);
   exec.parallel_for(0, chunks, [&](index_t b) {
     index_t n = 0;
     for (index_t f = b * block; f < std::min(nf, (b + 1) * block); ++f) {
-      const auto& face = mesh.faces[static_cast<std::size_t>(f)];
-      auto& st = out.state[static_cast<std::size_t>(f)];
+      const auto& face = mesh.faces[detail::to_size(f)];
+      auto& st = out.state[detail::to_size(f)];
       st = static_cast<std::uint8_t>(face_visibility::culled);
-      const auto& nb = mesh.neighbors[static_cast<std::size_t>(f)];
-      bool ok = is_finite(mesh.centroids[static_cast<std::size_t>(f)]);
+      const auto& nb = mesh.neighbors[detail::to_size(f)];
+      bool ok = is_finite(mesh.centroids[detail::to_size(f)]);
       for (std::size_t k = 0; k < 3; ++k) ok = ok && face[k] >= 0 && face[k] < nv && nb[k] >= -1 && nb[k] < nf;
       if (!ok) {
-        if (bad_face[static_cast<std::size_t>(b)] < 0) bad_face[static_cast<std::size_t>(b)] = f;
+        if (bad_face[detail::to_size(b)] < 0) bad_face[detail::to_size(b)] = f;
         continue;
       }
       std::uint8_t oc[3];
-      for (int k = 0; k < 3; ++k)
-        oc[k] = detail::clip_outcode(out.clip[static_cast<std::size_t>(face[static_cast<std::size_t>(k)])], zo);
+      for (int k = 0; k < 3; ++k) oc[k] = detail::clip_outcode(out.clip[detail::to_size(face[detail::to_size(k)])], zo);
       if ((oc[0] & oc[1] & oc[2]) != 0) continue;
       if (opts.cull_back_faces) {
         const vec3 a = mesh.position(face[0]), n3 = cross(mesh.position(face[1]) - a, mesh.position(face[2]) - a);
@@ -195,9 +194,8 @@ status project_mesh(const terrain_mesh& mesh, const terrain_camera& camera, scre
       double x0, y0, x1, y1;
       const bool near = ((oc[0] | oc[1] | oc[2]) & 16) != 0;
       if (!near) {
-        const vec2 s0 = out.screen[static_cast<std::size_t>(face[0])],
-                   s1 = out.screen[static_cast<std::size_t>(face[1])],
-                   s2 = out.screen[static_cast<std::size_t>(face[2])];
+        const vec2 s0 = out.screen[detail::to_size(face[0])], s1 = out.screen[detail::to_size(face[1])],
+                   s2 = out.screen[detail::to_size(face[2])];
         x0 = std::min({s0.x, s1.x, s2.x});
         x1 = std::max({s0.x, s1.x, s2.x});
         y0 = std::min({s0.y, s1.y, s2.y});
@@ -205,14 +203,13 @@ status project_mesh(const terrain_mesh& mesh, const terrain_camera& camera, scre
       } else {
         detail::raster::polygon poly{};  // rare path: zero-filled keeps the compiler sure of initialization
         std::array<std::array<double, 4>, 3> t;
-        for (int k = 0; k < 3; ++k)
-          t[static_cast<std::size_t>(k)] = out.clip[static_cast<std::size_t>(face[static_cast<std::size_t>(k)])];
+        for (int k = 0; k < 3; ++k) t[detail::to_size(k)] = out.clip[detail::to_size(face[detail::to_size(k)])];
         detail::raster::clip_polygon_to_screen(t, {0, 0, W, H}, zo, poly);
         if (poly.n < 3) continue;
         x0 = x1 = poly.v[0].x;
         y0 = y1 = poly.v[0].y;
         for (int i = 1; i < poly.n; ++i) {
-          const auto& q = poly.v[static_cast<std::size_t>(i)];
+          const auto& q = poly.v[detail::to_size(i)];
           x0 = std::min(x0, q.x);
           x1 = std::max(x1, q.x);
           y0 = std::min(y0, q.y);
@@ -224,12 +221,12 @@ status project_mesh(const terrain_mesh& mesh, const terrain_camera& camera, scre
       x1 = std::min(x1, W);
       y1 = std::min(y1, H);
       if (!(x0 <= x1 && y0 <= y1)) continue;  // also rejects NaN
-      out.bounds[static_cast<std::size_t>(f)] = {static_cast<float>(x0), static_cast<float>(y0), static_cast<float>(x1),
-                                                 static_cast<float>(y1)};
+      out.bounds[detail::to_size(f)] = {static_cast<float>(x0), static_cast<float>(y0), static_cast<float>(x1),
+                                        static_cast<float>(y1)};
       st = static_cast<std::uint8_t>(near ? face_visibility::near_clipped : face_visibility::inside);
       ++n;
     }
-    count[static_cast<std::size_t>(b + 1)] = n;
+    count[detail::to_size(b + 1)] = n;
   });
   for (const index_t v : bad_vertex)
     if (v >= 0) {

@@ -38,11 +38,11 @@ struct render_anchored_options {
 namespace detail {
 /// Exemplar coordinates at world point p (in face n's plane, extended) from face n's corner coordinates.
 inline vec2 anchored_extend(const terrain_mesh& mesh, const anchored_atlas& atlas, std::int32_t n, const vec3& p) {
-  const auto& fv = mesh.faces[static_cast<std::size_t>(n)];
+  const auto& fv = mesh.faces[to_size(n)];
   const vec3 a = mesh.position(fv[0]), e1 = mesh.position(fv[1]) - a, e2 = mesh.position(fv[2]) - a;
   const vec3 nn = cross(e1, e2);
   const double d = dot(nn, nn);
-  const auto& t = atlas.uv[static_cast<std::size_t>(n)];
+  const auto& t = atlas.uv[to_size(n)];
   if (!(d > 0)) return {t[0], t[1]};
   const vec3 q = p - a;
   const double b1 = dot(cross(q, e2), nn) / d, b2 = dot(cross(e1, q), nn) / d;
@@ -61,8 +61,8 @@ status render_anchored_frame(const terrain_mesh& mesh, const terrain_session& se
                              const exemplar_pyramid<T, C>& pyramid, O& out, const render_anchored_options& opts = {},
                              E&& exec = {}) {
   const screen_projection& proj = session.projection();
-  if (session.frame() < 0 || proj.state.size() != static_cast<std::size_t>(mesh.num_faces()) ||
-      session.level().size() != static_cast<std::size_t>(mesh.num_faces()))
+  if (session.frame() < 0 || proj.state.size() != detail::to_size(mesh.num_faces()) ||
+      session.level().size() != detail::to_size(mesh.num_faces()))
     return status::invalid_argument("render_anchored_frame: the session has no frame of this mesh (call update)");
   if (width_of(out) != proj.width || height_of(out) != proj.height)
     return status::invalid_argument(detail::cat("output is ", width_of(out), " x ", height_of(out),
@@ -84,21 +84,21 @@ status render_anchored_frame(const terrain_mesh& mesh, const terrain_session& se
                                                 pyramid.min_scale()));
   if (auto s = detail::check_visible_geometry(mesh, proj, "render_anchored_frame", exec); !s) return s;
   const index_t w = proj.width, h = proj.height;
-  std::vector<std::int32_t> face(static_cast<std::size_t>(w * h), -1);
+  std::vector<std::int32_t> face(detail::to_size(w * h), -1);
   std::vector<float> depth(face.size(), std::numeric_limits<float>::infinity());
   std::vector<std::array<float, 2>> bary(face.size());
   const raster_viewport vp{0, 0, static_cast<double>(w), static_cast<double>(h), proj.depth};
   if (auto s = rasterize_clip_triangles(
           proj.num_visible(), vp, pixel_rect{0, 0, w, h},
           [&](index_t i, clip_triangle& t) {
-            t = proj.clip_face(mesh, proj.visible[static_cast<std::size_t>(i)]);
+            t = proj.clip_face(mesh, proj.visible[detail::to_size(i)]);
             return true;
           },
           [&](index_t i, const fragment& f) {
-            const auto p = static_cast<std::size_t>(f.y * w + f.x);
+            const auto p = detail::to_size(f.y * w + f.x);
             if (!(static_cast<float>(f.w) < depth[p])) return;
             depth[p] = static_cast<float>(f.w);
-            face[p] = proj.visible[static_cast<std::size_t>(i)];
+            face[p] = proj.visible[detail::to_size(i)];
             bary[p] = {static_cast<float>(f.bary[0]), static_cast<float>(f.bary[1])};
           },
           rasterize_options{.tile_size = opts.tile_size}, exec);
@@ -114,11 +114,11 @@ status render_anchored_frame(const terrain_mesh& mesh, const terrain_session& se
       pixel<float, 4>{opts.background[0], opts.background[1], opts.background[2], opts.background[3]});
   exec.parallel_for(0, h, [&](index_t y) {
     for (index_t x = 0; x < w; ++x) {
-      const auto p = static_cast<std::size_t>(y * w + x);
+      const auto p = detail::to_size(y * w + x);
       const std::int32_t f = face[p];
       pixel<float, C> c = bg;
       if (f >= 0) {
-        const auto fi = static_cast<std::size_t>(f);
+        const auto fi = detail::to_size(f);
         const auto& t = atlas.uv[fi];
         const double b[3] = {bary[p][0], bary[p][1], 1.0 - bary[p][0] - bary[p][1]};
         const vec2 uv{b[0] * t[0] + b[1] * t[2] + b[2] * t[4], b[0] * t[1] + b[1] * t[3] + b[2] * t[5]};
@@ -134,14 +134,14 @@ status render_anchored_frame(const terrain_mesh& mesh, const terrain_session& se
           const float wgt = session.blend_weight(f);
           if (wgt < 1) {
             const auto o = sample(session.level_scale(session.blend_from(f)), uv);
-            for (std::size_t k = 0; k < static_cast<std::size_t>(C); ++k) c[k] = o[k] + wgt * (c[k] - o[k]);
+            for (std::size_t k = 0; k < detail::to_size(C); ++k) c[k] = o[k] + wgt * (c[k] - o[k]);
           }
           if (opts.feather > 0) {
             // the nearest seam side within the feather: mix in the neighbour's mapping
             const auto& fv = mesh.faces[fi];
             for (std::size_t k = 0; k < 3; ++k) {
               const std::int32_t n = mesh.neighbors[fi][k];
-              if (n < 0 || atlas.patch[static_cast<std::size_t>(n)] < 0) continue;
+              if (n < 0 || atlas.patch[detail::to_size(n)] < 0) continue;
               if (((atlas.seam[fi] >> k) & 1) == 0) continue;
               // distance to side k in texels: the opposite corner's weight times its height over the side
               const std::size_t opp = (k + 2) % 3;
@@ -154,7 +154,7 @@ status render_anchored_frame(const terrain_mesh& mesh, const terrain_session& se
               const vec3 wp = mesh.position(fv[0]) * b[0] + mesh.position(fv[1]) * b[1] + mesh.position(fv[2]) * b[2];
               const auto other = sample(s, detail::anchored_extend(mesh, atlas, n, wp));
               const auto mix = static_cast<float>(0.5 * (1 - dist / opts.feather));
-              for (std::size_t q = 0; q < static_cast<std::size_t>(C); ++q) c[q] += mix * (other[q] - c[q]);
+              for (std::size_t q = 0; q < detail::to_size(C); ++q) c[q] += mix * (other[q] - c[q]);
               break;
             }
           }
@@ -162,7 +162,7 @@ status render_anchored_frame(const terrain_mesh& mesh, const terrain_session& se
         if (!light.empty()) detail::apply_light(c, light[fi]);
       }
       float* dst = frame.pixel_ptr(x, y);
-      for (std::size_t k = 0; k < static_cast<std::size_t>(C); ++k) dst[k] = c[k];
+      for (std::size_t k = 0; k < detail::to_size(C); ++k) dst[k] = c[k];
     }
   });
   return copy_image(frame, out);

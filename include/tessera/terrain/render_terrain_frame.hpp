@@ -70,7 +70,7 @@ template <Channel T, int C, class E>
 status check_frame_inputs(const terrain_mesh& mesh, const screen_projection& proj, const scale_field& field,
                           const triangle_synthesis& syn, const exemplar_pyramid<T, C>& pyramid, E& exec) {
   if (auto s = check_visible_geometry(mesh, proj, "render_terrain_frame", exec); !s) return s;
-  const auto nf = static_cast<std::size_t>(mesh.num_faces());
+  const auto nf = to_size(mesh.num_faces());
   if (field.level.size() != nf || field.scale.size() != nf || syn.region.size() != nf || syn.offset.size() != nf)
     return status::invalid_argument(detail::cat("render_terrain_frame: the scale field (", field.level.size(),
                                                 " faces) and synthesis (", syn.region.size(),
@@ -83,23 +83,23 @@ status check_frame_inputs(const terrain_mesh& mesh, const screen_projection& pro
   const index_t nvis = proj.num_visible();
   constexpr index_t block = 16384;
   const index_t chunks = (nvis + block - 1) / block;
-  std::vector<index_t> bad(static_cast<std::size_t>(chunks), -1);
+  std::vector<index_t> bad(to_size(chunks), -1);
   const float lo = static_cast<float>(field.min_scale) * (1 - 1e-6f);
   exec.parallel_for(0, chunks, [&](index_t c) {
     for (index_t i = c * block; i < std::min(nvis, (c + 1) * block); ++i) {
-      const auto fi = static_cast<std::size_t>(proj.visible[static_cast<std::size_t>(i)]);
+      const auto fi = to_size(proj.visible[to_size(i)]);
       const float s = field.scale[fi];
       if (!(field.level[fi] >= 0 && field.level[fi] < field.levels && s >= lo && s <= 1 && syn.region[fi] >= 0 &&
             is_finite(syn.offset[fi]))) {
-        bad[static_cast<std::size_t>(c)] = i;
+        bad[to_size(c)] = i;
         return;
       }
     }
   });
   for (const index_t i : bad) {
     if (i < 0) continue;
-    const std::int32_t f = proj.visible[static_cast<std::size_t>(i)];
-    const auto fi = static_cast<std::size_t>(f);
+    const std::int32_t f = proj.visible[to_size(i)];
+    const auto fi = to_size(f);
     return status::invalid_argument(
         detail::cat("render_terrain_frame: visible face ", f, " has level ", field.level[fi], " of ", field.levels,
                     ", scale ", field.scale[fi], " (field min_scale ", field.min_scale, "), region ", syn.region[fi],
@@ -148,10 +148,10 @@ status render_terrain_frame(const terrain_mesh& mesh, const screen_projection& p
       pixel<float, 4>{opts.background[0], opts.background[1], opts.background[2], opts.background[3]});
   exec.parallel_for(0, h, [&](index_t y) {
     for (index_t x = 0; x < w; ++x) {
-      const std::int32_t f = vb.face[static_cast<std::size_t>(y * w + x)];
+      const std::int32_t f = vb.face[detail::to_size(y * w + x)];
       pixel<float, C> c = bg;
       if (f >= 0) {
-        const auto i = static_cast<std::size_t>(f);
+        const auto i = detail::to_size(f);
         if (opts.shading == terrain_shading::scale_field) {
           c = convert_pixel<pixel<float, C>>(
               detail::scale_colour(field.min_scale < 1 ? (1.0 - field.scale[i]) / (1.0 - field.min_scale) : 0.0));
@@ -166,16 +166,16 @@ status render_terrain_frame(const terrain_mesh& mesh, const screen_projection& p
           c = pyramid.sample(s, px + syn.offset[i].x + cx * s, py + syn.offset[i].y + cy * s);
           const detail::seam_partner p = feather.partner(x, y);
           if (p.face >= 0) {
-            const auto j = static_cast<std::size_t>(p.face);
+            const auto j = detail::to_size(p.face);
             const double t = field.scale[j];
             const auto o = pyramid.sample(t, px + syn.offset[j].x + cx * t, py + syn.offset[j].y + cy * t);
-            for (std::size_t k = 0; k < static_cast<std::size_t>(C); ++k) c[k] += p.weight * (o[k] - c[k]);
+            for (std::size_t k = 0; k < detail::to_size(C); ++k) c[k] += p.weight * (o[k] - c[k]);
           }
         }
         if (!light.empty()) detail::apply_light(c, light[i]);
       }
       float* dst = frame.pixel_ptr(x, y);
-      for (std::size_t k = 0; k < static_cast<std::size_t>(C); ++k) dst[k] = c[k];
+      for (std::size_t k = 0; k < detail::to_size(C); ++k) dst[k] = c[k];
     }
   });
   if (!opts.progress.report(0.95, "render terrain frame")) return status::cancelled();

@@ -41,9 +41,7 @@ class tiled_texture {
   [[nodiscard]] index_t width() const noexcept { return levels_.empty() ? 0 : levels_[0].width(); }
   [[nodiscard]] index_t height() const noexcept { return levels_.empty() ? 0 : levels_[0].height(); }
   [[nodiscard]] index_t num_levels() const noexcept { return static_cast<index_t>(levels_.size()); }
-  [[nodiscard]] const image_buffer<T, C>& level(index_t k) const noexcept {
-    return levels_[static_cast<std::size_t>(k)];
-  }
+  [[nodiscard]] const image_buffer<T, C>& level(index_t k) const noexcept { return levels_[detail::to_size(k)]; }
 
   /// Trilinear sample at texel coordinates (u, v) of level 0, wrapping around, at level of detail
   /// `lod` (0 = full resolution). Unit float channels. Thread-safe.
@@ -54,7 +52,7 @@ class tiled_texture {
     std::array<float, C> a = bilinear(k, u, v);
     if (f > 1e-3 && k + 1 < num_levels()) {
       const std::array<float, C> b = bilinear(k + 1, u, v);
-      for (std::size_t c = 0; c < static_cast<std::size_t>(C); ++c) a[c] += static_cast<float>(f) * (b[c] - a[c]);
+      for (std::size_t c = 0; c < detail::to_size(C); ++c) a[c] += static_cast<float>(f) * (b[c] - a[c]);
     }
     return a;
   }
@@ -65,7 +63,7 @@ class tiled_texture {
   std::vector<image_buffer<T, C>> levels_;  ///< level k is about width / 2^k x height / 2^k
 
   [[nodiscard]] std::array<float, C> bilinear(index_t k, double u, double v) const noexcept {
-    const image_buffer<T, C>& img = levels_[static_cast<std::size_t>(k)];
+    const image_buffer<T, C>& img = levels_[detail::to_size(k)];
     return detail::bilinear_sample(img, u * static_cast<double>(img.width()) / static_cast<double>(width()) - 0.5,
                                    v * static_cast<double>(img.height()) / static_cast<double>(height()) - 0.5,
                                    detail::wrap_index{});
@@ -81,7 +79,7 @@ result<tiled_texture<channel_t<I>, channels_v<I>>> prepare_tiled_texture(const I
   auto buf = to_buffer(exemplar, "exemplar");
   if (!buf) return buf.error();
   tiled_texture<T, C> t;
-  std::vector<float> src(static_cast<std::size_t>(buf->width() * buf->height() * C));
+  std::vector<float> src(detail::to_size(buf->width() * buf->height() * C));
   for (std::size_t i = 0; i < src.size(); ++i) src[i] = channel_to_unit(buf->data()[i]);
   const index_t w0 = buf->width(), h0 = buf->height();
   t.levels_.push_back(std::move(*buf));
@@ -113,14 +111,14 @@ struct render_tiled_options {
 inline double auto_tiled_repeat(const terrain_mesh& mesh, const screen_projection& proj, index_t exemplar_width) {
   double best = std::numeric_limits<double>::infinity(), repeat = 0;
   for (const std::int32_t f : proj.visible) {
-    if (proj.state[static_cast<std::size_t>(f)] != static_cast<std::uint8_t>(face_visibility::inside)) continue;
-    const auto& fv = mesh.faces[static_cast<std::size_t>(f)];
+    if (proj.state[detail::to_size(f)] != static_cast<std::uint8_t>(face_visibility::inside)) continue;
+    const auto& fv = mesh.faces[detail::to_size(f)];
     const vec3 a = mesh.position(fv[0]), b = mesh.position(fv[1]), c = mesh.position(fv[2]);
     const double ground = 0.5 * std::abs(cross(vec2{b.x - a.x, b.y - a.y}, vec2{c.x - a.x, c.y - a.y}));
-    const vec2 p = proj.screen[static_cast<std::size_t>(fv[0])], q = proj.screen[static_cast<std::size_t>(fv[1])],
-               r = proj.screen[static_cast<std::size_t>(fv[2])];
+    const vec2 p = proj.screen[detail::to_size(fv[0])], q = proj.screen[detail::to_size(fv[1])],
+               r = proj.screen[detail::to_size(fv[2])];
     const double screen = 0.5 * std::abs(cross(q - p, r - p));
-    const double d = norm(mesh.centroids[static_cast<std::size_t>(f)] - proj.eye);
+    const double d = norm(mesh.centroids[detail::to_size(f)] - proj.eye);
     if (screen >= 1 && ground > 0 && d < best) {
       best = d;
       repeat = static_cast<double>(exemplar_width) * std::sqrt(ground / screen);
@@ -159,7 +157,7 @@ status render_tiled_frame(const terrain_mesh& mesh, const screen_projection& pro
   image_buffer<float, C> frame(w, h);
   exec.parallel_for(0, h, [&](index_t y) {
     for (index_t x = 0; x < w; ++x) {
-      const auto i = static_cast<std::size_t>(y * w + x);
+      const auto i = detail::to_size(y * w + x);
       pixel<float, C> c = bg;
       if (vb.face[i] >= 0) {
         const auto& p = vb.world[i];
@@ -168,22 +166,22 @@ status render_tiled_frame(const terrain_mesh& mesh, const screen_projection& pro
         if (opts.mipmaps) {  // texel footprint from the neighbouring pixels (as a GPU's quad derivatives)
           auto footprint = [&](index_t dx, index_t dy) {
             index_t nx = x + dx, ny = y + dy;
-            if (nx >= w || ny >= h || vb.face[static_cast<std::size_t>(ny * w + nx)] < 0) {
+            if (nx >= w || ny >= h || vb.face[detail::to_size(ny * w + nx)] < 0) {
               nx = x - dx;
               ny = y - dy;
             }
-            if (nx < 0 || ny < 0 || vb.face[static_cast<std::size_t>(ny * w + nx)] < 0) return 0.0;
-            const auto& q = vb.world[static_cast<std::size_t>(ny * w + nx)];
+            if (nx < 0 || ny < 0 || vb.face[detail::to_size(ny * w + nx)] < 0) return 0.0;
+            const auto& q = vb.world[detail::to_size(ny * w + nx)];
             return std::hypot(q[0] * su - u, q[1] * sv - v);
           };
           const double rho = std::max(footprint(1, 0), footprint(0, 1));
           lod = rho > 1 ? std::log2(rho) : 0.0;
         }
         c = tex.sample(u, v, lod);
-        if (!light.empty()) detail::apply_light(c, light[static_cast<std::size_t>(vb.face[i])]);
+        if (!light.empty()) detail::apply_light(c, light[detail::to_size(vb.face[i])]);
       }
       float* dst = frame.pixel_ptr(x, y);
-      for (std::size_t k = 0; k < static_cast<std::size_t>(C); ++k) dst[k] = c[k];
+      for (std::size_t k = 0; k < detail::to_size(C); ++k) dst[k] = c[k];
     }
   });
   return copy_image(frame, out);

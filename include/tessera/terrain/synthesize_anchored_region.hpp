@@ -64,10 +64,10 @@ struct anchored_region_stats {
 
 /// Empties `atlas` for `plan` over a mesh of `faces` faces (no region grown).
 inline void reset_anchored_atlas(const anchored_regions& plan, index_t faces, anchored_atlas& atlas) {
-  atlas.uv.assign(static_cast<std::size_t>(faces), {});
-  atlas.patch.assign(static_cast<std::size_t>(faces), -1);
-  atlas.seam.assign(static_cast<std::size_t>(faces), 7);
-  atlas.region_done.assign(static_cast<std::size_t>(plan.num_regions()), 0);
+  atlas.uv.assign(detail::to_size(faces), {});
+  atlas.patch.assign(detail::to_size(faces), -1);
+  atlas.seam.assign(detail::to_size(faces), 7);
+  atlas.region_done.assign(detail::to_size(plan.num_regions()), 0);
 }
 
 namespace detail {
@@ -109,9 +109,9 @@ inline anchored_frame anchored_plane_frame(const anchored_regions& plan, const v
 
 /// The plane frame of face f (through its centroid).
 inline anchored_frame anchored_face_frame(const terrain_mesh& mesh, const anchored_regions& plan, std::int32_t f) {
-  const auto& fv = mesh.faces[static_cast<std::size_t>(f)];
+  const auto& fv = mesh.faces[to_size(f)];
   const vec3 a = mesh.position(fv[0]), b = mesh.position(fv[1]), c = mesh.position(fv[2]);
-  return anchored_plane_frame(plan, normalized(cross(b - a, c - a)), mesh.centroids[static_cast<std::size_t>(f)]);
+  return anchored_plane_frame(plan, normalized(cross(b - a, c - a)), mesh.centroids[to_size(f)]);
 }
 
 /// Exemplar coordinates of world point p in placement fr.
@@ -124,7 +124,7 @@ inline vec2 anchored_coord(const anchored_frame& fr, const vec3& p, double tpu) 
 inline tri_uv anchored_face_coords(const terrain_mesh& mesh, const anchored_frame& fr, std::int32_t f, double tpu) {
   tri_uv t;
   for (std::size_t k = 0; k < 3; ++k) {
-    const vec2 c = anchored_coord(fr, mesh.position(mesh.faces[static_cast<std::size_t>(f)][k]), tpu);
+    const vec2 c = anchored_coord(fr, mesh.position(mesh.faces[to_size(f)][k]), tpu);
     t[2 * k] = static_cast<float>(c.x);
     t[2 * k + 1] = static_cast<float>(c.y);
   }
@@ -133,7 +133,7 @@ inline tri_uv anchored_face_coords(const terrain_mesh& mesh, const anchored_fram
 
 inline bool anchored_fits_axis(const tri_uv& t, int axis, double half) noexcept {
   for (int k = 0; k < 3; ++k)
-    if (!(std::abs(static_cast<double>(t[static_cast<std::size_t>(2 * k + axis)])) <= half)) return false;
+    if (!(std::abs(static_cast<double>(t[to_size(2 * k + axis)])) <= half)) return false;
   return true;
 }
 }  // namespace detail
@@ -152,12 +152,12 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
     return status::invalid_argument(detail::cat("region ", region, " is not one of the plan's ", plan.num_regions()));
   if (static_cast<index_t>(atlas.uv.size()) != nf || static_cast<index_t>(atlas.patch.size()) != nf ||
       static_cast<index_t>(atlas.seam.size()) != nf || static_cast<index_t>(plan.region.size()) != nf ||
-      atlas.region_done.size() != static_cast<std::size_t>(plan.num_regions()))
+      atlas.region_done.size() != detail::to_size(plan.num_regions()))
     return status::invalid_argument(detail::cat("synthesize_anchored_region: the atlas (", atlas.uv.size(),
                                                 " faces) and plan (", plan.region.size(),
                                                 " faces) must belong to the mesh (", nf, " faces)"));
   anchored_region_stats st;
-  if (atlas.region_done[static_cast<std::size_t>(region)]) {
+  if (atlas.region_done[detail::to_size(region)]) {
     if (stats) *stats = st;
     return {};
   }
@@ -165,10 +165,10 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
   const double hw = 0.5 * static_cast<double>(exemplar_width) - opts.margin,
                hh = 0.5 * static_cast<double>(exemplar_height) - opts.margin;
   const auto r32 = static_cast<std::int32_t>(region);
-  const std::int32_t* begin = plan.faces.data() + plan.first[static_cast<std::size_t>(region)];
-  const std::int32_t* end = plan.faces.data() + plan.first[static_cast<std::size_t>(region) + 1];
+  const std::int32_t* begin = plan.faces.data() + plan.first[detail::to_size(region)];
+  const std::int32_t* end = plan.faces.data() + plan.first[detail::to_size(region) + 1];
   auto& patch = atlas.patch;
-  auto mine = [&](std::int32_t n) { return n >= 0 && n < nf && plan.region[static_cast<std::size_t>(n)] == r32; };
+  auto mine = [&](std::int32_t n) { return n >= 0 && n < nf && plan.region[detail::to_size(n)] == r32; };
   std::vector<std::int32_t> stack, deferred;
   std::int32_t patches = 0;
   std::vector<detail::anchored_frame> frames;  // placements of this region
@@ -177,7 +177,7 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
   // tilted against it by more than max_tilt (then in the face's own plane)
   vec3 mean{};
   for (const std::int32_t* f = begin; f != end; ++f) {
-    const auto& fv = mesh.faces[static_cast<std::size_t>(*f)];
+    const auto& fv = mesh.faces[detail::to_size(*f)];
     mean += cross(mesh.position(fv[1]) - mesh.position(fv[0]), mesh.position(fv[2]) - mesh.position(fv[0]));
   }
   mean = normalized(mean);
@@ -186,12 +186,12 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
     if (norm(mean) > 0.5 && dot(fr.n, mean) >= cos_tilt) fr = detail::anchored_plane_frame(plan, mean, fr.origin);
     return fr;
   };
-  const std::int32_t seed_face = plan.seed[static_cast<std::size_t>(region)];
+  const std::int32_t seed_face = plan.seed[detail::to_size(region)];
   const std::int32_t* next_start = begin;
   // §2.3 step (2) on the ground for the popped face f: continue a placed neighbour's placement, wait,
   // or place anew
   auto place_face = [&](std::int32_t f, bool forced) {
-    const auto fi = static_cast<std::size_t>(f);
+    const auto fi = detail::to_size(f);
     if (patch[fi] >= 0) return true;
     const auto& nb = mesh.neighbors[fi];
     int placed = 0, oldest = -1;
@@ -201,16 +201,16 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
         normalized(cross(mesh.position(fv3[1]) - mesh.position(fv3[0]), mesh.position(fv3[2]) - mesh.position(fv3[0])));
     detail::tri_uv best_uv{};
     for (int k = 0; k < 3; ++k) {
-      const std::int32_t n = nb[static_cast<std::size_t>(k)];
-      if (!mine(n) || patch[static_cast<std::size_t>(n)] < 0) continue;
+      const std::int32_t n = nb[detail::to_size(k)];
+      if (!mine(n) || patch[detail::to_size(n)] < 0) continue;
       ++placed;
-      const std::int32_t p = patch[static_cast<std::size_t>(n)];
+      const std::int32_t p = patch[detail::to_size(n)];
       if (p < oldest_patch) {
         oldest_patch = p;
         oldest = k;
       }
       if (best_patch >= 0 && p >= best_patch) continue;
-      const auto& fr = frames[static_cast<std::size_t>(p)];
+      const auto& fr = frames[detail::to_size(p)];
       if (!(dot(normal, fr.n) >= cos_tilt)) continue;
       const detail::tri_uv t = detail::anchored_face_coords(mesh, fr, f, tpu);
       if (detail::anchored_fits_axis(t, 0, hw) && detail::anchored_fits_axis(t, 1, hh)) {
@@ -236,10 +236,9 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
       bool keep[2] = {false, false};
       if (oldest >= 0) {
         const auto& fv = mesh.faces[fi];
-        const vec3 mid = (mesh.position(fv[static_cast<std::size_t>(oldest)]) +
-                          mesh.position(fv[static_cast<std::size_t>((oldest + 1) % 3)])) *
-                         0.5;
-        const vec2 want = detail::anchored_coord(frames[static_cast<std::size_t>(oldest_patch)], mid, tpu);
+        const vec3 mid =
+            (mesh.position(fv[detail::to_size(oldest)]) + mesh.position(fv[detail::to_size((oldest + 1) % 3)])) * 0.5;
+        const vec2 want = detail::anchored_coord(frames[detail::to_size(oldest_patch)], mid, tpu);
         const vec2 got = detail::anchored_coord(fr, mid, tpu);
         fr.du = want.x - got.x;
         fr.dv = want.y - got.y;
@@ -253,8 +252,8 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
         const detail::tri_uv t = detail::anchored_face_coords(mesh, fr, f, tpu);
         double lo = std::numeric_limits<double>::infinity(), hi = -lo;
         for (std::size_t k = 0; k < 3; ++k) {
-          lo = std::min(lo, static_cast<double>(t[2 * k + static_cast<std::size_t>(axis)]));
-          hi = std::max(hi, static_cast<double>(t[2 * k + static_cast<std::size_t>(axis)]));
+          lo = std::min(lo, static_cast<double>(t[2 * k + detail::to_size(axis)]));
+          hi = std::max(hi, static_cast<double>(t[2 * k + detail::to_size(axis)]));
         }
         const double a = -half[axis] - lo, b = half[axis] - hi;  // feasible shifts [a, b]
         if (b < a) big = true;
@@ -269,8 +268,8 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
     }
     ++st.faces;
     for (int k = 0; k < 3; ++k) {
-      const std::int32_t n = nb[static_cast<std::size_t>(k)];
-      if (mine(n) && patch[static_cast<std::size_t>(n)] < 0) stack.push_back(n);
+      const std::int32_t n = nb[detail::to_size(k)];
+      if (mine(n) && patch[detail::to_size(n)] < 0) stack.push_back(n);
     }
     return true;
   };
@@ -279,7 +278,7 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
     if (patches == 0 && seed_face >= 0) {
       start = seed_face;
     } else {
-      while (next_start != end && patch[static_cast<std::size_t>(*next_start)] >= 0) ++next_start;
+      while (next_start != end && patch[detail::to_size(*next_start)] >= 0) ++next_start;
       if (next_start == end) break;
       start = *next_start;
     }
@@ -289,15 +288,15 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
   // seams: a side is continuous when the neighbour is of this region and placement (then both
   // corners of the side have the same coordinates, one formula per placement)
   for (const std::int32_t* f = begin; f != end; ++f) {
-    const auto fi = static_cast<std::size_t>(*f);
+    const auto fi = detail::to_size(*f);
     std::uint8_t bits = 0;
     for (std::size_t k = 0; k < 3; ++k) {
       const std::int32_t n = mesh.neighbors[fi][k];
-      if (!mine(n) || patch[static_cast<std::size_t>(n)] != patch[fi]) bits = static_cast<std::uint8_t>(bits | 1u << k);
+      if (!mine(n) || patch[detail::to_size(n)] != patch[fi]) bits = static_cast<std::uint8_t>(bits | 1u << k);
     }
     atlas.seam[fi] = bits;
   }
-  atlas.region_done[static_cast<std::size_t>(region)] = 1;
+  atlas.region_done[detail::to_size(region)] = 1;
   st.patches = patches;
   if (stats) *stats = st;
   return {};

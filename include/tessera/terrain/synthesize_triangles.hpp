@@ -114,14 +114,13 @@ struct triangle_synthesis {
 namespace detail {
 /// Visible screen area of face f: the triangle's area, at most its bounds' area (partly visible).
 inline double visible_screen_area(const terrain_mesh& mesh, const screen_projection& proj, std::int32_t f) {
-  const auto& b = proj.bounds[static_cast<std::size_t>(f)];
+  const auto& b = proj.bounds[to_size(f)];
   const double box = static_cast<double>(b[2] - b[0]) * static_cast<double>(b[3] - b[1]);
-  if (proj.state[static_cast<std::size_t>(f)] != static_cast<std::uint8_t>(face_visibility::inside)) return box;
-  const auto& face = mesh.faces[static_cast<std::size_t>(f)];
+  if (proj.state[to_size(f)] != static_cast<std::uint8_t>(face_visibility::inside)) return box;
+  const auto& face = mesh.faces[to_size(f)];
   for (const std::int32_t v : face)
-    if (v < 0 || static_cast<std::size_t>(v) >= proj.screen.size()) return box;
-  const vec2 a = proj.screen[static_cast<std::size_t>(face[0])], p = proj.screen[static_cast<std::size_t>(face[1])],
-             q = proj.screen[static_cast<std::size_t>(face[2])];
+    if (v < 0 || to_size(v) >= proj.screen.size()) return box;
+  const vec2 a = proj.screen[to_size(face[0])], p = proj.screen[to_size(face[1])], q = proj.screen[to_size(face[2])];
   return std::min(box, 0.5 * std::abs(cross(p - a, q - a)));
 }
 /// Faces a synthesize_triangles block handles at once (the parallel reset and measure steps).
@@ -151,27 +150,27 @@ void measure_synthesis(const terrain_mesh& mesh, const screen_projection& proj, 
   const index_t nf = mesh.num_faces(), nvis = proj.num_visible();
   const double W = static_cast<double>(exemplar_width), H = static_cast<double>(exemplar_height);
   const index_t chunks = (nvis + synthesis_block - 1) / synthesis_block;
-  std::vector<partial> part(static_cast<std::size_t>(chunks));
+  std::vector<partial> part(to_size(chunks));
   exec.parallel_for(0, chunks, [&](index_t c) {
-    partial& p = part[static_cast<std::size_t>(c)];
+    partial& p = part[to_size(c)];
     for (index_t i = c * synthesis_block; i < std::min(nvis, (c + 1) * synthesis_block); ++i) {
-      const std::int32_t f = proj.visible[static_cast<std::size_t>(i)];
-      const vec2 own = placements[static_cast<std::size_t>(out.region[static_cast<std::size_t>(f)])];
-      out.offset[static_cast<std::size_t>(f)] = own;
-      const auto& nb = mesh.neighbors[static_cast<std::size_t>(f)];
+      const std::int32_t f = proj.visible[to_size(i)];
+      const vec2 own = placements[to_size(out.region[to_size(f)])];
+      out.offset[to_size(f)] = own;
+      const auto& nb = mesh.neighbors[to_size(f)];
       std::uint8_t bits = 0;
       for (int k = 0; k < 3; ++k) {
-        const std::int32_t n = nb[static_cast<std::size_t>(k)];
-        if (!is_face_index(n, nf) || out.region[static_cast<std::size_t>(n)] < 0) continue;
-        const bool same = placements[static_cast<std::size_t>(out.region[static_cast<std::size_t>(n)])] == own;
+        const std::int32_t n = nb[to_size(k)];
+        if (!is_face_index(n, nf) || out.region[to_size(n)] < 0) continue;
+        const bool same = placements[to_size(out.region[to_size(n)])] == own;
         bits = static_cast<std::uint8_t>(bits | (same ? 0 : 1 << k));
         if (n > f) {
           p.shared += 1;
           p.same += same ? 1 : 0;
         }
       }
-      out.seam[static_cast<std::size_t>(f)] = bits;
-      const double s = field.scale[static_cast<std::size_t>(f)];
+      out.seam[to_size(f)] = bits;
+      const double s = field.scale[to_size(f)];
       const double ratio = W * H * s * s / std::max(visible_screen_area(mesh, proj, f), min_screen_area);
       if (ratio < p.ratio) {
         p.ratio = ratio;
@@ -232,9 +231,9 @@ status synthesize_triangles(const terrain_mesh& mesh, const screen_projection& p
     out = std::move(fresh);
   }
   constexpr index_t block = detail::synthesis_block;
-  out.offset.resize(static_cast<std::size_t>(nf));
-  out.region.resize(static_cast<std::size_t>(nf));
-  out.seam.resize(static_cast<std::size_t>(nf));
+  out.offset.resize(detail::to_size(nf));
+  out.region.resize(detail::to_size(nf));
+  out.seam.resize(detail::to_size(nf));
   exec.parallel_for(0, (nf + block - 1) / block, [&](index_t c) {  // culled faces: offset 0, region -1, no seam
     const auto a = static_cast<std::ptrdiff_t>(c * block),
                b = static_cast<std::ptrdiff_t>(std::min(nf, (c + 1) * block));
@@ -248,19 +247,19 @@ status synthesize_triangles(const terrain_mesh& mesh, const screen_projection& p
   const index_t nvis = proj.num_visible();
   out.visible = nvis;
   if (nvis == 0) return {};
-  out.order.reserve(static_cast<std::size_t>(nvis));
+  out.order.reserve(detail::to_size(nvis));
   const counter_rng rng(opts.seed, stream_id("terrain.synthesize_triangles"));
   const double W = static_cast<double>(exemplar_width), H = static_cast<double>(exemplar_height), m = opts.margin;
   // the offset of each placement: faces of one region share it, so the serial loop below reads and
   // writes 4-byte region ids (and this small table) instead of a 16-byte offset per face
   std::vector<vec2> placements;
   std::vector<std::int32_t> stack, deferred;
-  stack.reserve(static_cast<std::size_t>(std::min<index_t>(3 * nvis + 1, 1 << 20)));
+  stack.reserve(detail::to_size(std::min<index_t>(3 * nvis + 1, 1 << 20)));
   index_t done = 0;
   status stopped;  // why a face stopped the growth
   // §2.3 step (2) for the popped face f: continue a neighbour's placement, wait, or place anew
   auto synthesize_face = [&](std::int32_t f, bool forced) {
-    const auto fi = static_cast<std::size_t>(f);
+    const auto fi = detail::to_size(f);
     if (out.region[fi] >= 0) return true;
     const double s = field.scale[fi];
     if (!(s > 0 && s <= 1)) {  // e.g. 0 for a face the field's projection culled
@@ -306,9 +305,8 @@ status synthesize_triangles(const terrain_mesh& mesh, const screen_projection& p
     }
     out.order.push_back(f);
     for (int k = 0; k < 3; ++k) {  // step 1: push the unsynthesized visible neighbours
-      const std::int32_t n = nb[static_cast<std::size_t>(k)];
-      if (detail::is_face_index(n, nf) && proj.state[static_cast<std::size_t>(n)] != 0 &&
-          out.region[static_cast<std::size_t>(n)] < 0)
+      const std::int32_t n = nb[detail::to_size(k)];
+      if (detail::is_face_index(n, nf) && proj.state[detail::to_size(n)] != 0 && out.region[detail::to_size(n)] < 0)
         stack.push_back(n);
     }
     if ((++done & detail::progress_interval) == 0 &&
@@ -323,10 +321,10 @@ status synthesize_triangles(const terrain_mesh& mesh, const screen_projection& p
   const auto start = static_cast<index_t>(rng.below(static_cast<std::uint64_t>(nvis), 0));
   for (index_t idx = 0; idx < nvis; ++idx) {
     const index_t at = (start + idx) % nvis;
-    const std::int32_t seed_face = proj.visible[static_cast<std::size_t>(at)];
+    const std::int32_t seed_face = proj.visible[detail::to_size(at)];
     if (!detail::is_visible_face(proj, seed_face))
       return detail::bad_visible_entry("synthesize_triangles", at, seed_face);
-    if (out.region[static_cast<std::size_t>(seed_face)] >= 0) continue;
+    if (out.region[detail::to_size(seed_face)] >= 0) continue;
     ++out.components;
     stack.push_back(seed_face);
     if (!detail::grow_by_stack(stack, deferred, synthesize_face)) return stopped;

@@ -104,9 +104,7 @@ class terrain_session {
     return std::max(opts_.min_scale, std::pow(opts_.level_ratio, -static_cast<double>(l)));
   }
   /// Whether face f is visible in the current frame.
-  [[nodiscard]] bool visible(index_t f) const noexcept {
-    return seen_[static_cast<std::size_t>(f)] == frame_ && frame_ >= 0;
-  }
+  [[nodiscard]] bool visible(index_t f) const noexcept { return seen_[detail::to_size(f)] == frame_ && frame_ >= 0; }
   /// Per face: corners u0 v0 u1 v1 u2 v2 in texels of the face's level image from its centre
   /// (sample the exemplar shrunk by scale(level) at 0.5 + uv / (width * scale, height * scale));
   /// interpolate PERSPECTIVE-correctly. Meaningful for visible faces.
@@ -115,10 +113,10 @@ class terrain_session {
   [[nodiscard]] const std::vector<std::int32_t>& level() const noexcept { return level_; }
   /// Weight of the current level in a blend (1: none); blend_from(f) is the level blended out.
   [[nodiscard]] float blend_weight(index_t f) const noexcept {
-    const auto left = blend_left_[static_cast<std::size_t>(f)];
+    const auto left = blend_left_[detail::to_size(f)];
     return left == 0 ? 1.0f : 1.0f - static_cast<float>(left) / static_cast<float>(opts_.blend_frames + 1);
   }
-  [[nodiscard]] std::int32_t blend_from(index_t f) const noexcept { return blend_from_[static_cast<std::size_t>(f)]; }
+  [[nodiscard]] std::int32_t blend_from(index_t f) const noexcept { return blend_from_[detail::to_size(f)]; }
   /// Bytes held by the session (per-face state, regions, atlas and the projection).
   [[nodiscard]] std::size_t memory_bytes() const noexcept {
     auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
@@ -155,11 +153,11 @@ inline std::uint64_t terrain_mesh_fingerprint(const terrain_mesh& m) {
   std::uint64_t h = hash_keys(static_cast<std::uint64_t>(m.num_faces()), static_cast<std::uint64_t>(m.num_vertices()));
   const index_t nf = m.num_faces(), nv = m.num_vertices();
   for (index_t i = 0; i < 64 && nf > 0; ++i) {
-    const auto f = static_cast<std::size_t>(i * nf / 64);
+    const auto f = to_size(i * nf / 64);
     for (const std::int32_t v : m.faces[f]) h = hash_keys(h, static_cast<std::uint64_t>(static_cast<std::uint32_t>(v)));
   }
   for (index_t i = 0; i < 64 && nv > 0; ++i) {
-    const vec3& p = m.positions[static_cast<std::size_t>(i * nv / 64)];
+    const vec3& p = m.positions[to_size(i * nv / 64)];
     std::uint64_t b[3];
     std::memcpy(&b[0], &p.x, 8);
     std::memcpy(&b[1], &p.y, 8);
@@ -212,7 +210,7 @@ inline result<terrain_session> make_terrain_session(const terrain_mesh& mesh, in
   for (index_t l = 0; l < s.levels_; ++l) s.scales_.push_back(static_cast<float>(s.level_scale(l)));
   s.plan_ = std::move(*plan);
   reset_anchored_atlas(s.plan_, s.nf_, s.atlas_);
-  const auto nf = static_cast<std::size_t>(s.nf_);
+  const auto nf = detail::to_size(s.nf_);
   s.uv_.assign(nf, {});
   s.level_.assign(nf, -1);
   s.seen_.assign(nf, -2);
@@ -259,14 +257,14 @@ status update_terrain_session(terrain_session& s, const terrain_mesh& mesh, cons
     int jump = 0;
     std::vector<std::int32_t> regions;
   };
-  std::vector<partial> part(static_cast<std::size_t>(chunks));
+  std::vector<partial> part(detail::to_size(chunks));
   // squared distance thresholds instead of a logarithm per face: level l >= 1 starts at D0 ratio^l;
   // a face keeps level l while D0 ratio^(l - hysteresis) <= D <= D0 ratio^(l + 1 + hysteresis)
   const double beta = s.opts_.hysteresis, rho = s.opts_.level_ratio;
   const index_t top = s.levels_ - 1;
-  std::vector<double> start2(static_cast<std::size_t>(top + 1)), lo2(start2.size()), hi2(start2.size());
+  std::vector<double> start2(detail::to_size(top + 1)), lo2(start2.size()), hi2(start2.size());
   for (index_t l = 0; l <= top; ++l) {
-    const auto i = static_cast<std::size_t>(l);
+    const auto i = detail::to_size(l);
     const double dl = static_cast<double>(l);
     start2[i] = std::pow(s.d0_ * std::pow(rho, dl), 2);
     lo2[i] = l == 0 ? -1.0 : std::pow(s.d0_ * std::pow(rho, dl - beta), 2);
@@ -276,17 +274,17 @@ status update_terrain_session(terrain_session& s, const terrain_mesh& mesh, cons
   const auto blend = static_cast<std::uint8_t>(s.opts_.blend_frames);
   // pass 1: levels (with hysteresis), what to re-synthesize, which regions to grow
   exec.parallel_for(0, chunks, [&](index_t c) {
-    partial& p = part[static_cast<std::size_t>(c)];
+    partial& p = part[detail::to_size(c)];
     for (index_t i = c * block; i < std::min(nvis, (c + 1) * block); ++i) {
-      const auto f = static_cast<std::size_t>(vis[i]);
+      const auto f = detail::to_size(vis[i]);
       const vec3 d = mesh.centroids[f] - eye;
       const double d2 = dot(d, d);
       std::int32_t raw = 0;
-      while (raw < top && d2 >= start2[static_cast<std::size_t>(raw + 1)]) ++raw;
+      while (raw < top && d2 >= start2[detail::to_size(raw + 1)]) ++raw;
       const bool was = s.seen_[f] == fr - 1;
       const std::int32_t old = s.level_[f];
       std::int32_t l = raw;
-      if (was && d2 >= lo2[static_cast<std::size_t>(old)] && d2 <= hi2[static_cast<std::size_t>(old)]) l = old;
+      if (was && d2 >= lo2[detail::to_size(old)] && d2 <= hi2[detail::to_size(old)]) l = old;
       if (was) {
         ++p.common;
         if (l == old) {
@@ -307,7 +305,7 @@ status update_terrain_session(terrain_session& s, const terrain_mesh& mesh, cons
         s.dirty_[f] = 1;
         ++p.resyn;
         const std::int32_t r = s.plan_.region[f];
-        if (!s.atlas_.region_done[static_cast<std::size_t>(r)] && (p.regions.empty() || p.regions.back() != r))
+        if (!s.atlas_.region_done[detail::to_size(r)] && (p.regions.empty() || p.regions.back() != r))
           p.regions.push_back(r);
       }
     }
@@ -319,8 +317,8 @@ status update_terrain_session(terrain_session& s, const terrain_mesh& mesh, cons
   // pass 2: grow the new regions (independent of each other)
   std::vector<anchored_region_stats> grown(grow.size());
   exec.parallel_for(0, static_cast<index_t>(grow.size()), [&](index_t i) {
-    (void)synthesize_anchored_region(mesh, s.plan_, grow[static_cast<std::size_t>(i)], s.ew_, s.eh_, s.opts_.synthesis,
-                                     s.atlas_, &grown[static_cast<std::size_t>(i)]);
+    (void)synthesize_anchored_region(mesh, s.plan_, grow[detail::to_size(i)], s.ew_, s.eh_, s.opts_.synthesis, s.atlas_,
+                                     &grown[detail::to_size(i)]);
   });
   out.regions_grown = static_cast<index_t>(grow.size());
   for (const auto& g : grown) {
@@ -330,12 +328,12 @@ status update_terrain_session(terrain_session& s, const terrain_mesh& mesh, cons
   // pass 3: write the coordinates of the re-synthesized faces; continuity and level jumps
   const bool measure = s.opts_.measure_continuity;
   exec.parallel_for(0, chunks, [&](index_t c) {
-    partial& p = part[static_cast<std::size_t>(c)];
+    partial& p = part[detail::to_size(c)];
     for (index_t i = c * block; i < std::min(nvis, (c + 1) * block); ++i) {
-      const auto f = static_cast<std::size_t>(vis[i]);
+      const auto f = detail::to_size(vis[i]);
       if (s.dirty_[f]) {
         s.dirty_[f] = 0;
-        const float sc = s.scales_[static_cast<std::size_t>(s.level_[f])];
+        const float sc = s.scales_[detail::to_size(s.level_[f])];
         const auto& a = s.atlas_.uv[f];
         for (std::size_t k = 0; k < 6; ++k) s.uv_[f][k] = a[k] * sc;
       }
@@ -343,10 +341,10 @@ status update_terrain_session(terrain_session& s, const terrain_mesh& mesh, cons
       const std::uint8_t seam = s.atlas_.seam[f];
       const std::int32_t lf = s.level_[f];
       for (int k = 0; k < 3; ++k) {
-        const std::int32_t n = mesh.neighbors[f][static_cast<std::size_t>(k)];
-        if (n <= vis[i] || s.seen_[static_cast<std::size_t>(n)] != fr) continue;
+        const std::int32_t n = mesh.neighbors[f][detail::to_size(k)];
+        if (n <= vis[i] || s.seen_[detail::to_size(n)] != fr) continue;
         ++p.shared;
-        p.jump = std::max(p.jump, std::abs(lf - s.level_[static_cast<std::size_t>(n)]));
+        p.jump = std::max(p.jump, std::abs(lf - s.level_[detail::to_size(n)]));
         const bool same = ((seam >> k) & 1) == 0;
         p.same += same ? 1 : 0;
       }

@@ -108,8 +108,8 @@ inline result<std::vector<wang_edges>> complete_tile_set_edges(int nh, int nv) {
   if (n > (index_t{1} << 26))
     return status::size_overflow(detail::cat("the complete set for ", nh, " x ", nv, " colours has ", n,
                                              " tiles, more than tessera builds (2^26)"));
-  std::vector<wang_edges> out(static_cast<std::size_t>(n));
-  for (index_t i = 0; i < n; ++i) out[static_cast<std::size_t>(i)] = complete_tile_edges(i, nh, nv);
+  std::vector<wang_edges> out(detail::to_size(n));
+  for (index_t i = 0; i < n; ++i) out[detail::to_size(i)] = complete_tile_edges(i, nh, nv);
   return out;
 }
 

@@ -48,7 +48,7 @@ class periodic_coloring {
     c.rows_ = rows;
     c.nh_ = set.horizontal_colors();
     c.nv_ = set.vertical_colors();
-    c.pattern_.resize(static_cast<std::size_t>(period_cols * period_rows));
+    c.pattern_.resize(detail::to_size(period_cols * period_rows));
     if (set.hash_modulus() > 0) {
       auto plane = hash_coloring::for_set(set, seed);
       if (!plane) return plane.error();
@@ -56,7 +56,7 @@ class periodic_coloring {
       if (!periodic) return periodic.error();
       for (index_t r = 0; r < period_rows; ++r)
         for (index_t col = 0; col < period_cols; ++col)
-          c.pattern_[static_cast<std::size_t>(r * period_cols + col)] = periodic->edges_at(col, r);
+          c.pattern_[detail::to_size(r * period_cols + col)] = periodic->edges_at(col, r);
       return c;
     }
     if (auto s = c.search(set, seed, max_search_steps); !s) return s;
@@ -77,7 +77,7 @@ class periodic_coloring {
     return edges_at(col, row)[side];
   }
   [[nodiscard]] const wang_edges& edges_at(index_t col, index_t row) const noexcept {
-    return pattern_[static_cast<std::size_t>(wrap(row, period_rows_) * period_cols_ + wrap(col, period_cols_))];
+    return pattern_[detail::to_size(wrap(row, period_rows_) * period_cols_ + wrap(col, period_cols_))];
   }
 
  private:
@@ -91,14 +91,14 @@ class periodic_coloring {
   status search(const tile_set_edges& set, std::uint64_t seed, index_t max_steps) {
     const index_t P = period_cols_, Q = period_rows_, n = P * Q;
     const counter_rng rng(seed, stream_id("tiling.periodic_coloring"));
-    std::vector<std::vector<index_t>> candidates(static_cast<std::size_t>(n));
-    std::vector<std::size_t> next(static_cast<std::size_t>(n), 0);
+    std::vector<std::vector<index_t>> candidates(detail::to_size(n));
+    std::vector<std::size_t> next(detail::to_size(n), 0);
     auto tile_at = [&](index_t col, index_t row) -> const wang_edges& {
-      return pattern_[static_cast<std::size_t>(row * P + col)];
+      return pattern_[detail::to_size(row * P + col)];
     };
     auto gather = [&](index_t k) {
       const index_t col = k % P, row = k / P;
-      std::vector<index_t>& out = candidates[static_cast<std::size_t>(k)];
+      std::vector<index_t>& out = candidates[detail::to_size(k)];
       out.clear();
       for (index_t t = 0; t < set.size(); ++t) {
         const wang_edges& e = set[t];
@@ -113,7 +113,7 @@ class periodic_coloring {
         const std::uint64_t ha = rng.bits(col, row, a), hb = rng.bits(col, row, b);
         return ha != hb ? ha < hb : a < b;
       });
-      next[static_cast<std::size_t>(k)] = 0;
+      next[detail::to_size(k)] = 0;
     };
     index_t k = 0, steps = 0;
     gather(0);
@@ -121,10 +121,10 @@ class periodic_coloring {
       if (++steps > max_steps)
         return status::not_converged(detail::cat("periodic colouring: no ", P, " x ", Q, " pattern found within ",
                                                  max_steps, " search steps; try another period or a complete set"));
-      auto& options = candidates[static_cast<std::size_t>(k)];
-      auto& i = next[static_cast<std::size_t>(k)];
+      auto& options = candidates[detail::to_size(k)];
+      auto& i = next[detail::to_size(k)];
       if (i < options.size()) {
-        pattern_[static_cast<std::size_t>(k)] = set[options[i++]];
+        pattern_[detail::to_size(k)] = set[options[i++]];
         if (++k < n) gather(k);
       } else if (k == 0) {
         return status::invalid_argument(

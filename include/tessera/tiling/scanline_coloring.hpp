@@ -57,7 +57,7 @@ class scanline_coloring {
     c.rows_ = rows;
     c.nh_ = set.horizontal_colors();
     c.nv_ = set.vertical_colors();
-    c.cells_.resize(static_cast<std::size_t>(cols * rows));
+    c.cells_.resize(detail::to_size(cols * rows));
     const counter_rng rng(seed, stream_id("tiling.scanline_coloring"));
     for (index_t r = 0; r < rows; ++r)
       for (index_t col = 0; col < cols; ++col) {
@@ -71,9 +71,9 @@ class scanline_coloring {
                                                    : r > 0 ? set.with_north(c.at(col, r - 1).south)
                                                            : set.with_west(c.at(col - 1, r).east);
           TESSERA_ASSERT(!options.empty());
-          pick = options[static_cast<std::size_t>(rng.below(options.size(), col, r))];
+          pick = options[detail::to_size(rng.below(options.size(), col, r))];
         }
-        c.cells_[static_cast<std::size_t>(r * cols + col)] = set[pick];
+        c.cells_[detail::to_size(r * cols + col)] = set[pick];
       }
     return c;
   }
@@ -89,9 +89,7 @@ class scanline_coloring {
   [[nodiscard]] index_t rows() const noexcept { return rows_; }
   [[nodiscard]] index_t num_faces() const noexcept { return cols_ * rows_; }
   [[nodiscard]] int num_colors(int side) const noexcept { return is_horizontal_side(side) ? nh_ : nv_; }
-  [[nodiscard]] int edge_color(index_t face, int side) const noexcept {
-    return cells_[static_cast<std::size_t>(face)][side];
-  }
+  [[nodiscard]] int edge_color(index_t face, int side) const noexcept { return cells_[detail::to_size(face)][side]; }
   /// Colour of `side` of cell (col, row); 0 <= col < cols, 0 <= row < rows.
   [[nodiscard]] int edge_color_at(index_t col, index_t row, int side) const noexcept { return at(col, row)[side]; }
   [[nodiscard]] const wang_edges& edges_at(index_t col, index_t row) const noexcept { return at(col, row); }
@@ -99,7 +97,7 @@ class scanline_coloring {
  private:
   [[nodiscard]] const wang_edges& at(index_t col, index_t row) const noexcept {
     TESSERA_ASSERT(col >= 0 && col < cols_ && row >= 0 && row < rows_);
-    return cells_[static_cast<std::size_t>(row * cols_ + col)];
+    return cells_[detail::to_size(row * cols_ + col)];
   }
 
   index_t cols_ = 0, rows_ = 0;

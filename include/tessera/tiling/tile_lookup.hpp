@@ -97,7 +97,7 @@ inline index_t tile_at_cell(const tile_set_edges& set, const wang_edges& e, std:
   if (v.empty()) return -1;
   if (v.size() == 1) return v.front();
   const counter_rng rng(seed, stream_id("tiling.variant"));
-  return v[static_cast<std::size_t>(rng.below(v.size(), col, row))];
+  return v[detail::to_size(rng.below(v.size(), col, row))];
 }
 
 namespace detail {

@@ -89,7 +89,7 @@ class tile_set_edges {
   [[nodiscard]] std::span<const wang_edges> tiles() const noexcept { return tiles_; }
   [[nodiscard]] const wang_edges& operator[](index_t tile) const noexcept {
     TESSERA_ASSERT(tile >= 0 && tile < size());
-    return tiles_[static_cast<std::size_t>(tile)];
+    return tiles_[detail::to_size(tile)];
   }
 
   /// All tiles with exactly these edges, in increasing index order (empty when none).
@@ -143,13 +143,13 @@ class tile_set_edges {
   std::span<const index_t> range(const std::vector<index_t>& order, index_t key, Key&& key_of) const noexcept {
     auto lo = std::partition_point(order.begin(), order.end(), [&](index_t t) { return key_of(t) < key; });
     auto hi = std::partition_point(lo, order.end(), [&](index_t t) { return key_of(t) <= key; });
-    return {order.data() + (lo - order.begin()), static_cast<std::size_t>(hi - lo)};
+    return {order.data() + (lo - order.begin()), detail::to_size(hi - lo)};
   }
 
   void build_lookups() {
     const index_t n = size();
     // tile indices ordered by a key, ties by index: one (key, index) sort serves the four keys
-    std::vector<std::pair<index_t, index_t>> keyed(static_cast<std::size_t>(n));
+    std::vector<std::pair<index_t, index_t>> keyed(detail::to_size(n));
     auto sorted_by = [&](int which) {
       for (index_t t = 0; t < n; ++t) {
         const wang_edges& e = (*this)[t];
@@ -157,7 +157,7 @@ class tile_set_edges {
                             : which == 1 ? static_cast<index_t>(e.north) * nv_ + e.west
                             : which == 2 ? index_t{e.west}
                                          : index_t{e.north};
-        keyed[static_cast<std::size_t>(t)] = {key, t};
+        keyed[detail::to_size(t)] = {key, t};
       }
       std::sort(keyed.begin(), keyed.end());
       std::vector<index_t> order(keyed.size());
@@ -170,8 +170,8 @@ class tile_set_edges {
     by_north_ = sorted_by(3);
     distinct_ = 0;
     for (index_t i = 0; i < n; ++i)
-      if (i == 0 || complete_tile_index((*this)[by_edges_[static_cast<std::size_t>(i)]], nh_, nv_) !=
-                        complete_tile_index((*this)[by_edges_[static_cast<std::size_t>(i - 1)]], nh_, nv_))
+      if (i == 0 || complete_tile_index((*this)[by_edges_[detail::to_size(i)]], nh_, nv_) !=
+                        complete_tile_index((*this)[by_edges_[detail::to_size(i - 1)]], nh_, nv_))
         ++distinct_;
     hash_modulus_ = 0;
     const int g = std::gcd(nh_, nv_);
@@ -179,10 +179,9 @@ class tile_set_edges {
       if (g % m != 0) continue;
       index_t members = 0;  // distinct combinations of the set inside the modular subset for m
       for (index_t i = 0; i < n; ++i) {
-        const wang_edges& e = (*this)[by_edges_[static_cast<std::size_t>(i)]];
-        const bool first =
-            i == 0 || complete_tile_index(e, nh_, nv_) !=
-                          complete_tile_index((*this)[by_edges_[static_cast<std::size_t>(i - 1)]], nh_, nv_);
+        const wang_edges& e = (*this)[by_edges_[detail::to_size(i)]];
+        const bool first = i == 0 || complete_tile_index(e, nh_, nv_) !=
+                                         complete_tile_index((*this)[by_edges_[detail::to_size(i - 1)]], nh_, nv_);
         if (first && in_modular_subset(e, m)) ++members;
       }
       if (members == complete_tile_count(nh_, nv_) / m) hash_modulus_ = m;

@@ -116,12 +116,12 @@ void row_pass(const T* src, index_t src_stride, image_view<T, C> dst, const cat_
   constexpr index_t rows_per_task = 8;
   const index_t tasks = (n + rows_per_task - 1) / rows_per_task;
   exec.parallel_for(0, tasks, [&](index_t t) {
-    std::vector<T> scratch(in_place ? static_cast<std::size_t>(n * C) : 0);
+    std::vector<T> scratch(in_place ? to_size(n * C) : 0);
     const index_t y1 = std::min(n, (t + 1) * rows_per_task);
     for (index_t y = t * rows_per_task; y < y1; ++y) {
       const T* in = src + y * src_stride;
       if (in_place) {
-        std::memcpy(scratch.data(), in, sizeof(T) * static_cast<std::size_t>(n * C));
+        std::memcpy(scratch.data(), in, sizeof(T) * to_size(n * C));
         in = scratch.data();
       }
       const auto start = static_cast<index_t>(mulmod(static_cast<u64>(p.v), static_cast<u64>(y), static_cast<u64>(n)));
@@ -144,10 +144,10 @@ void column_pass(const T* src, index_t src_stride, image_view<T, C> dst, const c
   const u64 un = static_cast<u64>(n);
   exec.parallel_for(0, strips, [&](index_t s) {
     const index_t x0 = s * strip, w = std::min(strip, n - x0);
-    std::vector<T> scratch(static_cast<std::size_t>(n * w * C));
+    std::vector<T> scratch(to_size(n * w * C));
     const index_t row_bytes = static_cast<index_t>(sizeof(T)) * w * C;
     for (index_t y = 0; y < n; ++y)
-      std::memcpy(scratch.data() + y * w * C, src + y * src_stride + x0 * C, static_cast<std::size_t>(row_bytes));
+      std::memcpy(scratch.data() + y * w * C, src + y * src_stride + x0 * C, to_size(row_bytes));
     const T* in = scratch.data();
     const index_t in_stride = w * C;
     index_t off[strip];  // offset of the source row of each column

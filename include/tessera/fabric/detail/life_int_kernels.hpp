@@ -180,7 +180,7 @@ std::size_t life_compact(const U* kind, index_t w, std::uint32_t* fired) noexcep
     for (; x + 8 <= w; x += 8) {
       const __m128i k = _mm_loadu_si128(reinterpret_cast<const __m128i*>(kind + x));
       const __m128i none = _mm_packs_epi16(_mm_cmpeq_epi16(k, zero), zero);
-      const auto m = static_cast<std::size_t>(~_mm_movemask_epi8(none) & 0xff);
+      const auto m = to_size(~_mm_movemask_epi8(none) & 0xff);
       const __m128i at =
           _mm_unpacklo_epi8(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(life_compact_lanes.at[m])), zero);
       const __m128i first = _mm_set1_epi32(static_cast<int>(x));
@@ -209,8 +209,8 @@ struct life_int_scratch {
   std::vector<std::uint32_t> fired, sum, q, up;
   std::vector<float> lq, k, base;
   explicit life_int_scratch(index_t w)
-      : rows(static_cast<std::size_t>(3 * (w + 2))),
-        toward(static_cast<std::size_t>(w)),
+      : rows(to_size(3 * (w + 2))),
+        toward(to_size(w)),
         kind(toward.size()),
         fired(toward.size() + 8),
         sum(toward.size()),
@@ -384,8 +384,7 @@ void life_int_relight_row(const T* in, T* out, const life_int_scratch<T>& s, std
                                         _mm_or_si128(_mm_slli_epi32(channel(16), 16), _mm_and_si128(p, alpha)));
       std::uint32_t words[4];
       _mm_storeu_si128(reinterpret_cast<__m128i*>(words), rgba);
-      for (int j = 0; j < 4; ++j)
-        std::memcpy(out + static_cast<std::size_t>(x[j]) * 4, words + j, sizeof(std::uint32_t));
+      for (int j = 0; j < 4; ++j) std::memcpy(out + to_size(x[j]) * 4, words + j, sizeof(std::uint32_t));
     }
   }
 #endif

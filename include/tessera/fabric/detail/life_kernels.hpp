@@ -71,7 +71,7 @@ class life_random {
 /// Copies row `src` (w values) into `dst` (w + 2 values) with one wrapped value at each end.
 inline void pad_row(const float* src, index_t w, float* dst) noexcept {
   dst[0] = src[w - 1];
-  std::memcpy(dst + 1, src, sizeof(float) * static_cast<std::size_t>(w));
+  std::memcpy(dst + 1, src, sizeof(float) * to_size(w));
   dst[w + 1] = src[0];
 }
 
@@ -131,12 +131,7 @@ struct life_scratch {
   std::vector<std::int32_t> fire;
   std::vector<index_t> fired;
   explicit life_scratch(index_t w)
-      : rows(static_cast<std::size_t>(3 * (w + 2))),
-        lo(static_cast<std::size_t>(w)),
-        hi(lo.size()),
-        next(lo.size()),
-        fire(lo.size()),
-        fired(lo.size()) {}
+      : rows(to_size(3 * (w + 2))), lo(to_size(w)), hi(lo.size()), next(lo.size()), fire(lo.size()), fired(lo.size()) {}
 };
 
 /// Runs one generation on rows [y0, y1) of a W x H toroidal lightness field whose row y is written,
@@ -159,17 +154,17 @@ void life_band(index_t w, index_t h, index_t y0, index_t y1, const life_rule& ru
     // compact the fired columns without branches, then update only those
     index_t n = 0;
     for (index_t x = 0; x < w; ++x) {
-      s.fired[static_cast<std::size_t>(n)] = x;
-      n += s.fire[static_cast<std::size_t>(x)] != 0;
+      s.fired[to_size(n)] = x;
+      n += s.fire[to_size(x)] != 0;
     }
-    std::memcpy(s.next.data(), ring[1] + 1, sizeof(float) * static_cast<std::size_t>(w));
+    std::memcpy(s.next.data(), ring[1] + 1, sizeof(float) * to_size(w));
     const std::uint32_t key = random.row_key(y);
     const bool narrow = static_cast<std::uint64_t>(w) <= (std::uint64_t{1} << 32);  // one row key per row
     for (index_t k = 0; k < n; ++k) {
-      const index_t x = s.fired[static_cast<std::size_t>(k)];
+      const index_t x = s.fired[to_size(k)];
       const float r = narrow ? static_cast<float>(life_random::bits24(key, static_cast<std::uint32_t>(x))) * 0x1.0p-24f
                              : random(y, x);
-      const auto xs = static_cast<std::size_t>(x);
+      const auto xs = to_size(x);
       s.next[xs] = s.lo[xs] + (s.hi[xs] - s.lo[xs]) * r;
     }
     emit(y, static_cast<const float*>(ring[1] + 1), static_cast<const float*>(s.next.data()),

@@ -58,8 +58,7 @@ bool views_overlap(const A& a, const B& b) {
 /// Copies src into dst (same size and format), row by row.
 template <class T, int C>
 void copy_view(image_view<const T, C> src, image_view<T, C> dst) {
-  for (index_t y = 0; y < src.height(); ++y)
-    std::memcpy(dst.row(y), src.row(y), sizeof(T) * static_cast<std::size_t>(src.width() * C));
+  for (index_t y = 0; y < src.height(); ++y) std::memcpy(dst.row(y), src.row(y), sizeof(T) * to_size(src.width() * C));
 }
 
 /// A square sub-region: top-left corner and side.

@@ -65,7 +65,7 @@ std::vector<strip_candidate> strip_candidates(const quilt_exemplar& src, bool ho
       bool ok = true;
       index_t crossing = 0;
       for (index_t e = 0; e < src.num_elements() && ok; ++e) {
-        const aabb& x = src.elements()[static_cast<std::size_t>(e)].box;
+        const aabb& x = src.elements()[to_size(e)].box;
         if (x.max[a] < a0 || x.min[a] > a0 + sp.tile_size) continue;
         if (!(x.min[b] < b0 && x.max[b] > b0)) continue;
         ++crossing;
@@ -97,7 +97,7 @@ bool extract_strip(const quilt_exemplar& src, bool horizontal, const strip_param
   const double hh = sp.half_height, w = sp.tile_size;
   const double eps = strip_clearance_fraction * w;
   for (index_t e = 0; e < src.num_elements(); ++e) {
-    const texture_element& el = src.elements()[static_cast<std::size_t>(e)];
+    const texture_element& el = src.elements()[to_size(e)];
     const aabb& x = el.box;
     if (x.max[a] < c.along0 || x.min[a] > c.along0 + w || x.max[b] < c.across0 - hh || x.min[b] > c.across0 + hh)
       continue;
@@ -145,9 +145,9 @@ bool extract_strip(const quilt_exemplar& src, bool horizontal, const strip_param
           part.border = 1;
           for (const auto& f : part.mesh.faces) {
             bool on = false;
-            for (index_t v : f) on = on || part.mesh.positions[static_cast<std::size_t>(v)][b] == 0.0;
+            for (index_t v : f) on = on || part.mesh.positions[to_size(v)][b] == 0.0;
             if (on)
-              for (index_t v : f) part.fixed[static_cast<std::size_t>(v)] = 1;
+              for (index_t v : f) part.fixed[to_size(v)] = 1;
           }
         } else if (count_edge_defects(part.mesh).open_edges > 0) {
           continue;  // a sliver cut off without touching the line: cannot be closed, drop it

@@ -41,7 +41,7 @@ inline std::vector<element_correspondence> find_correspondences(const tri_mesh& 
                                                                 double radius2) {
   std::vector<element_correspondence> out;
   for (index_t v = 0; v < from.num_vertices(); ++v) {
-    const auto h = to.closest_point(from.positions[static_cast<std::size_t>(v)], radius2);
+    const auto h = to.closest_point(from.positions[to_size(v)], radius2);
     if (h.face >= 0) out.push_back({v, h.face, h.bary, h.point});
   }
   return out;
@@ -63,9 +63,9 @@ bool deform_to_midpoints(const tri_mesh& ct, const tri_mesh& cin, const std::vec
                          double mu, merge_side& t, merge_side& in) {
   std::vector<laplacian_constraint> ks_t, ks_in;
   for (const element_correspondence& c : corr) {
-    const vec3 mid = (ct.positions[static_cast<std::size_t>(c.v)] + c.point) * 0.5;
+    const vec3 mid = (ct.positions[to_size(c.v)] + c.point) * 0.5;
     ks_t.push_back({{c.v, -1, -1}, {1, 0, 0}, mid});  // eq. 6: the vertex itself
-    const auto& f = cin.faces[static_cast<std::size_t>(c.face)];
+    const auto& f = cin.faces[to_size(c.face)];
     ks_in.push_back({{f[0], f[1], f[2]}, {c.bary.x, c.bary.y, c.bary.z}, mid});  // eq. 7: alpha, beta, gamma
   }
   const auto dt = laplacian_deform(ct, t.fixed, ks_t, {.soft_weight = mu});
@@ -101,14 +101,14 @@ std::vector<unsigned char> correspondence_frontier(const tri_mesh& m, const std:
   std::vector<unsigned char> corresponded(m.faces.size(), 0), out(m.faces.size(), 0);
   for (std::size_t f = 0; f < m.faces.size(); ++f) {
     bool all = true;
-    for (index_t v : m.faces[f]) all = all && corr_face[static_cast<std::size_t>(v)] >= 0;
+    for (index_t v : m.faces[f]) all = all && corr_face[to_size(v)] >= 0;
     corresponded[f] = all ? 1 : 0;
   }
   const auto adj = face_adjacency(m);
   for (std::size_t f = 0; f < m.faces.size(); ++f)
     if (corresponded[f])
       for (index_t g : adj.neighbor[f])
-        if (g >= 0 && !corresponded[static_cast<std::size_t>(g)]) out[f] = 1;
+        if (g >= 0 && !corresponded[to_size(g)]) out[f] = 1;
   return out;
 }
 

@@ -111,24 +111,23 @@ std::optional<std::vector<unsigned char>> dual_graph_cut(const tri_mesh& m, cons
   max_flow_graph g(nf);
   const double inf = std::numeric_limits<double>::infinity();
   for (index_t f = 0; f < nf; ++f) {
-    if (term[static_cast<std::size_t>(f)] > 0) g.add_terminal(f, inf, 0);
-    if (term[static_cast<std::size_t>(f)] < 0) g.add_terminal(f, 0, inf);
-    if (term[static_cast<std::size_t>(f)] == 0) {
-      const double b = bias[static_cast<std::size_t>(f)];
+    if (term[to_size(f)] > 0) g.add_terminal(f, inf, 0);
+    if (term[to_size(f)] < 0) g.add_terminal(f, 0, inf);
+    if (term[to_size(f)] == 0) {
+      const double b = bias[to_size(f)];
       g.add_terminal(f, b > 0 ? b : 0.0, b < 0 ? -b : 0.0);
     }
   }
   for (const mesh_edge& e : mesh_edges(m)) {
     if (e.faces.size() != 2) continue;
-    const double len = norm(m.positions[static_cast<std::size_t>(e.v0)] - m.positions[static_cast<std::size_t>(e.v1)]);
-    const double w =
-        (1 + len) * (1 + dist[static_cast<std::size_t>(e.v0)] + dist[static_cast<std::size_t>(e.v1)]);  // eq. 8
+    const double len = norm(m.positions[to_size(e.v0)] - m.positions[to_size(e.v1)]);
+    const double w = (1 + len) * (1 + dist[to_size(e.v0)] + dist[to_size(e.v1)]);  // eq. 8
     g.add_edge(e.faces[0][0], e.faces[1][0], w, w);
   }
   const auto flow = g.solve();
   if (!flow || std::isinf(*flow)) return std::nullopt;
-  std::vector<unsigned char> keep(static_cast<std::size_t>(nf));
-  for (index_t f = 0; f < nf; ++f) keep[static_cast<std::size_t>(f)] = g.in_source_set(f) ? 1 : 0;
+  std::vector<unsigned char> keep(to_size(nf));
+  for (index_t f = 0; f < nf; ++f) keep[to_size(f)] = g.in_source_set(f) ? 1 : 0;
   return keep;
 }
 
@@ -140,12 +139,12 @@ inline std::vector<unsigned char> ct_sink_vertices(const merge_params& p, const 
   for (std::size_t v = 0; v < t.mesh.positions.size(); ++v) {
     const index_t fi = t.corr_face[v];
     if (fi < 0) continue;
-    if (in.border[static_cast<std::size_t>(fi)]) {
+    if (in.border[to_size(fi)]) {
       sink[v] = paper ? 1 : 0;
       continue;
     }
     const vec3 c = centroid(in.mesh, fi);
-    if (in_new_region(p, c) || (in.frontier[static_cast<std::size_t>(fi)] && p.in_patch(c))) sink[v] = 1;
+    if (in_new_region(p, c) || (in.frontier[to_size(fi)] && p.in_patch(c))) sink[v] = 1;
   }
   return sink;
 }
@@ -163,7 +162,7 @@ inline cut_terminals ct_terminals(const merge_params& p, const merge_side& t, co
   for (std::size_t f = 0; f < nf; ++f) {
     const vec3 c = centroid(t.mesh, static_cast<index_t>(f));
     bool src = (paper ? !p.in_patch(c) : in_kept_old_region(p, c)) || t.border[f];
-    for (index_t v : t.mesh.faces[f]) src = src || t.fixed[static_cast<std::size_t>(v)];
+    for (index_t v : t.mesh.faces[f]) src = src || t.fixed[to_size(v)];
     if (src) {
       r.term[f] = 1;
       r.any_source = true;
@@ -172,8 +171,8 @@ inline cut_terminals ct_terminals(const merge_params& p, const merge_side& t, co
   const std::vector<unsigned char> sink_vertex = ct_sink_vertices(p, t, in);
   for (std::size_t f = 0; f < nf; ++f) {
     bool sink = !paper && in_new_region(p, centroid(t.mesh, static_cast<index_t>(f))) &&
-                t.corr_face[static_cast<std::size_t>(t.mesh.faces[f][0])] >= 0;
-    for (index_t v : t.mesh.faces[f]) sink = sink || sink_vertex[static_cast<std::size_t>(v)];
+                t.corr_face[to_size(t.mesh.faces[f][0])] >= 0;
+    for (index_t v : t.mesh.faces[f]) sink = sink || sink_vertex[to_size(v)];
     if (!sink) continue;
     if (r.term[f] > 0) {
       r.conflict = r.conflict || paper;
@@ -210,25 +209,21 @@ inline cut_terminals cin_terminals(const merge_params& p, const std::vector<unsi
       const index_t ft = in.corr_face[v];
       if (ft < 0) continue;
       const vec3 c = centroid(t.mesh, ft);
-      sink_in[v] = in_kept_old_region(p, c) || t.border[static_cast<std::size_t>(ft)] ||
-                   (t.frontier[static_cast<std::size_t>(ft)] && p.in_patch(c));
+      sink_in[v] = in_kept_old_region(p, c) || t.border[to_size(ft)] || (t.frontier[to_size(ft)] && p.in_patch(c));
     }
   for (std::size_t f = 0; f < in.mesh.faces.size(); ++f) {
     const auto& face = in.mesh.faces[f];
     bool has_fixed = false;
-    for (index_t v : face)
-      has_fixed =
-          has_fixed || (static_cast<std::size_t>(v) < cin_fixed.size() && cin_fixed[static_cast<std::size_t>(v)]);
+    for (index_t v : face) has_fixed = has_fixed || (to_size(v) < cin_fixed.size() && cin_fixed[to_size(v)]);
     bool must_go = false;
     if (p.constrained)
-      for (index_t v : face)
-        must_go = must_go || !strictly_inside(p.domain, in.mesh.positions[static_cast<std::size_t>(v)], p.margin);
+      for (index_t v : face) must_go = must_go || !strictly_inside(p.domain, in.mesh.positions[to_size(v)], p.margin);
     const vec3 c = centroid(in.mesh, static_cast<index_t>(f));
     must_go = must_go || in_kept_old_region(p, c);
     if (paper) {
       const bool src = has_fixed || in_new_region(p, c) || in.border[f];
       bool sink = must_go;
-      for (index_t v : face) sink = sink || sink_in[static_cast<std::size_t>(v)];
+      for (index_t v : face) sink = sink || sink_in[to_size(v)];
       r.term[f] = src ? 1 : sink ? -1 : 0;
       if (src && sink) {
         r.conflict = true;
@@ -245,9 +240,9 @@ inline cut_terminals cin_terminals(const merge_params& p, const std::vector<unsi
     } else {
       int to_kept = 0, to_removed = 0;
       for (index_t v : face) {
-        const index_t ft = in.corr_face[static_cast<std::size_t>(v)];
+        const index_t ft = in.corr_face[to_size(v)];
         if (ft < 0) continue;
-        (keep_t[static_cast<std::size_t>(ft)] ? to_kept : to_removed)++;
+        (keep_t[to_size(ft)] ? to_kept : to_removed)++;
       }
       if (to_kept > 0 && to_removed == 0)
         r.term[f] = -1;
@@ -280,8 +275,7 @@ bool merged_element_valid(const texture_element& out, const merge_params& p) {
   const edge_defects d = count_edge_defects(out.mesh);
   bool ok = d.nonmanifold_edges == 0;
   if (ok && d.open_edges > 0)
-    for (const auto& e : boundary_edges(out.mesh))
-      ok = ok && out.fixed[static_cast<std::size_t>(e[0])] && out.fixed[static_cast<std::size_t>(e[1])];
+    for (const auto& e : boundary_edges(out.mesh)) ok = ok && out.fixed[to_size(e[0])] && out.fixed[to_size(e[1])];
   if (ok && p.constrained)
     for (std::size_t v = 0; v < out.mesh.positions.size() && ok; ++v)
       ok = out.fixed[v] || strictly_inside(p.domain, out.mesh.positions[v], p.margin);

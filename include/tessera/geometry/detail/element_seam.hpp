@@ -29,10 +29,8 @@ TESSERA_NAMESPACE_BEGIN
 namespace detail {
 
 inline vec3 centroid(const tri_mesh& m, index_t f) {
-  const auto& t = m.faces[static_cast<std::size_t>(f)];
-  return (m.positions[static_cast<std::size_t>(t[0])] + m.positions[static_cast<std::size_t>(t[1])] +
-          m.positions[static_cast<std::size_t>(t[2])]) /
-         3.0;
+  const auto& t = m.faces[to_size(f)];
+  return (m.positions[to_size(t[0])] + m.positions[to_size(t[1])] + m.positions[to_size(t[2])]) / 3.0;
 }
 
 /// Keeps the faces with keep[f] != 0; returns the sub-mesh and the old -> new vertex map.
@@ -44,10 +42,10 @@ tri_mesh submesh(const tri_mesh& m, const std::vector<unsigned char>& keep, std:
     if (!keep[f]) continue;
     std::array<index_t, 3> t{};
     for (int k = 0; k < 3; ++k) {
-      const index_t v = m.faces[f][static_cast<std::size_t>(k)];
-      auto& id = map[static_cast<std::size_t>(v)];
-      if (id < 0) id = out.add_vertex(m.positions[static_cast<std::size_t>(v)]);
-      t[static_cast<std::size_t>(k)] = id;
+      const index_t v = m.faces[f][to_size(k)];
+      auto& id = map[to_size(v)];
+      if (id < 0) id = out.add_vertex(m.positions[to_size(v)]);
+      t[to_size(k)] = id;
     }
     out.add_face(t[0], t[1], t[2]);
   }
@@ -73,14 +71,14 @@ bool cut_loops(const tri_mesh& original, const std::vector<index_t>& map,
   std::vector<index_t> back;
   for (std::size_t v = 0; v < map.size(); ++v)
     if (map[v] >= 0) {
-      if (back.size() <= static_cast<std::size_t>(map[v])) back.resize(static_cast<std::size_t>(map[v]) + 1);
-      back[static_cast<std::size_t>(map[v])] = static_cast<index_t>(v);
+      if (back.size() <= to_size(map[v])) back.resize(to_size(map[v]) + 1);
+      back[to_size(map[v])] = static_cast<index_t>(v);
     }
   std::vector<std::vector<index_t>> kept;
   for (const auto& l : loops) {
     std::size_t n = 0;
     for (std::size_t i = 0; i < l.size(); ++i) {
-      const index_t a = back[static_cast<std::size_t>(l[i])], b = back[static_cast<std::size_t>(l[(i + 1) % l.size()])];
+      const index_t a = back[to_size(l[i])], b = back[to_size(l[(i + 1) % l.size()])];
       n += std::binary_search(orig.begin(), orig.end(), std::pair{std::min(a, b), std::max(a, b)}) ? 1 : 0;
     }
     if (n == l.size()) continue;
@@ -99,8 +97,8 @@ bool self_intersects(const tri_mesh& m) {
   bvh.for_each_self_intersection(
       [&](index_t f, index_t g) {
         if (hit) return true;
-        const auto& a = m.faces[static_cast<std::size_t>(f)];
-        const auto& b = m.faces[static_cast<std::size_t>(g)];
+        const auto& a = m.faces[to_size(f)];
+        const auto& b = m.faces[to_size(g)];
         for (index_t x : a)
           for (index_t y : b)
             if (x == y) return true;
@@ -113,8 +111,7 @@ bool self_intersects(const tri_mesh& m) {
 inline vec3 vector_area(const tri_mesh& m, const std::vector<index_t>& loop) {
   vec3 a;
   for (std::size_t i = 0; i < loop.size(); ++i)
-    a += cross(m.positions[static_cast<std::size_t>(loop[i])],
-               m.positions[static_cast<std::size_t>(loop[(i + 1) % loop.size()])]);
+    a += cross(m.positions[to_size(loop[i])], m.positions[to_size(loop[(i + 1) % loop.size()])]);
   return a * 0.5;
 }
 
@@ -127,8 +124,7 @@ void stitch_loops(tri_mesh& m, const std::vector<index_t>& a, std::vector<index_
   std::size_t start = 0;
   double best = std::numeric_limits<double>::infinity();
   for (std::size_t k = 0; k < nb; ++k) {
-    const double d =
-        squared_norm(m.positions[static_cast<std::size_t>(b[k])] - m.positions[static_cast<std::size_t>(a[0])]);
+    const double d = squared_norm(m.positions[to_size(b[k])] - m.positions[to_size(a[0])]);
     if (d < best) {
       best = d;
       start = k;
@@ -136,7 +132,7 @@ void stitch_loops(tri_mesh& m, const std::vector<index_t>& a, std::vector<index_
   }
   auto A = [&](std::size_t i) { return a[i % na]; };
   auto B = [&](std::size_t k) { return b[(start + k) % nb]; };
-  auto P = [&](index_t v) { return m.positions[static_cast<std::size_t>(v)]; };
+  auto P = [&](index_t v) { return m.positions[to_size(v)]; };
   std::size_t i = 0, k = 0;
   while (i < na || k < nb) {
     const bool adv_a =
@@ -161,8 +157,8 @@ void smooth_seam(texture_element& out, const std::vector<index_t>& seam_vertices
   std::vector<std::vector<index_t>> nbr(nv);
   for (const auto& f : out.mesh.faces)
     for (int k = 0; k < 3; ++k) {
-      nbr[static_cast<std::size_t>(f[static_cast<std::size_t>(k)])].push_back(f[static_cast<std::size_t>((k + 1) % 3)]);
-      nbr[static_cast<std::size_t>(f[static_cast<std::size_t>((k + 1) % 3)])].push_back(f[static_cast<std::size_t>(k)]);
+      nbr[to_size(f[to_size(k)])].push_back(f[to_size((k + 1) % 3)]);
+      nbr[to_size(f[to_size((k + 1) % 3)])].push_back(f[to_size(k)]);
     }
   for (auto& n : nbr) {
     std::sort(n.begin(), n.end());
@@ -170,13 +166,13 @@ void smooth_seam(texture_element& out, const std::vector<index_t>& seam_vertices
   }
   std::vector<int> ring(nv, -1);
   std::vector<index_t> frontier = seam_vertices;
-  for (index_t v : frontier) ring[static_cast<std::size_t>(v)] = 0;
+  for (index_t v : frontier) ring[to_size(v)] = 0;
   for (int r = 1; r <= rings; ++r) {
     std::vector<index_t> next;
     for (index_t v : frontier)
-      for (index_t w : nbr[static_cast<std::size_t>(v)])
-        if (ring[static_cast<std::size_t>(w)] < 0) {
-          ring[static_cast<std::size_t>(w)] = r;
+      for (index_t w : nbr[to_size(v)])
+        if (ring[to_size(w)] < 0) {
+          ring[to_size(w)] = r;
           next.push_back(w);
         }
     frontier = std::move(next);
@@ -186,14 +182,14 @@ void smooth_seam(texture_element& out, const std::vector<index_t>& seam_vertices
   for (std::size_t v = 0; v < nv; ++v) {
     if (ring[v] <= 0 || nbr[v].empty()) continue;
     vec3 avg;
-    for (index_t w : nbr[v]) avg += out.mesh.positions[static_cast<std::size_t>(w)];
+    for (index_t w : nbr[v]) avg += out.mesh.positions[to_size(w)];
     delta[v] = out.mesh.positions[v] - avg / double(nbr[v].size());
   }
   for (int sweep = 0; sweep < 30; ++sweep)
     for (std::size_t v = 0; v < nv; ++v) {
       if (ring[v] < 0 || out.fixed[v] || bverts[v] || nbr[v].empty()) continue;
       vec3 avg;
-      for (index_t w : nbr[v]) avg += out.mesh.positions[static_cast<std::size_t>(w)];
+      for (index_t w : nbr[v]) avg += out.mesh.positions[to_size(w)];
       out.mesh.positions[v] = avg / double(nbr[v].size()) + delta[v];
     }
 }
@@ -222,14 +218,13 @@ std::optional<texture_element> join_cut_paths(const texture_element& ct, const t
   out.mesh.append(ki);
   out.fixed.assign(out.mesh.positions.size(), 0);
   for (std::size_t v = 0; v < map_t.size(); ++v)
-    if (map_t[v] >= 0 && v < ct.fixed.size() && ct.fixed[v]) out.fixed[static_cast<std::size_t>(map_t[v])] = 1;
+    if (map_t[v] >= 0 && v < ct.fixed.size() && ct.fixed[v]) out.fixed[to_size(map_t[v])] = 1;
   for (std::size_t v = 0; v < map_in.size(); ++v)
-    if (map_in[v] >= 0 && v < cin.fixed.size() && cin.fixed[v])
-      out.fixed[static_cast<std::size_t>(base + map_in[v])] = 1;
+    if (map_in[v] >= 0 && v < cin.fixed.size() && cin.fixed[v]) out.fixed[to_size(base + map_in[v])] = 1;
   out.border = ct.border | cin.border;  // B(C) = B(C1) u B(C2)
   auto loop_centroid = [&](const std::vector<index_t>& l, index_t off) {
     vec3 c;
-    for (index_t v : l) c += out.mesh.positions[static_cast<std::size_t>(v + off)];
+    for (index_t v : l) c += out.mesh.positions[to_size(v + off)];
     return c / double(l.size());
   };
   std::vector<std::tuple<double, std::size_t, std::size_t>> cand;

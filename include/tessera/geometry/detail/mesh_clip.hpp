@@ -40,16 +40,16 @@ plane_split split_mesh_by_plane(const tri_mesh& m, int axis, double value, doubl
   std::vector<index_t> map_below(nv, -1), map_above(nv, -1);
   std::map<std::pair<index_t, index_t>, std::pair<index_t, index_t>> cut;  // edge -> (below id, above id)
   auto vid = [&](tri_mesh& h, std::vector<index_t>& map, index_t v) {
-    auto& id = map[static_cast<std::size_t>(v)];
-    if (id < 0) id = h.add_vertex(pos[static_cast<std::size_t>(v)]);
+    auto& id = map[to_size(v)];
+    if (id < 0) id = h.add_vertex(pos[to_size(v)]);
     return id;
   };
   auto cut_vertex = [&](index_t a, index_t b, bool above) {
     const auto key = std::minmax(a, b);
     auto it = cut.find({key.first, key.second});
     if (it == cut.end()) {
-      const vec3 pa = pos[static_cast<std::size_t>(key.first)], pb = pos[static_cast<std::size_t>(key.second)];
-      const double sa = s[static_cast<std::size_t>(key.first)], sb = s[static_cast<std::size_t>(key.second)];
+      const vec3 pa = pos[to_size(key.first)], pb = pos[to_size(key.second)];
+      const double sa = s[to_size(key.first)], sb = s[to_size(key.second)];
       vec3 p = pa + (pb - pa) * (sa / (sa - sb));
       p[axis] = value;
       it = cut.insert({{key.first, key.second}, {out.below.add_vertex(p), out.above.add_vertex(p)}}).first;
@@ -57,8 +57,7 @@ plane_split split_mesh_by_plane(const tri_mesh& m, int axis, double value, doubl
     return above ? it->second.second : it->second.first;
   };
   for (const auto& f : m.faces) {
-    const double d[3] = {s[static_cast<std::size_t>(f[0])], s[static_cast<std::size_t>(f[1])],
-                         s[static_cast<std::size_t>(f[2])]};
+    const double d[3] = {s[to_size(f[0])], s[to_size(f[1])], s[to_size(f[2])]};
     const bool any_pos = d[0] > 0 || d[1] > 0 || d[2] > 0, any_neg = d[0] < 0 || d[1] < 0 || d[2] < 0;
     if (!any_neg) {  // all >= 0 (all on the plane counts as above)
       out.above.add_face(vid(out.above, map_above, f[0]), vid(out.above, map_above, f[1]),
@@ -77,8 +76,7 @@ plane_split split_mesh_by_plane(const tri_mesh& m, int axis, double value, doubl
     if (r < 0)
       for (int k = 0; k < 3; ++k)
         if ((d[k] > 0) != (d[(k + 1) % 3] > 0) && (d[k] > 0) != (d[(k + 2) % 3] > 0)) r = k;
-    const index_t v0 = f[static_cast<std::size_t>(r)], v1 = f[static_cast<std::size_t>((r + 1) % 3)],
-                  v2 = f[static_cast<std::size_t>((r + 2) % 3)];
+    const index_t v0 = f[to_size(r)], v1 = f[to_size((r + 1) % 3)], v2 = f[to_size((r + 2) % 3)];
     const double d0 = d[r], d1 = d[(r + 1) % 3];
     if (d0 == 0) {
       // v0 on the plane, v1 and v2 on opposite sides: one triangle each side
@@ -114,7 +112,7 @@ bool boundary_loops(const tri_mesh& m, std::vector<std::vector<index_t>>& loops)
   loops.clear();
   std::map<std::pair<index_t, index_t>, int> he;
   for (const auto& f : m.faces)
-    for (int k = 0; k < 3; ++k) ++he[{f[static_cast<std::size_t>(k)], f[static_cast<std::size_t>((k + 1) % 3)]}];
+    for (int k = 0; k < 3; ++k) ++he[{f[to_size(k)], f[to_size((k + 1) % 3)]}];
   std::map<index_t, index_t> next;
   for (const auto& [e, count] : he) {
     if (he.count({e.second, e.first})) continue;
@@ -145,13 +143,12 @@ bool ear_clip(const std::vector<vec2>& poly, std::vector<std::array<index_t, 3>>
   const auto n = static_cast<index_t>(poly.size());
   if (n < 3) return false;
   double area2 = 0;
-  for (index_t i = 0; i < n; ++i)
-    area2 += cross(poly[static_cast<std::size_t>(i)], poly[static_cast<std::size_t>((i + 1) % n)]);
+  for (index_t i = 0; i < n; ++i) area2 += cross(poly[to_size(i)], poly[to_size((i + 1) % n)]);
   if (!(std::abs(area2) > 0)) return false;
   const double sign = area2 > 0 ? 1.0 : -1.0;
-  std::vector<index_t> idx(static_cast<std::size_t>(n));
-  for (index_t i = 0; i < n; ++i) idx[static_cast<std::size_t>(i)] = i;
-  auto P = [&](index_t i) { return poly[static_cast<std::size_t>(i)]; };
+  std::vector<index_t> idx(to_size(n));
+  for (index_t i = 0; i < n; ++i) idx[to_size(i)] = i;
+  auto P = [&](index_t i) { return poly[to_size(i)]; };
   std::size_t guard = 0;
   while (idx.size() > 3) {
     bool clipped = false;
@@ -187,7 +184,7 @@ bool ear_clip(const std::vector<vec2>& poly, std::vector<std::array<index_t, 3>>
       idx.erase(idx.begin() + static_cast<std::ptrdiff_t>(i));
       clipped = true;
     }
-    if (!clipped || ++guard > static_cast<std::size_t>(4 * n)) return false;
+    if (!clipped || ++guard > to_size(4 * n)) return false;
   }
   tris.push_back({idx[0], idx[1], idx[2]});
   return true;
@@ -205,14 +202,14 @@ bool cap_plane_loops(tri_mesh& m, int axis, double value, index_t* capped = null
   std::vector<std::vector<index_t>> on_plane;
   for (auto& l : loops) {
     bool all = true;
-    for (index_t v : l) all = all && m.positions[static_cast<std::size_t>(v)][axis] == value;
+    for (index_t v : l) all = all && m.positions[to_size(v)][axis] == value;
     if (all) on_plane.push_back(l);
   }
   // nested loops (holes) are not supported
   auto inside = [&](vec2 p, const std::vector<index_t>& l) {
     bool in = false;
     for (std::size_t i = 0, j = l.size() - 1; i < l.size(); j = i++) {
-      const vec3 pi = m.positions[static_cast<std::size_t>(l[i])], pj = m.positions[static_cast<std::size_t>(l[j])];
+      const vec3 pi = m.positions[to_size(l[i])], pj = m.positions[to_size(l[j])];
       if ((pi[a1] > p.y) != (pj[a1] > p.y) && p.x < (pj[a0] - pi[a0]) * (p.y - pi[a1]) / (pj[a1] - pi[a1]) + pi[a0])
         in = !in;
     }
@@ -221,7 +218,7 @@ bool cap_plane_loops(tri_mesh& m, int axis, double value, index_t* capped = null
   for (std::size_t i = 0; i < on_plane.size(); ++i)
     for (std::size_t j = 0; j < on_plane.size(); ++j)
       if (i != j) {
-        const vec3 p = m.positions[static_cast<std::size_t>(on_plane[i][0])];
+        const vec3 p = m.positions[to_size(on_plane[i][0])];
         if (inside({p[a0], p[a1]}, on_plane[j])) return false;
       }
   std::vector<std::array<index_t, 3>> added;
@@ -229,13 +226,10 @@ bool cap_plane_loops(tri_mesh& m, int axis, double value, index_t* capped = null
     // the cap runs the loop backwards so that its half-edges oppose the boundary half-edges
     std::vector<index_t> rev(l.rbegin(), l.rend());
     std::vector<vec2> poly;
-    for (index_t v : rev)
-      poly.push_back({m.positions[static_cast<std::size_t>(v)][a0], m.positions[static_cast<std::size_t>(v)][a1]});
+    for (index_t v : rev) poly.push_back({m.positions[to_size(v)][a0], m.positions[to_size(v)][a1]});
     std::vector<std::array<index_t, 3>> tris;
     if (!ear_clip(poly, tris)) return false;
-    for (const auto& t : tris)
-      added.push_back({rev[static_cast<std::size_t>(t[0])], rev[static_cast<std::size_t>(t[1])],
-                       rev[static_cast<std::size_t>(t[2])]});
+    for (const auto& t : tris) added.push_back({rev[to_size(t[0])], rev[to_size(t[1])], rev[to_size(t[2])]});
   }
   for (const auto& t : added) m.add_face(t[0], t[1], t[2]);
   if (capped) *capped += static_cast<index_t>(on_plane.size());
@@ -249,10 +243,10 @@ std::vector<index_t> compact_vertices(tri_mesh& m) {
   std::vector<vec3> pos;
   for (auto& f : m.faces)
     for (auto& v : f) {
-      auto& id = map[static_cast<std::size_t>(v)];
+      auto& id = map[to_size(v)];
       if (id < 0) {
         id = static_cast<index_t>(pos.size());
-        pos.push_back(m.positions[static_cast<std::size_t>(v)]);
+        pos.push_back(m.positions[to_size(v)]);
       }
       v = id;
     }

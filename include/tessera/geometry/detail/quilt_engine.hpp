@@ -68,7 +68,7 @@ class basic_quilt_engine {
     cell_ = ex.cell_size();
     cols_ = std::max<index_t>(1, static_cast<index_t>(std::ceil(domain.width() / cell_ - cell_rounding)));
     rows_ = std::max<index_t>(1, static_cast<index_t>(std::ceil(domain.height() / cell_ - cell_rounding)));
-    occ_.assign(static_cast<std::size_t>(cols_ * rows_), 0);
+    occ_.assign(to_size(cols_ * rows_), 0);
     const vec3 ext = ex.bounds().extent();
     margin_ = 0.25 * ex.element_diameter();
     const double room = std::min(ext.x, ext.y) - 2 * margin_;
@@ -87,7 +87,7 @@ class basic_quilt_engine {
       for (index_t i = 0; i < cols_; ++i) {
         const vec3 c{domain_.x0 + (i + 0.5) * cell_, domain_.y0 + (j + 0.5) * cell_, 0};
         for (const xy_rect& r : occupied)
-          if (r.contains(c)) occ_[static_cast<std::size_t>(j * cols_ + i)] = 1;
+          if (r.contains(c)) occ_[to_size(j * cols_ + i)] = 1;
       }
   }
 
@@ -109,8 +109,8 @@ class basic_quilt_engine {
       const vec3 t = find_translation(window, stats_.patches);
       place_patch(t, window);
       for (index_t j = j0; j < j1; ++j)
-        for (index_t i = i0; i < i1; ++i) occ_[static_cast<std::size_t>(j * cols_ + i)] = 1;
-      occ_[static_cast<std::size_t>(seed)] = 1;
+        for (index_t i = i0; i < i1; ++i) occ_[to_size(j * cols_ + i)] = 1;
+      occ_[to_size(seed)] = 1;
       ++stats_.patches;
     }
     prog.report(1.0, "mesh quilting");
@@ -152,7 +152,7 @@ class basic_quilt_engine {
         cands.push_back({domain_.x0 + i * cell_ - eb.min.x, domain_.y0 + j * cell_ - eb.min.y, 0});
     const counter_rng rng(p_.seed, p_.stream);
     const std::vector<sample> s = samples_in(w);
-    if (s.empty()) return cands[static_cast<std::size_t>(rng.below(cands.size(), 1, patch))];
+    if (s.empty()) return cands[to_size(rng.below(cands.size(), 1, patch))];
     const auto& normals = ex_.face_normals();
     const double saturated = (1 + cell_) * (1 + p_.lambda);
     auto cost = [&](vec3 t, double limit, std::size_t stride) {
@@ -165,7 +165,7 @@ class basic_quilt_engine {
         const auto [f, c] = ex_.bvh().min_cost_face(
             [&](index_t face, const std::array<vec3, 3>& tri) {
               const double d = norm(closest_point_on_triangle(x, tri[0], tri[1], tri[2]).point - x);
-              return (1 + d) * (1 + p_.lambda * (1 - dot(q.n, normals[static_cast<std::size_t>(face)])));  // eq. 1
+              return (1 + d) * (1 + p_.lambda * (1 - dot(q.n, normals[to_size(face)])));  // eq. 1
             },
             [&](const aabb& b) {
               const double d2 = squared_distance_to_box(x, b);
@@ -183,7 +183,7 @@ class basic_quilt_engine {
     auto search = [&](const std::vector<std::size_t>& which, std::size_t stride, std::vector<double>& costs) {
       std::atomic<double> best{std::numeric_limits<double>::infinity()};
       pfor_(static_cast<index_t>(which.size()), [&](index_t i) {
-        const std::size_t c = which[static_cast<std::size_t>(i)];
+        const std::size_t c = which[to_size(i)];
         const double v = cost(cands[c], best.load(std::memory_order_relaxed) * (1 + p_.tolerance), stride);
         costs[c] = v;
         double cur = best.load(std::memory_order_relaxed);
@@ -198,8 +198,7 @@ class basic_quilt_engine {
     if (s.size() >= 4 * coarse_stride && cands.size() > finalists) {
       // rank by the coarse cost without cut-offs (exact partial sums)
       pfor_(static_cast<index_t>(cands.size()), [&](index_t c) {
-        costs[static_cast<std::size_t>(c)] =
-            cost(cands[static_cast<std::size_t>(c)], std::numeric_limits<double>::infinity(), coarse_stride);
+        costs[to_size(c)] = cost(cands[to_size(c)], std::numeric_limits<double>::infinity(), coarse_stride);
       });
       std::stable_sort(all.begin(), all.end(), [&](std::size_t a, std::size_t b) { return costs[a] < costs[b]; });
       all.resize(finalists);
@@ -210,7 +209,7 @@ class basic_quilt_engine {
     std::vector<std::size_t> good;
     for (std::size_t c : all)
       if (costs[c] <= best * (1 + p_.tolerance)) good.push_back(c);
-    vec3 t = cands[good[static_cast<std::size_t>(rng.below(good.size(), 2, patch))]];
+    vec3 t = cands[good[to_size(rng.below(good.size(), 2, patch))]];
     if (p_.icp) {
       std::vector<vec3> pts;
       for (const sample& q : s) pts.push_back(q.p);
@@ -249,7 +248,7 @@ class basic_quilt_engine {
   }
   [[nodiscard]] bool occupied(vec3 p) const {
     const index_t c = cell_of(p);
-    return c >= 0 && occ_[static_cast<std::size_t>(c)];
+    return c >= 0 && occ_[to_size(c)];
   }
 
   // §3.3.2: the unoccupied cell with the most occupied neighbours (ties: smallest index)
@@ -258,14 +257,12 @@ class basic_quilt_engine {
     int best_n = -1;
     for (index_t j = 0; j < rows_; ++j)
       for (index_t i = 0; i < cols_; ++i) {
-        if (occ_[static_cast<std::size_t>(j * cols_ + i)]) continue;
+        if (occ_[to_size(j * cols_ + i)]) continue;
         int n = 0;
         for (int dj = -1; dj <= 1; ++dj)
           for (int di = -1; di <= 1; ++di) {
             const index_t a = i + di, b = j + dj;
-            if ((di || dj) && a >= 0 && b >= 0 && a < cols_ && b < rows_ &&
-                occ_[static_cast<std::size_t>(b * cols_ + a)])
-              ++n;
+            if ((di || dj) && a >= 0 && b >= 0 && a < cols_ && b < rows_ && occ_[to_size(b * cols_ + a)]) ++n;
           }
         if (n > best_n) {
           best_n = n;
@@ -290,7 +287,7 @@ class basic_quilt_engine {
     if (static_cast<int>(s.size()) > p_.max_samples) {
       std::vector<sample> sub;
       const double step = double(s.size()) / p_.max_samples;
-      for (int i = 0; i < p_.max_samples; ++i) sub.push_back(s[static_cast<std::size_t>(i * step)]);
+      for (int i = 0; i < p_.max_samples; ++i) sub.push_back(s[to_size(i * step)]);
       s = std::move(sub);
     }
     return s;
@@ -368,11 +365,11 @@ class basic_quilt_engine {
     const double in = long_clip_inset_cells * cell_;
     const xy_rect inset{domain_.x0 + in, domain_.y0 + in, domain_.x1 - in, domain_.y1 - in};
     for (index_t e = 0; e < ex_.num_elements(); ++e) {
-      aabb box = ex_.elements()[static_cast<std::size_t>(e)].box;
+      aabb box = ex_.elements()[to_size(e)].box;
       box.min += t;
       box.max += t;
       if (!w.overlaps(box)) continue;
-      tri_mesh moved = ex_.elements()[static_cast<std::size_t>(e)].mesh;
+      tri_mesh moved = ex_.elements()[to_size(e)].mesh;
       for (vec3& q : moved.positions) q += t;
       std::vector<texture_element> pieces;
       if (ex_.is_long(e)) {

@@ -47,10 +47,10 @@ tile_frame_result build_frame(const std::vector<edge_strip>& hs, const std::vect
     std::vector<texture_element> elems;
     xy_rect window;
   };
-  const part parts[4] = {{place_half(hs[static_cast<std::size_t>(e.south)], true, side_south, 0), {0, 0, w, hh}},
-                         {place_half(vs[static_cast<std::size_t>(e.east)], false, side_east, w), {w - hh, 0, w, w}},
-                         {place_half(hs[static_cast<std::size_t>(e.north)], false, side_north, w), {0, w - hh, w, w}},
-                         {place_half(vs[static_cast<std::size_t>(e.west)], true, side_west, 0), {0, 0, hh, w}}};
+  const part parts[4] = {{place_half(hs[to_size(e.south)], true, side_south, 0), {0, 0, w, hh}},
+                         {place_half(vs[to_size(e.east)], false, side_east, w), {w - hh, 0, w, w}},
+                         {place_half(hs[to_size(e.north)], false, side_north, w), {0, w - hh, w, w}},
+                         {place_half(vs[to_size(e.west)], true, side_west, 0), {0, 0, hh, w}}};
   std::vector<texture_element>& out = r.frame.elements;
   std::vector<int> owner;  // which part each frame element came from
   for (int i = 0; i < 4; ++i)

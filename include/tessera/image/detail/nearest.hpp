@@ -164,7 +164,7 @@ class lower_bound_knn {
                           std::vector<double>& dists) const {
     out.clear();
     if (!tree_ || k == 0) return;
-    pool = std::min(std::max(pool, k), static_cast<std::size_t>(data_->n));
+    pool = std::min(std::max(pool, k), to_size(data_->n));
     ids.resize(pool);
     dists.resize(pool);
     nanoflann::KNNResultSet<double, std::uint32_t> rs(pool);
@@ -189,9 +189,9 @@ class lower_bound_knn {
     std::vector<double> points;
     index_t n = 0;
     int d = 0;
-    [[nodiscard]] std::size_t kdtree_get_point_count() const { return static_cast<std::size_t>(n); }
+    [[nodiscard]] std::size_t kdtree_get_point_count() const { return to_size(n); }
     [[nodiscard]] double kdtree_get_pt(std::uint32_t i, std::size_t dim) const {
-      return points[static_cast<std::size_t>(i) * static_cast<std::size_t>(d) + dim];
+      return points[to_size(i) * to_size(d) + dim];
     }
     template <class BBox>
     bool kdtree_get_bbox(BBox&) const {

@@ -112,7 +112,7 @@ struct strip_family {
     }
     basis = pca_basis(matrix(sample), dims);
     d = static_cast<int>(basis.cols());
-    projected.assign(static_cast<std::size_t>(n * d), 0.0);
+    projected.assign(to_size(n * d), 0.0);
     constexpr index_t block = 128;
     exec.parallel_for(0, (n + block - 1) / block, [&](index_t b) {
       const index_t first = b * block, last = std::min(n, first + block);
@@ -140,7 +140,7 @@ void propagate_sets(index_t nx, index_t ny, index_t k, std::vector<std::uint32_t
                     Exact&& exact, Refill&& refill, Ex&& exec) {
   std::vector<std::uint32_t> new_ids(ids.size());
   std::vector<double> new_dists(dists.size());
-  const auto kk = static_cast<std::size_t>(k);
+  const auto kk = to_size(k);
   exec.parallel_for(0, ny, [&](index_t y) {
     std::vector<neighbor> best;
     std::vector<std::uint32_t> cand;
@@ -148,15 +148,15 @@ void propagate_sets(index_t nx, index_t ny, index_t k, std::vector<std::uint32_t
       const index_t a = y * nx + x;
       best.clear();
       for (index_t r = 0; r < k; ++r)
-        if (!std::isnan(dists[static_cast<std::size_t>(a * k + r)]))
-          best.push_back({dists[static_cast<std::size_t>(a * k + r)], ids[static_cast<std::size_t>(a * k + r)]});
+        if (!std::isnan(dists[to_size(a * k + r)]))
+          best.push_back({dists[to_size(a * k + r)], ids[to_size(a * k + r)]});
       cand.clear();
       constexpr index_t shifts[4][2] = {{-1, 0}, {1, 0}, {0, -1}, {0, 1}};
       for (const auto& d : shifts) {
         const index_t qx = x + d[0], qy = y + d[1];
         if (qx < 0 || qy < 0 || qx >= nx || qy >= ny) continue;
         for (index_t r = 0; r < k; ++r) {
-          const auto at = static_cast<std::size_t>((qy * nx + qx) * k + r);
+          const auto at = to_size((qy * nx + qx) * k + r);
           if (std::isnan(dists[at])) continue;
           const index_t b = ids[at], bx = b % nx - d[0], by = b / nx - d[1];
           if (bx >= 0 && by >= 0 && bx < nx && by < ny) cand.push_back(static_cast<std::uint32_t>(by * nx + bx));
@@ -172,8 +172,8 @@ void propagate_sets(index_t nx, index_t ny, index_t k, std::vector<std::uint32_t
       if (best.size() < kk) refill(a, best);
       TESSERA_ASSERT(best.size() == kk);
       for (index_t r = 0; r < k; ++r) {
-        new_ids[static_cast<std::size_t>(a * k + r)] = best[static_cast<std::size_t>(r)].index;
-        new_dists[static_cast<std::size_t>(a * k + r)] = best[static_cast<std::size_t>(r)].dist;
+        new_ids[to_size(a * k + r)] = best[to_size(r)].index;
+        new_dists[to_size(a * k + r)] = best[to_size(r)].dist;
       }
     }
   });
@@ -223,7 +223,7 @@ inline void pixel_errors(const T* a, const T* b, index_t n, double* out, index_t
 template <class T, int C>
 void min_error_seam(const image_buffer<T, C>& img, index_t lx, index_t ly, index_t rx, index_t ry, index_t offset,
                     index_t v, index_t len, bool transpose, std::uint8_t* cut, seam_scratch& scratch) {
-  scratch.err.resize(static_cast<std::size_t>(len * v));
+  scratch.err.resize(to_size(len * v));
   double* e = scratch.err.data();
   if (!transpose) {
     for (index_t r = 0; r < len; ++r)
@@ -236,7 +236,7 @@ void min_error_seam(const image_buffer<T, C>& img, index_t lx, index_t ly, index
   // branches and vectorizes
   const index_t stride = v + 2;
   constexpr double inf = std::numeric_limits<double>::infinity();
-  scratch.cost.resize(static_cast<std::size_t>(len * stride));
+  scratch.cost.resize(to_size(len * stride));
   double* m = scratch.cost.data();
   for (index_t r = 0; r < len; ++r) m[r * stride] = m[r * stride + v + 1] = inf;
   for (index_t c = 0; c < v; ++c) m[c + 1] = e[c];

@@ -50,11 +50,11 @@ struct pitch_correlation {
   pitch_correlation(const image_buffer<T, C>& ex, index_t pw, index_t ph)
       : mx(std::min(pw, ex.width() - 1)), my(std::min(ph, ex.height() - 1)) {
     const index_t W = ex.width(), H = ex.height();
-    std::vector<double> grey(static_cast<std::size_t>(W * H));
+    std::vector<double> grey(to_size(W * H));
     for (index_t i = 0; i < W * H; ++i) {
       pixel<T, C> px;
-      for (int c = 0; c < C; ++c) px[static_cast<std::size_t>(c)] = ex.data()[i * C + c];
-      grey[static_cast<std::size_t>(i)] = convert_pixel<float>(px);
+      for (int c = 0; c < C; ++c) px[to_size(c)] = ex.data()[i * C + c];
+      grey[to_size(i)] = convert_pixel<float>(px);
     }
     corr = correlation_field(grey.data(), W, H, 1, mx, my);
   }
@@ -64,7 +64,7 @@ struct pitch_correlation {
       dx = -dx;
       dy = -dy;
     }
-    const double r = corr[static_cast<std::size_t>(dy * (2 * mx + 1) + dx + mx)];
+    const double r = corr[to_size(dy * (2 * mx + 1) + dx + mx)];
     return std::isnan(r) ? -1.0 : r;
   }
 };
@@ -103,7 +103,7 @@ std::vector<side_sets> compatible_sets(const image_buffer<T, C>& ex, const patch
   double max_value = 0;
   for (index_t i = 0; i < W * H * C; ++i) max_value = std::max(max_value, std::abs(static_cast<double>(ex.data()[i])));
   auto make_points = [&](const strip_family<T, C>& f, index_t dx, index_t dy) {
-    std::vector<double> pts(static_cast<std::size_t>(n * f.d));  // one point per patch: its strip at (x + dx, y + dy)
+    std::vector<double> pts(to_size(n * f.d));  // one point per patch: its strip at (x + dx, y + dy)
     for (index_t p = 0; p < n; ++p) {
       const double* src = f.projection(g.x(p) + dx, g.y(p) + dy);
       std::copy(src, src + f.d, pts.data() + p * f.d);
@@ -125,12 +125,12 @@ std::vector<side_sets> compatible_sets(const image_buffer<T, C>& ex, const patch
     using knn = dependent_knn<-1, T>;
     const knn8 index8 = fixed ? knn8(make_points(f, data_dx, data_dy), n, 8, scale) : knn8();
     const knn index = fixed ? knn() : knn(make_points(f, data_dx, data_dy), n, f.d, scale);
-    auto& out = sets[static_cast<std::size_t>(side)].ids;
-    auto& dist = sets[static_cast<std::size_t>(side)].dist;
-    out.assign(static_cast<std::size_t>(n * k), 0);
-    dist.assign(static_cast<std::size_t>(n * k), 0.0);
+    auto& out = sets[to_size(side)].ids;
+    auto& dist = sets[to_size(side)].dist;
+    out.assign(to_size(n * k), 0);
+    dist.assign(to_size(n * k), 0.0);
     auto exact = [&](index_t a, index_t b, double bound) { return strip_error(ex, g, a, b, side, bound); };
-    const auto kk = static_cast<std::size_t>(k), pool = static_cast<std::size_t>(o.pool);
+    const auto kk = to_size(k), pool = to_size(o.pool);
     auto search = [&](index_t a, std::vector<neighbor>& best, std::vector<std::uint32_t>& ids,
                       std::vector<double>& ds) {
       const double* q = f.projection(g.x(a) + query_dx, g.y(a) + query_dy);
@@ -159,9 +159,8 @@ std::vector<side_sets> compatible_sets(const image_buffer<T, C>& ex, const patch
             best.clear();
           for (index_t r = 0; r < k; ++r) {
             const bool has = r < static_cast<index_t>(best.size());
-            out[static_cast<std::size_t>(a * k + r)] = has ? best[static_cast<std::size_t>(r)].index : 0;
-            dist[static_cast<std::size_t>(a * k + r)] =
-                has ? best[static_cast<std::size_t>(r)].dist : std::numeric_limits<double>::quiet_NaN();
+            out[to_size(a * k + r)] = has ? best[to_size(r)].index : 0;
+            dist[to_size(a * k + r)] = has ? best[to_size(r)].dist : std::numeric_limits<double>::quiet_NaN();
           }
         }
       });
@@ -191,13 +190,13 @@ std::vector<std::uint8_t> seam_table(const image_buffer<T, C>& ex, const patch_g
                                      const std::vector<std::uint8_t>* mirror_seams = nullptr) {
   const bool vert = side == 1 || side == 3, a_first = side == 1 || side == 2;
   const index_t len = vert ? g.ph + g.v : g.pw + g.v;
-  std::vector<std::uint8_t> seams(static_cast<std::size_t>(g.nx * g.ny * k * len), 0);
+  std::vector<std::uint8_t> seams(to_size(g.nx * g.ny * k * len), 0);
   exec.parallel_for(0, g.ny, [&](index_t y) {
     seam_scratch scratch;
     for (index_t x = 0; x < g.nx; ++x) {
       const index_t a = y * g.nx + x;
       for (index_t r = 0; r < k; ++r) {
-        const index_t b = ids[static_cast<std::size_t>(a * k + r)];
+        const index_t b = ids[to_size(a * k + r)];
         std::uint8_t* out = seams.data() + (a * k + r) * len;
         if (mirror_ids != nullptr && !a_first) {
           const std::uint32_t* set = mirror_ids->data() + b * k;

@@ -59,7 +59,7 @@ std::vector<std::uint32_t> phase_group(const patch_model<T, C>& m, std::uint64_t
   for (index_t p = 0; p < m.num_phases(); ++p)
     if (!m.phase_patches(p).empty()) nonempty.push_back(p);
   const counter_rng rng(seed, stream_id("patch.phase"));
-  const index_t center = nonempty[static_cast<std::size_t>(rng.below(nonempty.size()))];
+  const index_t center = nonempty[to_size(rng.below(nonempty.size()))];
   const index_t cx = center % pw, cy = center / pw;
   std::vector<std::uint32_t> group;
   auto add = [&](index_t dx, index_t dy) {
@@ -101,8 +101,8 @@ std::pair<std::uint32_t, bool> fill_cell(const patch_model<T, C>& m, std::uint32
   for (int s = 0; s < 4; ++s) {
     const auto set = m.compatible_by_index(owners[s], facing[s]);
     for (index_t r = 0; r < k; ++r) {
-      ids[s][r] = set[static_cast<std::size_t>(r)].patch;
-      errs[s][r] = set[static_cast<std::size_t>(r)].error;
+      ids[s][r] = set[to_size(r)].patch;
+      errs[s][r] = set[to_size(r)].error;
     }
     ids[s][k] = none;
     errs[s][k] = 0;
@@ -161,15 +161,14 @@ patch_plan make_plan(const patch_model<T, C>& m, index_t ox, index_t oy, index_t
   const counter_rng place_rng(seed, stream_id("patch.place")), fill_rng(seed, stream_id("patch.fill"));
   // distributed cells first, on a grid one cell wider on every side (the vacant cells' neighbours)
   const index_t gx = p.ncx + 2, gy = p.ncy + 2;
-  std::vector<std::uint32_t> grid(static_cast<std::size_t>(gx * gy));
+  std::vector<std::uint32_t> grid(to_size(gx * gy));
   exec.parallel_for(0, gy, [&](index_t row) {
     const index_t j = p.cj0 - 1 + row;
     for (index_t col = (p.ci0 - 1 + j) & 1; col < gx; col += 2)  // (i + j) even
-      grid[static_cast<std::size_t>(row * gx + col)] =
-          group[static_cast<std::size_t>(place_rng.below(group.size(), p.ci0 - 1 + col, j))];
+      grid[to_size(row * gx + col)] = group[to_size(place_rng.below(group.size(), p.ci0 - 1 + col, j))];
   });
-  std::vector<std::uint32_t> patch(static_cast<std::size_t>(ncells));
-  std::vector<index_t> empty_count(static_cast<std::size_t>(p.ncy), 0);
+  std::vector<std::uint32_t> patch(to_size(ncells));
+  std::vector<index_t> empty_count(to_size(p.ncy), 0);
   exec.parallel_for(0, p.ncy, [&](index_t cj) {
     const index_t j = p.cj0 + cj;
     const std::uint32_t* up = grid.data() + cj * gx + 1;  // row cj - 1 of the plan, column 0 at index 0
@@ -183,17 +182,17 @@ patch_plan make_plan(const patch_model<T, C>& m, index_t ox, index_t oy, index_t
       } else {
         const auto [q, was_empty] = fill_cell(m, mid[ci - 1], mid[ci + 1], up[ci], down[ci], fill_rng, i, j);
         chosen = q;
-        empty_count[static_cast<std::size_t>(cj)] += was_empty ? 1 : 0;
+        empty_count[to_size(cj)] += was_empty ? 1 : 0;
       }
-      patch[static_cast<std::size_t>(p.cell(ci, cj))] = chosen;
+      patch[to_size(p.cell(ci, cj))] = chosen;
     }
   });
-  p.sx.resize(static_cast<std::size_t>(ncells));
-  p.sy.resize(static_cast<std::size_t>(ncells));
+  p.sx.resize(to_size(ncells));
+  p.sy.resize(to_size(ncells));
   for (index_t c = 0; c < ncells; ++c) {
-    const patch_origin o = m.origin(patch[static_cast<std::size_t>(c)]);
-    p.sx[static_cast<std::size_t>(c)] = o.x;
-    p.sy[static_cast<std::size_t>(c)] = o.y;
+    const patch_origin o = m.origin(patch[to_size(c)]);
+    p.sx[to_size(c)] = o.x;
+    p.sy[to_size(c)] = o.y;
   }
   p.counts.cells = ncells;
   p.counts.phase_group = static_cast<index_t>(group.size());
@@ -204,8 +203,8 @@ patch_plan make_plan(const patch_model<T, C>& m, index_t ox, index_t oy, index_t
   if (!cut) return p;
 
   // seams: look up the pair in the compatible sets (either direction), else compute it
-  p.vseam.assign(static_cast<std::size_t>(ncells), nullptr);
-  p.hseam.assign(static_cast<std::size_t>(ncells), nullptr);
+  p.vseam.assign(to_size(ncells), nullptr);
+  p.hseam.assign(to_size(ncells), nullptr);
   auto lookup = [&](std::uint32_t first, std::uint32_t second, bool vertical) -> const std::uint8_t* {
     if (!m.has_seams()) return nullptr;
     const patch_side fwd = vertical ? patch_side::east : patch_side::south,
@@ -219,38 +218,38 @@ patch_plan make_plan(const patch_model<T, C>& m, index_t ox, index_t oy, index_t
     return nullptr;
   };
   const index_t vlen = p.ph + p.v, hlen = p.pw + p.v;
-  std::vector<index_t> voff(static_cast<std::size_t>(ncells), -1), hoff(static_cast<std::size_t>(ncells), -1);
+  std::vector<index_t> voff(to_size(ncells), -1), hoff(to_size(ncells), -1);
   index_t storage = 0;
   for (index_t cj = 0; cj < p.ncy; ++cj)
     for (index_t ci = 0; ci < p.ncx; ++ci) {
-      const auto c = static_cast<std::size_t>(p.cell(ci, cj));
+      const auto c = to_size(p.cell(ci, cj));
       if (ci > 0) {
-        p.vseam[c] = lookup(patch[static_cast<std::size_t>(p.cell(ci - 1, cj))], patch[c], true);
+        p.vseam[c] = lookup(patch[to_size(p.cell(ci - 1, cj))], patch[c], true);
         if (p.vseam[c] == nullptr) voff[c] = std::exchange(storage, storage + vlen);
       }
       if (cj > 0) {
-        p.hseam[c] = lookup(patch[static_cast<std::size_t>(p.cell(ci, cj - 1))], patch[c], false);
+        p.hseam[c] = lookup(patch[to_size(p.cell(ci, cj - 1))], patch[c], false);
         if (p.hseam[c] == nullptr) hoff[c] = std::exchange(storage, storage + hlen);
       }
     }
-  p.own_seams.assign(static_cast<std::size_t>(storage), 0);
+  p.own_seams.assign(to_size(storage), 0);
   exec.parallel_for(0, p.ncy, [&](index_t cj) {
     seam_scratch scratch;
     for (index_t ci = 0; ci < p.ncx; ++ci) {
-      const auto c = static_cast<std::size_t>(p.cell(ci, cj));
+      const auto c = to_size(p.cell(ci, cj));
       if (voff[c] >= 0) {
-        const auto l = static_cast<std::size_t>(p.cell(ci - 1, cj));
+        const auto l = to_size(p.cell(ci - 1, cj));
         min_error_seam(m.exemplar(), p.sx[l], p.sy[l], p.sx[c], p.sy[c], p.pw, p.v, vlen, false,
                        p.own_seams.data() + voff[c], scratch);
       }
       if (hoff[c] >= 0) {
-        const auto u = static_cast<std::size_t>(p.cell(ci, cj - 1));
+        const auto u = to_size(p.cell(ci, cj - 1));
         min_error_seam(m.exemplar(), p.sx[u], p.sy[u], p.sx[c], p.sy[c], p.ph, p.v, hlen, true,
                        p.own_seams.data() + hoff[c], scratch);
       }
     }
   });
-  for (std::size_t c = 0; c < static_cast<std::size_t>(ncells); ++c) {
+  for (std::size_t c = 0; c < to_size(ncells); ++c) {
     if (voff[c] >= 0) {
       p.vseam[c] = p.own_seams.data() + voff[c];
       ++p.counts.computed_seams;

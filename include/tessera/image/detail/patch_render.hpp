@@ -109,7 +109,7 @@ inline void copy_span_bytes(unsigned char* d, const unsigned char* s, std::size_
 template <class T>
 inline void copy_span(T* dst, const T* src, index_t n) noexcept {
   copy_span_bytes(reinterpret_cast<unsigned char*>(dst), reinterpret_cast<const unsigned char*>(src),
-                  static_cast<std::size_t>(n) * sizeof(T));
+                  to_size(n) * sizeof(T));
 }
 
 /// dst[i] = a[i] (1 - w) + b[i] w, rounded; one weight.
@@ -146,9 +146,9 @@ template <class T, int C>
 class plan_renderer {
  public:
   plan_renderer(const patch_plan& p, const image_buffer<T, C>& ex) : p_(p), ex_(ex), stride_(ex.width() * C) {
-    spans_.resize(static_cast<std::size_t>(p.ncy));
+    spans_.resize(to_size(p.ncy));
     for (index_t cj = 0; cj < p.ncy; ++cj) {
-      auto& row = spans_[static_cast<std::size_t>(cj)];
+      auto& row = spans_[to_size(cj)];
       index_t x = 0, i = floor_div(p.ox, p.pw), lx = p.ox - i * p.pw;
       while (x < p.w) {
         const index_t ci = i - p.ci0;
@@ -177,9 +177,9 @@ class plan_renderer {
         }
       }
     }
-    weights_.resize(static_cast<std::size_t>(p.v * C));
+    weights_.resize(to_size(p.v * C));
     for (index_t t = 0; t < p.v; ++t)
-      for (int c = 0; c < C; ++c) weights_[static_cast<std::size_t>(t * C + c)] = feather_weight<T>(t, p.v);
+      for (int c = 0; c < C; ++c) weights_[to_size(t * C + c)] = feather_weight<T>(t, p.v);
   }
 
   /// Writes output row y (0-based in the window) to dst (w * C values); tmp is scratch of the same size.
@@ -192,16 +192,16 @@ class plan_renderer {
     cell_row(cj - 1, ly + p_.ph, tmp);  // the row above overlaps this one
     cell_row(cj, ly, dst);
     if (!p_.cut) {
-      blend_span_const(dst, tmp, dst, weights_[static_cast<std::size_t>(ly * C)], p_.w * C);
+      blend_span_const(dst, tmp, dst, weights_[to_size(ly * C)], p_.w * C);
       return;
     }
     // seam cut across the rows: above the horizontal seam the upper patches win. In an overlap corner
     // the lower row's vertical seam says which column's horizontal seam applies.
-    for (const row_span& s : spans_[static_cast<std::size_t>(cj)]) {
+    for (const row_span& s : spans_[to_size(cj)]) {
       const index_t n = s.len / C;
-      const std::uint8_t* right = p_.hseam[static_cast<std::size_t>(s.cell)];
-      const std::uint8_t* left = s.b >= 0 ? p_.hseam[static_cast<std::size_t>(s.cell - 1)] : nullptr;
-      const index_t vcut = s.b >= 0 ? p_.vseam[static_cast<std::size_t>(s.cell)][ly] : 0;
+      const std::uint8_t* right = p_.hseam[to_size(s.cell)];
+      const std::uint8_t* left = s.b >= 0 ? p_.hseam[to_size(s.cell - 1)] : nullptr;
+      const index_t vcut = s.b >= 0 ? p_.vseam[to_size(s.cell)][ly] : 0;
       for (index_t k = 0; k < n; ++k) {
         const index_t t = s.lx + k;
         const bool from_left = s.b >= 0 && t < vcut;
@@ -213,19 +213,19 @@ class plan_renderer {
 
  private:
   [[nodiscard]] index_t offset(index_t cell, index_t lx) const {
-    return p_.sy[static_cast<std::size_t>(cell)] * stride_ + (p_.sx[static_cast<std::size_t>(cell)] + lx) * C;
+    return p_.sy[to_size(cell)] * stride_ + (p_.sx[to_size(cell)] + lx) * C;
   }
 
   /// One row of cell row cj at patch row r (0 <= r < ph + v), all columns of the window.
   void cell_row(index_t cj, index_t r, T* dst) const {
     const T* base = ex_.data() + r * stride_;
-    for (const row_span& s : spans_[static_cast<std::size_t>(cj)]) {
+    for (const row_span& s : spans_[to_size(cj)]) {
       if (s.b < 0) {
         copy_span(dst + s.dst, base + s.a, s.len);
       } else if (!p_.cut) {
         blend_span(dst + s.dst, base + s.a, base + s.b, weights_.data() + s.lx * C, s.len);
       } else {
-        const index_t cut = p_.vseam[static_cast<std::size_t>(s.cell)][r];
+        const index_t cut = p_.vseam[to_size(s.cell)][r];
         const index_t split = std::clamp<index_t>(cut - s.lx, 0, s.len / C) * C;
         copy_span(dst + s.dst, base + s.a, split);
         copy_span(dst + s.dst + split, base + s.b + split, s.len - split);
@@ -249,7 +249,7 @@ inline void source_of(const patch_plan& p, index_t x, index_t y, index_t& sx, in
   auto right_wins = [&](index_t cell_row, index_t r) {  // column choice in cell row cell_row at patch row r
     if (lx >= p.v) return true;
     if (!p.cut) return 2 * lx + 1 >= p.v;
-    return lx >= p.vseam[static_cast<std::size_t>(p.cell(ci, cell_row))][r];
+    return lx >= p.vseam[to_size(p.cell(ci, cell_row))][r];
   };
   bool lower = true;
   if (ly < p.v) {
@@ -257,13 +257,13 @@ inline void source_of(const patch_plan& p, index_t x, index_t y, index_t& sx, in
       lower = 2 * ly + 1 >= p.v;
     } else {
       const bool right = right_wins(cj, ly);
-      const std::uint8_t* h = p.hseam[static_cast<std::size_t>(p.cell(right ? ci : ci - 1, cj))];
+      const std::uint8_t* h = p.hseam[to_size(p.cell(right ? ci : ci - 1, cj))];
       lower = ly >= h[right ? lx : lx + p.pw];
     }
   }
   const index_t row = lower ? cj : cj - 1, r = lower ? ly : ly + p.ph;
   const bool right = right_wins(row, r);
-  const auto c = static_cast<std::size_t>(p.cell(right ? ci : ci - 1, row));
+  const auto c = to_size(p.cell(right ? ci : ci - 1, row));
   sx = p.sx[c] + (right ? lx : lx + p.pw);
   sy = p.sy[c] + r;
 }

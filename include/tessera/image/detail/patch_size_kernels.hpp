@@ -20,7 +20,7 @@ namespace detail {
 struct grey_image {
   std::vector<double> v;
   index_t w = 0, h = 0;
-  [[nodiscard]] double at(index_t x, index_t y) const { return v[static_cast<std::size_t>(y * w + x)]; }
+  [[nodiscard]] double at(index_t x, index_t y) const { return v[to_size(y * w + x)]; }
 };
 
 /// Per shape: the share of patches whose normalized grey histogram lies within `tolerance` times the
@@ -30,7 +30,7 @@ struct grey_image {
 template <class Measure, class Ex>
 void containment_measures(const grey_image& g, std::vector<Measure>& shapes, int bins, double tolerance, Ex&& exec) {
   std::vector<std::uint16_t> bin(g.v.size());
-  std::vector<double> global(static_cast<std::size_t>(bins), 0.0);
+  std::vector<double> global(to_size(bins), 0.0);
   for (std::size_t i = 0; i < g.v.size(); ++i) {
     const double u = std::clamp(g.v[i], 0.0, 1.0);
     bin[i] = static_cast<std::uint16_t>(std::min<index_t>(bins - 1, static_cast<index_t>(u * bins)));
@@ -40,13 +40,13 @@ void containment_measures(const grey_image& g, std::vector<Measure>& shapes, int
   for (double v : global) norm += v * v;
   norm = std::sqrt(norm);
   exec.parallel_for(0, static_cast<index_t>(shapes.size()), [&](index_t s) {
-    Measure& m = shapes[static_cast<std::size_t>(s)];
+    Measure& m = shapes[to_size(s)];
     const index_t w = m.width, h = m.height, step = std::max<index_t>(1, std::min(w, h) / 8);
     const double inv = 1.0 / static_cast<double>(w * h);
-    std::vector<index_t> hist(static_cast<std::size_t>(bins));
+    std::vector<index_t> hist(to_size(bins));
     std::vector<double> dist;
     auto column = [&](index_t x, index_t y, index_t sign) {
-      for (index_t r = 0; r < h; ++r) hist[bin[static_cast<std::size_t>((y + r) * g.w + x)]] += sign;
+      for (index_t r = 0; r < h; ++r) hist[bin[to_size((y + r) * g.w + x)]] += sign;
     };
     for (index_t y = 0; y + h <= g.h; y += step) {
       std::fill(hist.begin(), hist.end(), 0);
@@ -54,8 +54,7 @@ void containment_measures(const grey_image& g, std::vector<Measure>& shapes, int
       for (index_t x = 0;;) {
         double d2 = 0;
         for (int b = 0; b < bins; ++b) {
-          const double d =
-              static_cast<double>(hist[static_cast<std::size_t>(b)]) * inv - global[static_cast<std::size_t>(b)];
+          const double d = static_cast<double>(hist[to_size(b)]) * inv - global[to_size(b)];
           d2 += d * d;
         }
         dist.push_back(std::sqrt(d2) / norm);
@@ -70,8 +69,7 @@ void containment_measures(const grey_image& g, std::vector<Measure>& shapes, int
     std::sort(dist.begin(), dist.end());
     const auto within = std::upper_bound(dist.begin(), dist.end(), tolerance) - dist.begin();
     m.containment = static_cast<double>(within) / static_cast<double>(dist.size());
-    m.containment_p90 =
-        dist[std::min(dist.size() - 1, static_cast<std::size_t>(0.9 * static_cast<double>(dist.size())))];
+    m.containment_p90 = dist[std::min(dist.size() - 1, to_size(0.9 * static_cast<double>(dist.size())))];
   });
 }
 
@@ -86,13 +84,13 @@ grey_image analysis_copy(const grey_image& g, index_t max_side, index_t& factor)
   grey_image out{{}, g.w / factor, g.h / factor};
   const index_t budget = max_side * max_side;
   if (out.w * out.h > budget) (out.w > out.h ? out.w : out.h) = std::max<index_t>(budget / std::min(out.w, out.h), 1);
-  out.v.resize(static_cast<std::size_t>(out.w * out.h));
+  out.v.resize(to_size(out.w * out.h));
   for (index_t y = 0; y < out.h; ++y)
     for (index_t x = 0; x < out.w; ++x) {
       double s = 0;
       for (index_t j = 0; j < factor; ++j)
         for (index_t i = 0; i < factor; ++i) s += g.at(x * factor + i, y * factor + j);
-      out.v[static_cast<std::size_t>(y * out.w + x)] = s / static_cast<double>(factor * factor);
+      out.v[to_size(y * out.w + x)] = s / static_cast<double>(factor * factor);
     }
   return out;
 }
@@ -120,11 +118,11 @@ void periodicity_measures(const grey_image& full, std::vector<Measure>& shapes, 
     index_t x, y, w, h;
     double limit;
   };
-  std::vector<ref> refs(static_cast<std::size_t>(S * R));
+  std::vector<ref> refs(to_size(S * R));
   index_t wmin = W, hmin = H;
   const counter_rng rng(seed, stream_id("patch_size.references"));
   for (index_t s = 0; s < S; ++s) {
-    const Measure& m = shapes[static_cast<std::size_t>(s)];
+    const Measure& m = shapes[to_size(s)];
     const index_t w = std::clamp<index_t>((m.width + f / 2) / f, 2, W - 1),
                   h = std::clamp<index_t>((m.height + f / 2) / f, 2, H - 1);
     wmin = std::min(wmin, w);
@@ -137,15 +135,15 @@ void periodicity_measures(const grey_image& full, std::vector<Measure>& shapes, 
           return a +
                  static_cast<index_t>(rng.below(static_cast<std::uint64_t>(b - a + 1), m.width, m.height, gx, gy, key));
         };
-        refs[static_cast<std::size_t>(s * R + gy * grid + gx)] = {pick(w, W, gx, 0), pick(h, H, gy, 1), w, h,
-                                                                  similarity * 2.0 * var * static_cast<double>(w * h)};
+        refs[to_size(s * R + gy * grid + gx)] = {pick(w, W, gx, 0), pick(h, H, gy, 1), w, h,
+                                                 similarity * 2.0 * var * static_cast<double>(w * h)};
       }
   }
   const index_t mdx = W - wmin, mdy = H - hmin, ndy = 2 * mdy + 1;
-  std::vector<std::int32_t> counts(static_cast<std::size_t>(ndy * S * R), 0);
+  std::vector<std::int32_t> counts(to_size(ndy * S * R), 0);
   exec.parallel_for(0, ndy, [&](index_t row) {
     const index_t dy = row - mdy;
-    std::vector<double> sum(static_cast<std::size_t>((W + 1) * (H + 1)), 0.0);
+    std::vector<double> sum(to_size((W + 1) * (H + 1)), 0.0);
     std::int32_t* cnt = counts.data() + row * S * R;
     for (index_t dx = -mdx; dx <= mdx; ++dx) {
       // integral image of (g(x, y) - g(x + dx, y + dy))^2 over the pixels where both are inside (the
@@ -168,10 +166,10 @@ void periodicity_measures(const grey_image& full, std::vector<Measure>& shapes, 
         // outside the computed band the integral is constant along the clipped direction
         x = std::clamp(x, x0, x1);
         y = std::clamp(y, y0, y1);
-        return x == x0 || y == y0 ? 0.0 : sum[static_cast<std::size_t>(y * (W + 1) + x)];
+        return x == x0 || y == y0 ? 0.0 : sum[to_size(y * (W + 1) + x)];
       };
       for (index_t i = 0; i < S * R; ++i) {
-        const ref& r = refs[static_cast<std::size_t>(i)];
+        const ref& r = refs[to_size(i)];
         if (2 * std::abs(dx) < r.w && 2 * std::abs(dy) < r.h) continue;  // overlaps the reference itself
         if (r.x + dx < 0 || r.y + dy < 0 || r.x + dx + r.w > W || r.y + dy + r.h > H) continue;
         const double ssd = at(r.x + r.w, r.y + r.h) - at(r.x, r.y + r.h) - at(r.x + r.w, r.y) + at(r.x, r.y);
@@ -183,12 +181,12 @@ void periodicity_measures(const grey_image& full, std::vector<Measure>& shapes, 
     double total = 0, hits = 0;
     for (index_t r = 0; r < R; ++r) {
       std::int64_t c = 0;
-      for (index_t row = 0; row < ndy; ++row) c += counts[static_cast<std::size_t>(row * S * R + s * R + r)];
+      for (index_t row = 0; row < ndy; ++row) c += counts[to_size(row * S * R + s * R + r)];
       total += static_cast<double>(c);
       hits += c > 0 ? 1.0 : 0.0;
     }
-    shapes[static_cast<std::size_t>(s)].periodicity = total / static_cast<double>(R);
-    shapes[static_cast<std::size_t>(s)].periodicity_hits = hits / static_cast<double>(R);
+    shapes[to_size(s)].periodicity = total / static_cast<double>(R);
+    shapes[to_size(s)].periodicity_hits = hits / static_cast<double>(R);
   }
 }
 
@@ -204,7 +202,7 @@ void alignment_measures(const grey_image& g, std::vector<Measure>& shapes) {
   my = std::min(my, g.h - 1);
   const std::vector<double> corr = correlation_field(g.v.data(), g.w, g.h, 1, mx, my);
   auto at = [&](index_t dx, index_t dy) {
-    const double r = corr[static_cast<std::size_t>(dy * (2 * mx + 1) + dx + mx)];
+    const double r = corr[to_size(dy * (2 * mx + 1) + dx + mx)];
     return std::isnan(r) ? 0.0 : r;
   };
   for (Measure& m : shapes) m.alignment = 0.5 * (at(std::min(m.width, mx), 0) + at(0, std::min(m.height, my)));
@@ -219,7 +217,7 @@ std::vector<std::pair<index_t, double>> overlap_measures(const grey_image& g, in
   const counter_rng rng(seed, stream_id("patch_size.overlap_pairs"));
   const index_t nx = g.w - pw - vmax + 1, ny = g.h - ph - vmax + 1;
   std::vector<std::pair<index_t, double>> out;
-  std::vector<double> strip(static_cast<std::size_t>(pairs)), rest(static_cast<std::size_t>(pairs));
+  std::vector<double> strip(to_size(pairs)), rest(to_size(pairs));
   for (index_t v = vmin; v <= vmax; ++v) {
     for (int p = 0; p < pairs; ++p) {
       const index_t ax = static_cast<index_t>(rng.below(static_cast<std::uint64_t>(nx), p, 0));
@@ -232,19 +230,19 @@ std::vector<std::pair<index_t, double>> overlap_measures(const grey_image& g, in
           const double d = g.at(ax + x, ay + y) - g.at(bx + x, by + y);
           (x < v || y < v ? s : r) += d * d;
         }
-      strip[static_cast<std::size_t>(p)] = s;
-      rest[static_cast<std::size_t>(p)] = r;
+      strip[to_size(p)] = s;
+      rest[to_size(p)] = r;
     }
     double ms = 0, mr = 0;
     for (int p = 0; p < pairs; ++p) {
-      ms += strip[static_cast<std::size_t>(p)];
-      mr += rest[static_cast<std::size_t>(p)];
+      ms += strip[to_size(p)];
+      mr += rest[to_size(p)];
     }
     ms /= pairs;
     mr /= pairs;
     double c = 0, vs = 0, vr = 0;
     for (int p = 0; p < pairs; ++p) {
-      const double a = strip[static_cast<std::size_t>(p)] - ms, b = rest[static_cast<std::size_t>(p)] - mr;
+      const double a = strip[to_size(p)] - ms, b = rest[to_size(p)] - mr;
       c += a * b;
       vs += a * a;
       vr += b * b;

@@ -31,7 +31,7 @@ struct site_window {
   std::vector<double> error;  // (old − new)² summed over channels; 0 where not known
   std::vector<pixel_state> state;
   std::vector<std::uint8_t> outside;  // 1 where the window leaves a non-wrapping canvas
-  [[nodiscard]] std::size_t idx(index_t i, index_t j) const noexcept { return static_cast<std::size_t>(j * p + i); }
+  [[nodiscard]] std::size_t idx(index_t i, index_t j) const noexcept { return to_size(j * p + i); }
 };
 
 inline constexpr double fixed_pixel_penalty = 1e9;
@@ -73,16 +73,16 @@ template <class Deferred = void>  // compiled only where used (see docs/architec
 void side_cut(const site_window& win, int side, index_t width, std::vector<double>& cum) {
   const index_t p = win.p, S = width;
   TESSERA_ASSERT(width >= 1 && width < p);
-  cum.assign(static_cast<std::size_t>(p * S), std::numeric_limits<double>::infinity());
+  cum.assign(to_size(p * S), std::numeric_limits<double>::infinity());
   for (index_t b = p - 1; b >= 0; --b)
     for (index_t x = 0; x < S; ++x) {
       double next = 0;
       if (b + 1 < p) {
         next = std::numeric_limits<double>::infinity();
         for (index_t d = -1; d <= 1; ++d)
-          if (x + d >= 0 && x + d < S) next = std::min(next, cum[static_cast<std::size_t>((b + 1) * S + x + d)]);
+          if (x + d >= 0 && x + d < S) next = std::min(next, cum[to_size((b + 1) * S + x + d)]);
       }
-      cum[static_cast<std::size_t>(b * S + x)] = cut_pixel_cost(win, side, width, x, b) + next;
+      cum[to_size(b * S + x)] = cut_pixel_cost(win, side, width, x, b) + next;
     }
 }
 
@@ -92,19 +92,19 @@ template <class Deferred = void>  // compiled only where used (see docs/architec
 void trace_cut(const std::vector<double>& cum, index_t p, index_t width, index_t b0, index_t x0,
                std::vector<index_t>& pos) {
   const index_t S = width;
-  pos.assign(static_cast<std::size_t>(p), 0);
+  pos.assign(to_size(p), 0);
   index_t x = x0;
-  pos[static_cast<std::size_t>(b0)] = x;
+  pos[to_size(b0)] = x;
   for (index_t b = b0 + 1; b < p; ++b) {
     index_t best = x;
     double best_cost = std::numeric_limits<double>::infinity();
     for (index_t d = -1; d <= 1; ++d)
-      if (x + d >= 0 && x + d < S && cum[static_cast<std::size_t>(b * S + x + d)] < best_cost) {
-        best_cost = cum[static_cast<std::size_t>(b * S + x + d)];
+      if (x + d >= 0 && x + d < S && cum[to_size(b * S + x + d)] < best_cost) {
+        best_cost = cum[to_size(b * S + x + d)];
         best = x + d;
       }
     x = best;
-    pos[static_cast<std::size_t>(b)] = x;
+    pos[to_size(b)] = x;
   }
 }
 
@@ -135,7 +135,7 @@ void plan_cuts(const site_window& win, const index_t band_in[4], cut_plan& plan)
   auto cheapest_start = [&](index_t width) {
     index_t best = 0;
     for (index_t x = 1; x < width; ++x)
-      if (cum[static_cast<std::size_t>(x)] < cum[static_cast<std::size_t>(best)]) best = x;
+      if (cum[to_size(x)] < cum[to_size(best)]) best = x;
     return best;
   };
   plan.mx = plan.my = 0;
@@ -151,8 +151,7 @@ void plan_cuts(const site_window& win, const index_t band_in[4], cut_plan& plan)
     double best = std::numeric_limits<double>::infinity();
     for (index_t y = 0; y < Sn; ++y)
       for (index_t x = 0; x < Sw; ++x) {
-        const double c = cum_w[static_cast<std::size_t>(y * Sw + x)] + cum_n[static_cast<std::size_t>(x * Sn + y)] -
-                         win.error[win.idx(x, y)];
+        const double c = cum_w[to_size(y * Sw + x)] + cum_n[to_size(x * Sn + y)] - win.error[win.idx(x, y)];
         if (c < best) {
           best = c;
           plan.mx = x;
@@ -175,8 +174,8 @@ void plan_cuts(const site_window& win, const index_t band_in[4], cut_plan& plan)
 template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
 void labels_from_plan(const site_window& win, const cut_plan& plan, std::vector<std::uint8_t>& is_new) {
   const index_t p = win.p;
-  is_new.assign(static_cast<std::size_t>(p * p), 1);
-  auto at = [](const std::vector<index_t>& v, index_t k) { return v[static_cast<std::size_t>(k)]; };
+  is_new.assign(to_size(p * p), 1);
+  auto at = [](const std::vector<index_t>& v, index_t k) { return v[to_size(k)]; };
   for (index_t j = 0; j < p; ++j)
     for (index_t i = 0; i < p; ++i) {
       bool ok = true;

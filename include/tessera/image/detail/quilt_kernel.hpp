@@ -40,11 +40,10 @@ struct quilt_source {
 
   explicit quilt_source(image_buffer<T, C> px) : pixels(std::move(px)) {
     const index_t w = pixels.width(), h = pixels.height();
-    planes.resize(static_cast<std::size_t>(C * w * h));
+    planes.resize(to_size(C * w * h));
     for (index_t y = 0; y < h; ++y)
       for (index_t x = 0; x < w; ++x)
-        for (int c = 0; c < C; ++c)
-          planes[static_cast<std::size_t>((c * h + y) * w + x)] = channel_to_unit(pixels.pixel_ptr(x, y)[c]);
+        for (int c = 0; c < C; ++c) planes[to_size((c * h + y) * w + x)] = channel_to_unit(pixels.pixel_ptr(x, y)[c]);
   }
   [[nodiscard]] index_t width() const noexcept { return pixels.width(); }
   [[nodiscard]] index_t height() const noexcept { return pixels.height(); }
@@ -53,19 +52,18 @@ struct quilt_source {
   void forbid_windows(const std::vector<std::uint8_t>& bad, index_t p) {
     const index_t w = width(), h = height(), U = w - p + 1, V = h - p + 1;
     allowed_patch = p;
-    allowed.assign(static_cast<std::size_t>(std::max<index_t>(U, 0) * std::max<index_t>(V, 0)), 1);
+    allowed.assign(to_size(std::max<index_t>(U, 0) * std::max<index_t>(V, 0)), 1);
     if (U <= 0 || V <= 0) return;
     // summed-area table of the bad flags (counts fit 32 bits: exemplars are capped at 2^26 pixels)
-    std::vector<std::uint32_t> sat(static_cast<std::size_t>((w + 1) * (h + 1)), 0);
+    std::vector<std::uint32_t> sat(to_size((w + 1) * (h + 1)), 0);
     for (index_t y = 0; y < h; ++y)
       for (index_t x = 0; x < w; ++x)
-        sat[static_cast<std::size_t>((y + 1) * (w + 1) + x + 1)] =
-            bad[static_cast<std::size_t>(y * w + x)] + sat[static_cast<std::size_t>(y * (w + 1) + x + 1)] +
-            sat[static_cast<std::size_t>((y + 1) * (w + 1) + x)] - sat[static_cast<std::size_t>(y * (w + 1) + x)];
-    auto at = [&](index_t x, index_t y) { return sat[static_cast<std::size_t>(y * (w + 1) + x)]; };
+        sat[to_size((y + 1) * (w + 1) + x + 1)] = bad[to_size(y * w + x)] + sat[to_size(y * (w + 1) + x + 1)] +
+                                                  sat[to_size((y + 1) * (w + 1) + x)] - sat[to_size(y * (w + 1) + x)];
+    auto at = [&](index_t x, index_t y) { return sat[to_size(y * (w + 1) + x)]; };
     for (index_t v = 0; v < V; ++v)
       for (index_t u = 0; u < U; ++u)
-        allowed[static_cast<std::size_t>(v * U + u)] = (at(u + p, v + p) - at(u, v + p) - at(u + p, v) + at(u, v)) == 0;
+        allowed[to_size(v * U + u)] = (at(u + p, v + p) - at(u, v + p) - at(u + p, v) + at(u, v)) == 0;
   }
   [[nodiscard]] bool any_allowed(index_t p) const {
     if (allowed.empty() || allowed_patch != p) return true;
@@ -81,15 +79,11 @@ struct quilt_canvas {
   std::vector<pixel_state> state;
   bool wrap_x = false, wrap_y = false;
 
-  quilt_canvas(index_t w, index_t h) : pixels(w, h), state(static_cast<std::size_t>(w * h), pixel_state::empty) {}
+  quilt_canvas(index_t w, index_t h) : pixels(w, h), state(to_size(w * h), pixel_state::empty) {}
   [[nodiscard]] index_t width() const noexcept { return pixels.width(); }
   [[nodiscard]] index_t height() const noexcept { return pixels.height(); }
-  [[nodiscard]] pixel_state& at(index_t x, index_t y) noexcept {
-    return state[static_cast<std::size_t>(y * width() + x)];
-  }
-  [[nodiscard]] pixel_state at(index_t x, index_t y) const noexcept {
-    return state[static_cast<std::size_t>(y * width() + x)];
-  }
+  [[nodiscard]] pixel_state& at(index_t x, index_t y) noexcept { return state[to_size(y * width() + x)]; }
+  [[nodiscard]] pixel_state at(index_t x, index_t y) const noexcept { return state[to_size(y * width() + x)]; }
 };
 
 /// One patch placement: window top-left (x, y) in canvas coordinates (may wrap) and the width of
@@ -244,7 +238,7 @@ template <Channel T, int C, class X>
 void overlap_errors(const quilt_source<T, C>& src, const std::vector<template_element>& elements, index_t p,
                     std::vector<float>& err, X& exec, overlap_row_fn row = best_overlap_row()) {
   const index_t w = src.width(), U = w - p + 1, V = src.height() - p + 1;
-  err.assign(static_cast<std::size_t>(U * V), 0.0f);
+  err.assign(to_size(U * V), 0.0f);
   if (!elements.empty()) {
     bool weighted = false;
     for (const auto& e : elements) weighted = weighted || e.weight != 1.0f;
@@ -267,7 +261,7 @@ inline index_t pick_candidate(const std::vector<float>& err, double tolerance, c
   double limit = static_cast<double>(best) * (1.0 + tolerance);
   if (at_least > 1) {
     std::vector<float> sorted(err);
-    const auto k = std::min<std::size_t>(static_cast<std::size_t>(at_least), sorted.size()) - 1;
+    const auto k = std::min<std::size_t>(to_size(at_least), sorted.size()) - 1;
     std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(k), sorted.end());
     if (std::isfinite(sorted[k])) limit = std::max(limit, static_cast<double>(sorted[k]));
   }
@@ -306,9 +300,9 @@ bool place_patch(const quilt_source<T, C>& src, quilt_canvas<T, C>& canvas, cons
   };
   site_window& win = s.win;
   win.p = p;
-  win.state.assign(static_cast<std::size_t>(p * p), pixel_state::empty);
-  win.outside.assign(static_cast<std::size_t>(p * p), 0);
-  win.error.assign(static_cast<std::size_t>(p * p), 0.0);
+  win.state.assign(to_size(p * p), pixel_state::empty);
+  win.outside.assign(to_size(p * p), 0);
+  win.error.assign(to_size(p * p), 0.0);
   s.elements.clear();
   bool any_empty = false;
   for (index_t j = 0; j < p; ++j)

@@ -55,10 +55,8 @@ template <Channel T, int C>
 void choose_corner(const quilt_source<T, C>& src, index_t d, double tolerance, const counter_rng& rng, index_t& ox,
                    index_t& oy) {
   const index_t w = src.width(), h = src.height(), k = 2 * d, U = w - k + 1, V = h - k + 1;
-  auto at = [&](int c, index_t x, index_t y) {
-    return static_cast<double>(src.planes[static_cast<std::size_t>((c * h + y) * w + x)]);
-  };
-  std::vector<double> cost(static_cast<std::size_t>(U * V), 0.0);
+  auto at = [&](int c, index_t x, index_t y) { return static_cast<double>(src.planes[to_size((c * h + y) * w + x)]); };
+  std::vector<double> cost(to_size(U * V), 0.0);
   for (index_t y = 0; y < V; ++y)
     for (index_t x = 0; x < U; ++x) {
       double e = 0;
@@ -68,7 +66,7 @@ void choose_corner(const quilt_source<T, C>& src, index_t d, double tolerance, c
           const double across_v = at(c, x + d, y + t) - at(c, x + d - 1, y + t);  // vertical edge line
           e += across_h * across_h + across_v * across_v;
         }
-      cost[static_cast<std::size_t>(y * U + x)] = e;
+      cost[to_size(y * U + x)] = e;
     }
   const double best = *std::min_element(cost.begin(), cost.end());
   const double limit = best * (1 + tolerance) + 1e-12;
@@ -98,21 +96,21 @@ strip_origin choose_strip(const quilt_source<T, C>& src, const image_buffer<T, C
   const index_t w = horizontal ? ts : 2 * ov, h = horizontal ? 2 * ov : ts;
   const index_t U = src.width() - w + 1, V = src.height() - h + 1;
   auto at = [&](int c, index_t x, index_t y) {
-    return static_cast<double>(src.planes[static_cast<std::size_t>((c * src.height() + y) * src.width() + x)]);
+    return static_cast<double>(src.planes[to_size((c * src.height() + y) * src.width() + x)]);
   };
   // (along, across) strip coordinates -> exemplar offsets from the origin
   auto ex = [&](index_t along, index_t across, index_t& x, index_t& y) {
     x = horizontal ? along : across;
     y = horizontal ? across : along;
   };
-  std::vector<double> cost(static_cast<std::size_t>(U * V));
+  std::vector<double> cost(to_size(U * V));
   std::vector<std::uint8_t> distinct(cost.size(), 1);
   bool any_distinct = false;
   for (index_t oy = 0; oy < V; ++oy)
     for (index_t ox = 0; ox < U; ++ox) {
-      const std::size_t i = static_cast<std::size_t>(oy * U + ox);
+      const std::size_t i = to_size(oy * U + ox);
       for (int k = 0; k < colour; ++k) {
-        const strip_origin o = same[static_cast<std::size_t>(k)];
+        const strip_origin o = same[to_size(k)];
         if (std::abs(o.x - ox) * 2 < w && std::abs(o.y - oy) * 2 < h) distinct[i] = 0;
       }
       any_distinct = any_distinct || distinct[i];
@@ -168,21 +166,19 @@ status build_frame_samples(const quilt_source<T, C>& src, index_t ts, index_t ov
   choose_corner(src, d, tolerance, prm.rng.substream(7), kx, ky);
   out.corner = image_buffer<T, C>(2 * d, 2 * d);
   for (index_t y = 0; y < 2 * d; ++y)
-    std::memcpy(out.corner.pixel_ptr(0, y), src.pixels.pixel_ptr(kx, ky + y),
-                static_cast<std::size_t>(2 * d * C) * sizeof(T));
+    std::memcpy(out.corner.pixel_ptr(0, y), src.pixels.pixel_ptr(kx, ky + y), to_size(2 * d * C) * sizeof(T));
   // exemplar samples, chosen in order (distinct per direction)
   std::vector<strip_origin> h_origin, v_origin;
   for (int c = 0; c < nh; ++c)
     h_origin.push_back(choose_strip(src, out.corner, ts, ov, d, h_origin, c, true, tolerance, prm.rng.substream(9)));
   for (int c = 0; c < nv; ++c)
     v_origin.push_back(choose_strip(src, out.corner, ts, ov, d, v_origin, c, false, tolerance, prm.rng.substream(9)));
-  out.horizontal.assign(static_cast<std::size_t>(nh), {});
-  out.vertical.assign(static_cast<std::size_t>(nv), {});
-  std::vector<status> failures(static_cast<std::size_t>(nh + nv));
+  out.horizontal.assign(to_size(nh), {});
+  out.vertical.assign(to_size(nv), {});
+  std::vector<status> failures(to_size(nh + nv));
   exec.parallel_for(0, static_cast<index_t>(nh + nv), [&](index_t k) {
     const bool horizontal = k < nh;
-    const strip_origin o =
-        horizontal ? h_origin[static_cast<std::size_t>(k)] : v_origin[static_cast<std::size_t>(k - nh)];
+    const strip_origin o = horizontal ? h_origin[to_size(k)] : v_origin[to_size(k - nh)];
     quilt_canvas<T, C> canvas(horizontal ? ts : 2 * ov, horizontal ? 2 * ov : ts);
     auto xy = [&](index_t along, index_t across, index_t& x, index_t& y) {
       x = horizontal ? along : across;
@@ -211,9 +207,8 @@ status build_frame_samples(const quilt_source<T, C>& src, index_t ts, index_t ov
     local.rng = prm.rng.substream(8);
     local.key = static_cast<std::uint64_t>(k);
     serial_executor serial;
-    failures[static_cast<std::size_t>(k)] = fill_canvas(src, canvas, local, ov, serial);
-    (horizontal ? out.horizontal[static_cast<std::size_t>(k)] : out.vertical[static_cast<std::size_t>(k - nh)]) =
-        std::move(canvas.pixels);
+    failures[to_size(k)] = fill_canvas(src, canvas, local, ov, serial);
+    (horizontal ? out.horizontal[to_size(k)] : out.vertical[to_size(k - nh)]) = std::move(canvas.pixels);
   });
   for (const status& s : failures)
     if (!s) return s;
@@ -229,7 +224,7 @@ template <Channel T, int C>
 void write_tile_frame(const wang_frame_samples<T, C>& f, const wang_edges& e, quilt_canvas<T, C>& canvas) {
   const index_t ts = f.ts, ov = f.ov, border = f.border;
   auto strip = [](const std::vector<image_buffer<T, C>>& v, int colour) -> const image_buffer<T, C>& {
-    return v[static_cast<std::size_t>(colour)];
+    return v[to_size(colour)];
   };
   for (index_t j = 0; j < ts; ++j)
     for (index_t i = 0; i < ts; ++i) {

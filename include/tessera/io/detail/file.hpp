@@ -132,7 +132,7 @@ void append_number(std::string& out, Int v) {
 /// that as elements are actually read), so a header cannot make a reader allocate before reading.
 inline std::size_t bounded_reserve(long long claimed, std::size_t remaining, std::size_t least_bytes) noexcept {
   if (claimed <= 0) return 0;
-  std::size_t n = static_cast<std::size_t>(claimed);
+  std::size_t n = to_size(claimed);
   if (least_bytes > 0) n = std::min(n, remaining / least_bytes + 1);
   return std::min<std::size_t>(n, std::size_t{1} << 20);
 }

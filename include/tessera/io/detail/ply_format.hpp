@@ -191,7 +191,7 @@ class ply_binary_source {
   ply_binary_source(std::string_view data, std::size_t offset, bool big_endian, std::string_view name)
       : data_(data), pos_(offset), big_(big_endian), name_(name) {}
   bool read(ply_type t, double& out) {
-    const auto n = static_cast<std::size_t>(ply_type_size(t));
+    const auto n = to_size(ply_type_size(t));
     if (data_.size() - pos_ < n) {
       error_ = cat("truncated: the file ends inside a value (", data_.size() - pos_, " bytes left)");
       return false;
@@ -229,7 +229,7 @@ class ply_binary_source {
   /// A parse_error at the offset of the next value.
   [[nodiscard]] status error_ahead(std::string_view message) const { return parse_error_at_byte(name_, pos_, message); }
   [[nodiscard]] std::size_t remaining() const noexcept { return data_.size() - pos_; }
-  static std::size_t min_value_bytes(ply_type t) noexcept { return static_cast<std::size_t>(ply_type_size(t)); }
+  static std::size_t min_value_bytes(ply_type t) noexcept { return to_size(ply_type_size(t)); }
 
  private:
   template <class T>

@@ -55,20 +55,20 @@ template <class Dist, class Lerp>
 void clip_polygon(polygon& p, Dist&& dist, Lerp&& lerp) {
   if (p.n == 0) return;
   bool all_inside = true;
-  for (int i = 0; i < p.n && all_inside; ++i) all_inside = dist(p.v[static_cast<std::size_t>(i)]) >= 0;
+  for (int i = 0; i < p.n && all_inside; ++i) all_inside = dist(p.v[to_size(i)]) >= 0;
   if (all_inside) return;
   polygon out;
   for (int i = 0; i < p.n; ++i) {
-    const poly_vertex& a = p.v[static_cast<std::size_t>(i)];
-    const poly_vertex& b = p.v[static_cast<std::size_t>((i + 1) % p.n)];
+    const poly_vertex& a = p.v[to_size(i)];
+    const poly_vertex& b = p.v[to_size((i + 1) % p.n)];
     const double da = dist(a), db = dist(b);
-    if (da >= 0) out.v[static_cast<std::size_t>(out.n++)] = a;
+    if (da >= 0) out.v[to_size(out.n++)] = a;
     if ((da >= 0) != (db >= 0)) {
       const bool swap = canonical_less(b, a);
       const poly_vertex& s = swap ? b : a;
       const poly_vertex& e = swap ? a : b;
       const double ds = swap ? db : da, de = swap ? da : db;
-      out.v[static_cast<std::size_t>(out.n++)] = lerp(s, e, ds / (ds - de));
+      out.v[to_size(out.n++)] = lerp(s, e, ds / (ds - de));
     }
   }
   p = out;
@@ -82,9 +82,7 @@ inline poly_vertex lerp_clip(const poly_vertex& a, const poly_vertex& b, double 
   r.z = a.z + t * (b.z - a.z);
   r.w = a.w + t * (b.w - a.w);
   for (int k = 0; k < 3; ++k)
-    r.corner[static_cast<std::size_t>(k)] =
-        a.corner[static_cast<std::size_t>(k)] +
-        t * (b.corner[static_cast<std::size_t>(k)] - a.corner[static_cast<std::size_t>(k)]);
+    r.corner[to_size(k)] = a.corner[to_size(k)] + t * (b.corner[to_size(k)] - a.corner[to_size(k)]);
   return r;
 }
 
@@ -101,7 +99,7 @@ inline poly_vertex lerp_screen(const poly_vertex& a, const poly_vertex& b, doubl
 inline void clip_guard_band(polygon& p) {
   bool inside = true;
   for (int i = 0; i < p.n; ++i) {
-    const auto& v = p.v[static_cast<std::size_t>(i)];
+    const auto& v = p.v[to_size(i)];
     inside = inside && std::abs(v.x) <= guard_band && std::abs(v.y) <= guard_band;
   }
   if (inside) return;
@@ -138,7 +136,7 @@ inline bool setup_triangle(const poly_vertex& a, const poly_vertex& b, const pol
                            triangle_setup& s) {
   const poly_vertex* v[3] = {&a, &b, &c};
   for (int k = 0; k < 3; ++k) {
-    const auto i = static_cast<std::size_t>(k);
+    const auto i = to_size(k);
     // round half up; any fixed rule works, what matters is the same input snapping the same way
     s.x[i] = static_cast<std::int64_t>(std::floor(v[k]->x * static_cast<double>(subpixel_one) + 0.5));
     s.y[i] = static_cast<std::int64_t>(std::floor(v[k]->y * static_cast<double>(subpixel_one) + 0.5));
@@ -171,8 +169,7 @@ void scan_triangle(const triangle_setup& s, std::int64_t x0, std::int64_t y0, st
   std::array<std::int64_t, 3> ea{}, eb{}, ec{};  // E_k(px, py) = ea*px + eb*py + ec (fixed point)
   std::array<std::int64_t, 3> bias{};
   for (int k = 0; k < 3; ++k) {
-    const auto i = static_cast<std::size_t>(k), j = static_cast<std::size_t>((k + 1) % 3),
-               l = static_cast<std::size_t>((k + 2) % 3);
+    const auto i = to_size(k), j = to_size((k + 1) % 3), l = to_size((k + 2) % 3);
     const std::int64_t dx = s.x[l] - s.x[j], dy = s.y[l] - s.y[j];
     ea[i] = -dy;
     eb[i] = dx;
@@ -219,12 +216,12 @@ void scan_triangle(const triangle_setup& s, std::int64_t x0, std::int64_t y0, st
 inline bool screen_polygon(const std::array<std::array<double, 4>, 3>& t, polygon& p) {
   p.n = 3;
   for (int k = 0; k < 3; ++k) {
-    const auto& v = t[static_cast<std::size_t>(k)];
+    const auto& v = t[to_size(k)];
     if (!(std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]) && std::isfinite(v[3]) && v[3] > 0))
       return false;
-    auto& q = p.v[static_cast<std::size_t>(k)];
+    auto& q = p.v[to_size(k)];
     q = {v[0], v[1], v[2], v[3], {}};
-    q.corner[static_cast<std::size_t>(k)] = 1;
+    q.corner[to_size(k)] = 1;
   }
   clip_guard_band(p);
   return true;
@@ -238,11 +235,11 @@ inline bool clip_polygon_to_screen(const std::array<std::array<double, 4>, 3>& t
   p.n = 3;
   double scale = 0;
   for (int k = 0; k < 3; ++k) {
-    const auto& v = t[static_cast<std::size_t>(k)];
+    const auto& v = t[to_size(k)];
     if (!(std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]) && std::isfinite(v[3]))) return false;
-    auto& q = p.v[static_cast<std::size_t>(k)];
+    auto& q = p.v[to_size(k)];
     q = {v[0], v[1], v[2], v[3], {}};
-    q.corner[static_cast<std::size_t>(k)] = 1;
+    q.corner[to_size(k)] = 1;
     scale = std::max({scale, std::abs(v[0]), std::abs(v[1]), std::abs(v[2]), std::abs(v[3])});
   }
   clip_polygon(
@@ -253,7 +250,7 @@ inline bool clip_polygon_to_screen(const std::array<std::array<double, 4>, 3>& t
   clip_polygon(
       p, [w_min](const poly_vertex& v) { return v.w - w_min; }, lerp_clip);
   for (int i = 0; i < p.n; ++i) {
-    auto& q = p.v[static_cast<std::size_t>(i)];
+    auto& q = p.v[to_size(i)];
     const double iw = 1.0 / q.w;
     q.x = vp[0] + (q.x * iw + 1) * 0.5 * vp[2];
     q.y = vp[1] + (1 - q.y * iw) * 0.5 * vp[3];
@@ -280,9 +277,7 @@ void draw_polygon(const polygon& p, int keep_orientation, std::int64_t x0, std::
                   std::int64_t y1, F&& fn) {
   triangle_setup s;
   for (int i = 1; i + 1 < p.n; ++i) {
-    if (!setup_triangle(p.v[0], p.v[static_cast<std::size_t>(i)], p.v[static_cast<std::size_t>(i + 1)],
-                        keep_orientation, s))
-      continue;
+    if (!setup_triangle(p.v[0], p.v[to_size(i)], p.v[to_size(i + 1)], keep_orientation, s)) continue;
     const double inv_area = 1.0 / static_cast<double>(s.twice_area);
     scan_triangle(s, x0, y0, x1, y1, [&](std::int64_t px, std::int64_t py, const std::array<std::int64_t, 3>& e) {
       covered c;
@@ -306,7 +301,7 @@ inline std::array<std::int64_t, 4> polygon_bounds(const polygon& p) {
   if (p.n < 3) return {0, 0, 0, 0};
   double minx = p.v[0].x, maxx = minx, miny = p.v[0].y, maxy = miny;
   for (int i = 1; i < p.n; ++i) {
-    const auto& v = p.v[static_cast<std::size_t>(i)];
+    const auto& v = p.v[to_size(i)];
     minx = std::min(minx, v.x);
     maxx = std::max(maxx, v.x);
     miny = std::min(miny, v.y);

@@ -39,63 +39,55 @@ result<polycube_map> assemble_polycube_map(tri_mesh base, const std::vector<std:
   for (std::size_t c = 0; c < pm.charts.size(); ++c)
     pm.charts[c].label = static_cast<polycube_label>(cs.chart_label[c]);
   for (index_t f = 0; f < nf; ++f) {
-    auto& ch = pm.charts[static_cast<std::size_t>(cs.face_chart[static_cast<std::size_t>(f)])];
+    auto& ch = pm.charts[to_size(cs.face_chart[to_size(f)])];
     if (ch.faces.empty())
-      ch.plane = std::llround(
-          positions[static_cast<std::size_t>(base.faces[static_cast<std::size_t>(f)][0])][label_axis(ch.label)] / t);
+      ch.plane = std::llround(positions[to_size(base.faces[to_size(f)][0])][label_axis(ch.label)] / t);
     ch.faces.push_back(f);
   }
   // flatness, then orientation (in parallel; first offender by smallest face)
-  std::vector<std::int8_t> bad(static_cast<std::size_t>(nf), 0);
+  std::vector<std::int8_t> bad(to_size(nf), 0);
   exec.parallel_for(0, nf, [&](index_t f) {
-    const auto& ch = pm.charts[static_cast<std::size_t>(cs.face_chart[static_cast<std::size_t>(f)])];
+    const auto& ch = pm.charts[to_size(cs.face_chart[to_size(f)])];
     const int a = label_axis(ch.label);
     const auto ax = quad_plane_axes(ch.label);
     std::array<vec2, 3> q;
     for (int k = 0; k < 3; ++k) {
-      const vec3& p =
-          positions[static_cast<std::size_t>(base.faces[static_cast<std::size_t>(f)][static_cast<std::size_t>(k)])];
-      if (!(std::abs(p[a] - static_cast<double>(ch.plane) * t) <= tol)) bad[static_cast<std::size_t>(f)] = 1;
-      q[static_cast<std::size_t>(k)] = {p[ax[0]], p[ax[1]]};
+      const vec3& p = positions[to_size(base.faces[to_size(f)][to_size(k)])];
+      if (!(std::abs(p[a] - static_cast<double>(ch.plane) * t) <= tol)) bad[to_size(f)] = 1;
+      q[to_size(k)] = {p[ax[0]], p[ax[1]]};
     }
-    if (bad[static_cast<std::size_t>(f)] == 0 && !(cross(q[1] - q[0], q[2] - q[0]) > 1e-12 * t * t))
-      bad[static_cast<std::size_t>(f)] = 2;
+    if (bad[to_size(f)] == 0 && !(cross(q[1] - q[0], q[2] - q[0]) > 1e-12 * t * t)) bad[to_size(f)] = 2;
   });
   index_t flipped = 0, first_flip = -1;
   for (index_t f = 0; f < nf; ++f) {
-    if (bad[static_cast<std::size_t>(f)] == 1)
-      return status::not_converged(cat(
-          "polycube: face ", f, " is not flat in the plane of its chart ", cs.face_chart[static_cast<std::size_t>(f)],
-          " (",
-          "XYZ"[label_axis(pm.charts[static_cast<std::size_t>(cs.face_chart[static_cast<std::size_t>(f)])].label)],
-          " = ",
-          static_cast<double>(pm.charts[static_cast<std::size_t>(cs.face_chart[static_cast<std::size_t>(f)])].plane) *
-              t,
-          ")"));
-    if (bad[static_cast<std::size_t>(f)] == 2 && flipped++ == 0) first_flip = f;
+    if (bad[to_size(f)] == 1)
+      return status::not_converged(
+          cat("polycube: face ", f, " is not flat in the plane of its chart ", cs.face_chart[to_size(f)], " (",
+              "XYZ"[label_axis(pm.charts[to_size(cs.face_chart[to_size(f)])].label)], " = ",
+              static_cast<double>(pm.charts[to_size(cs.face_chart[to_size(f)])].plane) * t, ")"));
+    if (bad[to_size(f)] == 2 && flipped++ == 0) first_flip = f;
   }
   if (flipped > 0)
     return status::not_converged(cat("polycube: ", flipped,
                                      " faces are flipped or collapsed in their chart plane (first: face ", first_flip,
-                                     " in chart ", cs.face_chart[static_cast<std::size_t>(first_flip)], ")"));
+                                     " in chart ", cs.face_chart[to_size(first_flip)], ")"));
   // corners on the grid
   std::map<grid_point, index_t> corner_at;
   for (index_t v = 0; v < nv; ++v) {
-    const auto& vc = cs.vertex_charts[static_cast<std::size_t>(v)];
+    const auto& vc = cs.vertex_charts[to_size(v)];
     if (vc.size() < 3) continue;
     polycube_corner c;
     c.vertex = v;
     c.charts = vc;
     for (int a = 0; a < 3; ++a) {
-      const double x = positions[static_cast<std::size_t>(v)][a] / t;
-      c.grid[static_cast<std::size_t>(a)] = std::llround(x);
-      if (!(std::abs(x - static_cast<double>(c.grid[static_cast<std::size_t>(a)])) * t <= tol))
+      const double x = positions[to_size(v)][a] / t;
+      c.grid[to_size(a)] = std::llround(x);
+      if (!(std::abs(x - static_cast<double>(c.grid[to_size(a)])) * t <= tol))
         return status::not_converged(cat("polycube: corner at vertex ", v, " is off the tile grid along ", "XYZ"[a]));
     }
     if (!corner_at.emplace(c.grid, static_cast<index_t>(pm.corners.size())).second)
-      return status::not_converged(cat("polycube: corners at vertices ",
-                                       pm.corners[static_cast<std::size_t>(corner_at[c.grid])].vertex, " and ", v,
-                                       " coincide: the polycube touches itself"));
+      return status::not_converged(cat("polycube: corners at vertices ", pm.corners[to_size(corner_at[c.grid])].vertex,
+                                       " and ", v, " coincide: the polycube touches itself"));
     pm.corners.push_back(std::move(c));
   }
   // polycube edges: boundary mesh edges between two charts, grouped by chart pair and line, merged into
@@ -103,23 +95,19 @@ result<polycube_map> assemble_polycube_map(tri_mesh base, const std::vector<std:
   std::map<std::tuple<index_t, index_t, std::int64_t, std::int64_t>, std::vector<std::array<double, 2>>> runs;
   for (index_t f = 0; f < nf; ++f)
     for (int k = 0; k < 3; ++k) {
-      const index_t g = adj.neighbor[static_cast<std::size_t>(f)][static_cast<std::size_t>(k)];
-      const index_t ca = cs.face_chart[static_cast<std::size_t>(f)], cb = cs.face_chart[static_cast<std::size_t>(g)];
+      const index_t g = adj.neighbor[to_size(f)][to_size(k)];
+      const index_t ca = cs.face_chart[to_size(f)], cb = cs.face_chart[to_size(g)];
       if (ca >= cb) continue;
-      const int aa = cs.chart_label[static_cast<std::size_t>(ca)] / 2,
-                ab = cs.chart_label[static_cast<std::size_t>(cb)] / 2;
+      const int aa = cs.chart_label[to_size(ca)] / 2, ab = cs.chart_label[to_size(cb)] / 2;
       const int axis = 3 - aa - ab;
-      const vec3& p =
-          positions[static_cast<std::size_t>(base.faces[static_cast<std::size_t>(f)][static_cast<std::size_t>(k)])];
-      const vec3& q = positions[static_cast<std::size_t>(
-          base.faces[static_cast<std::size_t>(f)][static_cast<std::size_t>((k + 1) % 3)])];
-      runs[{ca, cb, pm.charts[static_cast<std::size_t>(ca)].plane, pm.charts[static_cast<std::size_t>(cb)].plane}]
-          .push_back({std::min(p[axis], q[axis]) / t, std::max(p[axis], q[axis]) / t});
+      const vec3& p = positions[to_size(base.faces[to_size(f)][to_size(k)])];
+      const vec3& q = positions[to_size(base.faces[to_size(f)][to_size((k + 1) % 3)])];
+      runs[{ca, cb, pm.charts[to_size(ca)].plane, pm.charts[to_size(cb)].plane}].push_back(
+          {std::min(p[axis], q[axis]) / t, std::max(p[axis], q[axis]) / t});
     }
   for (auto& [key, iv] : runs) {
     const auto [ca, cb, pa, pb] = key;
-    const int aa = cs.chart_label[static_cast<std::size_t>(ca)] / 2,
-              ab = cs.chart_label[static_cast<std::size_t>(cb)] / 2;
+    const int aa = cs.chart_label[to_size(ca)] / 2, ab = cs.chart_label[to_size(cb)] / 2;
     const int axis = 3 - aa - ab;
     std::sort(iv.begin(), iv.end());
     for (std::size_t i = 0; i < iv.size();) {
@@ -131,21 +119,20 @@ result<polycube_map> assemble_polycube_map(tri_mesh base, const std::vector<std:
       }
       i = j;
       grid_point g{};
-      g[static_cast<std::size_t>(aa)] = pa;
-      g[static_cast<std::size_t>(ab)] = pb;
+      g[to_size(aa)] = pa;
+      g[to_size(ab)] = pb;
       std::vector<index_t> on;
       for (auto x = static_cast<std::int64_t>(std::llround(lo)); x <= std::llround(hi); ++x) {
-        g[static_cast<std::size_t>(axis)] = x;
+        g[to_size(axis)] = x;
         if (auto it = corner_at.find(g); it != corner_at.end()) on.push_back(it->second);
       }
-      if (on.size() < 2 ||
-          pm.corners[static_cast<std::size_t>(on.front())].grid[static_cast<std::size_t>(axis)] != std::llround(lo) ||
-          pm.corners[static_cast<std::size_t>(on.back())].grid[static_cast<std::size_t>(axis)] != std::llround(hi))
+      if (on.size() < 2 || pm.corners[to_size(on.front())].grid[to_size(axis)] != std::llround(lo) ||
+          pm.corners[to_size(on.back())].grid[to_size(axis)] != std::llround(hi))
         return status::not_converged(cat("polycube: the boundary between charts ", ca, " and ", cb,
                                          " does not run from corner to corner (collapsed polycube edge)"));
       for (std::size_t k = 0; k + 1 < on.size(); ++k) {
-        const auto len = pm.corners[static_cast<std::size_t>(on[k + 1])].grid[static_cast<std::size_t>(axis)] -
-                         pm.corners[static_cast<std::size_t>(on[k])].grid[static_cast<std::size_t>(axis)];
+        const auto len =
+            pm.corners[to_size(on[k + 1])].grid[to_size(axis)] - pm.corners[to_size(on[k])].grid[to_size(axis)];
         pm.edges.push_back({ca, cb, axis, on[k], on[k + 1], len});
       }
     }
@@ -158,8 +145,8 @@ result<polycube_map> assemble_polycube_map(tri_mesh base, const std::vector<std:
     index_t fa = -1, fb = -1;
     bvh.for_each_self_intersection(
         [&](index_t f, index_t g) {
-          for (index_t u : pm.base.faces[static_cast<std::size_t>(f)])
-            for (index_t w : pm.base.faces[static_cast<std::size_t>(g)])
+          for (index_t u : pm.base.faces[to_size(f)])
+            for (index_t w : pm.base.faces[to_size(g)])
               if (u == w) return true;
           return false;
         },
@@ -171,8 +158,7 @@ result<polycube_map> assemble_polycube_map(tri_mesh base, const std::vector<std:
         });
     if (fa >= 0)
       return status::not_converged(cat("polycube: the surface intersects itself (faces ", fa, " and ", fb, ", charts ",
-                                       cs.face_chart[static_cast<std::size_t>(fa)], " and ",
-                                       cs.face_chart[static_cast<std::size_t>(fb)], ")"));
+                                       cs.face_chart[to_size(fa)], " and ", cs.face_chart[to_size(fb)], ")"));
   }
   pm.labels.resize(lab.size());
   for (std::size_t f = 0; f < lab.size(); ++f) pm.labels[f] = static_cast<polycube_label>(lab[f]);

@@ -30,7 +30,7 @@ struct polycube_chart_set {
 inline polycube_chart_set find_polycube_charts(const tri_mesh& m, const std::vector<std::array<index_t, 3>>& nb,
                                                const std::vector<std::uint8_t>& lab) {
   polycube_chart_set cs;
-  const auto nf = static_cast<std::size_t>(m.num_faces());
+  const auto nf = to_size(m.num_faces());
   cs.face_chart.assign(nf, -1);
   std::vector<index_t> stack;
   for (std::size_t f0 = 0; f0 < nf; ++f0) {
@@ -41,25 +41,24 @@ inline polycube_chart_set find_polycube_charts(const tri_mesh& m, const std::vec
     cs.face_chart[f0] = c;
     stack.assign(1, static_cast<index_t>(f0));
     while (!stack.empty()) {
-      const auto f = static_cast<std::size_t>(stack.back());
+      const auto f = to_size(stack.back());
       stack.pop_back();
-      ++cs.chart_size[static_cast<std::size_t>(c)];
+      ++cs.chart_size[to_size(c)];
       for (index_t g : nb[f])
-        if (g >= 0 && cs.face_chart[static_cast<std::size_t>(g)] < 0 && lab[static_cast<std::size_t>(g)] == lab[f]) {
-          cs.face_chart[static_cast<std::size_t>(g)] = c;
+        if (g >= 0 && cs.face_chart[to_size(g)] < 0 && lab[to_size(g)] == lab[f]) {
+          cs.face_chart[to_size(g)] = c;
           stack.push_back(g);
         }
     }
   }
   cs.chart_neighbors.resize(cs.chart_label.size());
-  cs.vertex_charts.resize(static_cast<std::size_t>(m.num_vertices()));
+  cs.vertex_charts.resize(to_size(m.num_vertices()));
   for (std::size_t f = 0; f < nf; ++f) {
     const index_t c = cs.face_chart[f];
     for (int k = 0; k < 3; ++k) {
-      const index_t g = nb[f][static_cast<std::size_t>(k)];
-      if (g >= 0 && cs.face_chart[static_cast<std::size_t>(g)] != c)
-        cs.chart_neighbors[static_cast<std::size_t>(c)].push_back(cs.face_chart[static_cast<std::size_t>(g)]);
-      cs.vertex_charts[static_cast<std::size_t>(m.faces[f][static_cast<std::size_t>(k)])].push_back(c);
+      const index_t g = nb[f][to_size(k)];
+      if (g >= 0 && cs.face_chart[to_size(g)] != c) cs.chart_neighbors[to_size(c)].push_back(cs.face_chart[to_size(g)]);
+      cs.vertex_charts[to_size(m.faces[f][to_size(k)])].push_back(c);
     }
   }
   auto uniq = [](std::vector<index_t>& v) {
@@ -77,17 +76,16 @@ inline std::vector<index_t> chart_euler(const tri_mesh&, const std::vector<std::
   const std::size_t nc = cs.chart_label.size();
   std::vector<index_t> chi(nc, 0);
   for (std::size_t f = 0; f < cs.face_chart.size(); ++f) {
-    const auto c = static_cast<std::size_t>(cs.face_chart[f]);
+    const auto c = to_size(cs.face_chart[f]);
     chi[c] += 1;  // F
     for (int k = 0; k < 3; ++k) {
-      const index_t g = nb[f][static_cast<std::size_t>(k)];
+      const index_t g = nb[f][to_size(k)];
       // an edge counts once: from its smaller face when both are in the chart
-      if (g < 0 || cs.face_chart[static_cast<std::size_t>(g)] != cs.face_chart[f] || g > static_cast<index_t>(f))
-        chi[c] -= 1;
+      if (g < 0 || cs.face_chart[to_size(g)] != cs.face_chart[f] || g > static_cast<index_t>(f)) chi[c] -= 1;
     }
   }
   for (std::size_t v = 0; v < cs.vertex_charts.size(); ++v)
-    for (index_t c : cs.vertex_charts[v]) chi[static_cast<std::size_t>(c)] += 1;
+    for (index_t c : cs.vertex_charts[v]) chi[to_size(c)] += 1;
   return chi;
 }
 
@@ -126,29 +124,28 @@ inline polycube_label_problem find_label_problem(const tri_mesh& m, const std::v
   // candidates are visited by ascending chart size, then index: repairs touch the smallest charts first
   std::vector<index_t> order(nc);
   std::iota(order.begin(), order.end(), index_t{0});
-  std::stable_sort(order.begin(), order.end(), [&](index_t a, index_t b) {
-    return cs.chart_size[static_cast<std::size_t>(a)] < cs.chart_size[static_cast<std::size_t>(b)];
-  });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](index_t a, index_t b) { return cs.chart_size[to_size(a)] < cs.chart_size[to_size(b)]; });
   for (index_t c : order)
-    for (index_t d : cs.chart_neighbors[static_cast<std::size_t>(c)])
-      if ((cs.chart_label[static_cast<std::size_t>(c)] ^ 1) == cs.chart_label[static_cast<std::size_t>(d)])
+    for (index_t d : cs.chart_neighbors[to_size(c)])
+      if ((cs.chart_label[to_size(c)] ^ 1) == cs.chart_label[to_size(d)])
         return {polycube_label_problem::opposite, c, d, -1};
   // a face whose three vertices all lie on one other chart would collapse onto that chart's plane
   for (std::size_t f = 0; f < cs.face_chart.size(); ++f) {
     const index_t c = cs.face_chart[f];
-    for (index_t d : cs.vertex_charts[static_cast<std::size_t>(m.faces[f][0])]) {
+    for (index_t d : cs.vertex_charts[to_size(m.faces[f][0])]) {
       if (d == c) continue;
       bool all = true;
       for (int k = 1; k < 3 && all; ++k) {
-        const auto& vc = cs.vertex_charts[static_cast<std::size_t>(m.faces[f][static_cast<std::size_t>(k)])];
+        const auto& vc = cs.vertex_charts[to_size(m.faces[f][to_size(k)])];
         all = std::binary_search(vc.begin(), vc.end(), d);
       }
       if (all) return {polycube_label_problem::pinned_face, c, d, static_cast<index_t>(f)};
     }
   }
   for (index_t c : order)
-    if (cs.chart_neighbors[static_cast<std::size_t>(c)].size() == 1 && nc > 1)
-      return {polycube_label_problem::island, c, cs.chart_neighbors[static_cast<std::size_t>(c)][0], -1};
+    if (cs.chart_neighbors[to_size(c)].size() == 1 && nc > 1)
+      return {polycube_label_problem::island, c, cs.chart_neighbors[to_size(c)][0], -1};
   const auto chi = chart_euler(m, nb, cs);
   // boundary loops per chart are not counted directly: chi = 2 - 2g - b, and b >= 1, so chi > 1 never
   // happens and g > 0 shows as chi <= 2 - 2 - b. A chart of genus 0 has chi = 2 - b, where b is at most
@@ -156,15 +153,14 @@ inline polycube_label_problem find_label_problem(const tri_mesh& m, const std::v
   std::vector<index_t> corners(nc, 0), loops(nc, 0);
   for (std::size_t v = 0; v < cs.vertex_charts.size(); ++v)
     if (cs.vertex_charts[v].size() >= 3)
-      for (index_t c : cs.vertex_charts[v]) ++corners[static_cast<std::size_t>(c)];
+      for (index_t c : cs.vertex_charts[v]) ++corners[to_size(c)];
   // boundary loops: count boundary edges and boundary vertices per chart; on a chart whose boundary
   // vertices are all visited once, b = number of cycles = components of the boundary graph
   {
     std::vector<index_t> parent(cs.vertex_charts.size());
     std::iota(parent.begin(), parent.end(), index_t{0});
     auto find = [&](index_t x) {
-      while (parent[static_cast<std::size_t>(x)] != x)
-        x = parent[static_cast<std::size_t>(x)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(x)])];
+      while (parent[to_size(x)] != x) x = parent[to_size(x)] = parent[to_size(parent[to_size(x)])];
       return x;
     };
     // per chart, union the boundary edge endpoints; loops = distinct roots among its boundary vertices.
@@ -172,19 +168,18 @@ inline polycube_label_problem find_label_problem(const tri_mesh& m, const std::v
     std::vector<std::vector<std::array<index_t, 2>>> bedges(nc);
     for (std::size_t f = 0; f < cs.face_chart.size(); ++f)
       for (int k = 0; k < 3; ++k) {
-        const index_t g = nb[f][static_cast<std::size_t>(k)];
-        if (g >= 0 && cs.face_chart[static_cast<std::size_t>(g)] != cs.face_chart[f])
-          bedges[static_cast<std::size_t>(cs.face_chart[f])].push_back(
-              {m.faces[f][static_cast<std::size_t>(k)], m.faces[f][static_cast<std::size_t>((k + 1) % 3)]});
+        const index_t g = nb[f][to_size(k)];
+        if (g >= 0 && cs.face_chart[to_size(g)] != cs.face_chart[f])
+          bedges[to_size(cs.face_chart[f])].push_back({m.faces[f][to_size(k)], m.faces[f][to_size((k + 1) % 3)]});
       }
     for (std::size_t c = 0; c < nc; ++c) {
       for (const auto& e : bedges[c]) {
-        parent[static_cast<std::size_t>(e[0])] = e[0];
-        parent[static_cast<std::size_t>(e[1])] = e[1];
+        parent[to_size(e[0])] = e[0];
+        parent[to_size(e[1])] = e[1];
       }
       for (const auto& e : bedges[c]) {
         const index_t a = find(e[0]), b = find(e[1]);
-        if (a != b) parent[static_cast<std::size_t>(std::max(a, b))] = std::min(a, b);
+        if (a != b) parent[to_size(std::max(a, b))] = std::min(a, b);
       }
       std::vector<index_t> roots;
       for (const auto& e : bedges[c]) roots.push_back(find(e[0]));
@@ -193,18 +188,16 @@ inline polycube_label_problem find_label_problem(const tri_mesh& m, const std::v
     }
   }
   for (index_t c : order) {
-    const auto cs_ = static_cast<std::size_t>(c);
+    const auto cs_ = to_size(c);
     if (nc > 1 && chi[cs_] != 2 - loops[cs_]) return {polycube_label_problem::genus, c, -1, -1};
   }
   for (index_t c : order)
-    if (nc > 1 && corners[static_cast<std::size_t>(c)] < 4)
-      return {polycube_label_problem::few_corners, c, corners[static_cast<std::size_t>(c)], -1};
+    if (nc > 1 && corners[to_size(c)] < 4) return {polycube_label_problem::few_corners, c, corners[to_size(c)], -1};
   for (std::size_t v = 0; v < cs.vertex_charts.size(); ++v) {
     const auto& vc = cs.vertex_charts[v];
     if (vc.size() != 3) continue;
     std::array<int, 3> axes{};
-    for (int i = 0; i < 3; ++i)
-      axes[static_cast<std::size_t>(i)] = cs.chart_label[static_cast<std::size_t>(vc[static_cast<std::size_t>(i)])] / 2;
+    for (int i = 0; i < 3; ++i) axes[to_size(i)] = cs.chart_label[to_size(vc[to_size(i)])] / 2;
     std::sort(axes.begin(), axes.end());
     if (axes[0] == axes[1] || axes[1] == axes[2])
       return {polycube_label_problem::corner_axes, vc[0], -1, static_cast<index_t>(v)};
@@ -217,14 +210,13 @@ inline polycube_label_problem find_label_problem(const tri_mesh& m, const std::v
 /// (ties: smallest label). Falls back to the best label of another axis.
 inline void relabel_chart(const polycube_chart_set& cs, index_t c, const std::vector<std::array<double, 6>>& data,
                           std::vector<std::uint8_t>& lab, bool to_neighbor_only) {
-  const auto cs_ = static_cast<std::size_t>(c);
+  const auto cs_ = to_size(c);
   const int own = cs.chart_label[cs_];
   std::array<bool, 6> allowed{};
-  for (index_t d : cs.chart_neighbors[cs_]) allowed[cs.chart_label[static_cast<std::size_t>(d)]] = true;
+  for (index_t d : cs.chart_neighbors[cs_]) allowed[cs.chart_label[to_size(d)]] = true;
   std::array<bool, 6> forbidden{};
-  forbidden[static_cast<std::size_t>(own)] = true;
-  for (index_t d : cs.chart_neighbors[cs_])
-    forbidden[static_cast<std::size_t>(cs.chart_label[static_cast<std::size_t>(d)] ^ 1)] = true;
+  forbidden[to_size(own)] = true;
+  for (index_t d : cs.chart_neighbors[cs_]) forbidden[to_size(cs.chart_label[to_size(d)] ^ 1)] = true;
   std::array<double, 6> cost{};
   for (std::size_t f = 0; f < lab.size(); ++f)
     if (cs.face_chart[f] == c)
@@ -232,11 +224,11 @@ inline void relabel_chart(const polycube_chart_set& cs, index_t c, const std::ve
   int best = -1;
   for (int pass = 0; pass < 3 && best < 0; ++pass)
     for (int l = 0; l < 6; ++l) {
-      const auto ls = static_cast<std::size_t>(l);
+      const auto ls = to_size(l);
       if (l == own) continue;
       if (pass == 0 && (!allowed[ls] || forbidden[ls])) continue;
       if (pass == 1 && (to_neighbor_only ? !allowed[ls] : forbidden[ls])) continue;
-      if (best < 0 || cost[ls] < cost[static_cast<std::size_t>(best)]) best = l;
+      if (best < 0 || cost[ls] < cost[to_size(best)]) best = l;
     }
   for (std::size_t f = 0; f < lab.size(); ++f)
     if (cs.face_chart[f] == c) lab[f] = static_cast<std::uint8_t>(best);
@@ -254,13 +246,13 @@ inline polycube_label_problem repair_polycube_labels(const tri_mesh& m, const st
     if (p.kind == polycube_label_problem::none || it >= max_iterations) return p;
     switch (p.kind) {
       case polycube_label_problem::pinned_face: {
-        const auto dl = cs.chart_label[static_cast<std::size_t>(p.other)];
+        const auto dl = cs.chart_label[to_size(p.other)];
         // take the other chart's label unless it is opposite to a neighbour of the face
         bool ok = true;
-        for (index_t g : nb[static_cast<std::size_t>(p.vertex)])
-          if (g >= 0 && (lab[static_cast<std::size_t>(g)] ^ 1) == dl) ok = false;
+        for (index_t g : nb[to_size(p.vertex)])
+          if (g >= 0 && (lab[to_size(g)] ^ 1) == dl) ok = false;
         if (ok) {
-          lab[static_cast<std::size_t>(p.vertex)] = dl;
+          lab[to_size(p.vertex)] = dl;
         } else {
           return p;
         }
@@ -268,7 +260,7 @@ inline polycube_label_problem repair_polycube_labels(const tri_mesh& m, const st
       }
       case polycube_label_problem::island:
         for (std::size_t f = 0; f < lab.size(); ++f)
-          if (cs.face_chart[f] == p.chart) lab[f] = cs.chart_label[static_cast<std::size_t>(p.other)];
+          if (cs.face_chart[f] == p.chart) lab[f] = cs.chart_label[to_size(p.other)];
         break;
       case polycube_label_problem::opposite:
       case polycube_label_problem::few_corners: relabel_chart(cs, p.chart, data, lab, true); break;

@@ -37,42 +37,41 @@ inline result<polycube_axis_classes> polycube_classes(const tri_mesh& m, const s
                                                       const std::vector<std::uint8_t>& chart_label, int axis) {
   const index_t nv = m.num_vertices();
   const auto nc = static_cast<index_t>(chart_label.size());
-  std::vector<index_t> parent(static_cast<std::size_t>(nv + nc));
+  std::vector<index_t> parent(to_size(nv + nc));
   std::iota(parent.begin(), parent.end(), index_t{0});
   auto find = [&](index_t x) {
-    while (parent[static_cast<std::size_t>(x)] != x)
-      x = parent[static_cast<std::size_t>(x)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(x)])];
+    while (parent[to_size(x)] != x) x = parent[to_size(x)] = parent[to_size(parent[to_size(x)])];
     return x;
   };
   for (std::size_t f = 0; f < m.faces.size(); ++f) {
     const index_t c = face_chart[f];
-    if (chart_label[static_cast<std::size_t>(c)] / 2 != axis) continue;
+    if (chart_label[to_size(c)] / 2 != axis) continue;
     for (index_t v : m.faces[f]) {
       const index_t a = find(v), b = find(nv + c);
-      if (a != b) parent[static_cast<std::size_t>(std::max(a, b))] = std::min(a, b);
+      if (a != b) parent[to_size(std::max(a, b))] = std::min(a, b);
     }
   }
   polycube_axis_classes out;
   std::vector<index_t> id(parent.size(), -1), root_chart(parent.size(), -1);
-  out.vertex_class.resize(static_cast<std::size_t>(nv));
+  out.vertex_class.resize(to_size(nv));
   for (index_t c = 0; c < nc; ++c) {
-    if (chart_label[static_cast<std::size_t>(c)] / 2 != axis) continue;
-    const auto r = static_cast<std::size_t>(find(nv + c));
+    if (chart_label[to_size(c)] / 2 != axis) continue;
+    const auto r = to_size(find(nv + c));
     if (root_chart[r] >= 0 && root_chart[r] != c) {
       index_t shared = 0;
-      while (shared < nv && static_cast<std::size_t>(find(shared)) != r) ++shared;
+      while (shared < nv && to_size(find(shared)) != r) ++shared;
       return status::not_converged(cat("polycube: charts ", root_chart[r], " and ", c, " of axis ", "XYZ"[axis],
                                        " are joined through vertex ", shared, ": their planes would coincide"));
     }
     root_chart[r] = c;
   }
   for (index_t v = 0; v < nv; ++v) {
-    const auto r = static_cast<std::size_t>(find(v));
+    const auto r = to_size(find(v));
     if (id[r] < 0) {
       id[r] = static_cast<index_t>(out.class_chart.size());
       out.class_chart.push_back(root_chart[r]);
     }
-    out.vertex_class[static_cast<std::size_t>(v)] = id[r];
+    out.vertex_class[to_size(v)] = id[r];
   }
   return out;
 }
@@ -88,34 +87,33 @@ result<std::vector<double>> polycube_axis_solve(const tri_mesh& m, const std::ve
   using sparse = Eigen::SparseMatrix<real>;
   using vector = Eigen::Matrix<real, Eigen::Dynamic, 1>;
   const auto ncl = static_cast<index_t>(cl.class_chart.size());
-  std::vector<int> col(static_cast<std::size_t>(ncl), -1);
+  std::vector<int> col(to_size(ncl), -1);
   int nfree = 0;
   for (index_t k = 0; k < ncl; ++k)
-    if (std::isnan(fixed[static_cast<std::size_t>(k)])) col[static_cast<std::size_t>(k)] = nfree++;
-  std::vector<double> mean(static_cast<std::size_t>(ncl), 0.0), cnt(static_cast<std::size_t>(ncl), 0.0);
+    if (std::isnan(fixed[to_size(k)])) col[to_size(k)] = nfree++;
+  std::vector<double> mean(to_size(ncl), 0.0), cnt(to_size(ncl), 0.0);
   for (index_t v = 0; v < m.num_vertices(); ++v) {
-    const auto k = static_cast<std::size_t>(cl.vertex_class[static_cast<std::size_t>(v)]);
+    const auto k = to_size(cl.vertex_class[to_size(v)]);
     mean[k] += m.position(v)[axis];
     cnt[k] += 1;
   }
-  std::vector<double> x(static_cast<std::size_t>(ncl));
+  std::vector<double> x(to_size(ncl));
   for (std::size_t k = 0; k < x.size(); ++k) x[k] = std::isnan(fixed[k]) ? mean[k] / cnt[k] : fixed[k];
   if (nfree == 0) return x;
   std::vector<Eigen::Triplet<real>> t;
   vector rhs = vector::Zero(nfree);
   const double eps = 1e-8;
   for (index_t k = 0; k < ncl; ++k)
-    if (col[static_cast<std::size_t>(k)] >= 0) {
-      t.emplace_back(col[static_cast<std::size_t>(k)], col[static_cast<std::size_t>(k)], eps);
-      rhs[col[static_cast<std::size_t>(k)]] += eps * x[static_cast<std::size_t>(k)];
+    if (col[to_size(k)] >= 0) {
+      t.emplace_back(col[to_size(k)], col[to_size(k)], eps);
+      rhs[col[to_size(k)]] += eps * x[to_size(k)];
     }
   for (std::size_t f = 0; f < m.faces.size(); ++f)
     for (int s = 0; s < 3; ++s) {
-      const index_t g = nb[f][static_cast<std::size_t>(s)];
+      const index_t g = nb[f][to_size(s)];
       if (g < static_cast<index_t>(f)) continue;  // each edge once (closed mesh)
-      const index_t i = m.faces[f][static_cast<std::size_t>(s)], j = m.faces[f][static_cast<std::size_t>((s + 1) % 3)];
-      const auto ci = static_cast<std::size_t>(cl.vertex_class[static_cast<std::size_t>(i)]),
-                 cj = static_cast<std::size_t>(cl.vertex_class[static_cast<std::size_t>(j)]);
+      const index_t i = m.faces[f][to_size(s)], j = m.faces[f][to_size((s + 1) % 3)];
+      const auto ci = to_size(cl.vertex_class[to_size(i)]), cj = to_size(cl.vertex_class[to_size(j)]);
       if (ci == cj) continue;
       // residual x_i - x_j - d
       const double d = m.position(i)[axis] - m.position(j)[axis];
@@ -144,7 +142,7 @@ result<std::vector<double>> polycube_axis_solve(const tri_mesh& m, const std::ve
   if (solver.info() != Eigen::Success || !sol.allFinite())
     return status::internal_error("polycube: sparse solve failed");
   for (index_t k = 0; k < ncl; ++k)
-    if (col[static_cast<std::size_t>(k)] >= 0) x[static_cast<std::size_t>(k)] = sol[col[static_cast<std::size_t>(k)]];
+    if (col[to_size(k)] >= 0) x[to_size(k)] = sol[col[to_size(k)]];
   return x;
 }
 
@@ -158,17 +156,17 @@ inline std::vector<std::vector<index_t>> polycube_plane_partners(const std::vect
     if (vc.size() < 3) continue;
     for (index_t c : vc)
       for (index_t d : vc) {
-        const int a = chart_label[static_cast<std::size_t>(c)] / 2, b = chart_label[static_cast<std::size_t>(d)] / 2;
+        const int a = chart_label[to_size(c)] / 2, b = chart_label[to_size(d)] / 2;
         if (c >= d || a == b) continue;
         for (index_t e : vc)
-          if (chart_label[static_cast<std::size_t>(e)] / 2 == 3 - a - b) on_boundary[{c, d}].push_back(e);
+          if (chart_label[to_size(e)] / 2 == 3 - a - b) on_boundary[{c, d}].push_back(e);
       }
   }
   std::vector<std::vector<index_t>> partners(chart_label.size());
   for (auto& [cd, es] : on_boundary)
     for (index_t e : es)
       for (index_t g : es)
-        if (e != g) partners[static_cast<std::size_t>(e)].push_back(g);
+        if (e != g) partners[to_size(e)].push_back(g);
   for (auto& p : partners) {
     std::sort(p.begin(), p.end());
     p.erase(std::unique(p.begin(), p.end()), p.end());
@@ -187,16 +185,14 @@ inline std::vector<std::int64_t> quantize_planes(const std::vector<double>& p, c
   std::vector<index_t> order;
   for (std::size_t c = 0; c < nc; ++c)
     if (axis_of[c] == axis) order.push_back(static_cast<index_t>(c));
-  std::stable_sort(order.begin(), order.end(), [&](index_t a, index_t b) {
-    return p[static_cast<std::size_t>(a)] < p[static_cast<std::size_t>(b)];
-  });
+  std::stable_sort(order.begin(), order.end(), [&](index_t a, index_t b) { return p[to_size(a)] < p[to_size(b)]; });
   std::vector<std::int64_t> q(nc, 0);
   std::vector<bool> done(nc, false);
   for (index_t c : order) {
-    const auto cs = static_cast<std::size_t>(c);
+    const auto cs = to_size(c);
     std::int64_t v = std::llround(p[cs] / tile);
     for (index_t d : partners[cs])
-      if (done[static_cast<std::size_t>(d)]) v = std::max(v, q[static_cast<std::size_t>(d)] + 1);
+      if (done[to_size(d)]) v = std::max(v, q[to_size(d)] + 1);
     q[cs] = v;
     done[cs] = true;
   }
@@ -209,10 +205,9 @@ inline std::vector<index_t> polycube_flipped_faces(const tri_mesh& m, const std:
                                                    const std::vector<std::uint8_t>& chart_label, double t) {
   std::vector<index_t> out;
   for (std::size_t f = 0; f < m.faces.size(); ++f) {
-    const auto l = chart_label[static_cast<std::size_t>(face_chart[f])];
+    const auto l = chart_label[to_size(face_chart[f])];
     const int a = l / 2, u = l % 2 == 0 ? (a + 1) % 3 : (a + 2) % 3, w = l % 2 == 0 ? (a + 2) % 3 : (a + 1) % 3;
-    const vec3 &p0 = pos[static_cast<std::size_t>(m.faces[f][0])], &p1 = pos[static_cast<std::size_t>(m.faces[f][1])],
-               &p2 = pos[static_cast<std::size_t>(m.faces[f][2])];
+    const vec3 &p0 = pos[to_size(m.faces[f][0])], &p1 = pos[to_size(m.faces[f][1])], &p2 = pos[to_size(m.faces[f][2])];
     const double area = (p1[u] - p0[u]) * (p2[w] - p0[w]) - (p1[w] - p0[w]) * (p2[u] - p0[u]);
     if (!(area > 1e-12 * t * t)) out.push_back(static_cast<index_t>(f));
   }
@@ -226,26 +221,24 @@ inline std::vector<index_t> polycube_flipped_faces(const tri_mesh& m, const std:
 inline index_t untangle_polycube(const tri_mesh& m, std::vector<vec3>& pos, const std::vector<index_t>& face_chart,
                                  const std::vector<std::uint8_t>& chart_label,
                                  const std::array<const polycube_axis_classes*, 3>& cl, double t, int iterations) {
-  const auto nv = static_cast<std::size_t>(m.num_vertices());
+  const auto nv = to_size(m.num_vertices());
   std::vector<std::vector<index_t>> ring(nv);
   for (const auto& f : m.faces)
-    for (int k = 0; k < 3; ++k)
-      ring[static_cast<std::size_t>(f[static_cast<std::size_t>(k)])].push_back(
-          f[static_cast<std::size_t>((k + 1) % 3)]);
+    for (int k = 0; k < 3; ++k) ring[to_size(f[to_size(k)])].push_back(f[to_size((k + 1) % 3)]);
   auto is_free = [&](std::size_t v, int a) {
-    const auto& c = *cl[static_cast<std::size_t>(a)];
-    return c.class_chart[static_cast<std::size_t>(c.vertex_class[v])] < 0;
+    const auto& c = *cl[to_size(a)];
+    return c.class_chart[to_size(c.vertex_class[v])] < 0;
   };
   auto flipped = polycube_flipped_faces(m, pos, face_chart, chart_label, t);
   for (int it = 0; it < iterations && !flipped.empty(); ++it) {
     std::vector<std::uint8_t> mark(nv, 0);
     for (index_t f : flipped)
-      for (index_t v : m.faces[static_cast<std::size_t>(f)]) mark[static_cast<std::size_t>(v)] = 1;
+      for (index_t v : m.faces[to_size(f)]) mark[to_size(v)] = 1;
     for (int grow = 0; grow < 2; ++grow) {
       const auto prev = mark;
       for (std::size_t v = 0; v < nv; ++v)
         if (prev[v])
-          for (index_t w : ring[v]) mark[static_cast<std::size_t>(w)] = 1;
+          for (index_t w : ring[v]) mark[to_size(w)] = 1;
     }
     std::vector<vec3> next = pos;
     for (std::size_t v = 0; v < nv; ++v) {
@@ -261,11 +254,10 @@ inline index_t untangle_polycube(const tri_mesh& m, std::vector<vec3>& pos, cons
         bool same = true;
         if (free_axes == 1)
           for (int a = 0; a < 3; ++a)
-            if (!is_free(v, a) && cl[static_cast<std::size_t>(a)]->vertex_class[static_cast<std::size_t>(w)] !=
-                                      cl[static_cast<std::size_t>(a)]->vertex_class[v])
+            if (!is_free(v, a) && cl[to_size(a)]->vertex_class[to_size(w)] != cl[to_size(a)]->vertex_class[v])
               same = false;
         if (same) {
-          mean += pos[static_cast<std::size_t>(w)];
+          mean += pos[to_size(w)];
           ++n;
         }
       }

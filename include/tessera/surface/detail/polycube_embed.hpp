@@ -32,15 +32,15 @@ status embed_polycube(const tri_mesh& m, const polycube_chart_set& cs, const std
   using real = dependent_t<double, Dep>;
   using sparse = Eigen::SparseMatrix<real>;
   using vector = Eigen::Matrix<real, Eigen::Dynamic, 1>;
-  const auto nv = static_cast<std::size_t>(m.num_vertices());
+  const auto nv = to_size(m.num_vertices());
   auto is_free = [&](std::size_t v, int a) {
-    const auto& c = cl[static_cast<std::size_t>(a)];
-    return c.class_chart[static_cast<std::size_t>(c.vertex_class[v])] < 0;
+    const auto& c = cl[to_size(a)];
+    return c.class_chart[to_size(c.vertex_class[v])] < 0;
   };
   // edge weights: clamped cotangents of the base mesh, per directed neighbour list
   std::vector<std::vector<std::pair<index_t, double>>> nbr(nv);
   auto add = [&](index_t i, index_t j, double w) {
-    auto& l = nbr[static_cast<std::size_t>(i)];
+    auto& l = nbr[to_size(i)];
     for (auto& e : l)
       if (e.first == j) {
         e.second += w;
@@ -50,8 +50,7 @@ status embed_polycube(const tri_mesh& m, const polycube_chart_set& cs, const std
   };
   for (const auto& f : m.faces)
     for (int k = 0; k < 3; ++k) {
-      const index_t o = f[static_cast<std::size_t>(k)], i = f[static_cast<std::size_t>((k + 1) % 3)],
-                    j = f[static_cast<std::size_t>((k + 2) % 3)];
+      const index_t o = f[to_size(k)], i = f[to_size((k + 1) % 3)], j = f[to_size((k + 2) % 3)];
       const vec3 a = m.position(i) - m.position(o), b = m.position(j) - m.position(o);
       const double s = norm(cross(a, b));
       const double cot = s > 0 ? dot(a, b) / s : 0;
@@ -66,20 +65,20 @@ status embed_polycube(const tri_mesh& m, const polycube_chart_set& cs, const std
     if (cs.vertex_charts[c].size() < 3) continue;
     for (const auto& [w0, w_] : nbr[c]) {
       (void)w_;
-      if (cs.vertex_charts[static_cast<std::size_t>(w0)].size() != 2 || placed[static_cast<std::size_t>(w0)]) continue;
-      const auto& pair = cs.vertex_charts[static_cast<std::size_t>(w0)];
+      if (cs.vertex_charts[to_size(w0)].size() != 2 || placed[to_size(w0)]) continue;
+      const auto& pair = cs.vertex_charts[to_size(w0)];
       auto on_pair = [&](std::size_t v) {
         const auto& vc = cs.vertex_charts[v];
         return std::binary_search(vc.begin(), vc.end(), pair[0]) && std::binary_search(vc.begin(), vc.end(), pair[1]);
       };
       if (!on_pair(c)) continue;
-      std::vector<std::size_t> path{c, static_cast<std::size_t>(w0)};
+      std::vector<std::size_t> path{c, to_size(w0)};
       bool closed = false;
       for (std::size_t guard = 0; guard < nv && !closed; ++guard) {
         const std::size_t v = path.back(), prev = path[path.size() - 2];
         std::size_t next = nv;
         for (const auto& e : nbr[v]) {
-          const auto u = static_cast<std::size_t>(e.first);
+          const auto u = to_size(e.first);
           if (u == prev || !on_pair(u)) continue;
           if (cs.vertex_charts[u].size() == 2 && placed[u]) continue;
           // the mesh edge (v, u) must separate the two charts: u and v both on the pair suffices here
@@ -118,11 +117,11 @@ status embed_polycube(const tri_mesh& m, const polycube_chart_set& cs, const std
       double sum = 0;
       for (const auto& [u, w] : nbr[v]) {
         sum += w;
-        const int cu = col[static_cast<std::size_t>(u)];
+        const int cu = col[to_size(u)];
         if (cu >= 0)
           t.emplace_back(col[v], cu, -w);
         else
-          rhs[col[v]] += w * pos[static_cast<std::size_t>(u)][a];
+          rhs[col[v]] += w * pos[to_size(u)][a];
       }
       t.emplace_back(col[v], col[v], sum);
     }

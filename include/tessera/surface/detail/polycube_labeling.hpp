@@ -36,19 +36,19 @@ polycube_energy make_polycube_energy(const tri_mesh& m, const std::vector<std::a
   polycube_energy en;
   en.neighbor = neighbor;
   en.opposite_penalty = o.opposite_penalty;
-  en.data.resize(static_cast<std::size_t>(nf));
-  en.smooth.resize(static_cast<std::size_t>(nf));
-  std::vector<vec3> n(static_cast<std::size_t>(nf));
-  std::vector<double> area(static_cast<std::size_t>(nf));
+  en.data.resize(to_size(nf));
+  en.smooth.resize(to_size(nf));
+  std::vector<vec3> n(to_size(nf));
+  std::vector<double> area(to_size(nf));
   exec.parallel_for(0, nf, [&](index_t f) {
     const vec3 an = face_area_normal(m, f);
-    n[static_cast<std::size_t>(f)] = normalized(an);
-    area[static_cast<std::size_t>(f)] = 0.5 * norm(an);
+    n[to_size(f)] = normalized(an);
+    area[to_size(f)] = 0.5 * norm(an);
   });
   double total_area = 0, total_len = 0;
   index_t sides = 0;
   for (index_t f = 0; f < nf; ++f) {
-    total_area += area[static_cast<std::size_t>(f)];
+    total_area += area[to_size(f)];
     for (int k = 0; k < 3; ++k) {
       total_len += distance(m.position(m.face_vertex(f, k)), m.position(m.face_vertex(f, (k + 1) % 3)));
       ++sides;
@@ -56,17 +56,17 @@ polycube_energy make_polycube_energy(const tri_mesh& m, const std::vector<std::a
   }
   const double mean_area = total_area / static_cast<double>(nf), mean_len = total_len / static_cast<double>(sides);
   exec.parallel_for(0, nf, [&](index_t f) {
-    const auto fs = static_cast<std::size_t>(f);
+    const auto fs = to_size(f);
     for (int l = 0; l < 6; ++l) {
       const double c = (dot(n[fs], label_direction(static_cast<polycube_label>(l))) - 1) / 0.2;
-      en.data[fs][static_cast<std::size_t>(l)] = area[fs] / mean_area * (1 - std::exp(-0.5 * c * c));
+      en.data[fs][to_size(l)] = area[fs] / mean_area * (1 - std::exp(-0.5 * c * c));
     }
     for (int k = 0; k < 3; ++k) {
-      const index_t g = neighbor[fs][static_cast<std::size_t>(k)];
+      const index_t g = neighbor[fs][to_size(k)];
       if (g < 0) continue;
-      const double c = (dot(n[fs], n[static_cast<std::size_t>(g)]) - 1) / 0.25;
+      const double c = (dot(n[fs], n[to_size(g)]) - 1) / 0.25;
       const double len = distance(m.position(m.face_vertex(f, k)), m.position(m.face_vertex(f, (k + 1) % 3)));
-      en.smooth[fs][static_cast<std::size_t>(k)] = o.compactness * len / mean_len * std::exp(-0.5 * c * c);
+      en.smooth[fs][to_size(k)] = o.compactness * len / mean_len * std::exp(-0.5 * c * c);
     }
   });
   return en;
@@ -82,10 +82,8 @@ inline double polycube_labeling_energy(const polycube_energy& en, const std::vec
   for (std::size_t f = 0; f < lab.size(); ++f) {
     e += en.data[f][lab[f]];
     for (int k = 0; k < 3; ++k) {
-      const index_t g = en.neighbor[f][static_cast<std::size_t>(k)];
-      if (g > static_cast<index_t>(f))
-        e += en.smooth[f][static_cast<std::size_t>(k)] *
-             polycube_pair_cost(en, lab[f], lab[static_cast<std::size_t>(g)]);
+      const index_t g = en.neighbor[f][to_size(k)];
+      if (g > static_cast<index_t>(f)) e += en.smooth[f][to_size(k)] * polycube_pair_cost(en, lab[f], lab[to_size(g)]);
     }
   }
   return e;
@@ -96,11 +94,11 @@ inline double polycube_labeling_energy(const polycube_energy& en, const std::vec
 /// is kept only when it lowers the energy. Deterministic. O(cycles * 6 * maxflow(F)).
 inline result<std::vector<std::uint8_t>> alpha_expansion_labels(const polycube_energy& en, int cycles) {
   const auto nf = static_cast<index_t>(en.data.size());
-  std::vector<std::uint8_t> lab(static_cast<std::size_t>(nf));
+  std::vector<std::uint8_t> lab(to_size(nf));
   for (std::size_t f = 0; f < lab.size(); ++f) {
     int best = 0;
     for (int l = 1; l < 6; ++l)
-      if (en.data[f][static_cast<std::size_t>(l)] < en.data[f][static_cast<std::size_t>(best)]) best = l;
+      if (en.data[f][to_size(l)] < en.data[f][to_size(best)]) best = l;
     lab[f] = static_cast<std::uint8_t>(best);
   }
   double energy = polycube_labeling_energy(en, lab);
@@ -110,17 +108,17 @@ inline result<std::vector<std::uint8_t>> alpha_expansion_labels(const polycube_e
       // binary variable x_f: 0 keeps lab[f], 1 takes alpha (x = 1 <=> sink side)
       max_flow_graph g(nf);
       for (index_t f = 0; f < nf; ++f) {
-        const auto fs = static_cast<std::size_t>(f);
+        const auto fs = to_size(f);
         if (lab[fs] == alpha) {
           g.add_terminal(f, 0, std::numeric_limits<double>::infinity());  // fixed at alpha (x = 1)
           continue;
         }
-        double e0 = en.data[fs][lab[fs]], e1 = en.data[fs][static_cast<std::size_t>(alpha)];
+        double e0 = en.data[fs][lab[fs]], e1 = en.data[fs][to_size(alpha)];
         for (int k = 0; k < 3; ++k) {
-          const index_t q = en.neighbor[fs][static_cast<std::size_t>(k)];
+          const index_t q = en.neighbor[fs][to_size(k)];
           if (q < 0) continue;
-          const auto qs = static_cast<std::size_t>(q);
-          const double w = en.smooth[fs][static_cast<std::size_t>(k)];
+          const auto qs = to_size(q);
+          const double w = en.smooth[fs][to_size(k)];
           if (lab[qs] == alpha) {  // q is fixed at alpha: a unary term on f
             e0 += w * polycube_pair_cost(en, lab[fs], alpha);
             continue;
@@ -147,7 +145,7 @@ inline result<std::vector<std::uint8_t>> alpha_expansion_labels(const polycube_e
       if (!flow) return flow.error();
       std::vector<std::uint8_t> next = lab;
       for (index_t f = 0; f < nf; ++f)
-        if (!g.in_source_set(f)) next[static_cast<std::size_t>(f)] = static_cast<std::uint8_t>(alpha);
+        if (!g.in_source_set(f)) next[to_size(f)] = static_cast<std::uint8_t>(alpha);
       const double e = polycube_labeling_energy(en, next);
       if (e < energy) {
         energy = e;

@@ -40,19 +40,19 @@ inline resample_taps make_taps(index_t src, index_t dst) {
   resample_taps t;
   const double ratio = static_cast<double>(dst) / static_cast<double>(src);  // < 1 shrinks
   const double support = 3.0 / std::min(1.0, ratio), kscale = std::min(1.0, ratio);
-  t.first.resize(static_cast<std::size_t>(dst));
-  t.count.resize(static_cast<std::size_t>(dst));
-  t.offset.resize(static_cast<std::size_t>(dst));
+  t.first.resize(to_size(dst));
+  t.count.resize(to_size(dst));
+  t.offset.resize(to_size(dst));
   for (index_t i = 0; i < dst; ++i) {
     const double c = (static_cast<double>(i) + 0.5) / ratio - 0.5;
     const auto lo = static_cast<index_t>(std::ceil(c - support)), hi = static_cast<index_t>(std::floor(c + support));
-    t.first[static_cast<std::size_t>(i)] = lo;
-    t.offset[static_cast<std::size_t>(i)] = static_cast<index_t>(t.weights.size());
+    t.first[to_size(i)] = lo;
+    t.offset[to_size(i)] = static_cast<index_t>(t.weights.size());
     double sum = 0;
     for (index_t j = lo; j <= hi; ++j) sum += lanczos3((static_cast<double>(j) - c) * kscale);
     for (index_t j = lo; j <= hi; ++j)
       t.weights.push_back(static_cast<float>(lanczos3((static_cast<double>(j) - c) * kscale) / sum));
-    t.count[static_cast<std::size_t>(i)] = hi - lo + 1;
+    t.count[to_size(i)] = hi - lo + 1;
   }
   return t;
 }
@@ -64,13 +64,13 @@ std::vector<float> resample_image(const float* src, index_t sw, index_t sh, int 
                                   Rows&& rows) {
   const resample_taps tx = make_taps(sw, dw), ty = make_taps(sh, dh);
   const index_t C = channels;
-  std::vector<float> tmp(static_cast<std::size_t>(dw * sh * C)), out(static_cast<std::size_t>(dw * dh * C));
+  std::vector<float> tmp(to_size(dw * sh * C)), out(to_size(dw * dh * C));
   rows(sh, [&](index_t y) {
     const float* s = src + y * sw * C;
     float* d = tmp.data() + y * dw * C;
     for (index_t x = 0; x < dw; ++x) {
-      const float* w = tx.weights.data() + tx.offset[static_cast<std::size_t>(x)];
-      const index_t first = tx.first[static_cast<std::size_t>(x)], n = tx.count[static_cast<std::size_t>(x)];
+      const float* w = tx.weights.data() + tx.offset[to_size(x)];
+      const index_t first = tx.first[to_size(x)], n = tx.count[to_size(x)];
       float acc[4] = {0, 0, 0, 0};
       for (index_t k = 0; k < n; ++k) {
         const index_t sx = std::clamp<index_t>(first + k, 0, sw - 1);
@@ -80,8 +80,8 @@ std::vector<float> resample_image(const float* src, index_t sw, index_t sh, int 
     }
   });
   rows(dh, [&](index_t y) {
-    const float* w = ty.weights.data() + ty.offset[static_cast<std::size_t>(y)];
-    const index_t first = ty.first[static_cast<std::size_t>(y)], n = ty.count[static_cast<std::size_t>(y)];
+    const float* w = ty.weights.data() + ty.offset[to_size(y)];
+    const index_t first = ty.first[to_size(y)], n = ty.count[to_size(y)];
     float* d = out.data() + y * dw * C;
     for (index_t x = 0; x < dw * C; ++x) d[x] = 0;
     for (index_t k = 0; k < n; ++k) {
@@ -109,7 +109,7 @@ std::array<float, Img::channels> bilinear_sample(const Img& img, double x, doubl
   for (int c = 0; c < C; ++c) {
     const float top = channel_to_unit(p00[c]) + fx * (channel_to_unit(p10[c]) - channel_to_unit(p00[c]));
     const float bot = channel_to_unit(p01[c]) + fx * (channel_to_unit(p11[c]) - channel_to_unit(p01[c]));
-    out[static_cast<std::size_t>(c)] = top + fy * (bot - top);
+    out[to_size(c)] = top + fy * (bot - top);
   }
   return out;
 }

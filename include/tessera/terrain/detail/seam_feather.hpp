@@ -47,24 +47,22 @@ class seam_feather {
         level_(&field.level) {
     const index_t w = vb.width, h = vb.height;
     auto label_of = [&](std::int32_t f) {
-      return static_cast<std::int64_t>(syn.region[static_cast<std::size_t>(f)]) * 65536 +
-             field.level[static_cast<std::size_t>(f)];
+      return static_cast<std::int64_t>(syn.region[to_size(f)]) * 65536 + field.level[to_size(f)];
     };
     if (feather <= 0) return;
     for (const std::int32_t f : proj.visible)
-      for (const std::int32_t n : mesh.neighbors[static_cast<std::size_t>(f)])
-        if (n > f && is_face_index(n, mesh.num_faces()) && proj.state[static_cast<std::size_t>(n)] != 0 &&
-            label_of(n) != label_of(f))
+      for (const std::int32_t n : mesh.neighbors[to_size(f)])
+        if (n > f && is_face_index(n, mesh.num_faces()) && proj.state[to_size(n)] != 0 && label_of(n) != label_of(f))
           pairs_.push_back(key(label_of(f), label_of(n)));
     if (pairs_.empty()) return;
     std::sort(pairs_.begin(), pairs_.end());
     pairs_.erase(std::unique(pairs_.begin(), pairs_.end()), pairs_.end());
-    const auto n = static_cast<std::size_t>(w * h);
+    const auto n = to_size(w * h);
     std::vector<std::int64_t> label(n, -1);
     exec.parallel_for(0, h, [&](index_t y) {
       for (index_t x = 0; x < w; ++x) {
-        const std::int32_t f = vb.face[static_cast<std::size_t>(y * w + x)];
-        if (f >= 0) label[static_cast<std::size_t>(y * w + x)] = label_of(f);
+        const std::int32_t f = vb.face[to_size(y * w + x)];
+        if (f >= 0) label[to_size(y * w + x)] = label_of(f);
       }
     });
     across_.assign(n, -1);
@@ -77,9 +75,9 @@ class seam_feather {
         const index_t nx[4] = {x + 1, x - 1, x, x}, ny[4] = {y, y, y + 1, y - 1};
         for (int k = 0; k < 4; ++k) {
           if (nx[k] < 0 || ny[k] < 0 || nx[k] >= w || ny[k] >= h) continue;
-          const auto q = static_cast<std::size_t>(ny[k] * w + nx[k]);
+          const auto q = to_size(ny[k] * w + nx[k]);
           if (label[q] >= 0 && label[q] != a && blends(a, label[q])) {
-            across_[static_cast<std::size_t>(y * w + x)] = vb.face[q];
+            across_[to_size(y * w + x)] = vb.face[q];
             break;
           }
         }
@@ -104,13 +102,13 @@ class seam_feather {
   [[nodiscard]] seam_partner partner(index_t x, index_t y) const noexcept {
     seam_partner p;
     if (row_dx_.empty()) return p;
-    const std::int32_t own = vb_.face[static_cast<std::size_t>(y * vb_.width + x)];
+    const std::int32_t own = vb_.face[to_size(y * vb_.width + x)];
     if (own < 0) return p;
     index_t best = (radius_ + 1) * (radius_ + 1), qx = 0, qy = 0;
     for (index_t dy = -radius_; dy <= radius_; ++dy) {
       const index_t yy = y + dy;
       if (yy < 0 || yy >= vb_.height || dy * dy >= best) continue;
-      const std::int8_t dx = row_dx_[static_cast<std::size_t>(yy * vb_.width + x)];
+      const std::int8_t dx = row_dx_[to_size(yy * vb_.width + x)];
       if (dx == none) continue;
       const index_t d2 = static_cast<index_t>(dx) * dx + dy * dy;
       if (d2 < best) {
@@ -120,7 +118,7 @@ class seam_feather {
       }
     }
     if (best > radius_ * radius_) return p;
-    const auto q = static_cast<std::size_t>(qy * vb_.width + qx);
+    const auto q = to_size(qy * vb_.width + qx);
     // the boundary pixel is on this side (its partner is across) or on the other side (it is the partner)
     const std::int32_t qf = vb_.face[q], other = same_label(qf, own) ? across_[q] : qf;
     if (other < 0 || same_label(other, own)) return p;
@@ -141,8 +139,7 @@ class seam_feather {
     return label_of_face(f) == label_of_face(g);
   }
   [[nodiscard]] std::int64_t label_of_face(std::int32_t f) const noexcept {
-    return static_cast<std::int64_t>((*region_)[static_cast<std::size_t>(f)]) * 65536 +
-           (*level_)[static_cast<std::size_t>(f)];
+    return static_cast<std::int64_t>((*region_)[to_size(f)]) * 65536 + (*level_)[to_size(f)];
   }
 
   const visibility_buffer& vb_;

@@ -39,35 +39,34 @@ status project_for_session(const terrain_mesh& mesh, const terrain_camera& camer
   out.height = camera.height;
   out.depth = camera.depth;
   out.eye = camera_eye(camera);
-  out.clip.resize(static_cast<std::size_t>(nv));
-  out.screen.resize(static_cast<std::size_t>(nv));
-  out.state.resize(static_cast<std::size_t>(nf));
-  out.bounds.resize(static_cast<std::size_t>(nf));
-  codes.resize(static_cast<std::size_t>(nv));
+  out.clip.resize(to_size(nv));
+  out.screen.resize(to_size(nv));
+  out.state.resize(to_size(nf));
+  out.bounds.resize(to_size(nf));
+  codes.resize(to_size(nv));
   constexpr index_t block = 16384;
   exec.parallel_for(0, (nv + block - 1) / block, [&](index_t b) {
     for (index_t v = b * block; v < std::min(nv, (b + 1) * block); ++v) {
-      const vec3& p = mesh.positions[static_cast<std::size_t>(v)];
+      const vec3& p = mesh.positions[to_size(v)];
       const glm::dvec4 c = m * glm::dvec4(p.x, p.y, p.z, 1.0);
-      out.clip[static_cast<std::size_t>(v)] = {c.x, c.y, c.z, c.w};
-      codes[static_cast<std::size_t>(v)] = clip_outcode(out.clip[static_cast<std::size_t>(v)], zo);
+      out.clip[to_size(v)] = {c.x, c.y, c.z, c.w};
+      codes[to_size(v)] = clip_outcode(out.clip[to_size(v)], zo);
     }
   });
   const index_t chunks = (nf + block - 1) / block;
-  std::vector<index_t> count(static_cast<std::size_t>(chunks + 1), 0), bad(static_cast<std::size_t>(chunks), -1);
+  std::vector<index_t> count(to_size(chunks + 1), 0), bad(to_size(chunks), -1);
   exec.parallel_for(0, chunks, [&](index_t b) {
     index_t n = 0;
     for (index_t f = b * block; f < std::min(nf, (b + 1) * block); ++f) {
-      const auto& face = mesh.faces[static_cast<std::size_t>(f)];
+      const auto& face = mesh.faces[to_size(f)];
       if (static_cast<std::uint32_t>(face[0]) >= static_cast<std::uint64_t>(nv) ||
           static_cast<std::uint32_t>(face[1]) >= static_cast<std::uint64_t>(nv) ||
           static_cast<std::uint32_t>(face[2]) >= static_cast<std::uint64_t>(nv)) {
-        if (bad[static_cast<std::size_t>(b)] < 0) bad[static_cast<std::size_t>(b)] = f;
-        out.state[static_cast<std::size_t>(f)] = 0;
+        if (bad[to_size(b)] < 0) bad[to_size(b)] = f;
+        out.state[to_size(f)] = 0;
         continue;
       }
-      const std::uint8_t c0 = codes[static_cast<std::size_t>(face[0])], c1 = codes[static_cast<std::size_t>(face[1])],
-                         c2 = codes[static_cast<std::size_t>(face[2])];
+      const std::uint8_t c0 = codes[to_size(face[0])], c1 = codes[to_size(face[1])], c2 = codes[to_size(face[2])];
       std::uint8_t st = 0;
       if ((c0 & c1 & c2) == 0) {
         st = static_cast<std::uint8_t>(((c0 | c1 | c2) & 16) ? face_visibility::near_clipped : face_visibility::inside);
@@ -76,10 +75,10 @@ status project_for_session(const terrain_mesh& mesh, const terrain_camera& camer
           if (dot(n3, a - out.eye) >= 0) st = 0;
         }
       }
-      out.state[static_cast<std::size_t>(f)] = st;
+      out.state[to_size(f)] = st;
       n += st != 0 ? 1 : 0;
     }
-    count[static_cast<std::size_t>(b + 1)] = n;
+    count[to_size(b + 1)] = n;
   });
   for (const index_t f : bad)
     if (f >= 0) {

@@ -41,13 +41,13 @@ inline std::int32_t continue_neighbour_placement(const std::array<std::int32_t, 
   int best = -1;
   std::int32_t best_region = 0;
   for (int k = 0; k < 3; ++k) {
-    const std::int32_t n = nb[static_cast<std::size_t>(k)];
+    const std::int32_t n = nb[to_size(k)];
     if (!is_face_index(n, nf)) continue;
-    const std::int32_t r = region[static_cast<std::size_t>(n)];
+    const std::int32_t r = region[to_size(n)];
     if (r < 0) continue;
     ++synthesized;
     const bool older = best < 0 || (oldest_first && r < best_region);
-    if (older && fits_level(b, hw, hh, placements[static_cast<std::size_t>(r)])) {
+    if (older && fits_level(b, hw, hh, placements[to_size(r)])) {
       best = k;
       best_region = r;
     }
@@ -66,9 +66,9 @@ inline vec2 placement_preference(const std::array<std::int32_t, 3>& nb, index_t 
   if (synthesized == 0) return toward;
   vec2 away{};
   for (int k = 0; k < 3; ++k) {
-    const std::int32_t n = nb[static_cast<std::size_t>(k)];
-    if (!is_face_index(n, nf) || region[static_cast<std::size_t>(n)] < 0) continue;
-    const auto& bn = bounds[static_cast<std::size_t>(n)];
+    const std::int32_t n = nb[to_size(k)];
+    if (!is_face_index(n, nf) || region[to_size(n)] < 0) continue;
+    const auto& bn = bounds[to_size(n)];
     away += vec2{static_cast<double>(bn[0] + bn[2]), static_cast<double>(bn[1] + bn[3])} * 0.5;
   }
   const vec2 d = vec2{static_cast<double>(b[0] + b[2]), static_cast<double>(b[1] + b[3])} * 0.5 - away / synthesized;
@@ -85,11 +85,11 @@ inline int fitting_axis(const std::array<std::int32_t, 3>& nb, index_t nf, const
   int keep = -1;
   std::int32_t oldest = std::numeric_limits<std::int32_t>::max();
   for (int k = 0; k < 3; ++k) {
-    const std::int32_t n = nb[static_cast<std::size_t>(k)];
+    const std::int32_t n = nb[to_size(k)];
     if (!is_face_index(n, nf)) continue;
-    const std::int32_t r = region[static_cast<std::size_t>(n)];
+    const std::int32_t r = region[to_size(n)];
     if (r < 0 || r >= oldest) continue;
-    const vec2 p = placements[static_cast<std::size_t>(r)];
+    const vec2 p = placements[to_size(r)];
     const bool fx = fits_level_x(b, hw, p), fy = fits_level_y(b, hh, p);
     if (fx || fy) {
       oldest = r;

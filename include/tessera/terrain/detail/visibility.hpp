@@ -36,22 +36,22 @@ status check_visible_geometry(const terrain_mesh& mesh, const screen_projection&
   const index_t nvis = proj.num_visible(), nv = mesh.num_vertices();
   constexpr index_t block = 16384;
   const index_t chunks = (nvis + block - 1) / block;
-  std::vector<index_t> bad(static_cast<std::size_t>(chunks), -1);
+  std::vector<index_t> bad(to_size(chunks), -1);
   exec.parallel_for(0, chunks, [&](index_t c) {
     for (index_t i = c * block; i < std::min(nvis, (c + 1) * block); ++i) {
-      const std::int32_t f = proj.visible[static_cast<std::size_t>(i)];
+      const std::int32_t f = proj.visible[to_size(i)];
       bool ok = is_visible_face(proj, f);
       if (ok)
-        for (const std::int32_t v : mesh.faces[static_cast<std::size_t>(f)]) ok = ok && v >= 0 && v < nv;
+        for (const std::int32_t v : mesh.faces[to_size(f)]) ok = ok && v >= 0 && v < nv;
       if (!ok) {
-        bad[static_cast<std::size_t>(c)] = i;
+        bad[to_size(c)] = i;
         return;
       }
     }
   });
   for (const index_t i : bad) {
     if (i < 0) continue;
-    const std::int32_t f = proj.visible[static_cast<std::size_t>(i)];
+    const std::int32_t f = proj.visible[to_size(i)];
     if (!is_visible_face(proj, f)) return bad_visible_entry(stage, i, f);
     return status::out_of_range(
         detail::cat(stage, ": face ", f, " names a vertex outside the mesh's ", nv, " vertices"));
@@ -64,7 +64,7 @@ status render_visibility(const terrain_mesh& mesh, const screen_projection& proj
                          bool want_world, index_t tile_size, E& exec) {
   vb.width = proj.width;
   vb.height = proj.height;
-  const auto n = static_cast<std::size_t>(proj.width * proj.height);
+  const auto n = to_size(proj.width * proj.height);
   vb.face.assign(n, -1);
   vb.depth.assign(n, std::numeric_limits<float>::infinity());
   if (want_world) vb.world.assign(n, {0, 0, 0});
@@ -72,18 +72,18 @@ status render_visibility(const terrain_mesh& mesh, const screen_projection& proj
   return rasterize_clip_triangles(
       proj.num_visible(), vp, pixel_rect{0, 0, proj.width, proj.height},
       [&](index_t i, clip_triangle& t) {
-        t = proj.clip_face(mesh, proj.visible[static_cast<std::size_t>(i)]);
+        t = proj.clip_face(mesh, proj.visible[to_size(i)]);
         return true;
       },
       [&](index_t i, const fragment& f) {
-        const auto p = static_cast<std::size_t>(f.y * vb.width + f.x);
+        const auto p = to_size(f.y * vb.width + f.x);
         const auto w = static_cast<float>(f.w);
         if (!(w < vb.depth[p])) return;
         vb.depth[p] = w;
-        const std::int32_t face = proj.visible[static_cast<std::size_t>(i)];
+        const std::int32_t face = proj.visible[to_size(i)];
         vb.face[p] = face;
         if (want_world) {
-          const auto& fv = mesh.faces[static_cast<std::size_t>(face)];
+          const auto& fv = mesh.faces[to_size(face)];
           const vec3 q =
               mesh.position(fv[0]) * f.bary[0] + mesh.position(fv[1]) * f.bary[1] + mesh.position(fv[2]) * f.bary[2];
           vb.world[p] = {static_cast<float>(q.x), static_cast<float>(q.y), static_cast<float>(q.z)};
@@ -100,14 +100,14 @@ std::vector<float> face_light(const terrain_mesh& mesh, const screen_projection&
   std::vector<float> light;
   const vec3 l = normalized(vec3{sun[0], sun[1], sun[2]});
   if (norm(l) == 0) return light;
-  light.assign(static_cast<std::size_t>(mesh.num_faces()), 1.0f);
+  light.assign(to_size(mesh.num_faces()), 1.0f);
   exec.parallel_for(0, proj.num_visible(), [&](index_t i) {
-    const std::int32_t f = proj.visible[static_cast<std::size_t>(i)];
-    const auto& fv = mesh.faces[static_cast<std::size_t>(f)];
+    const std::int32_t f = proj.visible[to_size(i)];
+    const auto& fv = mesh.faces[to_size(f)];
     const vec3 a = mesh.position(fv[0]);
     vec3 n = normalized(cross(mesh.position(fv[1]) - a, mesh.position(fv[2]) - a));
     if (dot(n, proj.eye - a) < 0) n = -n;
-    light[static_cast<std::size_t>(f)] = static_cast<float>(ambient + (1 - ambient) * std::max(0.0, dot(n, l)));
+    light[to_size(f)] = static_cast<float>(ambient + (1 - ambient) * std::max(0.0, dot(n, l)));
   });
   return light;
 }
