@@ -24,13 +24,16 @@ int run_quilt(const cli::arguments& args) {
   if (inpaint && !(args.has("--mask") && args.has("--in")))
     return cli::fail(args,
                      tessera::status::invalid_argument("--mask and --in go together (fill the masked pixels of --in)"));
-  if (!inpaint && !args.has("--exemplar"))
-    return cli::fail(args, tessera::status::invalid_argument("missing required option --exemplar"));
+  if (!inpaint && !args.has("--exemplar")) return cli::fail(args, cli::arguments::missing("--exemplar"));
   auto patch = args.integer("--patch", 0, 0, 65536);
   auto overlap = args.integer("--overlap", 0, 0, 65536);
   auto tolerance = args.number("--tolerance", 0.1, 0, 1e30);
   for (const auto* r : {&patch.error(), &overlap.error(), &tolerance.error()})
     if (!r->ok()) return cli::fail(args, *r);
+  // the output size (quilting only), checked before any file is read
+  tessera::result<std::pair<index_t, index_t>> size = std::pair<index_t, index_t>{0, 0};
+  if (!inpaint) size = args.size("--size", 65536, tessera::max_quilt_pixels);
+  if (!size) return cli::fail(args, size.error());
   tessera::quilt_options options{.patch_size = static_cast<index_t>(*patch),
                                  .overlap = static_cast<index_t>(*overlap),
                                  .tolerance = *tolerance,
@@ -60,9 +63,6 @@ int run_quilt(const cli::arguments& args) {
           }
           if (!result) return result;
         } else {
-          if (!args.has("--size")) return tessera::status::invalid_argument("missing required option --size");
-          auto size = args.size("--size", 65536, tessera::max_quilt_pixels);
-          if (!size) return size.error();
           auto ex = cli::load_image_source<T, C>(args, "--exemplar");
           if (!ex) return ex.error();
           auto buffer = tessera::image_buffer<T, C>::create(size->first, size->second);

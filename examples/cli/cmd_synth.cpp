@@ -65,8 +65,7 @@ tessera::result<synth_request> parse(const cli::arguments& args) {
     r.width = static_cast<index_t>(v[2]);
     r.height = static_cast<index_t>(v[3]);
   } else {
-    auto size = args.size("--size", max_side, max_pixels);
-    if (!args.has("--size")) return status::invalid_argument("missing required option --size (or --window)");
+    auto size = args.size("--size", max_side, max_pixels);  // required unless --window is given
     if (!size) return size.error();
     r.width = size->first;
     r.height = size->second;

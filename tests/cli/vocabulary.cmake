@@ -52,6 +52,17 @@ tessera_cli_test(NAME "cli: vocabulary a command restates a shared option"
 _refused("a bad --threads is refused for every command" 2 "--threads expects an integer, got 'x'"
          render --in x.obj --out x.png --threads x)
 
+# --size: quilt and synth read it with the shared parser, so a missing or bad size is worded as in
+# every command (nothing after the option's name; the value checked before any file is read)
+foreach(_c quilt synth)
+  _refused("${_c} names a missing --size" 1 "tessera ${_c}: invalid_argument: missing required option --size[^ (]"
+           ${_c} --exemplar sand --exemplar-size 32 --out ${_v}/never.png)
+  _refused("${_c} refuses --size 0x4" 1 "tessera ${_c}: invalid_argument: --size expects positive integers WxH, got '0x4'"
+           ${_c} --exemplar ${_v}/nowhere.png --size 0x4 --out ${_v}/never.png)
+endforeach()
+_refused("sample refuses --size 0x4" 1 "tessera sample: invalid_argument: --size expects positive integers WxH, got '0x4'"
+         sample dots --size 0x4 --out ${_v}/never.png)
+
 # meshes: exemplar --size L = LxL; render --tile/--size = --grid/--image-size; mesh-quilt WxH = X,Y;
 # polycube --in = --mesh
 _vocab("exemplar --size L" voc_ex exemplar rings --size 6.4 --segments 8 --out ${_v}/ex_l.obj)
