@@ -52,17 +52,17 @@ demo_foundation() {
     step "foundation: tessera sample (procedural exemplars used by the other demos)"
     local kind
     for kind in grass sand rock bricks cells weave dots; do
-      run "$TESSERA" sample "$kind" --size 128x128 --seed 1 --out "$out/$kind.png"
+      run "$TESSERA" sample --kind "$kind" --size 128x128 --seed 1 --out "$out/$kind.png"
     done
   fi
   if has_command info; then
     step "foundation: tessera info / convert"
-    run "$TESSERA" info "$examples/01_hello.png"
-    run "$TESSERA" info "$examples/07_eigen_mesh.obj"
+    run "$TESSERA" info --in "$examples/01_hello.png"
+    run "$TESSERA" info --in "$examples/07_eigen_mesh.obj"
     if has_command convert; then
-      run "$TESSERA" convert "$examples/07_eigen_mesh.obj" "$out/07_eigen_mesh.ply" --binary
-      run "$TESSERA" info "$out/07_eigen_mesh.ply"
-      run "$TESSERA" convert "$examples/01_hello.png" "$out/01_hello_grey16.png" --channels 1 --depth 16
+      run "$TESSERA" convert --in "$examples/07_eigen_mesh.obj" --out "$out/07_eigen_mesh.ply" --binary
+      run "$TESSERA" info --in "$out/07_eigen_mesh.ply"
+      run "$TESSERA" convert --in "$examples/01_hello.png" --out "$out/01_hello_grey16.png" --channels 1 --depth 16
     fi
   fi
 }
@@ -125,9 +125,9 @@ demo_surface() {
   local out=$OUT/surface
   mkdir -p "$out"
   step "surface: a polycube map of a torus (8 tiles across), its quad layout, previews"
-  run "$TESSERA" polycube --mesh "$TESSERA_ROOT/tests/data/surface/torus.obj" --out "$out/torus_polycube.obj" \
+  run "$TESSERA" polycube --in "$TESSERA_ROOT/tests/data/surface/torus.obj" --out "$out/torus_polycube.obj" \
     --tiles-across 8 --quads-out "$out/torus_quads.obj" --stats
-  run "$TESSERA" render "$out/torus_polycube.obj" --out "$out/torus_polycube.png"
+  run "$TESSERA" render --in "$out/torus_polycube.obj" --out "$out/torus_polycube.png"
 }
 
 # ---- geometric textures (paper 000) ---------------------------------------------------------------------
@@ -135,12 +135,12 @@ demo_geometry() {
   local out=$OUT/geometry
   mkdir -p "$out"
   step "geometry: an exemplar, a quilted larger texture, a geometric Wang tile set and a tiled plane"
-  run "$TESSERA" exemplar stones --out "$out/stones.obj" --seed 3
-  run "$TESSERA" mesh-quilt --exemplar "$out/stones.obj" --size 16,12 --out "$out/quilt.obj" --stats
+  run "$TESSERA" exemplar --kind stones --out "$out/stones.obj" --seed 3
+  run "$TESSERA" mesh-quilt --exemplar "$out/stones.obj" --size 16x12 --out "$out/quilt.obj" --stats
   run "$TESSERA" geo-wang build --exemplar "$out/stones.obj" --colors 2,2 --tile 6.4 --out "$out/tiles" --stats
   run "$TESSERA" geo-wang tile --tiles "$out/tiles" --grid 8x6 --out "$out/plane.obj" --stats
-  run "$TESSERA" render "$out/quilt.obj" --out "$out/quilt.png"
-  run "$TESSERA" render "$out/plane.obj" --out "$out/plane.png" --grid 6.4
+  run "$TESSERA" render --in "$out/quilt.obj" --out "$out/quilt.png"
+  run "$TESSERA" render --in "$out/plane.obj" --out "$out/plane.png" --tile 6.4
 }
 
 DEMO_BLOCKS=(foundation patch wang fabric terrain geometry surface)

@@ -25,7 +25,7 @@ fi
 for m in $meshes; do
   for n in 8 16; do
     printf '%s %s ' "$m" "$n"
-    "$build/bin/tessera" polycube --mesh "$out/$m.off" --out "$out/${m}_pc$n.obj" --tiles-across "$n" --threads 2 \
+    "$build/bin/tessera" polycube --in "$out/$m.off" --out "$out/${m}_pc$n.obj" --tiles-across "$n" --threads 2 \
       --stats 2>&1 | head -c 400 || true
     echo
   done
