@@ -1,4 +1,5 @@
-// tessera convert IN OUT: between PNG bit depths / channel counts, and between mesh formats.
+// tessera convert --in IN --out OUT (or IN OUT): between PNG bit depths / channel counts, and between
+// mesh formats.
 #include <cstdint>
 #include <string>
 
@@ -111,7 +112,7 @@ int run_convert(const cli::arguments& args) {
 const cli::registrar reg({
     .name = "convert",
     .summary = "convert a PNG (channels, bit depth) or a mesh between OBJ, OFF and PLY",
-    .usage = "tessera convert IN OUT [--channels C] [--depth 8|16] [--binary] [--stats]",
+    .usage = "tessera convert --in IN --out OUT [--channels C] [--depth 8|16] [--binary] [--stats]",
     .options = {{"--in", "IN", "input PNG or mesh (or IN as the first argument)"},
                 {"--out", "OUT", "output of the same kind (or OUT as the second argument)"},
                 {"--channels", "C", "PNG: output channels 1-4 (grey, grey+alpha, RGB, RGBA; default: as input)"},

@@ -1,4 +1,4 @@
-// tessera exemplar rings|stones|weave --out E.obj: procedural geometric-texture exemplars
+// tessera exemplar --kind rings|stones|weave --out E.obj: procedural geometric-texture exemplars
 // (geometry/mesh_exemplars.hpp) for mesh quilting and geometric Wang tiles.
 #include <string>
 
@@ -78,7 +78,7 @@ const cli::registrar reg{[] {
   cli::command c{
       "exemplar",
       "generate a geometric-texture exemplar mesh (rings, stones, weave)",
-      "tessera exemplar rings|stones|weave --out E.obj [--seed S] [--size L] [--density D] [--segments N] "
+      "tessera exemplar --kind rings|stones|weave --out E.obj [--seed S] [--size L] [--density D] [--segments N] "
       "[--chain-mail]",
       {{"--kind", "KIND", "rings, stones or weave (or KIND as the argument)"},
        {"--out", "FILE", "output mesh (.obj, .off or .ply)"},

@@ -1,4 +1,4 @@
-// tessera info FILE: what an image or mesh file holds.
+// tessera info --in FILE (or info FILE): what an image or mesh file holds.
 #include <cstdio>
 #include <string>
 
@@ -113,7 +113,7 @@ int run_info(const cli::arguments& args) {
 const cli::registrar reg({
     .name = "info",
     .summary = "print what an image (PNG) or mesh (OBJ, OFF, PLY) file holds",
-    .usage = "tessera info FILE [--stats]",
+    .usage = "tessera info --in FILE [--stats]",
     .options = {{"--in", "FILE", "the PNG or mesh file (or FILE as the argument)"},
                 {"--stats", "", "print one JSON line with the same figures instead of text"}},
     .run = run_info,

@@ -1,4 +1,4 @@
-// tessera polycube --mesh IN --out PC.obj: the polycube map of a closed triangle mesh
+// tessera polycube --in IN --out PC.obj: the polycube map of a closed triangle mesh
 // (surface/build_polycube_map.hpp, paper 000 §4). PC.obj is the polycube-deformed mesh in the input's
 // vertex and face order (the construction never refines the base mesh, so --base-out writes the base
 // as read and `refined` is always false).

@@ -1,4 +1,4 @@
-// tessera render IN.obj --out P.png: a shaded preview of a mesh (io/mesh_preview.hpp).
+// tessera render --in IN.obj --out P.png: a shaded preview of a mesh (io/mesh_preview.hpp).
 #include <string>
 
 #include <tessera/io/mesh_file.hpp>
@@ -61,7 +61,7 @@ int run(const cli::arguments& args) {
 const cli::registrar reg({
     .name = "render",
     .summary = "render a shaded preview of a mesh to PNG",
-    .usage = "tessera render IN.obj --out P.png [--view oblique|top|front|side] [options]",
+    .usage = "tessera render --in IN.obj --out P.png [--view oblique|top|front|side] [options]",
     .options = {{"--in", "IN", "the mesh (.obj, .off, .ply; or IN as the argument)"},
                 {"--out", "FILE", "output PNG"},
                 {"--view", "V", "oblique (default), top, front or side"},

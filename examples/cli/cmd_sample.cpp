@@ -1,4 +1,4 @@
-// tessera sample KIND --size WxH --out E.png: a procedural exemplar image (image/exemplars.hpp).
+// tessera sample --kind KIND --size WxH --out E.png: a procedural exemplar image (image/exemplars.hpp).
 #include <cstdint>
 #include <string>
 
@@ -56,7 +56,7 @@ int run_sample(const cli::arguments& args) {
 const cli::registrar reg({
     .name = "sample",
     .summary = "write a procedural exemplar image (grass sand rock bricks cells weave dots)",
-    .usage = "tessera sample KIND --size WxH --out E.png [--seed S] [--stats]",
+    .usage = "tessera sample --kind KIND --size WxH --out E.png [--seed S] [--stats]",
     .options = {{"--kind", "KIND", "grass, sand, rock, bricks, cells, weave or dots (or KIND as the argument)"},
                 {"--size", "WxH", "image size (default 128x128; at most 16384 per side)"},
                 {"--out", "FILE", "output PNG (required)"},

@@ -1,7 +1,7 @@
 // tessera tones: the main tones of an image and their shares (paper 001 §1.3), so a source image can
 // be designed to match a target fabric.
-//   tessera tones IN.png [--max N]                   dominant tones by k-means, largest share first
-//   tessera tones IN.png --palette "#000000:1,..."   share of the pixels nearest to each given tone
+//   tessera tones --in IN.png [--max N]                   dominant tones by k-means, largest share first
+//   tessera tones --in IN.png --palette "#000000:1,..."   share of the pixels nearest to each given tone
 // The text output ends with a --palette line ready for `tessera fabric`.
 #include <cstdio>
 #include <string>
@@ -96,7 +96,7 @@ std::vector<cli::option_spec> options() {
 const cli::registrar reg({
     .name = "tones",
     .summary = "the main tones of an image and their shares, to design a matching fabric source (paper 001)",
-    .usage = "tessera tones IN.png [--max N | --palette LIST] [--stats]",
+    .usage = "tessera tones --in IN.png [--max N | --palette LIST] [--stats]",
     .options = options(),
     .run = run,
     .positional = "IN.png",

@@ -105,7 +105,7 @@ tessera_cli_test(NAME "cli: tones of a perturbed cloth"  # 4 tones found, shares
 set_tests_properties("cli: tones of the twill" "cli: tones --stats" "cli: tones against a given palette"
                      PROPERTIES FIXTURES_REQUIRED fabric_twill)
 set_tests_properties("cli: tones of a perturbed cloth" PROPERTIES FIXTURES_REQUIRED fabric_palette)
-tessera_cli_test(NAME "cli: tones --help" REGEX "usage: tessera tones IN.png" COMMAND tones --help)
+tessera_cli_test(NAME "cli: tones --help" REGEX "usage: tessera tones --in IN.png" COMMAND tones --help)
 tessera_cli_test(NAME "cli: tones rejects no image" CODE 1 REGEX "expects exactly one image IN.png" COMMAND tones)
 tessera_cli_test(NAME "cli: tones rejects --max 0" CODE 1 REGEX "--max expects an integer in \\[1, 64\\], got '0'"
                  COMMAND tones ${_o}/twill.png --max 0)
