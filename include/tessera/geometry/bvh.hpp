@@ -19,6 +19,12 @@
 
 TESSERA_NAMESPACE_BEGIN
 
+namespace detail {
+/// Added to each side of a box when the pair traversal compares volumes to pick the node to descend,
+/// so flat (zero-thickness) boxes still compare by their other sides instead of all being 0.
+inline constexpr double bvh_box_thickness_floor = 1e-12;
+}  // namespace detail
+
 /// Result of a closest-point query. `face` is -1 when the hierarchy is empty or nothing lies within
 /// the search radius.
 struct bvh_closest_hit {
@@ -210,7 +216,8 @@ class triangle_bvh {
   }
   static double volume(const aabb& b) noexcept {
     const vec3 e = b.extent();
-    return (e.x + 1e-12) * (e.y + 1e-12) * (e.z + 1e-12);
+    return (e.x + detail::bvh_box_thickness_floor) * (e.y + detail::bvh_box_thickness_floor) *
+           (e.z + detail::bvh_box_thickness_floor);
   }
   static bool ray_box(vec3 o, vec3 inv, const aabb& b, double t0, double t1) noexcept {
     for (int i = 0; i < 3; ++i) {

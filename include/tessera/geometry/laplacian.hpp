@@ -22,6 +22,12 @@
 
 TESSERA_NAMESPACE_BEGIN
 
+namespace detail {
+/// Floor of the mean diagonal of L^T L that the regularization is relative to, so a system with a
+/// zero diagonal (no free vertex moves anything) still gets a positive regularization.
+inline constexpr double laplacian_min_mean_diagonal = 1e-12;
+}  // namespace detail
+
 /// How edges are weighted in the Laplacian.
 enum class laplacian_weighting {
   cotangent,  ///< w_ij = (cot a_ij + cot b_ij) / 2, clamped to [-1e4, 1e4] for degenerate faces
@@ -180,7 +186,7 @@ result<std::vector<vec3>> laplacian_deform(const M& mesh, std::span<const unsign
   double mean_diag = 0;
   for (int i = 0; i < nfree; ++i) mean_diag += A.coeff(i, i);
   mean_diag = nfree > 0 ? mean_diag / nfree : 1.0;
-  const double eps = options.regularization * std::max(mean_diag, 1e-12);
+  const double eps = options.regularization * std::max(mean_diag, detail::laplacian_min_mean_diagonal);
   dense3 x0(nfree, 3);
   for (index_t v = 0; v < nv; ++v)
     if (col[detail::to_size(v)] >= 0) x0.row(col[detail::to_size(v)]) = X.row(static_cast<int>(v));

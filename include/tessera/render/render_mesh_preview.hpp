@@ -44,6 +44,10 @@ struct mesh_preview_options {
 };
 
 namespace detail {
+/// Floor of the mesh's extent along each view axis, so a flat (or single-point) mesh still gets a
+/// finite scale and depth instead of a division by zero.
+inline constexpr double preview_min_extent = 1e-12;
+
 inline std::array<float, 3> tint(std::array<float, 3> c, index_t id) {
   const std::uint64_t h = mix64(static_cast<std::uint64_t>(id) + 0x1234567ULL);
   const float k = 0.85f + 0.3f * static_cast<float>((h >> 11) & 0xff) / 255.0f;
@@ -91,11 +95,12 @@ result<image_buffer<std::uint8_t, 3>> render_mesh_preview(const M& mesh, const m
     z1 = std::max(z1, dot(p, f));
   }
   const double mw = o.width * (1 - 2 * o.margin), mh = o.height * (1 - 2 * o.margin);
-  const double scale = std::min(mw / std::max(x1 - x0, 1e-12), mh / std::max(y1 - y0, 1e-12));
+  const double scale =
+      std::min(mw / std::max(x1 - x0, detail::preview_min_extent), mh / std::max(y1 - y0, detail::preview_min_extent));
   const double ox = 0.5 * (o.width - scale * (x1 - x0)), oy = 0.5 * (o.height - scale * (y1 - y0));
   auto project = [&](vec3 p) {
     return raster_vertex{ox + (dot(p, r) - x0) * scale, oy + (y1 - dot(p, u)) * scale,
-                         (dot(p, f) - z0) / std::max(z1 - z0, 1e-12) * 0.98 + 0.01, 1.0};
+                         (dot(p, f) - z0) / std::max(z1 - z0, detail::preview_min_extent) * 0.98 + 0.01, 1.0};
   };
   std::vector<raster_vertex> sv(m.positions.size());
   for (std::size_t v = 0; v < sv.size(); ++v) sv[v] = project(m.positions[v]);

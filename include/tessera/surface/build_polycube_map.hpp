@@ -31,6 +31,8 @@
 TESSERA_NAMESPACE_BEGIN
 
 namespace detail {
+/// A deformed face is axis-aligned when its unit normal's dot with a label direction exceeds 1 minus this.
+inline constexpr double axis_aligned_cos_slack = 1e-9;
 inline tri_mesh polycube_base_copy(const tri_mesh& m) {
   tri_mesh b;
   b.positions = m.positions;
@@ -158,7 +160,7 @@ result<polycube_map> polycube_map_from_deformed(const M& mesh, const D& deformed
     const vec3 n = normalized(face_area_normal(deformed, f));
     int best = -1;
     for (int l = 0; l < 6; ++l)
-      if (dot(n, label_direction(static_cast<polycube_label>(l))) > 1 - 1e-9) best = l;
+      if (dot(n, label_direction(static_cast<polycube_label>(l))) > 1 - detail::axis_aligned_cos_slack) best = l;
     if (best < 0)
       return status::invalid_argument(detail::cat("deformed mesh: face ", f, " is not axis-aligned (normal ", n.x, ", ",
                                                   n.y, ", ", n.z, "): not a polycube"));

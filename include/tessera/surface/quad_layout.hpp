@@ -14,11 +14,18 @@
 #include "../core/status.hpp"
 #include "../core/tri_mesh.hpp"
 #include "../core/vec.hpp"
+#include "detail/tolerances.hpp"
 #include "polycube_map.hpp"
 
 TESSERA_NAMESPACE_BEGIN
 
 namespace detail {
+/// Barycentric slack of the quad-centre-in-face test, so a centre on a face edge is found in a face.
+inline constexpr double quad_centre_bary_slack = 1e-9;
+/// A chart's area (in tiles) and its count of whole grid squares may differ by this fraction (of the
+/// area, at least 1) before the chart's boundary counts as off the tile grid.
+inline constexpr double chart_area_tolerance = 1e-6;
+
 /// In-plane axes of a label: side 0 of its quads runs along the first, side 1 along the second, so that
 /// the quad corners run counter-clockwise seen from the label direction.
 constexpr std::array<int, 2> quad_plane_axes(polycube_label l) noexcept {
@@ -30,7 +37,7 @@ inline bool point_in_triangle_2d(vec2 p, vec2 a, vec2 b, vec2 c) noexcept {
   const double d = cross(b - a, c - a);
   if (d == 0) return false;
   const double s = cross(b - a, p - a) / d, t = cross(p - a, c - a) / d;
-  const double e = 1e-9;
+  const double e = quad_centre_bary_slack;
   return s >= -e && t >= -e && s + t <= 1 + e;
 }
 }  // namespace detail
@@ -65,10 +72,12 @@ inline result<quad_layout> build_quad_layout(const polycube_map& map, std::int64
     auto& g = out.chart_grids[c];
     if (!(box[c][2] - box[c][0] < 1e15 && box[c][3] - box[c][1] < 1e15))
       return status::size_overflow(detail::cat("polycube: chart ", c, " spans too many tiles"));
-    g.origin = {static_cast<std::int64_t>(std::floor(box[c][0] + 1e-9)),
-                static_cast<std::int64_t>(std::floor(box[c][1] + 1e-9))};
-    g.size = {std::max<std::int64_t>(0, static_cast<std::int64_t>(std::ceil(box[c][2] - 1e-9)) - g.origin[0]),
-              std::max<std::int64_t>(0, static_cast<std::int64_t>(std::ceil(box[c][3] - 1e-9)) - g.origin[1])};
+    g.origin = {static_cast<std::int64_t>(std::floor(box[c][0] + detail::tile_grid_rounding)),
+                static_cast<std::int64_t>(std::floor(box[c][1] + detail::tile_grid_rounding))};
+    g.size = {std::max<std::int64_t>(
+                  0, static_cast<std::int64_t>(std::ceil(box[c][2] - detail::tile_grid_rounding)) - g.origin[0]),
+              std::max<std::int64_t>(
+                  0, static_cast<std::int64_t>(std::ceil(box[c][3] - detail::tile_grid_rounding)) - g.origin[1])};
     if (g.size[0] > max_cells || g.size[1] > max_cells || g.size[0] * g.size[1] > max_cells - cells)
       return status::size_overflow(
           detail::cat("polycube: the charts' tile rectangles exceed ", max_cells, " squares; use a larger tile size"));
@@ -136,7 +145,8 @@ inline result<quad_layout> build_quad_layout(const polycube_map& map, std::int64
         }
         out.quads.push_back(q);
       }
-    if (std::abs(static_cast<double>(count) - chart_area[c]) > 1e-6 * std::max(1.0, chart_area[c]))
+    if (std::abs(static_cast<double>(count) - chart_area[c]) >
+        detail::chart_area_tolerance * std::max(1.0, chart_area[c]))
       return status::not_converged(detail::cat("polycube: chart ", c, " covers ", chart_area[c], " tiles of area but ",
                                                count, " whole squares: its boundary is off the tile grid"));
   }

@@ -21,6 +21,7 @@
 #include "../core/progress.hpp"
 #include "../core/status.hpp"
 #include "detail/resample.hpp"
+#include "detail/tolerances.hpp"
 
 TESSERA_NAMESPACE_BEGIN
 
@@ -71,10 +72,10 @@ class exemplar_pyramid {
   /// levels nearest to s, linear between them, clamped at the borders. Channels as unit floats
   /// (0..1 for integer channels, unchanged for float). O(1); thread-safe.
   [[nodiscard]] std::array<float, C> sample(double s, double u, double v) const noexcept {
-    // positions within 1e-3 of a level (a stepped scale field matched to the pyramid, scales
-    // stored as float) sample that level alone
+    // positions within single_level_snap of a level (a stepped scale field matched to the pyramid,
+    // scales stored as float) sample that level alone
     const double pos = level_position(s), near = std::floor(pos + 0.5);
-    const bool exact = std::abs(pos - near) < 1e-3;
+    const bool exact = std::abs(pos - near) < detail::single_level_snap;
     const auto k0 = static_cast<index_t>(exact ? near : std::floor(pos));
     const double f = exact ? 0.0 : pos - static_cast<double>(k0);
     std::array<float, C> a = bilinear(k0, u / s, v / s);
@@ -110,7 +111,9 @@ result<exemplar_pyramid<T, C>> build_pyramid_from_buffer(const image_buffer<T, C
                                                          const exemplar_pyramid_options& opts, E& exec) {
   index_t n = opts.levels;
   if (n == 0)
-    n = opts.min_scale >= 1 ? 1 : static_cast<index_t>(std::ceil((1 - opts.min_scale) / opts.max_step - 1e-9)) + 1;
+    n = opts.min_scale >= 1
+            ? 1
+            : static_cast<index_t>(std::ceil((1 - opts.min_scale) / opts.max_step - detail::level_count_rounding)) + 1;
   if (n > 4096)
     return status::invalid_argument(
         detail::cat("exemplar pyramid: ", n, " levels requested; at most 4096 (raise max_step)"));

@@ -20,6 +20,7 @@
 #include "../core/status.hpp"
 #include "../render/triangle_rasterizer.hpp"
 #include "build_exemplar_pyramid.hpp"
+#include "detail/tolerances.hpp"
 #include "detail/visibility.hpp"
 #include "render_terrain_frame.hpp"
 #include "terrain_session.hpp"
@@ -78,7 +79,7 @@ status render_anchored_frame(const terrain_mesh& mesh, const terrain_session& se
                                                 pyramid.height(), ", ", pyramid.num_levels(),
                                                 " levels) must be of the session's exemplar (",
                                                 session.exemplar_width(), " x ", session.exemplar_height(), ")"));
-  if (pyramid.min_scale() > session.options().min_scale * (1 + 1e-9))
+  if (pyramid.min_scale() > session.options().min_scale * (1 + detail::scale_match_slack))
     return status::invalid_argument(detail::cat("render_anchored_frame: the session reaches scale ",
                                                 session.options().min_scale, " but the pyramid only ",
                                                 pyramid.min_scale()));

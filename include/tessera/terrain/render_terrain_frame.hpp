@@ -22,6 +22,7 @@
 #include "assign_scale_field.hpp"
 #include "build_exemplar_pyramid.hpp"
 #include "detail/seam_feather.hpp"
+#include "detail/tolerances.hpp"
 #include "detail/visibility.hpp"
 #include "prepare_terrain_mesh.hpp"
 #include "project_mesh.hpp"
@@ -76,7 +77,7 @@ status check_frame_inputs(const terrain_mesh& mesh, const screen_projection& pro
                                                 " faces) and synthesis (", syn.region.size(),
                                                 " faces) must belong to the mesh (", nf, " faces)"));
   if (pyramid.num_levels() == 0) return status::invalid_argument("render_terrain_frame: the exemplar pyramid is empty");
-  if (!(field.min_scale > 0 && field.min_scale >= pyramid.min_scale() * (1 - 1e-9)))
+  if (!(field.min_scale > 0 && field.min_scale >= pyramid.min_scale() * (1 - detail::scale_match_slack)))
     return status::invalid_argument(detail::cat("render_terrain_frame: the scale field reaches scale ", field.min_scale,
                                                 " but the exemplar pyramid only ", pyramid.min_scale(),
                                                 ": build both with the same min_scale"));
@@ -84,7 +85,7 @@ status check_frame_inputs(const terrain_mesh& mesh, const screen_projection& pro
   constexpr index_t block = 16384;
   const index_t chunks = (nvis + block - 1) / block;
   std::vector<index_t> bad(to_size(chunks), -1);
-  const float lo = static_cast<float>(field.min_scale) * (1 - 1e-6f);
+  const float lo = static_cast<float>(field.min_scale) * (1 - detail::float_scale_slack);
   exec.parallel_for(0, chunks, [&](index_t c) {
     for (index_t i = c * block; i < std::min(nvis, (c + 1) * block); ++i) {
       const auto fi = to_size(proj.visible[to_size(i)]);

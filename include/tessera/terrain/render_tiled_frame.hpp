@@ -20,6 +20,7 @@
 #include "../core/image_checks.hpp"
 #include "../core/status.hpp"
 #include "detail/resample.hpp"
+#include "detail/tolerances.hpp"
 #include "detail/visibility.hpp"
 #include "prepare_terrain_mesh.hpp"
 #include "project_mesh.hpp"
@@ -50,7 +51,7 @@ class tiled_texture {
     const auto k = static_cast<index_t>(lod);
     const double f = lod - static_cast<double>(k);
     std::array<float, C> a = bilinear(k, u, v);
-    if (f > 1e-3 && k + 1 < num_levels()) {
+    if (f > detail::single_level_snap && k + 1 < num_levels()) {
       const std::array<float, C> b = bilinear(k + 1, u, v);
       for (std::size_t c = 0; c < detail::to_size(C); ++c) a[c] += static_cast<float>(f) * (b[c] - a[c]);
     }

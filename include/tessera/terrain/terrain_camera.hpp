@@ -35,6 +35,23 @@ constexpr clip_depth glm_clip_depth = clip_depth::negative_one_to_one;
 /// Largest viewport side accepted by the terrain pipeline.
 inline constexpr index_t max_viewport_side = 16384;
 
+namespace detail {
+/// validate_camera: a view or projection matrix whose |determinant| is at or below this is singular.
+inline constexpr double camera_singular_determinant = 1e-300;
+/// validate_camera: bottom-row entries of the view matrix within this fraction of its largest entry
+/// count as 0 (the matrix is affine).
+inline constexpr double camera_affine_tolerance = 1e-9;
+/// make_camera: positive floor of the eye / target magnitude the coincidence test is relative to.
+inline constexpr double camera_position_scale_floor = 1e-300;
+/// make_camera: an eye closer to its target than this fraction of their magnitudes equals it.
+inline constexpr double camera_coincident_fraction = 1e-12;
+/// make_camera: |view direction x up| (both unit) at or below this means up is parallel to the view.
+inline constexpr double camera_parallel_up_sine = 1e-9;
+/// camera_preset_look_at: positive floor of the scene's size, diagonal and near distance, so flat or
+/// point-like bounds still give a valid camera.
+inline constexpr double camera_preset_min_extent = 1e-9;
+}  // namespace detail
+
 /// A camera: world -> view -> clip matrices (GLM, column-major, right-handed as glm::lookAt and
 /// glm::perspective build them) and a viewport of width x height pixels (row 0 at the top).
 struct terrain_camera {
@@ -61,15 +78,15 @@ inline status validate_camera(const terrain_camera& c) {
       if (!std::isfinite(c.view[i][j]) || !std::isfinite(c.projection[i][j]))
         return status::invalid_argument(detail::cat("camera matrices must be finite (column ", i, ", row ", j, ")"));
   const double dv = glm::determinant(c.view), dp = glm::determinant(c.projection);
-  if (!(std::abs(dv) > 1e-300))
+  if (!(std::abs(dv) > detail::camera_singular_determinant))
     return status::invalid_argument(detail::cat("camera view matrix is singular (determinant ", dv, ")"));
-  if (!(std::abs(dp) > 1e-300))
+  if (!(std::abs(dp) > detail::camera_singular_determinant))
     return status::invalid_argument(detail::cat("camera projection matrix is singular (determinant ", dp, ")"));
   // GLM is column-major: view[col][3] is the bottom row
   double largest = 0;
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 3; ++j) largest = std::max(largest, std::abs(c.view[i][j]));
-  const double tol = 1e-9 * std::max(largest, std::abs(c.view[3][3]));
+  const double tol = detail::camera_affine_tolerance * std::max(largest, std::abs(c.view[3][3]));
   if (std::abs(c.view[0][3]) > tol || std::abs(c.view[1][3]) > tol || std::abs(c.view[2][3]) > tol ||
       !(c.view[3][3] > tol))
     return status::invalid_argument(
@@ -107,11 +124,11 @@ inline result<terrain_camera> make_camera(const look_at_camera& c, index_t width
   if (!is_finite(c.eye) || !is_finite(c.target) || !is_finite(c.up))
     return status::invalid_argument("camera eye, target and up must be finite");
   const vec3 dir = c.target - c.eye;
-  const double scale = std::max({norm(c.eye), norm(c.target), 1e-300});
-  if (norm(dir) <= 1e-12 * scale)
+  const double scale = std::max({norm(c.eye), norm(c.target), detail::camera_position_scale_floor});
+  if (norm(dir) <= detail::camera_coincident_fraction * scale)
     return status::invalid_argument(detail::cat("camera eye (", c.eye.x, ", ", c.eye.y, ", ", c.eye.z,
                                                 ") equals its target: the view direction is undefined"));
-  if (norm(cross(normalized(dir), normalized(c.up))) <= 1e-9)
+  if (norm(cross(normalized(dir), normalized(c.up))) <= detail::camera_parallel_up_sine)
     return status::invalid_argument(
         detail::cat("camera up (", c.up.x, ", ", c.up.y, ", ", c.up.z, ") is zero or parallel to the view direction"));
   if (!(c.fov_y_degrees > 0 && c.fov_y_degrees < 180))
@@ -156,8 +173,8 @@ inline result<look_at_camera> camera_preset_look_at(camera_preset p, const aabb&
   if (bounds.empty() || !is_finite(bounds.min) || !is_finite(bounds.max))
     return status::invalid_argument("camera preset: the scene bounds are empty or not finite");
   const vec3 c = bounds.center(), e = bounds.extent();
-  const double size = std::max({e.x, e.y, 1e-9});
-  const double diag = std::max(norm(e), 1e-9);
+  const double size = std::max({e.x, e.y, detail::camera_preset_min_extent});
+  const double diag = std::max(norm(e), detail::camera_preset_min_extent);
   look_at_camera l;
   switch (p) {
     case camera_preset::grazing:
@@ -180,7 +197,7 @@ inline result<look_at_camera> camera_preset_look_at(camera_preset p, const aabb&
     }
   }
   const double reach = norm(l.eye - c) + diag;
-  l.near = std::max(1e-4 * diag, 1e-9);
+  l.near = std::max(1e-4 * diag, detail::camera_preset_min_extent);
   l.far = 2 * reach;
   return l;
 }

@@ -43,6 +43,7 @@
 #include "synthesize_anchored_region.hpp"
 #include "terrain_camera.hpp"
 #include "detail/session_projection.hpp"
+#include "detail/tolerances.hpp"
 
 TESSERA_NAMESPACE_BEGIN
 
@@ -197,15 +198,16 @@ inline result<terrain_session> make_terrain_session(const terrain_mesh& mesh, in
   s.nf_ = mesh.num_faces();
   s.nv_ = mesh.num_vertices();
   s.fingerprint_ = detail::terrain_mesh_fingerprint(mesh);
-  const double d_min =
-      plan->max_neighbor_distance / ((1 - 2 * opts.hysteresis) * std::log(opts.level_ratio)) * (1 + 1e-9);
+  const double d_min = plan->max_neighbor_distance / ((1 - 2 * opts.hysteresis) * std::log(opts.level_ratio)) *
+                       (1 + detail::scale_match_slack);
   if (opts.near_distance > 0 && opts.near_distance < d_min)
     return status::invalid_argument(detail::cat("near_distance ", opts.near_distance, " is below ", d_min,
                                                 ", the smallest that keeps adjacent faces within one level (largest "
                                                 "distance between adjacent centroids / ((1 - 2 hysteresis) ln "
                                                 "level_ratio))"));
   s.d0_ = opts.near_distance > 0 ? opts.near_distance : (d_min > 0 ? d_min : 1.0);
-  const double need = std::ceil(std::log(1 / opts.min_scale) / std::log(opts.level_ratio) - 1e-9);
+  const double need =
+      std::ceil(std::log(1 / opts.min_scale) / std::log(opts.level_ratio) - detail::level_count_rounding);
   s.levels_ = std::clamp<index_t>(1 + static_cast<index_t>(std::max(0.0, need)), 1, opts.max_levels);
   for (index_t l = 0; l < s.levels_; ++l) s.scales_.push_back(static_cast<float>(s.level_scale(l)));
   s.plan_ = std::move(*plan);

@@ -39,13 +39,20 @@ TESSERA_NAMESPACE_BEGIN
 
 namespace detail {
 
+/// Non-fixed vertices of a constrained merge stay this fraction of the grid cell (of the tile side,
+/// for frames) inside the domain: rounding cannot then put them on or across a tile border.
+inline constexpr double inside_margin_fraction = 1e-7;
+/// Vertices this fraction of a grid cell (of a tile side, for strips) from a clipping line are moved
+/// onto it, so that clipping leaves no sliver triangles.
+inline constexpr double clip_snap_fraction = 1e-9;
+
 struct merge_params {
   xy_rect domain;
-  bool constrained = false;  ///< the domain sides are tile borders: nothing non-fixed may reach them
-  double corr_dist = 0.25;   ///< correspondence search radius (§3.3.4)
-  double mu = 1.0;           ///< soft-constraint weight of eq. 6-7
-  int smooth_rings = 2;      ///< rings around the seam relaxed after joining
-  double margin = 1e-7;      ///< non-fixed vertices stay this far inside a constrained domain
+  bool constrained = false;                ///< the domain sides are tile borders: nothing non-fixed may reach them
+  double corr_dist = 0.25;                 ///< correspondence search radius (§3.3.4)
+  double mu = 1.0;                         ///< soft-constraint weight of eq. 6-7
+  int smooth_rings = 2;                    ///< rings around the seam relaxed after joining
+  double margin = inside_margin_fraction;  ///< non-fixed vertices stay this far inside a constrained domain
   /// Regions: "old" is what was synthesized before this patch (occupied cells), "patch" is P_T. The
   /// overlap of §3.3.6 is old and patch; the new region is patch but not old.
   std::function<bool(vec3)> is_old, in_patch;
@@ -80,13 +87,6 @@ struct cut_terminals {
   std::vector<signed char> term;
   bool any_source = false, any_sink = false, conflict = false;
 };
-
-/// Non-fixed vertices of a constrained merge stay this fraction of the grid cell (of the tile side,
-/// for frames) inside the domain: rounding cannot then put them on or across a tile border.
-inline constexpr double inside_margin_fraction = 1e-7;
-/// Vertices this fraction of a grid cell (of a tile side, for strips) from a clipping line are moved
-/// onto it, so that clipping leaves no sliver triangles.
-inline constexpr double clip_snap_fraction = 1e-9;
 
 inline bool strictly_inside(const xy_rect& d, vec3 p, double m) {
   return p.x > d.x0 + m && p.x < d.x1 - m && p.y > d.y0 + m && p.y < d.y1 - m;

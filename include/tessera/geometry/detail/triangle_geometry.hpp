@@ -15,6 +15,19 @@
 TESSERA_NAMESPACE_BEGIN
 namespace detail {
 
+/// Positive floor of the squared lengths and lengths that scale the predicates below, so a degenerate
+/// (zero-size) input still gives a positive scale instead of 0 or a 0 * inf.
+inline constexpr double predicate_scale_floor = 1e-300;
+/// Ray / triangle: |det| at or below this fraction of |e1|^2 |d| (edges e1, e2, direction d) treats the
+/// ray as parallel to the triangle's plane (a miss).
+inline constexpr double ray_parallel_tolerance = 1e-14;
+/// Triangle / triangle: a vertex's distance to the other triangle's plane at or below this fraction of
+/// |n| times the triangles' extent is snapped to zero (the vertex lies on the plane).
+inline constexpr double plane_distance_snap = 1e-12;
+/// Triangle / triangle: |n1 x n2|^2 at or below this fraction of |n1|^2 |n2|^2 treats the two planes as
+/// parallel (coplanar test or apart).
+inline constexpr double parallel_planes_tolerance = 1e-30;
+
 /// Closest point on triangle (a, b, c) to p, with barycentric coordinates (Ericson, RTCD 5.1.5).
 struct triangle_closest {
   vec3 point;
@@ -80,9 +93,9 @@ inline ray_triangle_hit ray_triangle(vec3 o, vec3 d, vec3 a, vec3 b, vec3 c, dou
   const vec3 e1 = b - a, e2 = c - a;
   const vec3 pv = cross(d, e2);
   const double det = dot(e1, pv);
-  const double scale =
-      std::max({squared_norm(e1), squared_norm(e2), 1e-300}) * std::sqrt(std::max(squared_norm(d), 1e-300));
-  if (std::abs(det) <= 1e-14 * scale) return {};
+  const double scale = std::max({squared_norm(e1), squared_norm(e2), predicate_scale_floor}) *
+                       std::sqrt(std::max(squared_norm(d), predicate_scale_floor));
+  if (std::abs(det) <= ray_parallel_tolerance * scale) return {};
   const double inv = 1.0 / det;
   const vec3 tv = o - a;
   const double u = dot(tv, pv) * inv;
@@ -183,19 +196,20 @@ inline bool triangles_intersect(const std::array<vec3, 3>& t, const std::array<v
   double du[3], dt[3];
   for (int k = 0; k < 3; ++k) du[k] = dot(n1, u[k] - t[0]);
   // snap tiny distances to zero relative to the triangle sizes
-  const double s1 =
-      std::sqrt(squared_norm(n1)) * 1e-12 * std::max({norm(u[0] - t[0]), norm(u[1] - t[0]), norm(u[2] - t[0]), 1e-300});
+  const double s1 = std::sqrt(squared_norm(n1)) * plane_distance_snap *
+                    std::max({norm(u[0] - t[0]), norm(u[1] - t[0]), norm(u[2] - t[0]), predicate_scale_floor});
   for (double& d : du)
     if (std::abs(d) <= s1) d = 0;
   if ((du[0] > 0 && du[1] > 0 && du[2] > 0) || (du[0] < 0 && du[1] < 0 && du[2] < 0)) return false;
   for (int k = 0; k < 3; ++k) dt[k] = dot(n2, t[k] - u[0]);
-  const double s2 =
-      std::sqrt(squared_norm(n2)) * 1e-12 * std::max({norm(t[0] - u[0]), norm(t[1] - u[0]), norm(t[2] - u[0]), 1e-300});
+  const double s2 = std::sqrt(squared_norm(n2)) * plane_distance_snap *
+                    std::max({norm(t[0] - u[0]), norm(t[1] - u[0]), norm(t[2] - u[0]), predicate_scale_floor});
   for (double& d : dt)
     if (std::abs(d) <= s2) d = 0;
   if ((dt[0] > 0 && dt[1] > 0 && dt[2] > 0) || (dt[0] < 0 && dt[1] < 0 && dt[2] < 0)) return false;
   const vec3 dir = cross(n1, n2);
-  if (squared_norm(dir) <= 1e-30 * squared_norm(n1) * squared_norm(n2) || (du[0] == 0 && du[1] == 0 && du[2] == 0)) {
+  if (squared_norm(dir) <= parallel_planes_tolerance * squared_norm(n1) * squared_norm(n2) ||
+      (du[0] == 0 && du[1] == 0 && du[2] == 0)) {
     if (!(du[0] == 0 && du[1] == 0 && du[2] == 0)) return false;  // parallel planes, apart
     return coplanar_triangles_intersect(squared_norm(n1) > 0 ? n1 : n2, t, u);
   }

@@ -15,6 +15,10 @@
 TESSERA_NAMESPACE_BEGIN
 namespace detail {
 
+/// An offset whose overlap variance (of either image) is at or below this times the overlap's pixel
+/// count is flat: its normalized correlation is undefined (NaN) instead of a ratio of rounding noise.
+inline constexpr double flat_variance_per_pixel = 1e-9;
+
 /// Smallest power of two >= n (n >= 1).
 inline index_t next_pow2(index_t n) noexcept {
   index_t p = 1;
@@ -148,7 +152,7 @@ inline std::vector<double> correlation_field(const double* f, index_t width, ind
   for (index_t dy = 0; dy <= max_dy; ++dy)
     for (index_t dx = -max_dx; dx <= max_dx; ++dx) {
       const auto o = to_size(dy * nox + dx + max_dx);
-      const double tiny = 1e-9 * static_cast<double>((w - (dx < 0 ? -dx : dx)) * (h - dy));
+      const double tiny = flat_variance_per_pixel * static_cast<double>((w - (dx < 0 ? -dx : dx)) * (h - dy));
       cov[o] = (var_a[o] > tiny && var_b[o] > tiny) ? std::min(1.0, cov[o] / std::sqrt(var_a[o] * var_b[o]))
                                                     : std::numeric_limits<double>::quiet_NaN();
     }

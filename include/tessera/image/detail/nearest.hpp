@@ -27,6 +27,19 @@
 TESSERA_NAMESPACE_BEGIN
 namespace detail {
 
+/// orthonormalize: a column whose norm after removing the kept directions is at or below this fraction
+/// of its norm before is linearly dependent on them and is dropped.
+inline constexpr double orthonormalize_drop_fraction = 1e-10;
+/// pca_basis: eigenvalues at or below this fraction of the largest are rounding noise, not directions.
+inline constexpr double pca_eigenvalue_cutoff = 1e-12;
+/// lower_bound_knn: the absolute rounding margin of the pruning radius, as a fraction of the typical
+/// squared vector length (floored by knn_scale_floor so a zero scale still gives a positive margin).
+inline constexpr double knn_margin_fraction = 1e-12;
+inline constexpr double knn_scale_floor = 1e-300;
+/// lower_bound_knn: relative widening of the pruning radius, so rounding in the lower bounds cannot
+/// prune a point that belongs in the top k.
+inline constexpr double knn_prune_relative_margin = 1e-9;
+
 /// One neighbour: exact squared distance and index; ordered by (distance, index).
 struct neighbor {
   double dist = 0;
@@ -64,7 +77,7 @@ Eigen::Index orthonormalize(Matrix& q) {
     for (int pass = 0; pass < 2; ++pass)
       for (Eigen::Index j = 0; j < kept; ++j) v -= q.col(j).dot(v) * q.col(j);
     const double n = v.norm();
-    if (!(n > 1e-10 * before) || n == 0) continue;
+    if (!(n > orthonormalize_drop_fraction * before) || n == 0) continue;
     q.col(kept++) = v / n;
   }
   return kept;
@@ -90,7 +103,7 @@ Matrix pca_basis(Matrix samples, int dims) {
     const Eigen::Index n = es.eigenvalues().size();
     const double top = std::max(es.eigenvalues()(n - 1), 0.0);
     for (Eigen::Index i = n - 1; i >= 0 && got < want; --i) {
-      if (!(es.eigenvalues()(i) > 1e-12 * top) || top == 0) break;
+      if (!(es.eigenvalues()(i) > pca_eigenvalue_cutoff * top) || top == 0) break;
       basis.col(got++) = direction(i);
     }
   };
@@ -145,7 +158,7 @@ class lower_bound_knn {
   /// absolute rounding margin of the pruning radius.
   lower_bound_knn(std::vector<double> projected, index_t n, int d, double scale)
       : data_(std::make_unique<dataset>(dataset{std::move(projected), n, d})),
-        margin_(1e-12 * std::max(scale, 1e-300)) {
+        margin_(knn_margin_fraction * std::max(scale, knn_scale_floor)) {
     TESSERA_ASSERT(n >= 1 && d >= 1 && static_cast<index_t>(data_->points.size()) == n * d && (DIM < 0 || DIM == d));
     tree_ = std::make_unique<tree>(d, *data_, nanoflann::KDTreeSingleIndexAdaptorParams(16));
   }
@@ -219,7 +232,7 @@ class lower_bound_knn {
     }
     [[nodiscard]] double worstDist() const {
       if (!full()) return std::numeric_limits<double>::max();
-      return best.back().dist * (1 + 1e-9) + margin;
+      return best.back().dist * (1 + knn_prune_relative_margin) + margin;
     }
   };
 

@@ -32,6 +32,10 @@
 TESSERA_NAMESPACE_BEGIN
 namespace detail {
 
+/// Absolute slack on the accepted-cost limit best * (1 + tolerance): candidates within it of the best
+/// count as ties even when best is 0 or rounding separates equal costs.
+inline constexpr double edge_cost_tie_slack = 1e-12;
+
 struct strip_origin {
   index_t x = 0, y = 0;
 };
@@ -69,7 +73,7 @@ void choose_corner(const quilt_source<T, C>& src, index_t d, double tolerance, c
       cost[to_size(y * U + x)] = e;
     }
   const double best = *std::min_element(cost.begin(), cost.end());
-  const double limit = best * (1 + tolerance) + 1e-12;
+  const double limit = best * (1 + tolerance) + edge_cost_tie_slack;
   std::uint64_t count = 0;
   for (double e : cost) count += e <= limit;
   std::uint64_t pick = rng.below(count, 0);
@@ -142,7 +146,7 @@ strip_origin choose_strip(const quilt_source<T, C>& src, const image_buffer<T, C
   double best = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < cost.size(); ++i)
     if (allowed(i)) best = std::min(best, cost[i]);
-  const double limit = best * (1 + tolerance) + 1e-12;
+  const double limit = best * (1 + tolerance) + edge_cost_tie_slack;
   std::uint64_t count = 0;
   for (std::size_t i = 0; i < cost.size(); ++i) count += allowed(i) && cost[i] <= limit;
   std::uint64_t k = rng.below(count, horizontal ? 0 : 1, colour);

@@ -25,6 +25,9 @@ inline constexpr std::int64_t subpixel_one = std::int64_t{1} << subpixel_bits;
 /// Screen coordinates are clipped to [-guard_band, guard_band] pixels before snapping; with 8
 /// sub-pixel bits every edge-function product stays below 2^60, far from int64 overflow.
 inline constexpr double guard_band = 1048576.0;  // 2^20
+/// Polygons are clipped to w >= this fraction of the largest clip coordinate: keeps 1/w finite; the
+/// plane is linear (a constant), so clipping stays exact.
+inline constexpr double min_w_fraction = 1e-12;
 
 /// A polygon vertex during clipping: screen (or clip) position, depth, 1/w, and the weights of the
 /// original triangle's three corners (linear in clip space, i.e. in 3D). Deliberately without
@@ -246,7 +249,7 @@ inline bool clip_polygon_to_screen(const std::array<std::array<double, 4>, 3>& t
       p, [zero_to_one](const poly_vertex& v) { return zero_to_one ? v.z : v.z + v.w; }, lerp_clip);  // near
   clip_polygon(
       p, [](const poly_vertex& v) { return v.w - v.z; }, lerp_clip);  // far
-  const double w_min = 1e-12 * scale;  // keeps 1/w finite; linear (a constant), so clipping stays exact
+  const double w_min = min_w_fraction * scale;
   clip_polygon(
       p, [w_min](const poly_vertex& v) { return v.w - w_min; }, lerp_clip);
   for (int i = 0; i < p.n; ++i) {

@@ -22,9 +22,13 @@
 #include "../polycube_map.hpp"
 #include "../quad_layout.hpp"
 #include "polycube_charts.hpp"
+#include "tolerances.hpp"
 
 TESSERA_NAMESPACE_BEGIN
 namespace detail {
+
+/// A vertex farther than this fraction of tile_size from its chart's plane makes the chart not flat.
+inline constexpr double chart_flatness_fraction = 1e-7;
 
 template <Executor E>
 result<polycube_map> assemble_polycube_map(tri_mesh base, const std::vector<std::uint8_t>& lab,
@@ -32,7 +36,7 @@ result<polycube_map> assemble_polycube_map(tri_mesh base, const std::vector<std:
   const auto adj = face_adjacency(base);
   const auto cs = find_polycube_charts(base, adj.neighbor, lab);
   const index_t nf = base.num_faces(), nv = base.num_vertices();
-  const double tol = 1e-7 * t;
+  const double tol = chart_flatness_fraction * t;
   polycube_map pm;
   pm.tile_size = t;
   pm.charts.resize(cs.chart_label.size());
@@ -56,7 +60,8 @@ result<polycube_map> assemble_polycube_map(tri_mesh base, const std::vector<std:
       if (!(std::abs(p[a] - static_cast<double>(ch.plane) * t) <= tol)) bad[to_size(f)] = 1;
       q[to_size(k)] = {p[ax[0]], p[ax[1]]};
     }
-    if (bad[to_size(f)] == 0 && !(cross(q[1] - q[0], q[2] - q[0]) > 1e-12 * t * t)) bad[to_size(f)] = 2;
+    if (bad[to_size(f)] == 0 && !(cross(q[1] - q[0], q[2] - q[0]) > min_chart_area_fraction * t * t))
+      bad[to_size(f)] = 2;
   });
   index_t flipped = 0, first_flip = -1;
   for (index_t f = 0; f < nf; ++f) {
@@ -113,7 +118,7 @@ result<polycube_map> assemble_polycube_map(tri_mesh base, const std::vector<std:
     for (std::size_t i = 0; i < iv.size();) {
       double lo = iv[i][0], hi = iv[i][1];
       std::size_t j = i + 1;
-      while (j < iv.size() && iv[j][0] <= hi + 1e-9) {
+      while (j < iv.size() && iv[j][0] <= hi + tile_grid_rounding) {
         hi = std::max(hi, iv[j][1]);
         ++j;
       }

@@ -23,9 +23,14 @@
 #include "../../core/status.hpp"
 #include "../../core/tri_mesh.hpp"
 #include "../polycube_map.hpp"
+#include "tolerances.hpp"
 
 TESSERA_NAMESPACE_BEGIN
 namespace detail {
+
+/// Weight of the pull of every free plane coordinate towards its starting value (the mean of its
+/// vertices'), so the least-squares system stays positive definite when a coordinate has no constraint.
+inline constexpr double plane_solve_regularization = 1e-8;
 
 /// The unknowns of one axis: class of each vertex, chart of each class (-1: free class).
 struct polycube_axis_classes {
@@ -102,7 +107,7 @@ result<std::vector<double>> polycube_axis_solve(const tri_mesh& m, const std::ve
   if (nfree == 0) return x;
   std::vector<Eigen::Triplet<real>> t;
   vector rhs = vector::Zero(nfree);
-  const double eps = 1e-8;
+  const double eps = plane_solve_regularization;
   for (index_t k = 0; k < ncl; ++k)
     if (col[to_size(k)] >= 0) {
       t.emplace_back(col[to_size(k)], col[to_size(k)], eps);
@@ -209,7 +214,7 @@ inline std::vector<index_t> polycube_flipped_faces(const tri_mesh& m, const std:
     const int a = l / 2, u = l % 2 == 0 ? (a + 1) % 3 : (a + 2) % 3, w = l % 2 == 0 ? (a + 2) % 3 : (a + 1) % 3;
     const vec3 &p0 = pos[to_size(m.faces[f][0])], &p1 = pos[to_size(m.faces[f][1])], &p2 = pos[to_size(m.faces[f][2])];
     const double area = (p1[u] - p0[u]) * (p2[w] - p0[w]) - (p1[w] - p0[w]) * (p2[u] - p0[u]);
-    if (!(area > 1e-12 * t * t)) out.push_back(static_cast<index_t>(f));
+    if (!(area > min_chart_area_fraction * t * t)) out.push_back(static_cast<index_t>(f));
   }
   return out;
 }

@@ -24,6 +24,11 @@
 TESSERA_NAMESPACE_BEGIN
 namespace detail {
 
+/// Cotangent weights of the embedding are clamped to [embed_min_weight, embed_max_weight], so
+/// obtuse or degenerate faces cannot make the system indefinite or ill-conditioned.
+inline constexpr double embed_min_weight = 1e-2;
+inline constexpr double embed_max_weight = 1e2;
+
 /// Places edge and interior vertices (see the file comment); `pos` holds the planes' coordinates on
 /// entry (from polycube_axis_solve with fixed planes) and is updated in place.
 template <class Dep>
@@ -58,7 +63,7 @@ status embed_polycube(const tri_mesh& m, const polycube_chart_set& cs, const std
       add(j, i, 0.5 * cot);
     }
   for (auto& l : nbr)
-    for (auto& e : l) e.second = std::clamp(e.second, 1e-2, 1e2);
+    for (auto& e : l) e.second = std::clamp(e.second, embed_min_weight, embed_max_weight);
   // 1) polycube edges: walk boundary paths between corners, spread by arc length
   std::vector<std::uint8_t> placed(nv, 0);
   for (std::size_t c = 0; c < nv; ++c) {

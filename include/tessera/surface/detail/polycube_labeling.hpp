@@ -21,6 +21,9 @@
 TESSERA_NAMESPACE_BEGIN
 namespace detail {
 
+/// Alpha-expansion stops when a sweep lowers the labeling energy by no more than this fraction of it.
+inline constexpr double labeling_min_relative_gain = 1e-9;
+
 /// Per-face fidelity costs (6 per face) and per-side compactness weights of a closed mesh.
 struct polycube_energy {
   std::vector<std::array<double, 6>> data;
@@ -152,7 +155,7 @@ inline result<std::vector<std::uint8_t>> alpha_expansion_labels(const polycube_e
         lab.swap(next);
       }
     }
-    if (!(start - energy > 1e-9 * std::abs(start))) break;
+    if (!(start - energy > labeling_min_relative_gain * std::abs(start))) break;
   }
   return lab;
 }

@@ -15,10 +15,13 @@ TESSERA_NAMESPACE_BEGIN
 
 namespace detail {
 
+/// Below this |x| the Lanczos kernel takes its limit 1 instead of the 0 / 0 of sin(px) sin(px/3) / (px)^2.
+inline constexpr double lanczos_zero = 1e-12;
+
 /// Lanczos-3 windowed sinc.
 inline double lanczos3(double x) noexcept {
   x = std::abs(x);
-  if (x < 1e-12) return 1.0;
+  if (x < lanczos_zero) return 1.0;
   if (x >= 3.0) return 0.0;
   constexpr double pi = 3.14159265358979323846;
   const double px = pi * x;
