@@ -6,9 +6,10 @@ set -euo pipefail
 
 packages=(build-essential cmake ninja-build pkg-config ccache libeigen3-dev libglm-dev libnanoflann-dev
           catch2 libstb-dev libbenchmark-dev libopenmesh-dev)
-# Optional: clang with libFuzzer for the fuzzers (scripts/fuzz.sh, the fuzz step of .ci/run). Installed
+# Optional: clang with libFuzzer for the fuzzers (scripts/fuzz.sh, the fuzz step of .ci/run) and
+# clang-format 14 for the house-style check (structural: formatted as .clang-format says). Installed
 # when missing, but a failure to install them only warns: everything else works without them.
-optional=(clang libclang-rt-14-dev)
+optional=(clang libclang-rt-14-dev clang-format-14)
 
 if ! command -v dpkg-query >/dev/null 2>&1; then
   echo "setup: not a Debian system (no dpkg-query); install the equivalents of: ${packages[*]}" >&2
@@ -30,7 +31,7 @@ sudo=()
 if ((EUID != 0)); then
   if ! command -v sudo >/dev/null 2>&1; then
     if ((${#missing[@]} == 0)); then
-      echo "setup: optional packages (${missing_optional[*]}) missing and not root: no fuzzers" >&2
+      echo "setup: optional packages (${missing_optional[*]}) missing and not root: no fuzzers, no format check" >&2
       exit 0
     fi
     echo "setup: missing packages (${missing[*]}) and not root; run as root or install sudo" >&2
@@ -45,5 +46,5 @@ if ((${#missing[@]} > 0)); then
 fi
 if ((${#missing_optional[@]} > 0)); then
   "${sudo[@]}" apt-get install -y -q --no-install-recommends "${missing_optional[@]}" ||
-    echo "setup: could not install the optional ${missing_optional[*]}: no fuzzers (scripts/fuzz.sh)" >&2
+    echo "setup: could not install the optional ${missing_optional[*]}: no fuzzers (scripts/fuzz.sh) or format check" >&2
 fi

@@ -10,7 +10,6 @@
 #include <tessera/image/exemplars.hpp>
 
 using tessera::index_t;
-using tessera::patch_side;
 
 namespace {
 
@@ -28,11 +27,11 @@ tessera::image_buffer<T, C> exemplar(tessera::exemplar_kind kind, index_t size, 
   return tessera::make_exemplar<T, C>(kind, {.width = size, .height = size, .seed = seed}).value();
 }
 
-constexpr patch_side all_sides[4] = {patch_side::north, patch_side::east, patch_side::south, patch_side::west};
+constexpr int all_sides[4] = {tessera::side_north, tessera::side_east, tessera::side_south, tessera::side_west};
 
 // Brute-force top k of one side: all patches by (overlap error, index).
 template <class M>
-std::vector<std::pair<double, index_t>> brute_top_k(const M& m, index_t a, patch_side side) {
+std::vector<std::pair<double, index_t>> brute_top_k(const M& m, index_t a, int side) {
   std::vector<std::pair<double, index_t>> all;
   for (index_t b = 0; b < m.num_patches(); ++b) all.push_back({m.overlap_error(a, b, side), b});
   std::sort(all.begin(), all.end());
@@ -43,13 +42,13 @@ std::vector<std::pair<double, index_t>> brute_top_k(const M& m, index_t a, patch
 template <class M>
 void check_exact_sets(const M& m, index_t step) {
   for (index_t a = 0; a < m.num_patches(); a += step)
-    for (patch_side side : all_sides) {
+    for (int side : all_sides) {
       const auto expected = brute_top_k(m, a, side);
       const auto got = m.compatible(a, side);
       const auto errors = m.compatible_errors(a, side);
       REQUIRE(static_cast<index_t>(got.size()) == m.candidates());
       for (std::size_t r = 0; r < got.size(); ++r) {
-        INFO("patch " << a << " side " << tessera::to_string(side) << " rank " << r);
+        INFO("patch " << a << " side " << tessera::side_name(side) << " rank " << r);
         CHECK(m.overlap_error(a, got[r], side) == expected[r].first);
         CHECK(got[r] == expected[r].second);  // ties broken by the smaller index
         CHECK(errors[r] == static_cast<float>(expected[r].first));
@@ -99,7 +98,7 @@ TEST_CASE("patch_model: exact compatible sets equal a brute-force top-k", "[patc
         tessera::build_patch_model(tiled, {.patch_width = 8, .patch_height = 8, .overlap = 2, .exact_sets = true})
             .value();
     check_exact_sets(m, 11);
-    CHECK(m.compatible_errors(0, patch_side::east)[7] == 0.0f);  // at least 8 perfect continuations
+    CHECK(m.compatible_errors(0, tessera::side_east)[7] == 0.0f);  // at least 8 perfect continuations
   }
 }
 
@@ -111,7 +110,7 @@ TEST_CASE("patch_model: approximate sets (kd-tree + coherence) are close to exac
     double exact_sum = 0, approx_sum = 0;
     index_t found = 0, total = 0;
     for (index_t a = 0; a < m.num_patches(); a += 13)
-      for (patch_side side : all_sides) {
+      for (int side : all_sides) {
         const auto expected = brute_top_k(m, a, side);
         const auto got = m.compatible(a, side);
         for (std::size_t r = 0; r < got.size(); ++r) {
@@ -163,15 +162,15 @@ TEST_CASE("patch_model: precomputed seams are minimum-error cuts", "[patch_model
   const auto m =
       tessera::build_patch_model(ex, {.patch_width = 12, .patch_height = 10, .overlap = 4, .seams = true}).value();
   REQUIRE(m.has_seams());
-  CHECK(m.seam_length(patch_side::east) == 14);
-  CHECK(m.seam_length(patch_side::south) == 16);
+  CHECK(m.seam_length(tessera::side_east) == 14);
+  CHECK(m.seam_length(tessera::side_south) == 16);
   const auto& img = m.exemplar();
   for (index_t a = 0; a < m.num_patches(); a += 17)
-    for (patch_side side : all_sides)
+    for (int side : all_sides)
       for (index_t r = 0; r < m.candidates(); ++r) {
         const index_t b = m.compatible(a, side)[static_cast<std::size_t>(r)];
-        const bool vertical = side == patch_side::east || side == patch_side::west;
-        const bool a_first = side == patch_side::east || side == patch_side::south;
+        const bool vertical = side == tessera::side_east || side == tessera::side_west;
+        const bool a_first = side == tessera::side_east || side == tessera::side_south;
         const auto first = m.origin(a_first ? a : b), second = m.origin(a_first ? b : a);
         const auto seam = m.seam(a, side, r);
         REQUIRE(static_cast<index_t>(seam.size()) == m.seam_length(side));
@@ -203,7 +202,7 @@ TEST_CASE("patch_model: precomputed seams are minimum-error cuts", "[patch_model
       }
   const auto plain = tessera::build_patch_model(ex, {.patch_width = 12, .patch_height = 10, .overlap = 4}).value();
   CHECK(!plain.has_seams());
-  CHECK(plain.seam(0, patch_side::east, 0).empty());
+  CHECK(plain.seam(0, tessera::side_east, 0).empty());
   CHECK(plain.memory_bytes() < m.memory_bytes());
 }
 
@@ -218,7 +217,7 @@ TEST_CASE("patch_model: automatic size, executor independence, memory", "[patch_
   tessera::thread_pool_executor pool(3);
   const auto p = tessera::build_patch_model(ex, {}, pool).value();
   for (index_t a = 0; a < m.num_patches(); ++a)
-    for (patch_side side : all_sides) {
+    for (int side : all_sides) {
       const auto x = m.compatible(a, side), y = p.compatible(a, side);
       REQUIRE(std::equal(x.begin(), x.end(), y.begin()));
     }
@@ -311,4 +310,17 @@ TEST_CASE("patch_model: elongated exemplars", "[patch_model]") {
   CHECK(m.patch_height() <= 6);
   CHECK(m.patch_width() <= 6);
   CHECK(m.num_patches() == (256 - m.patch_width() - m.overlap() + 1) * (12 - m.patch_height() - m.overlap() + 1));
+}
+
+TEST_CASE("patch_model: the deprecated patch_side spelling reads as core's sides") {
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
+  STATIC_REQUIRE(tessera::patch_side::north == tessera::side_north);
+  STATIC_REQUIRE(tessera::patch_side::east == tessera::side_east);
+  STATIC_REQUIRE(tessera::patch_side::south == tessera::side_south);
+  STATIC_REQUIRE(tessera::patch_side::west == tessera::side_west);
+#pragma GCC diagnostic pop
+  CHECK(tessera::side_name(tessera::side_west) == "west");
+  CHECK(tessera::side_name(4) == "invalid side");
+  CHECK(tessera::side_name(-1) == "invalid side");
 }

@@ -439,9 +439,8 @@ cell_grid recover_cells(const M& m, const tessera::patch_synthesis_options& o, i
 template <class M>
 std::pair<std::vector<index_t>, index_t> brute_fill(const M& m, index_t west, index_t east, index_t north,
                                                     index_t south) {
-  using tessera::patch_side;
   const index_t owners[4] = {west, east, north, south};
-  const patch_side facing[4] = {patch_side::east, patch_side::west, patch_side::south, patch_side::north};
+  const int facing[4] = {tessera::side_east, tessera::side_west, tessera::side_south, tessera::side_north};
   std::vector<index_t> candidates, inter;
   for (int s = 0; s < 4; ++s)
     for (std::uint32_t q : m.compatible(owners[s], facing[s])) candidates.push_back(q);

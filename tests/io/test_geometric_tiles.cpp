@@ -70,7 +70,8 @@ TEST_CASE("tile sets in the older layout (integer tile_size + tile_world_size) s
     json << "{\"tile_size\": -1, \"horizontal_colors\": 1, \"vertical_colors\": 1,"
             " \"tiles\": [{\"index\": 0, \"file\": \"tile_0.obj\", \"edges\": [0, 0, 0, 0]}]}\n";
   }
-  REQUIRE(load_geometric_tile_set(dir).error().message().find("tile_size must be positive, got -1") != std::string::npos);
+  REQUIRE(load_geometric_tile_set(dir).error().message().find("tile_size must be positive, got -1") !=
+          std::string::npos);
 }
 
 TEST_CASE("loading rejects a tile set whose borders do not match", "[tile_files]") {

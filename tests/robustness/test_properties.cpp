@@ -113,7 +113,7 @@ TEST_CASE("properties: patch model and synthesis on random images and options") 
       continue;
     }
     for (index_t p = 0; p < ma->num_patches(); p += 7)
-      for (auto side : {tessera::patch_side::north, tessera::patch_side::east}) {
+      for (auto side : {tessera::side_north, tessera::side_east}) {
         const auto ca = ma->compatible(p, side), cb = mb->compatible(p, side);
         CHECK(std::equal(ca.begin(), ca.end(), cb.begin(), cb.end()));
       }

@@ -68,14 +68,16 @@ requires std::is_arithmetic_v<T> &&
 // ---------------------------------------------------------------------------------------------
 // Holding Eigen objects without copying them
 
+/// A dense Eigen object: Matrix, Array, or a view of one (Map, Ref, Block), any cv/ref qualification.
+/// What eigen_mesh_view and eigen_image_view accept.
+template <class X>
+concept EigenDense = std::is_base_of_v<Eigen::DenseBase<std::remove_cvref_t<X>>, std::remove_cvref_t<X>>;
+
 namespace detail {
 /// True for Eigen::Matrix / Eigen::Array (objects that own their coefficients).
 template <class X>
 inline constexpr bool eigen_is_plain =
     std::is_base_of_v<Eigen::PlainObjectBase<std::remove_cvref_t<X>>, std::remove_cvref_t<X>>;
-
-template <class X>
-concept eigen_dense = std::is_base_of_v<Eigen::DenseBase<std::remove_cvref_t<X>>, std::remove_cvref_t<X>>;
 
 /// A plain matrix is referenced; an expression (Map, Ref, Block) is a view already and is copied.
 template <class X>
@@ -117,7 +119,7 @@ template <class VMatrix, class FMatrix>
 class eigen_mesh_view {
   using v_scalar = typename std::remove_const_t<VMatrix>::Scalar;
   using f_scalar = typename std::remove_const_t<FMatrix>::Scalar;
-  static_assert(detail::eigen_dense<VMatrix> && detail::eigen_dense<FMatrix>,
+  static_assert(EigenDense<VMatrix> && EigenDense<FMatrix>,
                 "eigen_mesh_view: V and F must be dense Eigen matrices (Matrix, Map, Ref or Block)");
   static_assert(std::is_same_v<v_scalar, float> || std::is_same_v<v_scalar, double>,
                 "eigen_mesh_view: V (vertex positions) must hold float or double");
@@ -149,7 +151,7 @@ class eigen_mesh_view {
 /// matrix is reported as probably transposed). Plain matrices must be lvalues that outlive the view;
 /// Maps and Refs may be temporaries. O(1): element checks are validate_mesh()'s job.
 template <class VArg, class FArg>
-requires detail::eigen_dense<VArg> && detail::eigen_dense<FArg>
+requires EigenDense<VArg> && EigenDense<FArg>
     result<eigen_mesh_view<std::remove_reference_t<VArg>, std::remove_reference_t<FArg>>> make_eigen_mesh_view(
         VArg&& V, FArg&& F) {
   static_assert(std::is_lvalue_reference_v<VArg> || !detail::eigen_is_plain<VArg>,
@@ -177,7 +179,7 @@ requires detail::eigen_dense<VArg> && detail::eigen_dense<FArg>
 /// the view is used. Algorithms validate the size (an empty matrix is reported) at their entry.
 template <class M>
 class eigen_image_view {
-  static_assert(detail::eigen_dense<M>, "eigen_image_view: M must be a dense Eigen matrix (Matrix, Map, Ref or Block)");
+  static_assert(EigenDense<M>, "eigen_image_view: M must be a dense Eigen matrix (Matrix, Map, Ref or Block)");
 
  public:
   using matrix_type = M;

@@ -35,16 +35,17 @@
 
 TESSERA_NAMESPACE_BEGIN
 
-namespace detail {
-/// An OpenMesh halfedge mesh with vertex positions.
+/// An OpenMesh halfedge mesh with vertex positions (a PolyConnectivity-derived mesh such as
+/// TriMesh_ArrayKernelT or PolyMesh_ArrayKernelT): what the OpenMesh adapter accepts.
 template <class M>
-concept openmesh_mesh = std::derived_from<M, OpenMesh::PolyConnectivity> &&
+concept OpenMeshMesh = std::derived_from<M, OpenMesh::PolyConnectivity> &&
     requires(const M& m, typename M::VertexHandle v) {
   m.point(v);
 };
 
+namespace detail {
 /// The halfedge of face f pointing to its corner k (corner 0 is the target of the face's halfedge).
-template <openmesh_mesh M>
+template <OpenMeshMesh M>
 typename M::HalfedgeHandle openmesh_corner(const M& m, index_t f, int k) {
   auto h = m.halfedge_handle(m.face_handle(static_cast<unsigned>(f)));
   for (int i = 0; i < k; ++i) h = m.next_halfedge_handle(h);
@@ -64,7 +65,7 @@ struct point_traits<OpenMesh::VectorT<S, N>> {
 /// (call garbage_collection() first) and only triangle faces (call triangulate() first). Returns an
 /// invalid_argument status naming the first offending element and the fix. O(V + F). Thread-safe for
 /// concurrent readers.
-template <detail::openmesh_mesh M>
+template <OpenMeshMesh M>
 status validate_openmesh(const M& m, std::string_view what = "mesh") {
   auto first_deleted = [&](const char* kind, bool has_status, const auto& range) -> status {
     if (has_status)
@@ -91,7 +92,7 @@ status validate_openmesh(const M& m, std::string_view what = "mesh") {
 
 /// OpenMesh meshes as tessera meshes (see the top of this file).
 template <class M>
-requires detail::openmesh_mesh<M>
+requires OpenMeshMesh<M>
 struct mesh_traits<M> {
   static index_t num_vertices(const M& m) noexcept { return static_cast<index_t>(m.n_vertices()); }
   static index_t num_faces(const M& m) noexcept { return static_cast<index_t>(m.n_faces()); }
@@ -114,7 +115,7 @@ struct mesh_traits<M> {
 /// with opposite orientation; a face OpenMesh still refuses (two fans meeting at one vertex) is
 /// reported by index (OpenMesh also prints its own message to omerr()). O(F log F).
 template <class OM = OpenMesh::TriMesh_ArrayKernelT<>, Mesh M>
-requires detail::openmesh_mesh<OM> result<OM> to_openmesh(const M& m, std::string_view what = "mesh") {
+requires OpenMeshMesh<OM> result<OM> to_openmesh(const M& m, std::string_view what = "mesh") {
   if (auto s = validate_mesh(m, what); !s) return s;
   for (const mesh_edge& e : mesh_edges(m)) {
     if (!e.is_manifold())

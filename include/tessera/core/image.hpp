@@ -111,7 +111,7 @@ concept Pixel = requires(const P& p, P& q, typename pixel_traits<P>::channel_typ
 
 /// tessera's own pixel: C channels of T.
 template <Channel T, int C>
-using pixel = std::array<T, detail::to_size(C)>;
+using pixel = std::array<T, static_cast<std::size_t>(C)>;
 
 namespace detail {
 struct unit_rgba {

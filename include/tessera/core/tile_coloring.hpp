@@ -13,6 +13,7 @@
 #include <concepts>
 #include <limits>
 #include <optional>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -27,6 +28,11 @@ inline constexpr int side_east = 1;
 inline constexpr int side_south = 2;
 inline constexpr int side_west = 3;
 
+/// "north", "east", "south" or "west" for side 0 to 3 (anything else: "invalid side"), for messages.
+constexpr std::string_view side_name(int side) noexcept {
+  constexpr std::string_view names[] = {"north", "east", "south", "west"};
+  return side >= 0 && side < 4 ? names[side] : "invalid side";
+}
 /// The side facing `side` across an edge (north <-> south, east <-> west).
 constexpr int opposite_side(int side) noexcept { return (side + 2) & 3; }
 /// True for north and south (horizontal edges).

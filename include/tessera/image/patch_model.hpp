@@ -22,18 +22,21 @@
 #include "../core/image_checks.hpp"
 #include "../core/progress.hpp"
 #include "../core/status.hpp"
+#include "../core/tile_coloring.hpp"
 #include "detail/patch_model_sets.hpp"
 #include "patch_size.hpp"
 
 TESSERA_NAMESPACE_BEGIN
 
-/// A side of a patch, numbered like tessera's grid convention: 0 north, 1 east, 2 south, 3 west.
-enum class patch_side : int { north = 0, east = 1, south = 2, west = 3 };
-
-inline constexpr std::string_view to_string(patch_side s) noexcept {
-  constexpr std::string_view names[] = {"north", "east", "south", "west"};
-  return names[static_cast<int>(s) & 3];
-}
+/// Deprecated spelling of the patch sides: tessera has one side vocabulary, the `int` sides of
+/// core/tile_coloring.hpp (side_north 0, side_east 1, side_south 2, side_west 3), which every
+/// patch_model query takes. `patch_side::east` still reads as `side_east`.
+struct [[deprecated("use tessera::side_north, side_east, side_south, side_west (core/tile_coloring.hpp)")]] patch_side {
+  static constexpr int north = side_north;
+  static constexpr int east = side_east;
+  static constexpr int south = side_south;
+  static constexpr int west = side_west;
+};
 
 struct patch_model_options {
   index_t patch_width = 0;    ///< cell pitch in x; 0: chosen by analyze_patch_size (paper §2.1)
@@ -102,17 +105,17 @@ class patch_model {
   /// The k patches that fit best on `side` of `patch` (b on the east side of a: a's last `overlap`
   /// columns against b's first ones, over the full patch height), ascending by overlap_error, ties by
   /// index.
-  [[nodiscard]] std::span<const std::uint32_t> compatible(index_t patch, patch_side side) const noexcept {
+  [[nodiscard]] std::span<const std::uint32_t> compatible(index_t patch, int side) const noexcept {
     const auto s = detail::to_size(side);
     return {compat_[s].data() + patch * k_, detail::to_size(k_)};
   }
   /// The compatible set with its errors ordered by patch index (for set intersections).
-  [[nodiscard]] std::span<const indexed_candidate> compatible_by_index(index_t patch, patch_side side) const noexcept {
+  [[nodiscard]] std::span<const indexed_candidate> compatible_by_index(index_t patch, int side) const noexcept {
     const auto s = detail::to_size(side);
     return {by_index_[s].data() + patch * k_, detail::to_size(k_)};
   }
   /// overlap_error(patch, compatible(patch, side)[r], side) for every r (ascending), as floats.
-  [[nodiscard]] std::vector<float> compatible_errors(index_t patch, patch_side side) const {
+  [[nodiscard]] std::vector<float> compatible_errors(index_t patch, int side) const {
     std::vector<float> out;
     const auto by_id = compatible_by_index(patch, side);
     for (std::uint32_t q : compatible(patch, side))
@@ -121,8 +124,8 @@ class patch_model {
     return out;
   }
   /// The largest error in the set (its k-th), a lower bound of the error of any patch outside it.
-  [[nodiscard]] float kth_error(index_t patch, patch_side side) const noexcept {
-    return worst_[detail::to_size(patch * 4 + static_cast<index_t>(side))];
+  [[nodiscard]] float kth_error(index_t patch, int side) const noexcept {
+    return worst_[detail::to_size(patch * 4 + side)];
   }
   /// The exemplar's normalized autocorrelation at a shift of one patch pitch (mean of the shifts
   /// (patch_width, 0) and (0, patch_height)): near 1 when the texture repeats with the patch grid.
@@ -135,7 +138,7 @@ class patch_model {
 
   /// Exact sum of squared channel differences (in channel units) over the overlap strip when patch b
   /// sits on `side` of patch a. Integer-exact for uint8 and uint16 channels.
-  [[nodiscard]] double overlap_error(index_t a, index_t b, patch_side side) const {
+  [[nodiscard]] double overlap_error(index_t a, index_t b, int side) const {
     return bounded_error(a, b, side, std::numeric_limits<double>::infinity());
   }
 
@@ -156,15 +159,15 @@ class patch_model {
   /// from the left (or top) patch to the right (or bottom) one: entry t is the cut c in [0, overlap)
   /// along the overlap (row t of a vertical overlap, column t of a horizontal one); pixels before the
   /// cut come from the left/top patch. Empty when the model was built without seams.
-  [[nodiscard]] std::span<const std::uint8_t> seam(index_t patch, patch_side side, index_t rank) const noexcept {
+  [[nodiscard]] std::span<const std::uint8_t> seam(index_t patch, int side, index_t rank) const noexcept {
     const auto s = detail::to_size(side);
     if (seams_[s].empty()) return {};
     const index_t len = seam_length(side);
     return {seams_[s].data() + (patch * k_ + rank) * len, detail::to_size(len)};
   }
   /// Length of a seam along an overlap on `side` (patch height + overlap for east/west).
-  [[nodiscard]] index_t seam_length(patch_side side) const noexcept {
-    return side == patch_side::east || side == patch_side::west ? ph_ + v_ : pw_ + v_;
+  [[nodiscard]] index_t seam_length(int side) const noexcept {
+    return side == side_east || side == side_west ? ph_ + v_ : pw_ + v_;
   }
 
   /// The size analysis, when the model ran it (a size or the overlap was left at 0).
@@ -184,8 +187,8 @@ class patch_model {
   friend struct detail::patch_model_builder;
 
   /// overlap_error, or a partial sum above `bound` once it exceeds `bound`.
-  [[nodiscard]] double bounded_error(index_t a, index_t b, patch_side side, double bound) const {
-    return detail::strip_error(exemplar_, {pw_, ph_, v_, nx_, ny_}, a, b, static_cast<int>(side), bound);
+  [[nodiscard]] double bounded_error(index_t a, index_t b, int side, double bound) const {
+    return detail::strip_error(exemplar_, {pw_, ph_, v_, nx_, ny_}, a, b, side, bound);
   }
 
   image_buffer<T, C> exemplar_;

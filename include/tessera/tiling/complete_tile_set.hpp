@@ -62,12 +62,8 @@ inline status validate_wang_edges(const wang_edges& e, int nh, int nv) {
   for (int side = 0; side < 4; ++side) {
     const int n = is_horizontal_side(side) ? nh : nv;
     if (e[side] < 0 || e[side] >= n)
-      return status::out_of_range(detail::cat("wang edges: ",
-                                              side == 0   ? "north"
-                                              : side == 1 ? "east"
-                                              : side == 2 ? "south"
-                                                          : "west",
-                                              " colour ", e[side], " is outside [0, ", n, ")"));
+      return status::out_of_range(
+          detail::cat("wang edges: ", side_name(side), " colour ", e[side], " is outside [0, ", n, ")"));
   }
   return {};
 }

@@ -2,7 +2,7 @@
 // preprocessing steps 2 and 3): the exemplar's autocorrelation per phase offset, the compatible sets
 // of every patch side (PCA + nanoflann, exact re-ranking, coherence propagation) and the table of
 // minimum-error seams. Patches are indexed p = y * nx + x by their exemplar origin (x, y); sides are
-// numbered 0 north, 1 east, 2 south, 3 west (patch_side). Internal; no stability promise.
+// numbered 0 north, 1 east, 2 south, 3 west (the sides of core/tile_coloring.hpp). Internal; no stability promise.
 #pragma once
 
 #include <algorithm>

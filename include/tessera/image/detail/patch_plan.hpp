@@ -92,7 +92,7 @@ std::pair<std::uint32_t, bool> fill_cell(const patch_model<T, C>& m, std::uint32
                                          index_t j) {
   // a 4-way merge of the sets ordered by patch index, branch-free: copies end with a sentinel
   const std::uint32_t owners[4] = {west, east, north, south};
-  constexpr patch_side facing[4] = {patch_side::east, patch_side::west, patch_side::south, patch_side::north};
+  constexpr int facing[4] = {side_east, side_west, side_south, side_north};
   const index_t k = m.candidates();
   constexpr std::uint32_t none = ~std::uint32_t{0};
   std::uint32_t ids[4][65];
@@ -207,8 +207,8 @@ patch_plan make_plan(const patch_model<T, C>& m, index_t ox, index_t oy, index_t
   p.hseam.assign(to_size(ncells), nullptr);
   auto lookup = [&](std::uint32_t first, std::uint32_t second, bool vertical) -> const std::uint8_t* {
     if (!m.has_seams()) return nullptr;
-    const patch_side fwd = vertical ? patch_side::east : patch_side::south,
-                     back = vertical ? patch_side::west : patch_side::north;
+    const int fwd = vertical ? side_east : side_south;
+    const int back = vertical ? side_west : side_north;
     const auto a = m.compatible(first, fwd);
     for (std::size_t r = 0; r < a.size(); ++r)
       if (a[r] == second) return m.seam(first, fwd, static_cast<index_t>(r)).data();
