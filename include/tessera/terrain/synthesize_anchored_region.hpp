@@ -34,6 +34,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -78,7 +79,6 @@ using tri_uv = std::array<float, 6>;
 inline constexpr double anchored_axis_min_projection = 1e-6;
 /// Plane axes shorter than this mean a degenerate face (no normal): the plain world axes are used.
 inline constexpr double anchored_degenerate_axis = 1e-12;
-inline constexpr double anchored_pi = 3.14159265358979323846;
 
 /// A placement: world plane frame and texture offset (see the file comment).
 struct anchored_frame {
@@ -172,7 +172,7 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
   std::vector<std::int32_t> stack, deferred;
   std::int32_t patches = 0;
   std::vector<detail::anchored_frame> frames;  // placements of this region
-  const double tpu = plan.texels_per_unit, cos_tilt = std::cos(opts.max_tilt_degrees * detail::anchored_pi / 180);
+  const double tpu = plan.texels_per_unit, cos_tilt = std::cos(opts.max_tilt_degrees * std::numbers::pi / 180);
   // the region's mean plane (area-weighted normal): new placements lie in it unless the face is
   // tilted against it by more than max_tilt (then in the face's own plane)
   vec3 mean{};
