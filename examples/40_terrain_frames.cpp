@@ -50,6 +50,8 @@ int render_scene(const scene_spec& spec, const std::string& dir, tessera::thread
   const auto exemplar = tessera::make_exemplar<std::uint8_t, 3>(spec.kind, {.width = 256, .height = 256});
   if (!exemplar) return check(exemplar.error());
 
+  const tessera::look_at_camera& look = spec.camera;  // eye, target, up, fov_y_degrees, near, far
+
   // [snippet:terrain_pipeline]
   // once per mesh and per exemplar: adjacency, the finely spaced exemplar pyramid
   auto prepared = tessera::prepare_terrain_mesh(*source);
@@ -58,8 +60,8 @@ int render_scene(const scene_spec& spec, const std::string& dir, tessera::thread
   if (!levels) return check(levels.error());
   const auto& mesh = *prepared;
   const auto& pyramid = *levels;
-  auto camera = tessera::make_camera(spec.camera, width, height);
-  if (!camera) return check(camera.error());  // eye == target, fov outside (0, 180), ...
+  auto camera = tessera::make_camera(look, width, height);  // a look_at_camera -> matrices + viewport
+  if (!camera) return check(camera.error());                // eye == target, fov outside (0, 180), ...
 
   // every frame: project (§2.1), scale field (§2.2), triangle synthesis (§2.3), render
   tessera::screen_projection proj;
@@ -75,7 +77,7 @@ int render_scene(const scene_spec& spec, const std::string& dir, tessera::thread
       !s)
     return check(s);
   if (!syn.warning.ok()) std::fprintf(stderr, "warning: %s\n", syn.warning.message().c_str());
-  frame_t frame(width, height);
+  tessera::image_buffer<std::uint8_t, 3> frame(width, height);  // or any WritableImage of the viewport's size
   if (auto s = tessera::render_terrain_frame(mesh, proj, field, syn, pyramid, frame, {.sun = sun}, pool); !s)
     return check(s);
   // [/snippet]

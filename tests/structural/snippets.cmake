@@ -1,6 +1,7 @@
-# Keeps the code in README.md and docs/*.md identical to compiled example code, so it cannot rot.
+# Keeps the code in README.md and docs/*.md identical to compiled example code, so it cannot rot:
+# every ```cpp block there must be marked (the check fails on an unmarked one).
 #
-# In an example (examples/*.cpp), mark a region:
+# In an example (examples/*.cpp) or a docs test (tests/<family>/test_docs_*.cpp), mark a region:
 #     // [snippet:NAME]
 #     ...code...
 #     // [/snippet]
@@ -18,7 +19,8 @@ endif()
 
 # --- collect snippets from the examples -----------------------------------------------------------
 set(_names "")
-file(GLOB _sources ${ROOT}/examples/*.cpp ${ROOT}/examples/*/*.cpp)
+# ... or in a docs test (tests/<family>/test_docs_*.cpp), compiled with that family's tests.
+file(GLOB _sources ${ROOT}/examples/*.cpp ${ROOT}/examples/*/*.cpp ${ROOT}/tests/*/test_docs_*.cpp)
 foreach(_src IN LISTS _sources)
   file(READ "${_src}" _rest)
   while(TRUE)
@@ -59,6 +61,21 @@ endforeach()
 set(_checked 0)
 file(GLOB _docs ${ROOT}/README.md ${ROOT}/docs/*.md)
 foreach(_doc IN LISTS _docs)
+  # every ```cpp block carries a marker: code in the docs is compiled code
+  file(STRINGS "${_doc}" _doc_lines)
+  set(_prev "")
+  set(_line_no 0)
+  foreach(_l IN LISTS _doc_lines)
+    math(EXPR _line_no "${_line_no} + 1")
+    if(_l MATCHES "^ *```(cpp|c\\+\\+|cxx|C\\+\\+) *$" AND NOT _prev MATCHES "^<!-- snippet:")
+      message(FATAL_ERROR "${_doc}:${_line_no}: a ```cpp block without a <!-- snippet:NAME --> marker line; "
+                          "put its code in an example or a tests/<family>/test_docs_*.cpp between "
+                          "// [snippet:NAME] and // [/snippet], then mark the block")
+    endif()
+    if(NOT _l STREQUAL "")
+      set(_prev "${_l}")
+    endif()
+  endforeach()
   file(READ "${_doc}" _rest)
   set(_out "")
   set(_changed FALSE)

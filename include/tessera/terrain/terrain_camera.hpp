@@ -55,9 +55,13 @@ inline constexpr double camera_preset_min_extent = 1e-9;
 /// A camera: world -> view -> clip matrices (GLM, column-major, right-handed as glm::lookAt and
 /// glm::perspective build them) and a viewport of width x height pixels (row 0 at the top).
 struct terrain_camera {
+  /// World -> view (eye) space, as glm::lookAt builds it; must be affine and invertible.
   glm::dmat4 view{1.0};
+  /// View -> clip space, as glm::perspective builds it; must be invertible.
   glm::dmat4 projection{1.0};
+  /// Viewport width in pixels, 1 to max_viewport_side.
   index_t width = 0;
+  /// Viewport height in pixels (row 0 at the top), 1 to max_viewport_side.
   index_t height = 0;
   /// How `projection` maps depth: GLM's default, [-1, 1]; set glm_clip_depth (or
   /// clip_depth::zero_to_one) when GLM_FORCE_DEPTH_ZERO_TO_ONE is defined.
@@ -108,8 +112,11 @@ inline vec3 camera_eye(const terrain_camera& c) {
 /// A perspective camera described by where it is and where it looks (z is up in tessera's terrain
 /// scenes, but any up vector not parallel to the view direction works).
 struct look_at_camera {
+  /// Where the camera is, in world coordinates.
   vec3 eye{0, 0, 1};
+  /// The world point it looks at; must differ from `eye`.
   vec3 target{0, 1, 0};
+  /// The world direction that is up on the screen; must not be parallel to target - eye.
   vec3 up{0, 0, 1};
   double fov_y_degrees = 60;  ///< vertical field of view, in (0, 180)
   double near = 0.01;         ///< distance to the near plane, > 0
