@@ -32,10 +32,12 @@ concept Executor = requires(E& e, index_t n, void (*fn)(index_t)) {
 
 /// Runs every loop on the calling thread, in index order.
 struct serial_executor {
+  /// Calls fn(i) for i = begin, ..., end - 1 in order, on the calling thread.
   template <class F>
   void parallel_for(index_t begin, index_t end, F&& fn) const {
     for (index_t i = begin; i < end; ++i) fn(i);
   }
+  /// Threads a loop may use: 1.
   [[nodiscard]] int concurrency() const noexcept { return 1; }
 };
 
@@ -72,6 +74,7 @@ class thread_pool_executor {
   }
   thread_pool_executor(const thread_pool_executor&) = delete;
   thread_pool_executor& operator=(const thread_pool_executor&) = delete;
+  /// Stops and joins the worker threads.
   ~thread_pool_executor() {
     {
       std::lock_guard<std::mutex> lock(mutex_);
@@ -85,7 +88,6 @@ class thread_pool_executor {
   [[nodiscard]] int concurrency() const noexcept { return threads_; }
 
   /// Calls fn(i) for every i in [begin, end) on the pool and the calling thread; returns when done.
-
   template <class F>
   void parallel_for(index_t begin, index_t end, F&& fn) {
     if (end <= begin) return;

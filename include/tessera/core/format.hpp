@@ -46,7 +46,9 @@ inline constexpr channel_type channel_type_of = std::is_same_v<T, std::uint8_t> 
 
 /// A pixel format known at run time.
 struct pixel_format {
+  /// The channel type (uint8, uint16 or float).
   channel_type type = channel_type::uint8;
+  /// Channels per pixel, 1 to 4.
   int channels = 4;
   friend bool operator==(const pixel_format&, const pixel_format&) = default;
 };
@@ -54,7 +56,9 @@ struct pixel_format {
 /// Empty tag carrying a compile-time (channel type, channel count) pair.
 template <class T, int C>
 struct format_tag {
+  /// The channel type T.
   using channel = T;
+  /// The channel count C.
   static constexpr int channels = C;
 };
 

@@ -81,6 +81,7 @@ constexpr To convert_channel(From v) noexcept {
 template <class P>
 struct pixel_traits;
 
+/// A scalar is a one-channel pixel.
 template <class T>
 requires std::is_arithmetic_v<T>
 struct pixel_traits<T> {
@@ -90,11 +91,16 @@ struct pixel_traits<T> {
   static constexpr void set(T& p, int, T v) noexcept { p = v; }
 };
 
+/// std::array<T, C> is a C-channel pixel.
 template <class T, std::size_t C>
 struct pixel_traits<std::array<T, C>> {
+  /// The channel type T.
   using channel_type = T;
+  /// The channel count C.
   static constexpr int channels = static_cast<int>(C);
+  /// Channel c of p.
   static constexpr T get(const std::array<T, C>& p, int c) noexcept { return p[detail::to_size(c)]; }
+  /// Sets channel c of p to v.
   static constexpr void set(std::array<T, C>& p, int c, T v) noexcept { p[detail::to_size(c)] = v; }
 };
 
@@ -194,12 +200,17 @@ concept member_writable_image = member_image<I> &&
 /// (core/image_checks.hpp), which every entry point runs on its images, calls it before its own checks.
 template <class I>
 struct image_traits {
+  /// Forwards to the image's own validate(what) hook when it has one.
   static decltype(auto) validate(const I& i, std::string_view what) requires detail::member_validating_image<I> {
     return i.validate(what);
   }
+  /// Width in pixels, from the image's width().
   static index_t width(const I& i) requires detail::member_image<I> { return static_cast<index_t>(i.width()); }
+  /// Height in pixels, from the image's height().
   static index_t height(const I& i) requires detail::member_image<I> { return static_cast<index_t>(i.height()); }
+  /// Pixel (x, y), from the image's read(x, y).
   static decltype(auto) read(const I& i, index_t x, index_t y) requires detail::member_image<I> { return i.read(x, y); }
+  /// Writes pixel (x, y) through the image's write(x, y, p).
   template <class P>
   static void write(I& i, index_t x, index_t y, const P& p) requires detail::member_writable_image<I> {
     i.write(x, y, p);

@@ -23,10 +23,13 @@ TESSERA_NAMESPACE_BEGIN
 template <class T, int C>
 class image_buffer {
  public:
+  /// The channel type T.
   using value_type = T;
+  /// The pixel type, C channels of T.
   using pixel_type = pixel<T, C>;
   static_assert(Channel<T>, "image_buffer channels must be uint8_t, uint16_t or float");
   static_assert(C >= 1 && C <= max_channels, "image_buffer channel count must be 1 to 4");
+  /// The channel count C.
   static constexpr int channels = C;
 
   image_buffer() = default;
@@ -58,25 +61,42 @@ class image_buffer {
 #endif
   }
 
+  /// Width in pixels.
   [[nodiscard]] index_t width() const noexcept { return width_; }
+  /// Height in pixels.
   [[nodiscard]] index_t height() const noexcept { return height_; }
+  /// Channel values from one row to the next: width * C (rows are packed).
   [[nodiscard]] index_t stride() const noexcept { return width_ * C; }
+  /// True when the buffer holds no pixel.
   [[nodiscard]] bool empty() const noexcept { return data_.empty(); }
+  /// The first channel value of row 0.
   [[nodiscard]] T* data() noexcept { return data_.data(); }
+  /// The first channel value of row 0 (read-only).
   [[nodiscard]] const T* data() const noexcept { return data_.data(); }
+  /// The first channel value of row y.
   [[nodiscard]] T* row(index_t y) noexcept { return data_.data() + y * width_ * C; }
+  /// The first channel value of row y (read-only).
   [[nodiscard]] const T* row(index_t y) const noexcept { return data_.data() + y * width_ * C; }
+  /// The first channel value of pixel (x, y).
   [[nodiscard]] T* pixel_ptr(index_t x, index_t y) noexcept { return row(y) + x * C; }
+  /// The first channel value of pixel (x, y) (read-only).
   [[nodiscard]] const T* pixel_ptr(index_t x, index_t y) const noexcept { return row(y) + x * C; }
+  /// Bytes of pixel storage.
   [[nodiscard]] std::size_t size_bytes() const noexcept { return data_.size() * sizeof(T); }
 
+  /// Pixel (x, y); asserts it is inside.
   [[nodiscard]] pixel_type read(index_t x, index_t y) const noexcept { return cview().read(x, y); }
+  /// Sets pixel (x, y); asserts it is inside.
   void write(index_t x, index_t y, const pixel_type& v) noexcept { view().write(x, y, v); }
 
+  /// A writable view of the whole buffer.
   [[nodiscard]] image_view<T, C> view() noexcept { return {data_.data(), width_, height_, width_ * C}; }
+  /// A read-only view of the whole buffer.
   [[nodiscard]] image_view<const T, C> view() const noexcept { return cview(); }
+  /// A read-only view of the whole buffer.
   [[nodiscard]] image_view<const T, C> cview() const noexcept { return {data_.data(), width_, height_, width_ * C}; }
 
+  /// Same size and same channel values.
   friend bool operator==(const image_buffer& a, const image_buffer& b) noexcept {
     return a.width_ == b.width_ && a.height_ == b.height_ && a.data_ == b.data_;
   }

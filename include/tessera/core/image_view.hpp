@@ -22,10 +22,13 @@ TESSERA_NAMESPACE_BEGIN
 template <class T, int C>
 class image_view {
  public:
+  /// The channel type without const.
   using value_type = std::remove_const_t<T>;
+  /// The pixel type, C channels of value_type.
   using pixel_type = pixel<value_type, C>;
   static_assert(Channel<value_type>, "image_view channels must be uint8_t, uint16_t or float");
   static_assert(C >= 1 && C <= max_channels, "image_view channel count must be 1 to 4");
+  /// The channel count C.
   static constexpr int channels = C;
 
   image_view() = default;
@@ -41,12 +44,19 @@ class image_view {
     return {data_, width_, height_, stride_};
   }
 
+  /// Width in pixels.
   [[nodiscard]] index_t width() const noexcept { return width_; }
+  /// Height in pixels.
   [[nodiscard]] index_t height() const noexcept { return height_; }
+  /// Channel values from one row to the next.
   [[nodiscard]] index_t stride() const noexcept { return stride_; }
+  /// True when width or height is 0.
   [[nodiscard]] bool empty() const noexcept { return width_ == 0 || height_ == 0; }
+  /// The first channel value of row 0.
   [[nodiscard]] T* data() const noexcept { return data_; }
+  /// The first channel value of row y.
   [[nodiscard]] T* row(index_t y) const noexcept { return data_ + y * stride_; }
+  /// The first channel value of pixel (x, y).
   [[nodiscard]] T* pixel_ptr(index_t x, index_t y) const noexcept { return data_ + y * stride_ + x * C; }
 
   /// The image_traits validate hook (run by validate_image at every entry point): refuses what the
@@ -68,6 +78,7 @@ class image_view {
     return {};
   }
 
+  /// Pixel (x, y); asserts it is inside.
   [[nodiscard]] pixel_type read(index_t x, index_t y) const noexcept {
     TESSERA_ASSERT(x >= 0 && x < width_ && y >= 0 && y < height_);
     const T* p = pixel_ptr(x, y);
@@ -75,6 +86,7 @@ class image_view {
     for (int c = 0; c < C; ++c) out[detail::to_size(c)] = p[c];
     return out;
   }
+  /// Sets pixel (x, y); asserts it is inside. Writable views only.
   void write(index_t x, index_t y, const pixel_type& v) const noexcept requires(!std::is_const_v<T>) {
     TESSERA_ASSERT(x >= 0 && x < width_ && y >= 0 && y < height_);
     T* p = pixel_ptr(x, y);

@@ -50,6 +50,7 @@ constexpr int static_point_size() noexcept {
 /// neither `p[i]` nor `x, y, z` members.
 template <class P>
 struct point_traits {
+  /// Coordinate i of p, from p[i] or p.x / p.y / p.z.
   static double get(const P& p, int i) requires detail::subscript_point<P> || detail::member_xy_point<P> {
     if constexpr (detail::subscript_point<P>) {
       constexpr int size = detail::static_point_size<P>();
@@ -103,15 +104,21 @@ concept member_uv_mesh = member_mesh<M> && requires(const M& m, index_t f, int k
 /// it can make (a polygon mesh's non-triangle faces); validate_mesh() calls it before its own checks.
 template <class M>
 struct mesh_traits {
+  /// Vertex count, from the mesh's num_vertices().
   static index_t num_vertices(const M& m) requires detail::member_mesh<M> {
     return static_cast<index_t>(m.num_vertices());
   }
+  /// Face count, from the mesh's num_faces().
   static index_t num_faces(const M& m) requires detail::member_mesh<M> { return static_cast<index_t>(m.num_faces()); }
+  /// Vertex index of corner k (0..2) of face f, from the mesh's face_vertex(f, k).
   static index_t face_vertex(const M& m, index_t f, int k) requires detail::member_mesh<M> {
     return static_cast<index_t>(m.face_vertex(f, k));
   }
+  /// Position of vertex v, from the mesh's position(v).
   static decltype(auto) position(const M& m, index_t v) requires detail::member_mesh<M> { return m.position(v); }
+  /// Whether the mesh has per-corner texture coordinates, from its has_uvs().
   static bool has_uvs(const M& m) requires detail::member_uv_mesh<M> { return static_cast<bool>(m.has_uvs()); }
+  /// Texture coordinate of corner k of face f, from the mesh's corner_uv(f, k).
   static decltype(auto) corner_uv(const M& m, index_t f, int k) requires detail::member_uv_mesh<M> {
     return m.corner_uv(f, k);
   }

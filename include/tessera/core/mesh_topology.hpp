@@ -20,9 +20,13 @@ TESSERA_NAMESPACE_BEGIN
 /// One undirected edge (v0 < v1) and the faces using it. `faces` lists (face, corner k) pairs: the
 /// edge is the face's side from corner k to corner k + 1 (mod 3).
 struct mesh_edge {
+  /// The edge's two vertices, v0 < v1.
   index_t v0 = 0, v1 = 0;
+  /// The faces using the edge, as (face, corner) pairs.
   std::vector<std::array<index_t, 2>> faces;
+  /// True when one face uses the edge.
   [[nodiscard]] bool is_boundary() const noexcept { return faces.size() == 1; }
+  /// True when at most two faces use the edge.
   [[nodiscard]] bool is_manifold() const noexcept { return faces.size() <= 2; }
 };
 
@@ -85,8 +89,11 @@ std::vector<mesh_edge> mesh_edges(const M& m) {
 /// on a boundary or non-manifold edge. Also counts boundary edges (one face) and non-manifold edges
 /// (three or more faces).
 struct face_adjacency_result {
+  /// neighbor[f][k]: the face across side k of face f, or -1 (boundary or non-manifold edge).
   std::vector<std::array<index_t, 3>> neighbor;
+  /// Edges with one face.
   index_t boundary_edges = 0;
+  /// Edges with more than two faces.
   index_t nonmanifold_edges = 0;
 };
 
@@ -140,8 +147,11 @@ index_t count_nonmanifold_edges(const M& m) {
 /// Connected components through shared vertices. Component ids run 0..count-1 in order of each
 /// component's first face; vertices used by no face get -1 (so do faces out of range).
 struct mesh_components {
+  /// Number of connected components.
   index_t count = 0;
+  /// Component of each vertex (0 to count - 1).
   std::vector<index_t> vertex_component;
+  /// Component of each face (0 to count - 1).
   std::vector<index_t> face_component;
 };
 

@@ -37,22 +37,31 @@ class mesh_view {
         num_faces_(face_count),
         stride_(position_stride) {}
 
+  /// Vertex count.
   [[nodiscard]] index_t num_vertices() const noexcept { return num_vertices_; }
+  /// Face (triangle) count.
   [[nodiscard]] index_t num_faces() const noexcept { return num_faces_; }
+  /// Vertex index of corner k (0..2) of face f.
   [[nodiscard]] index_t face_vertex(index_t f, int k) const noexcept {
     return static_cast<index_t>(indices_[3 * f + k]);
   }
+  /// Position of vertex v.
   [[nodiscard]] std::array<Scalar, 3> position(index_t v) const noexcept {
     const Scalar* p = positions_ + v * stride_;
     return {p[0], p[1], p[2]};
   }
+  /// True when per-corner texture coordinates were given.
   [[nodiscard]] bool has_uvs() const noexcept { return uvs_ != nullptr; }
+  /// Texture coordinate of corner k of face f.
   [[nodiscard]] std::array<float, 2> corner_uv(index_t f, int k) const noexcept {
     const float* t = uvs_ + 6 * f + 2 * k;
     return {t[0], t[1]};
   }
+  /// The caller's position buffer.
   [[nodiscard]] const Scalar* positions() const noexcept { return positions_; }
+  /// The caller's index buffer.
   [[nodiscard]] const Index* indices() const noexcept { return indices_; }
+  /// Scalars from one vertex to the next in the position buffer.
   [[nodiscard]] index_t position_stride() const noexcept { return stride_; }
 
  private:

@@ -25,8 +25,11 @@ class cancellation_token {
   cancellation_token() = default;
   cancellation_token(const cancellation_token&) = delete;
   cancellation_token& operator=(const cancellation_token&) = delete;
+  /// Raises the flag (any thread).
   void cancel() noexcept { cancelled_.store(true, std::memory_order_relaxed); }
+  /// Lowers the flag, for reuse.
   void reset() noexcept { cancelled_.store(false, std::memory_order_relaxed); }
+  /// True once cancel() was called (and not reset).
   [[nodiscard]] bool cancelled() const noexcept { return cancelled_.load(std::memory_order_relaxed); }
 
  private:
@@ -35,7 +38,9 @@ class cancellation_token {
 
 /// Optional progress callback (fraction in [0, 1], stage name; return false to cancel) and token.
 struct progress {
+  /// Called with the fraction done and the stage; return false to cancel. Optional.
   std::function<bool(double fraction, std::string_view stage)> callback;
+  /// A token another thread may raise to cancel. Optional; not owned.
   const cancellation_token* token = nullptr;
 
   /// Reports progress; returns false when the work should stop (callback said so or token raised).

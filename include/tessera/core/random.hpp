@@ -65,9 +65,13 @@ constexpr std::uint64_t bits_below(std::uint64_t bits, std::uint64_t n) noexcept
 /// distributions, whose output differs between standard libraries.
 class random_sequence {
  public:
+  /// 64-bit draws.
   using result_type = std::uint64_t;
+  /// The sequence whose draws hash `base` with a counter.
   constexpr explicit random_sequence(std::uint64_t base) noexcept : base_(base) {}
+  /// Smallest draw: 0.
   static constexpr result_type min() noexcept { return 0; }
+  /// Largest draw: 2^64 - 1.
   static constexpr result_type max() noexcept { return ~result_type{0}; }
   constexpr result_type operator()() noexcept { return mix64(base_ ^ mix64(++counter_)); }
   constexpr double uniform() noexcept { return bits_to_unit((*this)()); }
@@ -81,6 +85,7 @@ class random_sequence {
 /// Random values as pure functions of (seed, stream, keys...).
 class counter_rng {
  public:
+  /// A generator for this seed and stream (e.g. stream_id("name")).
   constexpr explicit counter_rng(std::uint64_t seed, std::uint64_t stream = 0) noexcept
       : base_(hash_keys(seed, stream)) {}
 

@@ -53,11 +53,16 @@ constexpr std::string_view to_string(status_code c) noexcept {
 class [[nodiscard]] status {
  public:
   status() = default;
+  /// A status with this code and message.
   status(status_code code, std::string message) : code_(code), message_(std::move(message)) {}
 
+  /// True when the code is ok.
   [[nodiscard]] bool ok() const noexcept { return code_ == status_code::ok; }
+  /// True when ok().
   explicit operator bool() const noexcept { return ok(); }
+  /// The code.
   [[nodiscard]] status_code code() const noexcept { return code_; }
+  /// The message (empty when ok).
   [[nodiscard]] const std::string& message() const noexcept { return message_; }
   /// "ok" or "<code>: <message>".
   [[nodiscard]] std::string to_string() const {
@@ -68,14 +73,23 @@ class [[nodiscard]] status {
     return s;
   }
 
+  /// Bad input: a parameter's value is not accepted (the message names it).
   static status invalid_argument(std::string m) { return {status_code::invalid_argument, std::move(m)}; }
+  /// A coordinate or window outside what is supported.
   static status out_of_range(std::string m) { return {status_code::out_of_range, std::move(m)}; }
+  /// A size whose element or byte count would overflow.
   static status size_overflow(std::string m) { return {status_code::size_overflow, std::move(m)}; }
+  /// A file could not be read or written.
   static status io_error(std::string m) { return {status_code::io_error, std::move(m)}; }
+  /// A file's content is malformed (the message says where).
   static status parse_error(std::string m) { return {status_code::parse_error, std::move(m)}; }
+  /// A valid input this code cannot handle.
   static status unsupported(std::string m) { return {status_code::unsupported, std::move(m)}; }
+  /// The caller cancelled (progress callback or token).
   static status cancelled(std::string m = "cancelled by the caller") { return {status_code::cancelled, std::move(m)}; }
+  /// An iteration did not converge.
   static status not_converged(std::string m) { return {status_code::not_converged, std::move(m)}; }
+  /// A broken internal invariant (a bug: please report it).
   static status internal_error(std::string m) { return {status_code::internal_error, std::move(m)}; }
 
  private:
@@ -87,7 +101,9 @@ class [[nodiscard]] status {
 template <class T>
 class [[nodiscard]] result {
  public:
+  /// The value type T.
   using value_type = T;
+  /// A result holding a value.
   result(T value) : has_value_(true) {
     ::new (static_cast<void*>(&value_)) T(std::move(value));
   }  // NOLINT(google-explicit-constructor)
@@ -98,17 +114,21 @@ class [[nodiscard]] result {
   }
   // (a union rather than std::optional: result<T> is instantiated for many T, and this keeps the
   // umbrella header's compile time down)
+  /// Copies the value or the error.
   result(const result& o) requires std::copy_constructible<T> : has_value_(o.has_value_), error_(o.error_) {
     if (has_value_) ::new (static_cast<void*>(&value_)) T(o.value_);
   }
+  /// Moves the value or the error.
   result(result&& o) noexcept(std::is_nothrow_move_constructible_v<T>)
       : has_value_(o.has_value_), error_(std::move(o.error_)) {
     if (has_value_) ::new (static_cast<void*>(&value_)) T(std::move(o.value_));
   }
+  /// Copies the value or the error.
   result& operator=(const result& o) requires std::copy_constructible<T> {
     if (this != &o) *this = result(o);
     return *this;
   }
+  /// Moves the value or the error.
   result& operator=(result&& o) noexcept(std::is_nothrow_move_constructible_v<T>) {
     if (this == &o) return *this;
     reset();
@@ -117,9 +137,12 @@ class [[nodiscard]] result {
     error_ = std::move(o.error_);
     return *this;
   }
+  /// Destroys the value, if any.
   ~result() { reset(); }
 
+  /// True when it holds a value.
   [[nodiscard]] bool ok() const noexcept { return has_value_; }
+  /// True when ok().
   explicit operator bool() const noexcept { return ok(); }
   /// The failure; an ok status when a value is held.
   [[nodiscard]] const status& error() const noexcept { return error_; }
@@ -129,17 +152,22 @@ class [[nodiscard]] result {
     TESSERA_ASSERT(ok());
     return value_;
   }
+  /// The value; asserts ok().
   [[nodiscard]] const T& value() const& {
     TESSERA_ASSERT(ok());
     return value_;
   }
+  /// The value, moved out; asserts ok().
   [[nodiscard]] T&& value() && {
     TESSERA_ASSERT(ok());
     return std::move(value_);
   }
+  /// The value; asserts ok().
   T& operator*() & { return value(); }
   const T& operator*() const& { return value(); }
+  /// The value, moved out; asserts ok().
   T&& operator*() && { return std::move(*this).value(); }
+  /// Pointer to the value; asserts ok().
   T* operator->() { return &value(); }
   const T* operator->() const { return &value(); }
   /// The value, or `fallback` when there is none.
@@ -147,6 +175,7 @@ class [[nodiscard]] result {
   [[nodiscard]] T value_or(U&& fallback) const& {
     return ok() ? value_ : static_cast<T>(std::forward<U>(fallback));
   }
+  /// The value moved out, or `fallback` when there is none.
   template <class U>
   [[nodiscard]] T value_or(U&& fallback) && {
     return ok() ? std::move(value_) : static_cast<T>(std::forward<U>(fallback));

@@ -24,8 +24,11 @@ TESSERA_NAMESPACE_BEGIN
 
 /// Side numbers, usable wherever an int side is expected.
 inline constexpr int side_north = 0;
+/// Side index of the east edge.
 inline constexpr int side_east = 1;
+/// Side index of the south edge.
 inline constexpr int side_south = 2;
+/// Side index of the west edge.
 inline constexpr int side_west = 3;
 
 /// "north", "east", "south" or "west" for side 0 to 3 (anything else: "invalid side"), for messages.
@@ -50,12 +53,16 @@ concept TileColoring = requires(const C& c, index_t face, int side) {
 struct stored_tile_coloring {
   int horizontal_colors = 1;  ///< colours of north/south sides
   int vertical_colors = 1;    ///< colours of east/west sides
+  /// colors[face][side]: the edge colours of every face.
   std::vector<std::array<int, 4>> colors;
 
+  /// Number of faces.
   [[nodiscard]] index_t num_faces() const noexcept { return static_cast<index_t>(colors.size()); }
+  /// Colours of this side's edges (horizontal for north/south, vertical for east/west).
   [[nodiscard]] int num_colors(int side) const noexcept {
     return is_horizontal_side(side) ? horizontal_colors : vertical_colors;
   }
+  /// Colour of edge `side` of `face`.
   [[nodiscard]] int edge_color(index_t face, int side) const noexcept {
     return colors[detail::to_size(face)][detail::to_size(side)];
   }
@@ -120,8 +127,11 @@ status check_coloring(const C& c, Neighbor&& neighbor) {
 /// Neighbours on a cols x rows grid (see the convention above); `toroidal` wraps both directions.
 /// Precondition: cols > 0, rows > 0, 0 <= face < cols * rows, 0 <= side < 4.
 struct grid_neighbors {
+  /// Grid size in cells.
   index_t cols = 0, rows = 0;
+  /// True when the grid wraps around (a torus).
   bool toroidal = false;
+  /// The neighbour across edge `side` of `face` and its side facing back, or none at the border.
   std::optional<std::pair<index_t, int>> operator()(index_t face, int side) const {
     index_t col = face % cols, row = face / cols;
     static constexpr int dx[4] = {0, 1, 0, -1}, dy[4] = {-1, 0, 1, 0};

@@ -26,17 +26,26 @@ TESSERA_NAMESPACE_BEGIN
 /// seen from the front) and `uvs` (empty, or exactly one uv triple per face; validate_mesh checks
 /// this). Models Mesh and UVMesh.
 struct tri_mesh {
+  /// Vertex positions.
   std::vector<vec3> positions;
+  /// Triangles, three vertex indices each.
   std::vector<std::array<index_t, 3>> faces;
+  /// Optional texture coordinates per face corner (empty, or one entry per face).
   std::vector<std::array<vec2, 3>> uvs;
 
+  /// Vertex count.
   [[nodiscard]] index_t num_vertices() const noexcept { return static_cast<index_t>(positions.size()); }
+  /// Face count.
   [[nodiscard]] index_t num_faces() const noexcept { return static_cast<index_t>(faces.size()); }
+  /// Vertex index of corner k (0..2) of face f.
   [[nodiscard]] index_t face_vertex(index_t f, int k) const noexcept {
     return faces[detail::to_size(f)][detail::to_size(k)];
   }
+  /// Position of vertex v.
   [[nodiscard]] const vec3& position(index_t v) const noexcept { return positions[detail::to_size(v)]; }
+  /// True when uvs is not empty.
   [[nodiscard]] bool has_uvs() const noexcept { return !uvs.empty(); }
+  /// Texture coordinate of corner k of face f.
   [[nodiscard]] const vec2& corner_uv(index_t f, int k) const noexcept {
     return uvs[detail::to_size(f)][detail::to_size(k)];
   }
