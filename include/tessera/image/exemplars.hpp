@@ -24,12 +24,15 @@
 
 TESSERA_NAMESPACE_BEGIN
 
+/// The procedural exemplars make_exemplar draws.
 enum class exemplar_kind { grass, sand, rock, bricks, cells, weave, dots };
 
+/// Every exemplar_kind, in declaration order.
 inline constexpr std::array<exemplar_kind, 7> all_exemplar_kinds = {
     exemplar_kind::grass, exemplar_kind::sand,  exemplar_kind::rock, exemplar_kind::bricks,
     exemplar_kind::cells, exemplar_kind::weave, exemplar_kind::dots};
 
+/// The kind's name ("grass", "bricks", ...), as parse_exemplar_kind reads it.
 constexpr std::string_view to_string(exemplar_kind k) noexcept {
   constexpr std::array<std::string_view, 7> names = {"grass", "sand", "rock", "bricks", "cells", "weave", "dots"};
   return names[detail::to_size(k)];
@@ -43,9 +46,13 @@ inline result<exemplar_kind> parse_exemplar_kind(std::string_view name) {
       detail::cat("unknown exemplar kind '", name, "' (expected grass, sand, rock, bricks, cells, weave or dots)"));
 }
 
+/// Options of make_exemplar.
 struct exemplar_options {
+  /// Width in pixels.
   index_t width = 128;
+  /// Height in pixels.
   index_t height = 128;
+  /// Seed of the procedural pattern.
   std::uint64_t seed = 1;
 };
 

@@ -31,6 +31,7 @@
 
 TESSERA_NAMESPACE_BEGIN
 
+/// Options of neighborhood_energy.
 struct neighborhood_energy_options {
   index_t window = 5;        ///< neighbourhood side in pixels (>= 1, at most the smaller image side)
   index_t sample_step = 2;   ///< output windows are taken every sample_step pixels in x and y (>= 1)
@@ -165,9 +166,13 @@ result<double> neighborhood_energy(const O& output, const E& exemplar, const nei
 /// over rows [begin, end); horizontal is the boundary between rows position-1 and position over
 /// columns [begin, end).
 struct seam_segment {
+  /// True: between columns; false: between rows.
   bool vertical = true;
+  /// The column (or row) right of (below) the seam.
   index_t position = 0;
+  /// First row (or column) of the seam.
   index_t begin = 0;
+  /// One past its last row (or column).
   index_t end = 0;
 };
 

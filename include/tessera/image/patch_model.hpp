@@ -32,12 +32,17 @@ TESSERA_NAMESPACE_BEGIN
 /// core/tile_coloring.hpp (side_north 0, side_east 1, side_south 2, side_west 3), which every
 /// patch_model query takes. `patch_side::east` still reads as `side_east`.
 struct [[deprecated("use tessera::side_north, side_east, side_south, side_west (core/tile_coloring.hpp)")]] patch_side {
+  /// Same as side_north.
   static constexpr int north = side_north;
+  /// Same as side_east.
   static constexpr int east = side_east;
+  /// Same as side_south.
   static constexpr int south = side_south;
+  /// Same as side_west.
   static constexpr int west = side_west;
 };
 
+/// Options of build_patch_model (docs/patch_synthesis.md has the table of fields and defaults).
 struct patch_model_options {
   index_t patch_width = 0;    ///< cell pitch in x; 0: chosen by analyze_patch_size (paper §2.1)
   index_t patch_height = 0;   ///< cell pitch in y; 0: chosen by analyze_patch_size
@@ -59,21 +64,28 @@ struct patch_model_builder;
 
 /// Exemplar coordinates of a patch's top-left pixel.
 struct patch_origin {
+  /// Column.
   index_t x = 0;
+  /// Row.
   index_t y = 0;
   friend bool operator==(const patch_origin&, const patch_origin&) = default;
 };
 
 /// A member of a compatible set and its overlap error.
 struct indexed_candidate {
+  /// The patch index.
   std::uint32_t patch = 0;
+  /// Its overlap error with the set's owner.
   float error = 0;
 };
 
 /// A shift between two phases and how alike patches of the two phases look (autocorrelation).
 struct phase_offset {
+  /// Shift in x.
   index_t dx = 0;
+  /// Shift in y.
   index_t dy = 0;
+  /// Autocorrelation at the shift.
   double similarity = 0;
 };
 
@@ -85,21 +97,30 @@ struct phase_offset {
 template <Channel T, int C>
 class patch_model {
  public:
+  /// The exemplar's channel type T.
   using channel_type = T;
+  /// The exemplar's channel count C.
   static constexpr int channels = C;
 
   patch_model() = default;
 
+  /// Cell pitch in x.
   [[nodiscard]] index_t patch_width() const noexcept { return pw_; }
+  /// Cell pitch in y.
   [[nodiscard]] index_t patch_height() const noexcept { return ph_; }
+  /// Overlap width between neighbouring patches.
   [[nodiscard]] index_t overlap() const noexcept { return v_; }
   /// Size of every compatible set.
   [[nodiscard]] index_t candidates() const noexcept { return k_; }
   /// The exemplar, converted to the model's pixel type.
   [[nodiscard]] const image_buffer<T, C>& exemplar() const noexcept { return exemplar_; }
+  /// Number of patches (patches_x * patches_y).
   [[nodiscard]] index_t num_patches() const noexcept { return nx_ * ny_; }
+  /// Patch positions per exemplar row.
   [[nodiscard]] index_t patches_x() const noexcept { return nx_; }
+  /// Patch positions per exemplar column.
   [[nodiscard]] index_t patches_y() const noexcept { return ny_; }
+  /// Exemplar position of a patch's top-left pixel.
   [[nodiscard]] patch_origin origin(index_t patch) const noexcept { return {patch % nx_, patch / nx_}; }
 
   /// The k patches that fit best on `side` of `patch` (b on the east side of a: a's last `overlap`
@@ -144,6 +165,7 @@ class patch_model {
 
   /// Phases are numbered py * patch_width + px.
   [[nodiscard]] index_t num_phases() const noexcept { return pw_ * ph_; }
+  /// The phase of a patch: its origin modulo the patch size.
   [[nodiscard]] index_t phase_of(index_t patch) const noexcept {
     const patch_origin o = origin(patch);
     return (o.y % ph_) * pw_ + o.x % pw_;
@@ -154,6 +176,7 @@ class patch_model {
     return {phase_members_.data() + b, detail::to_size(e - b)};
   }
 
+  /// True when minimum-error seams were precomputed (patch_model_options::seams).
   [[nodiscard]] bool has_seams() const noexcept { return !seams_[0].empty(); }
   /// The precomputed minimum-error seam between `patch` and compatible(patch, side)[rank], oriented
   /// from the left (or top) patch to the right (or bottom) one: entry t is the cut c in [0, overlap)

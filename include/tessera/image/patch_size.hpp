@@ -24,6 +24,7 @@
 
 TESSERA_NAMESPACE_BEGIN
 
+/// Options of analyze_patch_size (paper 002 §2.1).
 struct patch_size_options {
   index_t min_size = 0;                ///< smallest candidate side; 0: a quarter of the exemplar side (§2.1)
   index_t max_size = 0;                ///< largest candidate side; 0: half the exemplar side (§2.1)
@@ -49,7 +50,9 @@ struct patch_size_options {
 
 /// The measures of one candidate patch shape.
 struct patch_size_measure {
+  /// Patch width.
   index_t width = 0;
+  /// Patch height.
   index_t height = 0;
   double containment = 0;  ///< share of patches whose grey histogram is within tolerance of the exemplar's (§2.1.1)
   double containment_p90 = 0;   ///< 90th percentile of the histogram distances, relative to the exemplar
@@ -65,16 +68,22 @@ struct patch_size_measure {
 
 /// How well overlaps of one width discriminate patches.
 struct overlap_measure {
+  /// Overlap width.
   index_t overlap = 0;
   double discrimination = 0;  ///< correlation, over random patch pairs, of overlap distance and patch distance
 };
 
 /// The result of analyze_patch_size: all measures plus the chosen size and overlap.
 struct patch_size_analysis {
+  /// Every candidate shape, measured.
   std::vector<patch_size_measure> sizes;
+  /// Every overlap width tried, measured.
   std::vector<overlap_measure> overlaps;
+  /// The chosen patch width.
   index_t patch_width = 0;
+  /// The chosen patch height.
   index_t patch_height = 0;
+  /// The chosen overlap width.
   index_t overlap = 0;
 };
 

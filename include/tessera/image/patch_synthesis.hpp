@@ -42,13 +42,17 @@ enum class seam_mode {
 
 /// A pixel position in the infinite texture plane.
 struct texture_offset {
+  /// Texture column.
   index_t x = 0;
+  /// Texture row.
   index_t y = 0;
 };
 
+/// Options of synthesize, synthesize_aligned and synthesize_source_map.
 struct patch_synthesis_options {
   texture_offset origin = {};  ///< texture coordinates of the output's top-left pixel
   std::uint64_t seed = 0;      ///< the texture: same seed, same infinite texture
+  /// How overlaps join: feather (the paper's linear blend) or cut (minimum-error seams).
   seam_mode seams = seam_mode::feather;
   index_t phase_radius = -1;        ///< distributed patches come from phases within this distance of one
                                     ///< phase (any value >= max(patch_width, patch_height) means every

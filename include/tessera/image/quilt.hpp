@@ -41,7 +41,9 @@ struct quilt_options {
   bool seamless = false;   ///< quilt(): synthesize on a torus so the output tiles with itself
   double boundary_weight = 64;  ///< constrained_quilt(): weight, in the overlap error, of fixed pixels bordering the
                                 ///< region to fill, where the cut cannot move (1 = plain Efros & Freeman)
+  /// Seed of the patch choices.
   std::uint64_t seed = 1;
+  /// Progress callback and cancellation token.
   tessera::progress progress = {};
 };
 

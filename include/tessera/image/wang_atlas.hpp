@@ -50,10 +50,12 @@ constexpr index_t edge_order_index(int a, int b) noexcept {
   return static_cast<index_t>(a) * a + 2 * b - 1;  // a > b > 0
 }
 
+/// Atlas packing: edge_ordered (Wei 2004) or padded (each tile in a slot with padding texels).
 enum class atlas_layout { edge_ordered, padded };
 
 /// Options of build_wang_atlas().
 struct wang_atlas_options {
+  /// Which packing.
   atlas_layout layout = atlas_layout::edge_ordered;
   int mip_levels = 0;   ///< mip levels (level 0 included) that must sample exactly; 0 = all the set allows
                         ///< (wang_tile_set::exact_mip_levels()); more than the set allows is an error
@@ -64,13 +66,16 @@ struct wang_atlas_options {
 template <Channel T, int C>
 struct wang_atlas {
   image_buffer<T, C> image;  ///< the texture
+  /// The packing used.
   atlas_layout layout = atlas_layout::edge_ordered;
+  /// Tile side in texels.
   index_t tile_size = 0;
   index_t padding = 0;    ///< 0 for the edge-ordered layout
   index_t slot_size = 0;  ///< tile_size + 2 · padding
   int mip_levels = 0;     ///< box-filtered levels 0 .. mip_levels − 1 sample exactly across tile borders and corners
   tile_set_edges edges;   ///< the set's edges (for tile lookups)
   std::vector<index_t> slot_col;  ///< atlas slot of each tile (edge-ordered: of each tile's edges)
+  /// Atlas slot row of each tile (like slot_col).
   std::vector<index_t> slot_row;
 
   /// Atlas texel coordinates of offset (fx, fy) ∈ [0, tile_size)² inside tile `tile`.

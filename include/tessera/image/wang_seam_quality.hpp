@@ -25,13 +25,16 @@ struct wang_pair_seam {
   index_t first = 0;     ///< west (or north) tile
   index_t second = 0;    ///< east (or south) tile
   bool vertical = true;  ///< true: first | second side by side; false: first above second
+  /// The pair's seam gradient ratio (metrics.hpp seam_gradient_ratio; 1: no more visible than the exemplar's own gradients).
   double ratio = 0;
 };
 
 /// Seam figures of a whole set.
 struct wang_seam_report {
   std::vector<wang_pair_seam> pairs;  ///< every pair that can touch, horizontal pairs first
+  /// Mean ratio over the pairs.
   double mean_ratio = 0;
+  /// Largest ratio.
   double max_ratio = 0;
   wang_pair_seam worst;  ///< the pair with the largest ratio
 };

@@ -219,6 +219,7 @@ class wang_tile_set {
 
 /// Options of build_wang_tiles().
 struct wang_tile_options {
+  /// Tile side in pixels.
   index_t tile_size = 64;
   int horizontal_colors = 2;           ///< colours of north/south edges (nh)
   int vertical_colors = 2;             ///< colours of east/west edges (nv)
@@ -238,7 +239,9 @@ struct wang_tile_options {
       64;  ///< overlap-error weight of fixed border pixels next to unsynthesized ones (as in quilt_options)
   index_t min_candidates = 4;  ///< draw each patch among at least this many best candidates, so tiles sharing
                                ///< edges still get different interiors (1 = pure tolerance rule)
+  /// Seed of the edge samples and the quilting.
   std::uint64_t seed = 1;
+  /// Progress callback and cancellation token.
   tessera::progress progress = {};
 };
 

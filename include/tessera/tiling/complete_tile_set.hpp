@@ -24,9 +24,13 @@ TESSERA_NAMESPACE_BEGIN
 
 /// The four edge colours of a tile, in side order (core/tile_coloring.hpp): north, east, south, west.
 struct wang_edges {
+  /// North edge colour (a horizontal colour).
   int north = 0;
+  /// East edge colour (a vertical colour).
   int east = 0;
+  /// South edge colour (a horizontal colour).
   int south = 0;
+  /// West edge colour (a vertical colour).
   int west = 0;
 
   /// The colour of side `side` (0 north, 1 east, 2 south, 3 west).

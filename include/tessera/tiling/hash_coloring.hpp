@@ -65,7 +65,9 @@ class hash_coloring {
     return create(set.horizontal_colors(), set.vertical_colors(), seed, set.hash_modulus());
   }
 
+  /// Colours of this side's edges (horizontal for north/south, vertical for east/west).
   [[nodiscard]] int num_colors(int side) const noexcept { return is_horizontal_side(side) ? nh_ : nv_; }
+  /// m: colours are drawn so that every cell satisfies a modular subset's congruence (1: the complete set).
   [[nodiscard]] int modulus() const noexcept { return m_; }
 
   /// Colour of `side` of cell (col, row) of the infinite plane. O(1).
@@ -96,6 +98,7 @@ class hash_coloring {
   }
   /// The period (0 x 0 when aperiodic).
   [[nodiscard]] index_t period_cols() const noexcept { return period_cols_; }
+  /// The period in rows (0 when aperiodic).
   [[nodiscard]] index_t period_rows() const noexcept { return period_rows_; }
 
   /// A cols × rows window whose cell (0, 0) is plane cell (origin_col, origin_row); models
@@ -143,25 +146,36 @@ class hash_coloring {
 /// (a window may straddle them). Models TileColoring; O(1) queries.
 class hash_coloring_window {
  public:
+  /// Unchecked: use hash_coloring::window().
   hash_coloring_window(const hash_coloring& plane, index_t origin_col, index_t origin_row, index_t cols,
                        index_t rows) noexcept
       : plane_(plane), origin_col_(origin_col), origin_row_(origin_row), cols_(cols), rows_(rows) {}
 
+  /// Columns of the window.
   [[nodiscard]] index_t cols() const noexcept { return cols_; }
+  /// Rows of the window.
   [[nodiscard]] index_t rows() const noexcept { return rows_; }
+  /// Plane column of window column 0.
   [[nodiscard]] index_t origin_col() const noexcept { return origin_col_; }
+  /// Plane row of window row 0.
   [[nodiscard]] index_t origin_row() const noexcept { return origin_row_; }
+  /// cols * rows.
   [[nodiscard]] index_t num_faces() const noexcept { return cols_ * rows_; }
+  /// Colours of this side's edges.
   [[nodiscard]] int num_colors(int side) const noexcept { return plane_.num_colors(side); }
+  /// Colour of edge `side` of face (row * cols + col).
   [[nodiscard]] int edge_color(index_t face, int side) const noexcept {
     return edge_color_at(face % cols_, face / cols_, side);
   }
+  /// Colour of edge `side` of window cell (col, row).
   [[nodiscard]] int edge_color_at(index_t col, index_t row, int side) const noexcept {
     return plane_.edge_color_at(add(origin_col_, col), add(origin_row_, row), side);
   }
+  /// The four edge colours of window cell (col, row).
   [[nodiscard]] wang_edges edges_at(index_t col, index_t row) const noexcept {
     return plane_.edges_at(add(origin_col_, col), add(origin_row_, row));
   }
+  /// The infinite colouring the window shows.
   [[nodiscard]] const hash_coloring& plane() const noexcept { return plane_; }
 
  private:

@@ -63,12 +63,19 @@ class periodic_coloring {
     return c;
   }
 
+  /// Columns of the grid.
   [[nodiscard]] index_t cols() const noexcept { return cols_; }
+  /// Rows of the grid.
   [[nodiscard]] index_t rows() const noexcept { return rows_; }
+  /// Columns of the repeated pattern.
   [[nodiscard]] index_t period_cols() const noexcept { return period_cols_; }
+  /// Rows of the repeated pattern.
   [[nodiscard]] index_t period_rows() const noexcept { return period_rows_; }
+  /// cols * rows.
   [[nodiscard]] index_t num_faces() const noexcept { return cols_ * rows_; }
+  /// Colours of this side's edges.
   [[nodiscard]] int num_colors(int side) const noexcept { return is_horizontal_side(side) ? nh_ : nv_; }
+  /// Colour of edge `side` of face (row * cols + col).
   [[nodiscard]] int edge_color(index_t face, int side) const noexcept {
     return edge_color_at(face % cols_, face / cols_, side);
   }
@@ -76,6 +83,7 @@ class periodic_coloring {
   [[nodiscard]] int edge_color_at(index_t col, index_t row, int side) const noexcept {
     return edges_at(col, row)[side];
   }
+  /// The four edge colours of cell (col, row).
   [[nodiscard]] const wang_edges& edges_at(index_t col, index_t row) const noexcept {
     return pattern_[detail::to_size(wrap(row, period_rows_) * period_cols_ + wrap(col, period_cols_))];
   }

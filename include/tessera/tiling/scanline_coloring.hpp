@@ -85,13 +85,19 @@ class scanline_coloring {
     return create(*set, cols, rows, seed);
   }
 
+  /// Columns of the grid.
   [[nodiscard]] index_t cols() const noexcept { return cols_; }
+  /// Rows of the grid.
   [[nodiscard]] index_t rows() const noexcept { return rows_; }
+  /// cols * rows.
   [[nodiscard]] index_t num_faces() const noexcept { return cols_ * rows_; }
+  /// Colours of this side's edges.
   [[nodiscard]] int num_colors(int side) const noexcept { return is_horizontal_side(side) ? nh_ : nv_; }
+  /// Colour of edge `side` of face (row * cols + col).
   [[nodiscard]] int edge_color(index_t face, int side) const noexcept { return cells_[detail::to_size(face)][side]; }
   /// Colour of `side` of cell (col, row); 0 <= col < cols, 0 <= row < rows.
   [[nodiscard]] int edge_color_at(index_t col, index_t row, int side) const noexcept { return at(col, row)[side]; }
+  /// The four edge colours of cell (col, row).
   [[nodiscard]] const wang_edges& edges_at(index_t col, index_t row) const noexcept { return at(col, row); }
 
  private:

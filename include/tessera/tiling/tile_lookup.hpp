@@ -62,12 +62,19 @@ status validate_grid_coloring(const C& c) {
 /// Views any TileColoring as a grid with `cols` columns (rows = num_faces / cols).
 template <TileColoring C>
 struct grid_coloring_view {
+  /// The viewed colouring (not owned).
   const C* coloring = nullptr;
+  /// Columns of the grid.
   index_t grid_cols = 1;
+  /// Columns of the grid.
   [[nodiscard]] index_t cols() const noexcept { return grid_cols; }
+  /// num_faces / cols.
   [[nodiscard]] index_t rows() const noexcept { return grid_cols > 0 ? coloring->num_faces() / grid_cols : 0; }
+  /// The colouring's face count.
   [[nodiscard]] index_t num_faces() const noexcept { return coloring->num_faces(); }
+  /// The colouring's colour count for this side.
   [[nodiscard]] int num_colors(int side) const noexcept { return static_cast<int>(coloring->num_colors(side)); }
+  /// The colouring's colour of edge `side` of face.
   [[nodiscard]] int edge_color(index_t face, int side) const noexcept {
     return static_cast<int>(coloring->edge_color(face, side));
   }

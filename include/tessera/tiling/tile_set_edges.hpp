@@ -81,12 +81,17 @@ class tile_set_edges {
     return r == 0;
   }
 
+  /// nh, colours of north/south edges.
   [[nodiscard]] int horizontal_colors() const noexcept { return nh_; }
+  /// nv, colours of east/west edges.
   [[nodiscard]] int vertical_colors() const noexcept { return nv_; }
   /// Colour count of a side (north/south: horizontal, east/west: vertical).
   [[nodiscard]] int num_colors(int side) const noexcept { return is_horizontal_side(side) ? nh_ : nv_; }
+  /// Number of tiles.
   [[nodiscard]] index_t size() const noexcept { return static_cast<index_t>(tiles_.size()); }
+  /// The tiles' edges, in tile order.
   [[nodiscard]] std::span<const wang_edges> tiles() const noexcept { return tiles_; }
+  /// The edges of one tile.
   [[nodiscard]] const wang_edges& operator[](index_t tile) const noexcept {
     TESSERA_ASSERT(tile >= 0 && tile < size());
     return tiles_[detail::to_size(tile)];
