@@ -36,14 +36,17 @@
 
 TESSERA_NAMESPACE_BEGIN
 
+/// How a face's scale follows from its distance.
 enum class scale_mode {
   stepped,     ///< the paper: scale is its level's scale
   continuous,  ///< scale from the triangle's own distance; level = nearest level
 };
 
+/// Options of assign_scale_field (§2.2).
 struct scale_field_options {
   double min_scale = 0.5;   ///< smallest scale (step 3), in (0, 1]
   index_t max_levels = 64;  ///< at most this many levels (1 to 65536); match the exemplar pyramid's
+  /// stepped (the paper) or continuous.
   scale_mode mode = scale_mode::stepped;
 };
 
@@ -54,9 +57,11 @@ struct scale_field {
   std::vector<std::int32_t> level;  ///< 0 (nearest) to levels - 1
   std::vector<float> scale;         ///< in [min_scale, 1]
   index_t levels = 0;               ///< L; 0 when nothing is visible
+  /// Smallest and largest D_i over the visible faces.
   double min_distance = 0, max_distance = 0;
   double max_delta = 0;    ///< maxδ (step 2)
   double level_width = 0;  ///< distance slice per level (>= maxδ), 0 for one level
+  /// The min_scale used.
   double min_scale = 1;
   index_t adjacent_pairs = 0;  ///< adjacent visible pairs examined
   int max_level_jump = 0;      ///< largest |level_i - level_j| over adjacent visible pairs (<= 1)

@@ -25,10 +25,12 @@
 
 TESSERA_NAMESPACE_BEGIN
 
+/// Options of build_exemplar_pyramid (§2.2 step 4).
 struct exemplar_pyramid_options {
   double min_scale = 0.5;   ///< scale of the last level, in (0, 1]
   index_t levels = 0;       ///< number of levels (1 to 4096); 0 = as few as keep steps <= max_step
   double max_step = 0.008;  ///< largest scale step between consecutive levels when levels = 0
+  /// Progress callback and cancellation token.
   tessera::progress progress = {};
 };
 
@@ -47,17 +49,22 @@ result<exemplar_pyramid<T, C>> build_pyramid_from_buffer(const image_buffer<T, C
 template <Channel T, int C>
 class exemplar_pyramid {
  public:
+  /// The pixel type, C channels of T.
   using pixel_type = pixel<T, C>;
   exemplar_pyramid() = default;
 
+  /// Number of levels.
   [[nodiscard]] index_t num_levels() const noexcept { return static_cast<index_t>(levels_.size()); }
   [[nodiscard]] index_t width() const noexcept { return width_; }    ///< of the exemplar (level 0)
   [[nodiscard]] index_t height() const noexcept { return height_; }  ///< of the exemplar (level 0)
+  /// Scale of the last level.
   [[nodiscard]] double min_scale() const noexcept { return min_scale_; }
+  /// Scale of level k (1 for level 0, decreasing to min_scale).
   [[nodiscard]] double scale(index_t k) const noexcept {
     const index_t n = num_levels();
     return n <= 1 ? 1.0 : 1.0 - (1.0 - min_scale_) * static_cast<double>(k) / static_cast<double>(n - 1);
   }
+  /// The image of level k (the exemplar shrunk by scale(k)).
   [[nodiscard]] const image_buffer<T, C>& level(index_t k) const noexcept { return levels_[detail::to_size(k)]; }
 
   /// Fractional level index of scale s (clamped to [0, K - 1]; 0 for NaN).

@@ -58,14 +58,20 @@ TESSERA_NAMESPACE_BEGIN
 ///     at normalized coordinates 0.5 + uv / (exemplar_width * scale, exemplar_height * scale).
 ///   - `state`: a face_visibility (0 culled: level -1, scale 0, NaN coordinates).
 struct terrain_uv_buffer {
+  /// The viewport size in pixels.
   index_t viewport_width = 0, viewport_height = 0;
+  /// The exemplar size in pixels (level 0).
   index_t exemplar_width = 0, exemplar_height = 0;
   index_t levels = 0;                           ///< of the scale field
   double min_scale = 1;                         ///< of the scale field
   std::vector<std::array<float, 6>> corner_uv;  ///< u0 v0 u1 v1 u2 v2
+  /// Per face: the offset form (see above).
   std::vector<std::array<float, 2>> offset;
+  /// Per face: the pyramid level (-1 when culled).
   std::vector<std::int32_t> level;
+  /// Per face: the scale (0 when culled).
   std::vector<float> scale;
+  /// Per face: a face_visibility.
   std::vector<std::uint8_t> state;
   std::uint32_t mapping = 0;  ///< 0: screen-space (paper 003), 1: ground-anchored (perspective-correct uv)
 
@@ -126,7 +132,9 @@ inline result<terrain_uv_buffer> export_corner_uvs(const terrain_mesh& mesh, con
   return b;
 }
 
+/// Version number written in TSUV files (io/terrain_uv_file.hpp).
 inline constexpr std::uint32_t terrain_uv_file_version = 3;
+/// Sizes of a TSUV file's header and of one face record, in bytes.
 inline constexpr std::size_t terrain_uv_header_bytes = 40, terrain_uv_record_bytes = 44;
 
 namespace detail {

@@ -18,6 +18,7 @@
 
 TESSERA_NAMESPACE_BEGIN
 
+/// Options of make_terrain: a seeded fractal heightfield over a grid.
 struct terrain_options {
   index_t cells_x = 128;      ///< grid cells along x (>= 1)
   index_t cells_y = 128;      ///< grid cells along y (>= 1)
@@ -26,6 +27,7 @@ struct terrain_options {
   double height = 14;         ///< relief: heights run from 0 to about this (0: a flat plane), in [0, 1e15]
   double feature_size = 0.4;  ///< wavelength of the largest hills, as a fraction of max(size_x, size_y), in [1e-6, 1e6]
   int octaves = 6;            ///< noise octaves (1 to 16), each half the wavelength and amplitude
+  /// Seed of the noise.
   std::uint64_t seed = 1;
 };
 

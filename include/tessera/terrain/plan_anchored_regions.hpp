@@ -31,6 +31,7 @@ TESSERA_NAMESPACE_BEGIN
 
 /// Options of ground-anchored synthesis (regions and growth).
 struct anchored_synthesis_options {
+  /// Seed of the placements.
   std::uint64_t seed = 1;
   /// Exemplar pixels per world unit at level 0 (scale 1); 0: automatic (see the file comment).
   double texels_per_unit = 0;
@@ -56,14 +57,18 @@ struct anchored_regions {
   double texels_per_unit = 0;  ///< resolved density (exemplar pixels per world unit)
   double cell = 0;             ///< cell side in world units
   int axis_a = 0, axis_b = 1;  ///< the two world axes spanning the cells
+  /// World coordinates of the cell grid's corner along axis_a and axis_b.
   double origin_a = 0, origin_b = 0;
+  /// Cells along axis_a and axis_b.
   index_t cells_a = 0, cells_b = 0;
   std::vector<std::int32_t> region;  ///< per face: its region (cell id, cells_a * b + a)
   std::vector<std::int32_t> first;   ///< per region r: its faces are faces[first[r] .. first[r + 1]), ascending
   std::vector<std::int32_t> faces;   ///< faces grouped by region
   std::vector<std::int32_t> seed;    ///< per region: the face nearest the cell centre (-1: empty region)
   double max_neighbor_distance = 0;  ///< largest distance between the centroids of adjacent faces
+  /// Number of regions (cells_a * cells_b).
   [[nodiscard]] index_t num_regions() const noexcept { return static_cast<index_t>(seed.size()); }
+  /// Bytes held.
   [[nodiscard]] std::size_t memory_bytes() const noexcept {
     return 4 * (region.size() + first.size() + faces.size() + seed.size());
   }

@@ -32,11 +32,15 @@ struct terrain_mesh {
   index_t nonmanifold_edges = 0;  ///< edges with three or more faces
   index_t interior_edges = 0;     ///< edges with exactly two faces
 
+  /// Vertex count.
   [[nodiscard]] index_t num_vertices() const noexcept { return static_cast<index_t>(positions.size()); }
+  /// Face count.
   [[nodiscard]] index_t num_faces() const noexcept { return static_cast<index_t>(faces.size()); }
+  /// Vertex index of corner k (0..2) of face f.
   [[nodiscard]] index_t face_vertex(index_t f, int k) const noexcept {
     return faces[detail::to_size(f)][detail::to_size(k)];
   }
+  /// Position of vertex v.
   [[nodiscard]] const vec3& position(index_t v) const noexcept { return positions[detail::to_size(v)]; }
 };
 

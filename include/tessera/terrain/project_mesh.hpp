@@ -52,7 +52,9 @@ struct screen_projection {
   std::vector<std::int32_t> visible;         ///< faces not culled, ascending
   index_t near_clipped = 0;                  ///< how many visible faces cross the near plane
 
+  /// True when face f is not culled.
   [[nodiscard]] bool is_visible(index_t f) const noexcept { return state[detail::to_size(f)] != 0; }
+  /// Number of faces not culled.
   [[nodiscard]] index_t num_visible() const noexcept { return static_cast<index_t>(visible.size()); }
   /// The clip-space corners of face f of `mesh` (for rasterize_clip_triangles).
   [[nodiscard]] clip_triangle clip_face(const terrain_mesh& mesh, index_t f) const noexcept {
@@ -90,6 +92,7 @@ void gather_visible_faces(screen_projection& out, std::vector<index_t>& count, i
 }
 }  // namespace detail
 
+/// Options of project_mesh.
 struct project_options {
   /// Also cull faces whose front side (counter-clockwise corners) faces away from the eye. Off by
   /// default: meshes from elsewhere may be wound either way, and hidden faces are harmless.

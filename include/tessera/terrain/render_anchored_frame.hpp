@@ -27,12 +27,16 @@
 
 TESSERA_NAMESPACE_BEGIN
 
+/// Options of render_anchored_frame.
 struct render_anchored_options {
   terrain_shading shading = terrain_shading::texture;  ///< texture, scale_field (level) or regions (placement)
   double feather = 2.0;  ///< seam blend width in exemplar texels (level 0) on each side, 0 to 64
+  /// Unit RGBA where no triangle is.
   std::array<float, 4> background = {0.62f, 0.74f, 0.88f, 1.0f};
   std::array<double, 3> sun = {0, 0, 0};  ///< flat Lambert light direction; zero: unlit
+  /// Light on faces turned away from the sun, in [0, 1].
   double ambient = 0.35;
+  /// Rasterizer tile side in pixels.
   index_t tile_size = 64;
 };
 

@@ -30,19 +30,23 @@
 
 TESSERA_NAMESPACE_BEGIN
 
+/// What render_terrain_frame draws.
 enum class terrain_shading {
   texture,      ///< the synthesized texture
   scale_field,  ///< each triangle's scale: yellow (1, near) through green and blue to purple (min_scale)
   regions,      ///< one colour per synthesis placement; seams are where colours change
 };
 
+/// Options of render_terrain_frame.
 struct render_terrain_options {
+  /// texture, scale_field or regions.
   terrain_shading shading = terrain_shading::texture;
   double feather = 3.0;  ///< blend width in pixels on each side of a seam (0: none), 0 to 64
   std::array<float, 4> background = {0.62f, 0.74f, 0.88f, 1.0f};  ///< unit RGBA where no triangle is
   std::array<double, 3> sun = {0, 0, 0};  ///< direction towards a light for flat Lambert shading; zero: unlit
   double ambient = 0.35;                  ///< light on faces turned away from the sun, in [0, 1]
   index_t tile_size = 64;                 ///< rasterizer tile
+  /// Progress callback and cancellation token.
   tessera::progress progress = {};
 };
 

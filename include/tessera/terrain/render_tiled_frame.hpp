@@ -39,9 +39,13 @@ result<tiled_texture<channel_t<I>, channels_v<I>>> prepare_tiled_texture(const I
 template <Channel T, int C>
 class tiled_texture {
  public:
+  /// Width of level 0 (the exemplar).
   [[nodiscard]] index_t width() const noexcept { return levels_.empty() ? 0 : levels_[0].width(); }
+  /// Height of level 0.
   [[nodiscard]] index_t height() const noexcept { return levels_.empty() ? 0 : levels_[0].height(); }
+  /// Number of mipmap levels.
   [[nodiscard]] index_t num_levels() const noexcept { return static_cast<index_t>(levels_.size()); }
+  /// Mipmap level k (0: the exemplar).
   [[nodiscard]] const image_buffer<T, C>& level(index_t k) const noexcept { return levels_[detail::to_size(k)]; }
 
   /// Trilinear sample at texel coordinates (u, v) of level 0, wrapping around, at level of detail
@@ -71,6 +75,7 @@ class tiled_texture {
   }
 };
 
+/// Prepares `exemplar` for tiled rendering: the mipmap chain, levels resampled in parallel through `exec`.
 template <Image I, Executor E>
 result<tiled_texture<channel_t<I>, channels_v<I>>> prepare_tiled_texture(const I& exemplar, E&& exec) {
   using T = channel_t<I>;
@@ -96,14 +101,17 @@ result<tiled_texture<channel_t<I>, channels_v<I>>> prepare_tiled_texture(const I
   return t;
 }
 
+/// Options of render_tiled_frame.
 struct render_tiled_options {
   /// World units per exemplar repeat along x and y; 0 = automatic: one texel per pixel at the
   /// nearest fully projected face (the density of a scale-1 synthesized frame).
   double repeat = 0;
   bool mipmaps = true;  ///< trilinear mipmapping (false: level 0 only, which aliases in the distance)
+  /// Unit RGBA where no triangle is.
   std::array<float, 4> background = {0.62f, 0.74f, 0.88f, 1.0f};
   std::array<double, 3> sun = {0, 0, 0};  ///< direction towards a light for flat Lambert shading; zero: unlit
   double ambient = 0.35;                  ///< light on faces turned away from the sun, in [0, 1]
+  /// Rasterizer tile side in pixels.
   index_t tile_size = 64;
 };
 

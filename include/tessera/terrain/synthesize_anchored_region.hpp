@@ -55,11 +55,13 @@ struct anchored_atlas {
   std::vector<std::int32_t> patch;        ///< placement within the face's region (-1: region not grown)
   std::vector<std::uint8_t> seam;         ///< bit k: side k borders another placement, region or nothing
   std::vector<std::uint8_t> region_done;  ///< per region: grown
+  /// Bytes held.
   [[nodiscard]] std::size_t memory_bytes() const noexcept { return 29 * uv.size() + region_done.size(); }
 };
 
 /// What growing a region did.
 struct anchored_region_stats {
+  /// Faces placed, placements made, restarts, deferred faces, faces larger than their level image.
   index_t faces = 0, patches = 0, restarts = 0, deferred = 0, oversized = 0;
 };
 

@@ -63,19 +63,25 @@
 
 TESSERA_NAMESPACE_BEGIN
 
+/// How a new placement's offset is drawn.
 enum class placement_strategy {
   uniform,              ///< the paper: offset uniform over all placements inside the level image
   away_from_neighbors,  ///< random, biased to leave room on the side away from synthesized neighbours
 };
 
+/// Which synthesized neighbour's coordinates a face continues.
 enum class continuation_rule {
   oldest_placement,  ///< of the synthesized neighbours whose coordinates fit, the oldest placement
   first_neighbor,    ///< the paper read literally: the first synthesized neighbour (in side order) that fits
 };
 
+/// Options of synthesize_triangles (§2.3).
 struct triangle_synthesis_options {
+  /// Seed of the placements.
   std::uint64_t seed = 1;
+  /// How new placements are drawn.
   placement_strategy placement = placement_strategy::away_from_neighbors;
+  /// Which neighbour a face continues.
   continuation_rule continuation = continuation_rule::oldest_placement;
   double margin = 1.0;  ///< pixels kept free at the level image border (the bilinear footprint), >= 0
   /// A face whose synthesized neighbours' coordinates all leave its level image waits (once) until
@@ -86,6 +92,7 @@ struct triangle_synthesis_options {
   /// that axis's offset and draws only the other: the seam becomes a one-dimensional shift, which
   /// textures with a direction (grass blades) carry across almost unseen. False: both at random.
   bool keep_fitting_axis = true;
+  /// Progress callback and cancellation token.
   tessera::progress progress = {};
 };
 
@@ -95,6 +102,7 @@ struct triangle_synthesis {
   std::vector<std::int32_t> region;  ///< placement id; equal ids share one offset
   std::vector<std::uint8_t> seam;    ///< bit k: side k borders a visible face with other coordinates
   std::vector<std::int32_t> order;   ///< visible faces in synthesis (stack) order
+  /// Faces not culled.
   index_t visible = 0;
   index_t regions = 0;             ///< placements made (components + restarts)
   index_t components = 0;          ///< connected regions of visible faces (each starts with a placement)
@@ -106,6 +114,7 @@ struct triangle_synthesis {
   double continuous_fraction = 1;  ///< continuous_edges / shared_edges (1 when there are none)
   double min_area_ratio =
       std::numeric_limits<double>::infinity();  ///< min over faces of level-image area / screen area
+  /// The face with min_area_ratio (-1 when none).
   index_t min_area_face = -1;
   index_t exemplar_width = 0, exemplar_height = 0;  ///< the exemplar size synthesized for (level 0 of the pyramid)
   status warning;  ///< ok, or out_of_range describing an exemplar too small for the triangles (§3 (1))

@@ -47,7 +47,9 @@
 
 TESSERA_NAMESPACE_BEGIN
 
+/// Options of make_terrain_session (ground-anchored frames).
 struct terrain_session_options {
+  /// Regions and growth (plan_anchored_regions.hpp).
   anchored_synthesis_options synthesis = {};
   double min_scale = 0.5;    ///< scale of the farthest level, in (0, 1] (at least the exemplar pyramid's)
   index_t max_levels = 64;   ///< at most this many levels, 1 to 65536
@@ -55,27 +57,35 @@ struct terrain_session_options {
   double near_distance = 0;  ///< D0: level l >= 1 starts at D0 level_ratio^l; 0: the smallest allowed (see above)
   double hysteresis = 0.15;  ///< fraction of a level a face may stray before it changes level, [0, 0.45]
   int blend_frames = 0;      ///< frames over which a level change is blended, 0 to 255
+  /// Options of the per-frame projection.
   project_options projection = {};
   bool measure_continuity = true;  ///< count continuous shared edges and the level jump every frame
 };
 
 /// What one update() did and found.
 struct terrain_frame_stats {
+  /// Frame number, from 0 (-1 before the first update).
   index_t frame = -1;
+  /// Faces in view.
   index_t visible = 0;
   index_t resynthesized = 0;  ///< visible faces whose coordinates were (re)written: new in view or new level
+  /// Regions grown this frame, their faces, and restarts while growing them.
   index_t regions_grown = 0, faces_grown = 0, restarts = 0;
   index_t common = 0;        ///< faces visible in this frame and the previous one
   index_t stable_faces = 0;  ///< of those, faces at the same level (coordinates bit-identical)
+  /// stable_faces / common (1 when common is 0).
   double stable_fraction = 1;
+  /// Faces that changed level this frame, and faces still blending a level change.
   index_t level_changes = 0, blending = 0;
   index_t shared_edges = 0, continuous_edges = 0;  ///< between visible faces (measure_continuity)
+  /// continuous_edges / shared_edges (1 when there are none).
   double continuous_fraction = 1;
   int max_level_jump = 0;  ///< over adjacent visible faces (measure_continuity); <= 1
   status warning;          ///< ok, or out_of_range when nothing is in view
 };
 
 class terrain_session;
+/// Declared here for terrain_session::update; defined below.
 template <Executor E>
 status update_terrain_session(terrain_session& s, const terrain_mesh& mesh, const terrain_camera& camera, E&& exec);
 
@@ -88,17 +98,25 @@ class terrain_session {
   status update(const terrain_mesh& mesh, const terrain_camera& camera, E&& exec = {}) {
     return update_terrain_session(*this, mesh, camera, exec);
   }
+  /// The projection of the current frame.
   [[nodiscard]] const screen_projection& projection() const noexcept { return proj_; }
+  /// What the last update did.
   [[nodiscard]] const terrain_frame_stats& stats() const noexcept { return stats_; }
+  /// The mesh's regions.
   [[nodiscard]] const anchored_regions& regions() const noexcept { return plan_; }
+  /// The coordinates of the regions grown so far.
   [[nodiscard]] const anchored_atlas& atlas() const noexcept { return atlas_; }
+  /// The options it was made with.
   [[nodiscard]] const terrain_session_options& options() const noexcept { return opts_; }
+  /// Width of the exemplar it synthesizes for.
   [[nodiscard]] index_t exemplar_width() const noexcept { return ew_; }
+  /// Height of the exemplar it synthesizes for.
   [[nodiscard]] index_t exemplar_height() const noexcept { return eh_; }
   /// Levels in use: min(max_levels, 1 + ceil(ln(1 / min_scale) / ln(level_ratio))).
   [[nodiscard]] index_t levels() const noexcept { return levels_; }
   /// D0: level l >= 1 starts at view distance D0 level_ratio^l.
   [[nodiscard]] double near_distance() const noexcept { return d0_; }
+  /// Frame number of the last update (-1 before the first).
   [[nodiscard]] index_t frame() const noexcept { return frame_; }
   /// Scale of level l: max(min_scale, level_ratio^-l).
   [[nodiscard]] double level_scale(index_t l) const noexcept {
@@ -117,6 +135,7 @@ class terrain_session {
     const auto left = blend_left_[detail::to_size(f)];
     return left == 0 ? 1.0f : 1.0f - static_cast<float>(left) / static_cast<float>(opts_.blend_frames + 1);
   }
+  /// The level blended out of face f (meaningful while blend_weight(f) < 1).
   [[nodiscard]] std::int32_t blend_from(index_t f) const noexcept { return blend_from_[detail::to_size(f)]; }
   /// Bytes held by the session (per-face state, regions, atlas and the projection).
   [[nodiscard]] std::size_t memory_bytes() const noexcept {
