@@ -50,6 +50,7 @@ requires std::is_arithmetic_v<T> &&(C >= 1) struct pixel_traits<Eigen::Matrix<T,
     : detail::eigen_pixel_traits<Eigen::Matrix<T, C, 1, Options, MaxRows, MaxCols>, T, C> {
 };
 
+/// Eigen::Array<T, C, 1> (C >= 1) is a C-channel pixel, like Eigen::Matrix above.
 template <class T, int C, int Options, int MaxRows, int MaxCols>
 requires std::is_arithmetic_v<T> &&(C >= 1) struct pixel_traits<Eigen::Array<T, C, 1, Options, MaxRows, MaxCols>>
     : detail::eigen_pixel_traits<Eigen::Array<T, C, 1, Options, MaxRows, MaxCols>, T, C> {
@@ -127,19 +128,28 @@ class eigen_mesh_view {
                 "eigen_mesh_view: F (triangle indices) must hold an integer type");
 
  public:
+  /// The vertex matrix type V.
   using vertex_matrix = VMatrix;
+  /// The face matrix type F.
   using face_matrix = FMatrix;
 
+  /// Views V (one vertex per row) and F (one triangle per row); both must outlive the view.
   eigen_mesh_view(VMatrix& V, FMatrix& F) : v_(V), f_(F) {}
 
+  /// Rows of V.
   [[nodiscard]] index_t num_vertices() const noexcept { return static_cast<index_t>(v_.get().rows()); }
+  /// Rows of F.
   [[nodiscard]] index_t num_faces() const noexcept { return static_cast<index_t>(f_.get().rows()); }
+  /// F(f, k): vertex index of corner k of face f.
   [[nodiscard]] index_t face_vertex(index_t f, int k) const noexcept { return static_cast<index_t>(f_.get()(f, k)); }
+  /// Row v of V.
   [[nodiscard]] std::array<v_scalar, 3> position(index_t v) const noexcept {
     const auto& V = v_.get();
     return {V(v, 0), V(v, 1), V(v, 2)};
   }
+  /// The vertex matrix.
   [[nodiscard]] const VMatrix& vertices() const noexcept { return v_.get(); }
+  /// The face matrix.
   [[nodiscard]] const FMatrix& faces() const noexcept { return f_.get(); }
 
  private:
@@ -182,30 +192,41 @@ class eigen_image_view {
   static_assert(EigenDense<M>, "eigen_image_view: M must be a dense Eigen matrix (Matrix, Map, Ref or Block)");
 
  public:
+  /// The viewed matrix type M.
   using matrix_type = M;
+  /// M's scalar type.
   using scalar_type = typename std::remove_const_t<M>::Scalar;
   static_assert(Channel<scalar_type> || std::is_same_v<scalar_type, double>,
                 "eigen_image_view: the matrix must hold std::uint8_t, std::uint16_t, float or double");
+  /// The pixel type: the scalar, with double read as float.
   using pixel_type = std::conditional_t<std::is_same_v<scalar_type, double>, float, scalar_type>;
+  /// True when M's coefficients can be assigned (not a const matrix or view).
   static constexpr bool writable = std::is_assignable_v<decltype(std::declval<M&>()(0, 0)), scalar_type>;
 
   /// Views a named matrix (referenced) or a Map / Ref / Block (copied: it is a view itself).
   explicit eigen_image_view(M& m) : m_(m) {}
+  /// Views a Map / Ref / Block temporary (copied: it is a view itself).
   explicit eigen_image_view(M&& m) requires(!detail::eigen_is_plain<M>) : m_(m) {}
   eigen_image_view(M&& m) requires detail::eigen_is_plain<M>
   = delete;  // would dangle: name the matrix
 
+  /// cols() of the matrix.
   [[nodiscard]] index_t width() const noexcept { return static_cast<index_t>(m_.get().cols()); }
+  /// rows() of the matrix.
   [[nodiscard]] index_t height() const noexcept { return static_cast<index_t>(m_.get().rows()); }
+  /// Coefficient (row y, column x).
   [[nodiscard]] pixel_type read(index_t x, index_t y) const noexcept {
     TESSERA_ASSERT(x >= 0 && x < width() && y >= 0 && y < height());
     return static_cast<pixel_type>(m_.get()(y, x));
   }
+  /// Sets coefficient (row y, column x); writable matrices only.
   void write(index_t x, index_t y, const pixel_type& v) noexcept requires writable {
     TESSERA_ASSERT(x >= 0 && x < width() && y >= 0 && y < height());
     m_.get()(y, x) = static_cast<scalar_type>(v);
   }
+  /// The matrix.
   [[nodiscard]] M& matrix() noexcept { return m_.get(); }
+  /// The matrix (read-only).
   [[nodiscard]] const M& matrix() const noexcept { return m_.get(); }
 
   /// The image_traits validate hook (run by validate_image): a Map over null data that claims a

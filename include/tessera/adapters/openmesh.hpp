@@ -56,6 +56,7 @@ typename M::HalfedgeHandle openmesh_corner(const M& m, index_t f, int k) {
 /// OpenMesh vectors as points; coordinates past the vector's size read 0.
 template <class S, int N>
 struct point_traits<OpenMesh::VectorT<S, N>> {
+  /// Coordinate i, or 0 past the vector's size.
   static double get(const OpenMesh::VectorT<S, N>& p, int i) noexcept {
     return i >= 0 && i < N ? static_cast<double>(p[detail::to_size(i)]) : 0.0;
   }

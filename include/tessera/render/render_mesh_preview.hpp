@@ -26,20 +26,28 @@
 
 TESSERA_NAMESPACE_BEGIN
 
+/// Options of render_mesh_preview.
 struct mesh_preview_options {
+  /// Image width in pixels.
   index_t width = 800;
+  /// Image height in pixels.
   index_t height = 600;
   double azimuth_degrees = -60;   ///< camera direction around +Z, 0 = looking along +Y from the south
   double elevation_degrees = 45;  ///< 90 = straight down (top view)
   double margin = 0.04;           ///< empty border, fraction of the image size
+  /// Unit RGB of the mesh.
   std::array<float, 3> color{0.80f, 0.74f, 0.64f};
+  /// Unit RGB of the background.
   std::array<float, 3> background{1.0f, 1.0f, 1.0f};
   bool tint_elements = true;  ///< vary the colour slightly per connected component
   /// Overlay the grid lines x = k * grid_spacing, y = k * grid_spacing (k integer) on the base plane
   /// z = grid_height over the mesh's XY bounds: tile borders of a tiled plane. 0 = no grid.
   double grid_spacing = 0;
+  /// z of the grid's plane.
   double grid_height = 0;
+  /// Unit RGB of the grid lines.
   std::array<float, 3> grid_color{0.85f, 0.15f, 0.10f};
+  /// Grid line width in pixels.
   int grid_line_width = 2;
 };
 

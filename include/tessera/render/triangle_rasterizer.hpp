@@ -42,16 +42,22 @@ TESSERA_NAMESPACE_BEGIN
 /// A screen-space vertex: pixel position (y down), depth, and 1/w of its clip-space vertex (leave 1
 /// for screen-linear interpolation). inv_w must be positive and finite.
 struct raster_vertex {
+  /// Pixel position (y down).
   double x = 0, y = 0;
+  /// Depth, interpolated into fragment::depth.
   double z = 0;
+  /// 1 / w of the clip-space vertex (1: screen-linear interpolation).
   double inv_w = 1;
 };
+/// Three screen-space vertices.
 using raster_triangle = std::array<raster_vertex, 3>;
 
 /// A vertex in homogeneous clip space (projection * view * position, OpenGL/GLM conventions).
 struct clip_vertex {
+  /// Homogeneous clip-space coordinates.
   double x = 0, y = 0, z = 0, w = 1;
 };
+/// Three clip-space vertices.
 using clip_triangle = std::array<clip_vertex, 3>;
 
 /// Depth range of clip space: OpenGL/GLM default (-w <= z <= w) or Direct3D/Vulkan (0 <= z <= w,
@@ -61,15 +67,21 @@ enum class clip_depth { negative_one_to_one, zero_to_one };
 /// Maps normalized device coordinates to pixels: NDC (-1, +1) is the viewport's top-left corner
 /// (x, y), NDC (+1, -1) its bottom-right corner (x + width, y + height).
 struct raster_viewport {
+  /// The viewport rectangle in pixels.
   double x = 0, y = 0, width = 0, height = 0;
+  /// The clip-space depth range of the input.
   clip_depth depth = clip_depth::negative_one_to_one;
 };
 
 /// A half-open rectangle of pixels [x0, x1) x [y0, y1).
 struct pixel_rect {
+  /// Corners: [x0, x1) x [y0, y1).
   index_t x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  /// x1 - x0.
   [[nodiscard]] constexpr index_t width() const noexcept { return x1 - x0; }
+  /// y1 - y0.
   [[nodiscard]] constexpr index_t height() const noexcept { return y1 - y0; }
+  /// True when it holds no pixel.
   [[nodiscard]] constexpr bool empty() const noexcept { return x1 <= x0 || y1 <= y0; }
 };
 
@@ -77,9 +89,13 @@ struct pixel_rect {
 /// z (window depth in [0, 1] for clip-space input); `w` the interpolated clip w (1 / interpolated
 /// inv_w).
 struct fragment {
+  /// The pixel.
   index_t x = 0, y = 0;
+  /// Weights of the caller's three corners (sum 1).
   std::array<double, 3> bary{};
+  /// Interpolated depth.
   double depth = 0;
+  /// Interpolated clip w.
   double w = 1;
 };
 
@@ -174,6 +190,7 @@ status rasterize_clip_triangle(const clip_triangle& tri, const raster_viewport& 
 /// Options of the batch rasterizers.
 struct rasterize_options {
   index_t tile_size = 64;  ///< tile side in pixels (8 to 4096); grown automatically past 2^16 tiles
+  /// Which triangles to skip by orientation.
   face_culling culling = face_culling::none;
 };
 
@@ -298,10 +315,15 @@ class depth_buffer {
     d.data_.assign(detail::to_size(width * height), clear_value);
     return d;
   }
+  /// Width in pixels.
   [[nodiscard]] index_t width() const noexcept { return width_; }
+  /// Height in pixels.
   [[nodiscard]] index_t height() const noexcept { return height_; }
+  /// The whole buffer as a rectangle.
   [[nodiscard]] pixel_rect rect() const noexcept { return {0, 0, width_, height_}; }
+  /// Sets every depth to `value` (default: +infinity, farther than anything).
   void clear(float value = std::numeric_limits<float>::infinity()) { std::fill(data_.begin(), data_.end(), value); }
+  /// The stored depth of pixel (x, y); asserts it is inside.
   [[nodiscard]] float at(index_t x, index_t y) const noexcept {
     TESSERA_ASSERT(x >= 0 && x < width_ && y >= 0 && y < height_);
     return data_[detail::to_size(y * width_ + x)];
@@ -316,6 +338,7 @@ class depth_buffer {
     d = v;
     return true;
   }
+  /// The depths, row by row.
   [[nodiscard]] const float* data() const noexcept { return data_.data(); }
 
  private:

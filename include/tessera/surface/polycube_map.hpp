@@ -49,6 +49,7 @@ using grid_point = std::array<std::int64_t, 3>;
 /// `coordinate[axis] = plane * tile_size` of the polycube. Charts are planar regions of genus 0; the
 /// top of a torus-like polycube is an annulus (see docs/surface.md).
 struct polycube_chart {
+  /// The chart's label (the outward axis direction of its faces).
   polycube_label label = polycube_label::pos_x;
   std::int64_t plane = 0;      ///< grid coordinate of the chart's plane along its axis
   std::vector<index_t> faces;  ///< base faces, ascending
@@ -74,7 +75,9 @@ struct polycube_edge {
 /// (grid units). Ids (positions in quad_layout::edges) are sorted by (axis, origin), so they depend on
 /// the polycube's geometry only, never on the order quads were found in.
 struct grid_edge {
+  /// The axis the edge runs along.
   int axis = 0;
+  /// Its low end, in grid units.
   grid_point origin{};
   std::array<index_t, 2> quads{-1, -1};  ///< the two quads sharing it, ascending
 };
@@ -84,7 +87,9 @@ struct grid_edge {
 /// run along the chart's first in-plane axis ((axis + 1) % 3 for + labels), sides 1 and 3 along the
 /// other one.
 struct polycube_quad {
+  /// The chart the quad lies in.
   index_t chart = -1;
+  /// Its corners in grid units, counter-clockwise seen from outside.
   std::array<grid_point, 4> corners{};
   std::array<index_t, 4> edges{};              ///< grid edge id of each side
   std::array<bool, 4> edge_forward{};          ///< side k runs along +axis of its grid edge
@@ -94,15 +99,21 @@ struct polycube_quad {
 
 /// The polycube surface cut into tile-size squares, with the grid edges they share.
 struct quad_layout {
+  /// The quads.
   std::vector<polycube_quad> quads;
+  /// The grid edges, sorted by (axis, origin).
   std::vector<grid_edge> edges;
   /// Per chart: the quads of its plane as a dense grid over the chart's bounding rectangle in
   /// (first in-plane axis, second in-plane axis) grid units: origin, size, and quad id or -1.
   struct chart_grid {
+    /// Grid coordinates of the rectangle's low corner.
     std::array<std::int64_t, 2> origin{};
+    /// Its size in grid units.
     std::array<std::int64_t, 2> size{};
+    /// Quad id of each grid cell, row by row, or -1.
     std::vector<index_t> quad;
   };
+  /// One grid per chart.
   std::vector<chart_grid> chart_grids;
 };
 
@@ -113,10 +124,15 @@ struct polycube_map {
   std::vector<vec3> polycube;          ///< polycube position of every base vertex
   std::vector<polycube_label> labels;  ///< chart label of every base face
   std::vector<index_t> face_chart;     ///< chart of every base face
+  /// The charts.
   std::vector<polycube_chart> charts;
+  /// The corners.
   std::vector<polycube_corner> corners;
+  /// The polycube edges.
   std::vector<polycube_edge> edges;
+  /// The surface cut into tile-size quads.
   quad_layout layout;
+  /// Side of a grid square in mesh units.
   double tile_size = 1;
   /// The polycube-deformed mesh: base connectivity, polycube positions.
   [[nodiscard]] tri_mesh deformed_mesh() const {

@@ -18,15 +18,21 @@ TESSERA_NAMESPACE_BEGIN
 /// A point of the polycube surface: its position (mesh units) and the quad it lies in, with local
 /// coordinates (u, v) in [0, 1]² along the quad's sides 0 and 3 (reversed) from corner 0.
 struct polycube_point {
+  /// Position in mesh units.
   vec3 position;
+  /// The quad it lies in.
   index_t quad = -1;
+  /// Local coordinates in the quad, in [0, 1].
   double u = 0, v = 0;
 };
 
 /// A point of the base surface: face, barycentric weights of its corners, position.
 struct base_surface_point {
+  /// The base face.
   index_t face = -1;
+  /// Barycentric weights of its corners.
   vec3 bary;
+  /// Position in mesh units.
   vec3 position;
 };
 
@@ -34,6 +40,7 @@ struct base_surface_point {
 /// must outlive it) and a BVH over the deformed mesh. Queries are const and thread-safe.
 class polycube_projector {
  public:
+  /// Builds the BVH; `map` must outlive the projector.
   explicit polycube_projector(const polycube_map& map) : map_(&map), bvh_(map.deformed_mesh()) {}
 
   /// P: the polycube point of the base point (face, bary). Errors: out_of_range for a face outside
