@@ -51,10 +51,13 @@ enum class cat_map_strategy {
   separable   ///< row and column permutation passes (cache-friendly for large images)
 };
 
+/// Options of the cat-map functions of this header.
 struct cat_map_options {
   cat_map_family family = {};  ///< [1 a; b ab+1]; a = b = 1 is the paper's map
+  /// What to do with a non-square image (reject by default).
   non_square_mode non_square = non_square_mode::reject;
   index_t tile_size = 0;  ///< square_tiles: tile side; 0 = gcd(width, height)
+  /// How the map is computed (automatic picks one).
   cat_map_strategy strategy = cat_map_strategy::automatic;
 };
 

@@ -32,7 +32,9 @@ TESSERA_NAMESPACE_BEGIN
 /// The generalized cat map [1 a; b ab+1] (determinant 1). a = b = 1 is Arnold's map of paper 001.
 /// Different (a, b) give different fabrics from one source image.
 struct cat_map_family {
+  /// Upper-right entry a.
   std::int64_t a = 1;
+  /// Lower-left entry b.
   std::int64_t b = 1;
 };
 

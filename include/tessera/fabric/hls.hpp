@@ -19,6 +19,7 @@ TESSERA_NAMESPACE_BEGIN
 
 /// Hue in degrees [0, 360), lightness and saturation in [0, 1].
 struct hls_color {
+  /// Hue, lightness, saturation.
   float h = 0, l = 0, s = 0;
 };
 

@@ -71,12 +71,14 @@ enum class life_test {
   above_threshold       ///< live: lightness > threshold; dead: the others
 };
 
+/// Options of the game-of-life perturbation (paper 001 §1.2-1.3).
 struct life_perturbation_options {
   int generations = 1;     ///< synchronous generations (0 copies the input)
   int live_count = 3;      ///< K of §1.3 (§1.2's M), in [0, 8]
   bool live_exact = true;  ///< brighten when exactly K are live (§1.2); false: at least K
   int dead_count = 6;      ///< N of §1.3 (§1.2's K), in [1, 8]: darken when at least N are dead
   int crowding_count = 0;  ///< §1.2's N, in [1, 8]: darken when at least this many are live; 0 = off
+  /// How a neighbour counts as live.
   life_test live_test = life_test::brighter_than_pixel;
   float threshold = 0.5f;           ///< above_threshold: the lightness in [0, 1] a live neighbour exceeds
   std::uint64_t seed = 1;           ///< the random factors r

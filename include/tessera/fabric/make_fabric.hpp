@@ -45,6 +45,7 @@ enum class source_fit {
                     ///< top-left corner where it is smaller (seams where the source does not tile)
 };
 
+/// Options of make_fabric: the cat map, the tile and the perturbation.
 struct fabric_options {
   std::int64_t iterations = 60;                                 ///< cat-map steps n (negative: inverse map)
   cat_map_family family = {};                                   ///< [1 a; b ab+1]; a = b = 1 is the paper's map
@@ -166,6 +167,7 @@ template <WritableImage O, Executor E = serial_executor>
 /// The paper's fabrics.
 enum class fabric_preset { flannel, twill, linen, tweed };
 
+/// Every fabric_preset, in declaration order.
 inline constexpr std::array<fabric_preset, 4> all_fabric_presets = {fabric_preset::flannel, fabric_preset::twill,
                                                                     fabric_preset::linen, fabric_preset::tweed};
 
@@ -190,6 +192,7 @@ struct fabric_recipe {
   palette tones;                       ///< empty when `photo` is the source
   source_image_options source;         ///< layout of the palette source
   std::optional<exemplar_kind> photo;  ///< a procedural exemplar standing in for a scanned photo
+  /// The pipeline options.
   fabric_options options;
 };
 
@@ -227,6 +230,7 @@ inline fabric_recipe fabric_preset_recipe(fabric_preset preset, std::uint64_t se
   return r;
 }
 
+/// Options of make_fabric with a preset.
 struct fabric_preset_options {
   index_t tile_size = 0;            ///< side N of the periodic square; 0 = max(width, height) of the output
   std::uint64_t seed = 1;           ///< source layout, photo and perturbation

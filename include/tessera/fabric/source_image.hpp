@@ -41,7 +41,9 @@ TESSERA_NAMESPACE_BEGIN
 
 /// One main tone: an RGB colour in [0, 1] and its share of the image (a relative weight).
 struct tone {
+  /// Unit RGB colour.
   pixel<float, 3> color{};
+  /// Relative share of the image.
   double proportion = 0;
 };
 
@@ -51,7 +53,9 @@ using palette = std::vector<tone>;
 /// Layouts of a generated source image.
 enum class source_layout { stripes, blocks, cells };
 
+/// Options of a generated source image (the palette form of make_fabric).
 struct source_image_options {
+  /// stripes, blocks or cells.
   source_layout layout = source_layout::stripes;
   index_t feature_size = 0;  ///< stripe period, block side or cell spacing in pixels; 0 = min(W, H) / 8
   bool vertical = false;     ///< stripes: vertical bands instead of horizontal ones

@@ -80,6 +80,7 @@ template <Image I>
   return count;
 }
 
+/// Options of dominant_tones.
 struct dominant_tones_options {
   int max_iterations = 50;  ///< Lloyd iterations (stops earlier when the assignment is stable)
   std::uint64_t seed = 1;   ///< k-means++ initialization

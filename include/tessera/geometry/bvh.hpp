@@ -28,16 +28,22 @@ inline constexpr double bvh_box_thickness_floor = 1e-12;
 /// Result of a closest-point query. `face` is -1 when the hierarchy is empty or nothing lies within
 /// the search radius.
 struct bvh_closest_hit {
+  /// The closest face, or -1.
   index_t face = -1;
+  /// The closest point on it.
   vec3 point;
   vec3 bary;  ///< barycentric weights of the face's corners 0, 1, 2 (eq. 3 of paper 000)
+  /// Squared distance to the query point (infinity when none).
   double squared_distance = std::numeric_limits<double>::infinity();
 };
 
 /// Result of a ray cast: the nearest hit with t in [t_min, t_max], `face` -1 for a miss.
 struct bvh_ray_hit {
+  /// The face hit, or -1 for a miss.
   index_t face = -1;
+  /// Ray parameter of the hit (infinity for a miss).
   double t = std::numeric_limits<double>::infinity();
+  /// Barycentric weights of the hit point in the face.
   vec3 bary;
 };
 
@@ -60,7 +66,9 @@ class triangle_bvh {
   /// Builds over explicit triangles; face ids are their indices.
   explicit triangle_bvh(std::vector<std::array<vec3, 3>> triangles) { build(std::move(triangles)); }
 
+  /// Number of faces.
   [[nodiscard]] index_t num_faces() const noexcept { return static_cast<index_t>(tris_.size()); }
+  /// True when built over no face.
   [[nodiscard]] bool empty() const noexcept { return tris_.empty(); }
   /// Corners of face f (in the original face order).
   [[nodiscard]] const std::array<vec3, 3>& triangle(index_t f) const noexcept {

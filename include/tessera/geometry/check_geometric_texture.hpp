@@ -17,6 +17,7 @@
 
 TESSERA_NAMESPACE_BEGIN
 
+/// What check_geometric_texture found.
 struct geometric_texture_report {
   index_t open_edges_inside = 0;   ///< open edges not lying on the outer border
   index_t nonmanifold_edges = 0;   ///< edges of more than two faces

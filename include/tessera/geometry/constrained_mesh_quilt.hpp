@@ -17,7 +17,9 @@ TESSERA_NAMESPACE_BEGIN
 /// sets) and the regions they count as synthesized (grid cells whose centre lies in one of the
 /// rectangles start occupied, §3.3.1).
 struct quilt_frame {
+  /// Elements already in place.
   std::vector<texture_element> elements;
+  /// Rectangles counted as synthesized.
   std::vector<xy_rect> occupied;
 };
 

@@ -29,6 +29,7 @@
 
 TESSERA_NAMESPACE_BEGIN
 
+/// Options of build_geometric_wang_tiles.
 struct geometric_wang_options {
   int horizontal_colors = 2;  ///< nh: colours of north/south edges
   int vertical_colors = 2;    ///< nv: colours of east/west edges
@@ -39,6 +40,7 @@ struct geometric_wang_options {
   /// cut the strips from it (§3.1). When false, such exemplars are rejected.
   bool quilt_larger_source = true;
   mesh_quilt_options quilt = {};  ///< interior synthesis (and the larger source); its seed seeds everything
+  /// Progress callback and cancellation token.
   tessera::progress progress = {};
 };
 
@@ -46,10 +48,15 @@ struct geometric_wang_options {
 /// [0, tile_size]^2 in XY (north = +Y, east = +X); its border vertices lie exactly on x = 0,
 /// x = tile_size, y = 0, y = tile_size.
 struct geometric_tile_set {
+  /// Tile side w_T in world units.
   double tile_size = 0;
+  /// Edge strip height h_E used.
   double edge_height = 0;
+  /// nh and nv.
   int horizontal_colors = 0, vertical_colors = 0;
+  /// Edge colours of each tile.
   std::vector<wang_edges> edges;
+  /// The tiles' meshes.
   std::vector<tri_mesh> tiles;
   mesh_quilt_stats stats;         ///< summed over the tiles' interior synthesis
   bool quilted_source = false;    ///< the strips came from a larger quilted texture

@@ -15,7 +15,9 @@
 
 TESSERA_NAMESPACE_BEGIN
 
+/// Options of the translation-only ICP.
 struct icp_translation_options {
+  /// At most this many updates.
   int max_iterations = 50;
   /// Stop when the update moves the translation by less than this (absolute length).
   double tolerance = 1e-6;
@@ -25,6 +27,7 @@ struct icp_translation_options {
   std::array<bool, 3> free_axes{true, true, true};
 };
 
+/// What the translation-only ICP found.
 struct icp_translation_result {
   vec3 translation;          ///< t such that (target + t) matches the points
   int iterations = 0;        ///< updates applied

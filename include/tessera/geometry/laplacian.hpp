@@ -78,12 +78,16 @@ Eigen::SparseMatrix<double> laplacian_matrix(const M& m,
 /// point on a face (eq. 7 of paper 000).
 struct laplacian_constraint {
   std::array<index_t, 3> vertices{-1, -1, -1};  ///< unused slots are -1
+  /// Weights of the vertices (unused slots 0).
   std::array<double, 3> weights{0, 0, 0};
+  /// Where the weighted point must go.
   vec3 target;
 };
 
+/// Options of the Laplacian deformation.
 struct laplacian_deform_options {
   double soft_weight = 1.0;  ///< mu of eq. 6-7: weight of the soft constraints against detail preservation
+  /// Weights of the Laplacian: cotangent or uniform.
   laplacian_weighting weighting = laplacian_weighting::cotangent;
   /// Tiny pull of every free vertex towards its rest position, so parts with no constraint stay in
   /// place and the system is always positive definite. Relative to the mean diagonal of L^T L.

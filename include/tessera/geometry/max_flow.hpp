@@ -30,6 +30,7 @@ TESSERA_NAMESPACE_BEGIN
 /// synthesis. Not thread safe for one object; separate objects are independent.
 class max_flow_graph {
  public:
+  /// A graph with `nodes` nodes and no edge.
   explicit max_flow_graph(index_t nodes = 0) { add_nodes(nodes); }
 
   /// Adds n nodes; returns the index of the first.
@@ -38,6 +39,7 @@ class max_flow_graph {
     if (n > 0) nodes_.resize(nodes_.size() + detail::to_size(n));
     return first;
   }
+  /// Number of nodes.
   [[nodiscard]] index_t num_nodes() const noexcept { return static_cast<index_t>(nodes_.size()); }
 
   /// Adds capacity from SOURCE to `node` and from `node` to SINK (accumulates over calls). Invalid

@@ -22,12 +22,17 @@ TESSERA_NAMESPACE_BEGIN
 
 /// An axis-aligned rectangle of the XY plane: a tile [0, w]^2, a quilted texture's extent, a patch.
 struct xy_rect {
+  /// Corners: [x0, x1] x [y0, y1].
   double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  /// x1 - x0.
   [[nodiscard]] constexpr double width() const noexcept { return x1 - x0; }
+  /// y1 - y0.
   [[nodiscard]] constexpr double height() const noexcept { return y1 - y0; }
+  /// True when p's XY lies in the rectangle (borders included).
   [[nodiscard]] constexpr bool contains(vec3 p) const noexcept {
     return p.x >= x0 && p.x <= x1 && p.y >= y0 && p.y <= y1;
   }
+  /// True when b's XY extent meets the rectangle.
   [[nodiscard]] constexpr bool overlaps(const aabb& b) const noexcept {
     return b.min.x <= x1 && b.max.x >= x0 && b.min.y <= y1 && b.max.y >= y0;
   }
@@ -39,15 +44,18 @@ constexpr unsigned border_bit(int side) noexcept { return 1u << side; }
 
 /// One element of a geometric texture, as its own small mesh.
 struct texture_element {
+  /// The element's mesh.
   tri_mesh mesh;
   std::vector<unsigned char> fixed;  ///< one flag per vertex: 1 = held fixed (tile border constraint)
   unsigned border = 0;               ///< B(C) of §3.3.5: border_bit(s) for each tile side s it lies on
   aabb box;                          ///< bounds of mesh.positions (call update_box after edits)
 
+  /// Recomputes `box` from the mesh.
   void update_box() {
     box = aabb{};
     for (const vec3& p : mesh.positions) box.extend(p);
   }
+  /// True when a vertex is held fixed.
   [[nodiscard]] bool has_fixed() const noexcept {
     return std::any_of(fixed.begin(), fixed.end(), [](unsigned char f) { return f != 0; });
   }
@@ -55,10 +63,13 @@ struct texture_element {
 
 /// Open (boundary) and non-manifold edge counts of a mesh.
 struct edge_defects {
+  /// Edges of one face.
   index_t open_edges = 0;
+  /// Edges of more than two faces.
   index_t nonmanifold_edges = 0;
 };
 
+/// Counts the open and non-manifold edges of m.
 template <Mesh M>
 edge_defects count_edge_defects(const M& m) {
   edge_defects d;
@@ -71,6 +82,7 @@ edge_defects count_edge_defects(const M& m) {
   return d;
 }
 
+/// Options of extract_elements.
 struct extract_elements_options {
   bool require_closed = true;    ///< reject elements with open edges (a closed-element exemplar)
   bool require_manifold = true;  ///< reject edges shared by more than two faces

@@ -23,6 +23,7 @@
 
 TESSERA_NAMESPACE_BEGIN
 
+/// Options of make_ring_exemplar.
 struct ring_exemplar_options {
   double size = 8.0;     ///< the exemplar covers [0, size]^2
   double spacing = 1.6;  ///< distance between loose ring centres (density); chain mail uses a pitch of 1.3 major_radius
@@ -33,21 +34,26 @@ struct ring_exemplar_options {
   double jitter = 0.1;           ///< random centre offset, as a fraction of spacing (loose rings only)
   double max_tilt_degrees = 12;  ///< random tilt of loose rings
   bool chain_mail = false;       ///< interlock the rings like European 4-in-1 chain mail
+  /// Seed of the layout.
   std::uint64_t seed = 1;
 };
 
+/// Options of make_stone_exemplar.
 struct stone_exemplar_options {
   double size = 8.0;         ///< the exemplar covers [0, size]^2
   double min_radius = 0.35;  ///< pebble radius range in XY
+  /// Largest pebble radius in XY.
   double max_radius = 0.65;
   double coverage = 0.55;   ///< fraction of the area the pebbles' footprints try to cover (density)
   double flatness = 0.55;   ///< height / width of a pebble
   double roughness = 0.12;  ///< relative amplitude of the shape noise
   double gap = 0.06;        ///< minimum distance between pebbles
   int subdivisions = 2;     ///< icosphere level: 2 = 162 vertices a pebble, 3 = 642 (vertex count)
+  /// Seed of the layout.
   std::uint64_t seed = 1;
 };
 
+/// Options of make_weave_exemplar.
 struct weave_exemplar_options {
   double size = 8.0;             ///< the exemplar covers [0, size]^2
   double spacing = 1.0;          ///< distance between parallel threads (density)
@@ -56,6 +62,7 @@ struct weave_exemplar_options {
   double amplitude = 0.2;        ///< over-under amplitude, fraction of spacing
   int segments_per_spacing = 8;  ///< vertices along a thread per spacing (vertex count)
   int around = 8;                ///< vertices around a thread
+  /// Seed of the layout.
   std::uint64_t seed = 1;
 };
 

@@ -22,25 +22,31 @@
 
 TESSERA_NAMESPACE_BEGIN
 
+/// Options of mesh_quilt (paper 000 §3.3).
 struct mesh_quilt_options {
   int patch_cells = 0;      ///< side of the patch P_T in grid cells; 0 = half the exemplar
   double lambda = 1.0;      ///< weight of the normal term of eq. 1
   int max_samples = 160;    ///< M_T vertices of P_T used for the matching cost (evenly thinned)
   double tolerance = 0.05;  ///< pick randomly among translations within (1 + tolerance) of the best cost
   bool icp = true;          ///< refine the grid translation by ICP (eq. 5, §3.3.3)
+  /// At most this many ICP updates per patch.
   int icp_iterations = 30;
   double correspondence_distance = 0;        ///< §3.3.4 search radius; 0 = half a grid cell
   double deform_weight = 1.0;                ///< mu of eq. 6-7
   bool merge = true;                         ///< merge corresponding elements (§3.3.6); false drops overlapping ones
   int smooth_rings = 2;                      ///< vertex rings relaxed around each merge seam
   merge_rules rules = merge_rules::tessera;  ///< SOURCE/SINK rules of the element cuts (§3.3.6; see merge_rules)
+  /// Seed of the patch choices.
   std::uint64_t seed = 0;
+  /// Progress callback and cancellation token.
   tessera::progress progress = {};
 };
 
+/// What mesh_quilt returns.
 struct mesh_quilt_result {
   std::vector<texture_element> elements;  ///< the synthesized elements (with bookkeeping)
   tri_mesh mesh;                          ///< the same, as one mesh
+  /// What the synthesis did.
   mesh_quilt_stats stats;
 };
 

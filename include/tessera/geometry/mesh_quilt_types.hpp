@@ -27,6 +27,7 @@ struct mesh_quilt_stats {
   index_t elements_merged = 0;   ///< exemplar elements merged with corresponding output elements
   index_t elements_dropped = 0;  ///< candidates rejected (intersection, border, failed merge)
   index_t merges_attempted = 0;  ///< pairwise merges tried (one exemplar element may merge several)
+  /// Of those, merges that succeeded.
   index_t merges_succeeded = 0;
   index_t icp_iterations = 0;  ///< total ICP updates (eq. 5)
   index_t icp_discarded = 0;   ///< ICP results not used (no pairs, or a move of a cell or more)
@@ -35,6 +36,7 @@ struct mesh_quilt_stats {
   /// leaving the tile, open or non-manifold edges).
   index_t merge_fail_correspondence = 0, merge_fail_deform = 0, merge_fail_cut = 0, merge_fail_loops = 0,
           merge_fail_check = 0;
+  /// Adds every counter of `o`.
   mesh_quilt_stats& operator+=(const mesh_quilt_stats& o) {
     patches += o.patches;
     elements_added += o.elements_added;

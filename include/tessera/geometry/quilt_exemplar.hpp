@@ -20,6 +20,7 @@
 
 TESSERA_NAMESPACE_BEGIN
 
+/// Options of prepare_quilt_exemplar.
 struct quilt_exemplar_options {
   /// Side of the XY grid cells of §3.3.1 (occupancy, translations on grid multiples). 0 = automatic:
   /// half the median element size (smaller XY extent: a ring's diameter, a thread's width).
@@ -29,6 +30,7 @@ struct quilt_exemplar_options {
 };
 
 class quilt_exemplar;
+/// Prepares an exemplar for quilting (defined below).
 template <Mesh M>
 result<quilt_exemplar> prepare_quilt_exemplar(const M& exemplar, const quilt_exemplar_options& options = {});
 
@@ -38,21 +40,30 @@ class quilt_exemplar {
  public:
   quilt_exemplar() = default;
 
+  /// The exemplar mesh, its elements stored contiguously.
   [[nodiscard]] const tri_mesh& mesh() const noexcept { return mesh_; }
+  /// The elements.
   [[nodiscard]] const std::vector<texture_element>& elements() const noexcept { return elements_; }
+  /// A BVH over mesh().
   [[nodiscard]] const triangle_bvh& bvh() const noexcept { return bvh_; }
+  /// Unit normal of every face of mesh().
   [[nodiscard]] const std::vector<vec3>& face_normals() const noexcept { return normals_; }
   /// Element of each face of mesh() (elements are stored contiguously, in element order).
   [[nodiscard]] index_t element_of_face(index_t f) const noexcept { return face_element_[detail::to_size(f)]; }
   /// First face of element e in mesh(); faces of e are [first_face(e), first_face(e + 1)).
   [[nodiscard]] index_t first_face(index_t e) const noexcept { return face_offset_[detail::to_size(e)]; }
+  /// True when element e is long (see quilt_exemplar_options).
   [[nodiscard]] bool is_long(index_t e) const noexcept { return long_[detail::to_size(e)] != 0; }
+  /// Bounds of mesh().
   [[nodiscard]] const aabb& bounds() const noexcept { return bounds_; }
+  /// Side of the XY grid cells.
   [[nodiscard]] double cell_size() const noexcept { return cell_; }
   /// Median of the elements' smaller XY extent (a ring's or pebble's diameter, a thread's width).
   [[nodiscard]] double element_diameter() const noexcept { return diameter_; }
+  /// Number of elements.
   [[nodiscard]] index_t num_elements() const noexcept { return static_cast<index_t>(elements_.size()); }
 
+  /// Builds it (see the declaration above).
   template <Mesh M>
   friend result<quilt_exemplar> prepare_quilt_exemplar(const M& exemplar, const quilt_exemplar_options& options);
 

@@ -26,7 +26,9 @@ TESSERA_NAMESPACE_BEGIN
 /// The vertices of a tile lying on its sides, per side in a canonical order (along the side, then
 /// by height), and for every vertex its side (-1 inside).
 struct tile_border_layout {
+  /// Per side: its vertices in canonical order.
   std::array<std::vector<index_t>, 4> side;
+  /// Per vertex: its side, or -1 inside.
   std::vector<signed char> side_of;
 };
 
@@ -158,9 +160,13 @@ inline result<index_t> tile_set_border_mismatch(const geometric_tile_set& set, d
 /// must outlive it and stay unchanged.
 class geometric_plane_layout {
  public:
+  /// Columns of the plane.
   [[nodiscard]] index_t cols() const noexcept { return cols_; }
+  /// Rows of the plane.
   [[nodiscard]] index_t rows() const noexcept { return rows_; }
+  /// Vertices of the output mesh.
   [[nodiscard]] index_t num_vertices() const noexcept { return vbase_.empty() ? 0 : vbase_.back(); }
+  /// Faces of the output mesh.
   [[nodiscard]] index_t num_faces() const noexcept { return fbase_.empty() ? 0 : fbase_.back(); }
   /// Tile index used at cell `cell` (row * cols + col).
   [[nodiscard]] index_t tile_at(index_t cell) const noexcept { return type_[detail::to_size(cell)]; }

@@ -18,6 +18,7 @@
 
 TESSERA_NAMESPACE_BEGIN
 
+/// The mesh file formats read_mesh and write_mesh handle.
 enum class mesh_format { obj, off, ply };
 
 /// "obj", "off" or "ply".

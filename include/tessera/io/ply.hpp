@@ -195,6 +195,7 @@ inline result<tri_mesh> read_ply(const std::string& path) {
   return parse_ply(*data, path);
 }
 
+/// Options of write_ply.
 struct ply_write_options {
   bool binary = false;      ///< binary instead of ASCII
   bool big_endian = false;  ///< binary_big_endian instead of binary_little_endian (binary only)

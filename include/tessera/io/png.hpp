@@ -44,12 +44,15 @@ TESSERA_NAMESPACE_BEGIN
 
 /// What a PNG file holds.
 struct png_info {
+  /// Width in pixels.
   index_t width = 0;
+  /// Height in pixels.
   index_t height = 0;
   int channels = 0;        ///< after decoding: 1 grey, 2 grey + alpha, 3 RGB, 4 RGBA (palettes expand)
   int bit_depth = 8;       ///< precision after decoding: 8 or 16
   int file_bit_depth = 8;  ///< as stored: 1, 2, 4, 8 or 16
   bool palette = false;    ///< stored as palette indices
+  /// Stored interlaced (Adam7).
   bool interlaced = false;
 };
 

@@ -39,7 +39,9 @@ TESSERA_NAMESPACE_BEGIN
 
 /// A named number beyond the required fields ("height": 0.25).
 struct manifest_field {
+  /// The field's name.
   std::string name;
+  /// Its value.
   double value = 0;
   friend bool operator==(const manifest_field&, const manifest_field&) = default;
 };
@@ -49,6 +51,7 @@ struct tile_manifest_entry {
   index_t index = 0;      ///< tile number; the entries hold each of 0..n-1 once
   std::string file;       ///< file name relative to the directory ("tile_3.png")
   wang_edges edges = {};  ///< [north, east, south, west]
+  /// Further numbers of the tile.
   std::vector<manifest_field> extra = {};
   friend bool operator==(const tile_manifest_entry&, const tile_manifest_entry&) = default;
 };
@@ -61,11 +64,15 @@ enum class tile_set_kind {
 
 /// The contents of `tiles.json`.
 struct tile_manifest {
+  /// image or geometric.
   tile_set_kind kind = tile_set_kind::image;
   double tile_size = 0;  ///< pixels (a whole number) for image tiles, world units for geometric ones
+  /// nh, colours of north/south edges.
   int horizontal_colors = 0;
+  /// nv, colours of east/west edges.
   int vertical_colors = 0;
   std::vector<tile_manifest_entry> tiles;  ///< sorted by index after reading
+  /// Further numbers of the set.
   std::vector<manifest_field> extra = {};
 
   /// The value of a top-level extra field, or `fallback`.
