@@ -24,16 +24,15 @@
 
 /// Calls X(T, C, E) for every channel type (uint8, uint16, float), channel count (1-4) and executor
 /// (serial_executor as passed by value or defaulted; thread_pool_executor passed as an lvalue).
-#define TESSERA_COMPILED_FORMATS_WITH(X, E)                                                               \
-  X(std::uint8_t, 1, E) X(std::uint8_t, 2, E) X(std::uint8_t, 3, E) X(std::uint8_t, 4, E)               \
-  X(std::uint16_t, 1, E) X(std::uint16_t, 2, E) X(std::uint16_t, 3, E) X(std::uint16_t, 4, E)           \
-  X(float, 1, E) X(float, 2, E) X(float, 3, E) X(float, 4, E)
-#define TESSERA_COMPILED_FOR_EACH_FORMAT(X)                          \
+#define TESSERA_COMPILED_FORMATS_WITH(X, E)                                                                       \
+  X(std::uint8_t, 1, E)                                                                                           \
+  X(std::uint8_t, 2, E) X(std::uint8_t, 3, E) X(std::uint8_t, 4, E) X(std::uint16_t, 1, E) X(std::uint16_t, 2, E) \
+      X(std::uint16_t, 3, E) X(std::uint16_t, 4, E) X(float, 1, E) X(float, 2, E) X(float, 3, E) X(float, 4, E)
+#define TESSERA_COMPILED_FOR_EACH_FORMAT(X)                            \
   TESSERA_COMPILED_FORMATS_WITH(X, ::tessera::detail::compiled_serial) \
   TESSERA_COMPILED_FORMATS_WITH(X, ::tessera::detail::compiled_pool)
 /// Calls X(E) for each executor.
-#define TESSERA_COMPILED_FOR_EACH_EXECUTOR(X) \
-  X(::tessera::detail::compiled_serial) X(::tessera::detail::compiled_pool)
+#define TESSERA_COMPILED_FOR_EACH_EXECUTOR(X) X(::tessera::detail::compiled_serial) X(::tessera::detail::compiled_pool)
 
 TESSERA_NAMESPACE_BEGIN
 namespace detail {

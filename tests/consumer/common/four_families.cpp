@@ -78,8 +78,8 @@ int main() {
   std::printf("patch synthesis %016llx\n", static_cast<unsigned long long>(digest(patches)));
 
   // Wang tiles, composed from the infinite hash colouring
-  auto set = tessera::build_wang_tiles(*exemplar, {.tile_size = 32, .horizontal_colors = 2, .vertical_colors = 2},
-                                       pool);
+  auto set =
+      tessera::build_wang_tiles(*exemplar, {.tile_size = 32, .horizontal_colors = 2, .vertical_colors = 2}, pool);
   if (!set) return fail("build_wang_tiles", set.error());
   auto hash = tessera::hash_coloring::for_set(set->edges(), 5);
   if (!hash) return fail("hash_coloring", hash.error());

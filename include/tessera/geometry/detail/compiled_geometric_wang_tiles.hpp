@@ -7,7 +7,7 @@
 #include "../geometric_wang_tiles.hpp"
 
 TESSERA_NAMESPACE_BEGIN
-#define TESSERA_X(E)                                                                   \
+#define TESSERA_X(E)                                                                         \
   TESSERA_COMPILED_EXTERN template result<geometric_tile_set> build_geometric_wang_tiles<E>( \
       const quilt_exemplar&, const geometric_wang_options&, E&&);
 TESSERA_COMPILED_FOR_EACH_EXECUTOR(TESSERA_X)

@@ -8,5 +8,5 @@
 
 TESSERA_NAMESPACE_BEGIN
 TESSERA_COMPILED_EXTERN template result<quilt_exemplar> prepare_quilt_exemplar<tri_mesh>(const tri_mesh&,
-                                                                                        const quilt_exemplar_options&);
+                                                                                         const quilt_exemplar_options&);
 TESSERA_NAMESPACE_END

@@ -8,8 +8,8 @@
 #include "../tile_geometric_plane.hpp"
 
 TESSERA_NAMESPACE_BEGIN
-#define TESSERA_X(E)                                                                                          \
-  TESSERA_COMPILED_EXTERN template result<tri_mesh> tile_geometric_plane<hash_coloring_window, E>(          \
+#define TESSERA_X(E)                                                                               \
+  TESSERA_COMPILED_EXTERN template result<tri_mesh> tile_geometric_plane<hash_coloring_window, E>( \
       const geometric_tile_set&, const hash_coloring_window&, index_t, index_t, E&&);
 TESSERA_COMPILED_FOR_EACH_EXECUTOR(TESSERA_X)
 #undef TESSERA_X

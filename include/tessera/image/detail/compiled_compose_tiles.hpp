@@ -8,10 +8,10 @@
 #include "../compose_tiles.hpp"
 
 TESSERA_NAMESPACE_BEGIN
-#define TESSERA_X(T, C, E)                                                                                       \
-  TESSERA_COMPILED_EXTERN template status compose_tiles<T, C, hash_coloring, image_buffer<T, C>, E>(          \
-      const wang_tile_set<T, C>&, const hash_coloring&, image_buffer<T, C>&, const compose_options&, E&&);    \
-  TESSERA_COMPILED_EXTERN template status compose_tiles<T, C, hash_coloring, image_view<T, C>, E>(            \
+#define TESSERA_X(T, C, E)                                                                                 \
+  TESSERA_COMPILED_EXTERN template status compose_tiles<T, C, hash_coloring, image_buffer<T, C>, E>(       \
+      const wang_tile_set<T, C>&, const hash_coloring&, image_buffer<T, C>&, const compose_options&, E&&); \
+  TESSERA_COMPILED_EXTERN template status compose_tiles<T, C, hash_coloring, image_view<T, C>, E>(         \
       const wang_tile_set<T, C>&, const hash_coloring&, image_view<T, C>&, const compose_options&, E&&);
 TESSERA_COMPILED_FOR_EACH_FORMAT(TESSERA_X)
 #undef TESSERA_X

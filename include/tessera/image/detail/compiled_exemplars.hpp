@@ -7,8 +7,9 @@
 #include "../exemplars.hpp"
 
 TESSERA_NAMESPACE_BEGIN
-#define TESSERA_X(T, C, E) \
-  TESSERA_COMPILED_EXTERN template result<image_buffer<T, C>> make_exemplar<T, C>(exemplar_kind, const exemplar_options&);
+#define TESSERA_X(T, C, E)                                                                       \
+  TESSERA_COMPILED_EXTERN template result<image_buffer<T, C>> make_exemplar<T, C>(exemplar_kind, \
+                                                                                  const exemplar_options&);
 // the executor plays no part: the serial list only
 TESSERA_COMPILED_FORMATS_WITH(TESSERA_X, void)
 #undef TESSERA_X

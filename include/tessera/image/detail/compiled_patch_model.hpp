@@ -7,7 +7,7 @@
 #include "../patch_model.hpp"
 
 TESSERA_NAMESPACE_BEGIN
-#define TESSERA_X(T, C, E)                                                                                  \
+#define TESSERA_X(T, C, E)                                                                             \
   TESSERA_COMPILED_EXTERN template result<patch_model<T, C>> build_patch_model<image_buffer<T, C>, E>( \
       const image_buffer<T, C>&, const patch_model_options&, E&&);
 TESSERA_COMPILED_FOR_EACH_FORMAT(TESSERA_X)

@@ -7,10 +7,10 @@
 #include "../patch_synthesis.hpp"
 
 TESSERA_NAMESPACE_BEGIN
-#define TESSERA_X(T, C, E)                                                                                         \
-  TESSERA_COMPILED_EXTERN template result<patch_synthesis_stats> synthesize<T, C, image_buffer<T, C>&, E>(      \
-      const patch_model<T, C>&, image_buffer<T, C>&, const patch_synthesis_options&, E&&);                        \
-  TESSERA_COMPILED_EXTERN template result<patch_synthesis_stats> synthesize<T, C, image_view<T, C>&, E>(        \
+#define TESSERA_X(T, C, E)                                                                                 \
+  TESSERA_COMPILED_EXTERN template result<patch_synthesis_stats> synthesize<T, C, image_buffer<T, C>&, E>( \
+      const patch_model<T, C>&, image_buffer<T, C>&, const patch_synthesis_options&, E&&);                 \
+  TESSERA_COMPILED_EXTERN template result<patch_synthesis_stats> synthesize<T, C, image_view<T, C>&, E>(   \
       const patch_model<T, C>&, image_view<T, C>&, const patch_synthesis_options&, E&&);
 TESSERA_COMPILED_FOR_EACH_FORMAT(TESSERA_X)
 #undef TESSERA_X

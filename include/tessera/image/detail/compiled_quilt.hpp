@@ -7,8 +7,8 @@
 #include "../quilt.hpp"
 
 TESSERA_NAMESPACE_BEGIN
-#define TESSERA_X(T, C, E)                                                                             \
-  TESSERA_COMPILED_EXTERN template status quilt<image_buffer<T, C>, image_buffer<T, C>, E>(         \
+#define TESSERA_X(T, C, E)                                                                  \
+  TESSERA_COMPILED_EXTERN template status quilt<image_buffer<T, C>, image_buffer<T, C>, E>( \
       const image_buffer<T, C>&, image_buffer<T, C>&, const quilt_options&, E&&);
 TESSERA_COMPILED_FOR_EACH_FORMAT(TESSERA_X)
 #undef TESSERA_X

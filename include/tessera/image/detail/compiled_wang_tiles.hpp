@@ -7,7 +7,7 @@
 #include "../wang_tiles.hpp"
 
 TESSERA_NAMESPACE_BEGIN
-#define TESSERA_X(T, C, E)                                                                                 \
+#define TESSERA_X(T, C, E)                                                                              \
   TESSERA_COMPILED_EXTERN template result<wang_tile_set<T, C>> build_wang_tiles<image_buffer<T, C>, E>( \
       const image_buffer<T, C>&, const wang_tile_options&, E&&);
 TESSERA_COMPILED_FOR_EACH_FORMAT(TESSERA_X)

@@ -7,8 +7,8 @@
 #include "../assign_scale_field.hpp"
 
 TESSERA_NAMESPACE_BEGIN
-#define TESSERA_X(E)                                                                                               \
-  TESSERA_COMPILED_EXTERN template status assign_scale_field<E>(const terrain_mesh&, const screen_projection&,   \
+#define TESSERA_X(E)                                                                                           \
+  TESSERA_COMPILED_EXTERN template status assign_scale_field<E>(const terrain_mesh&, const screen_projection&, \
                                                                 const scale_field_options&, scale_field&, E&&);
 TESSERA_COMPILED_FOR_EACH_EXECUTOR(TESSERA_X)
 #undef TESSERA_X

@@ -7,7 +7,7 @@
 #include "../build_exemplar_pyramid.hpp"
 
 TESSERA_NAMESPACE_BEGIN
-#define TESSERA_X(T, C, E)                                                                                          \
+#define TESSERA_X(T, C, E)                                                                                       \
   TESSERA_COMPILED_EXTERN template result<exemplar_pyramid<T, C>> build_exemplar_pyramid<image_buffer<T, C>, E>( \
       const image_buffer<T, C>&, const exemplar_pyramid_options&, E&&);
 TESSERA_COMPILED_FOR_EACH_FORMAT(TESSERA_X)

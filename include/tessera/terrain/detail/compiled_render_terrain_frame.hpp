@@ -7,9 +7,9 @@
 #include "../render_terrain_frame.hpp"
 
 TESSERA_NAMESPACE_BEGIN
-#define TESSERA_X(T, C, E)                                                                                      \
-  TESSERA_COMPILED_EXTERN template status render_terrain_frame<T, C, image_buffer<T, C>, E>(                 \
-      const terrain_mesh&, const screen_projection&, const scale_field&, const triangle_synthesis&,           \
+#define TESSERA_X(T, C, E)                                                                          \
+  TESSERA_COMPILED_EXTERN template status render_terrain_frame<T, C, image_buffer<T, C>, E>(        \
+      const terrain_mesh&, const screen_projection&, const scale_field&, const triangle_synthesis&, \
       const exemplar_pyramid<T, C>&, image_buffer<T, C>&, const render_terrain_options&, E&&);
 TESSERA_COMPILED_FOR_EACH_FORMAT(TESSERA_X)
 #undef TESSERA_X

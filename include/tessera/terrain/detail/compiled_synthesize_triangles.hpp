@@ -7,9 +7,9 @@
 #include "../synthesize_triangles.hpp"
 
 TESSERA_NAMESPACE_BEGIN
-#define TESSERA_X(E)                                                                                          \
-  TESSERA_COMPILED_EXTERN template status synthesize_triangles<E>(                                          \
-      const terrain_mesh&, const screen_projection&, const scale_field&, index_t, index_t,                  \
+#define TESSERA_X(E)                                                                       \
+  TESSERA_COMPILED_EXTERN template status synthesize_triangles<E>(                         \
+      const terrain_mesh&, const screen_projection&, const scale_field&, index_t, index_t, \
       const triangle_synthesis_options&, triangle_synthesis&, E&&);
 TESSERA_COMPILED_FOR_EACH_EXECUTOR(TESSERA_X)
 #undef TESSERA_X
