@@ -4,7 +4,8 @@
 #   scripts/compile-time.sh            the umbrella header
 #   scripts/compile-time.sh --headers  also every public header alone, slowest first
 #   scripts/compile-time.sh --families every public header of one family in one TU (the include cost
-#                                      of core, image, tiling, fabric, terrain, geometry, surface...)
+#                                      of core, image, tiling, fabric, terrain, geometry, surface...),
+#                                      CPU seconds, median of 3
 #   scripts/compile-time.sh --engine   tests/consumer/common/four_families.cpp (patch synthesis, Wang
 #                                      tiles, terrain, geometric tiles) header-only and as with
 #                                      tessera::compiled (-DTESSERA_COMPILED=1): wall, CPU, peak RSS
@@ -33,18 +34,14 @@ median_seconds() {
 umbrella=$(median_seconds tessera/tessera.hpp)
 echo "umbrella tessera/tessera.hpp: $umbrella s at -O2 ($("$cxx" --version | head -1); goal < 3 s)"
 if [[ ${1:-} == --families ]]; then
+  # CPU seconds (user + sys), median of 3: steadier than wall time on a shared machine
   cd "$TESSERA_ROOT/include"
   for family in core image tiling fabric terrain geometry surface render io; do
-    find "tessera/$family" -maxdepth 1 -name '*.hpp' | sort | sed 's/.*/#include <&>/' >"$tmp/family.hpp"
-    printf '#include "%s"\n' "$tmp/family.hpp" >"$tmp/tu.cpp"
-    times=()
+    find "tessera/$family" -maxdepth 1 -name '*.hpp' | sort | sed 's/.*/#include <&>/' >"$tmp/tu.cpp"
     for i in 1 2 3; do
-      start=$(date +%s%N)
-      "$cxx" "${flags[@]}" -c "$tmp/tu.cpp" -o "$tmp/tu.o"
-      end=$(date +%s%N)
-      times+=("$(((end - start) / 1000000))")
-    done
-    echo "$(printf '%s\n' "${times[@]}" | sort -n | sed -n 2p | awk '{printf "%.2f", $1 / 1000}') s  $family/ (every public header)"
+      /usr/bin/time -f "%U %S" -o "$tmp/time" "$cxx" "${flags[@]}" -c "$tmp/tu.cpp" -o "$tmp/tu.o"
+      awk '{printf "%.2f\n", $1 + $2}' "$tmp/time"
+    done | sort -n | sed -n 2p | sed "s|$| s CPU  $family/ (every public header)|"
   done
 fi
 if [[ ${1:-} == --engine ]]; then
