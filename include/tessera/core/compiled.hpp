@@ -24,10 +24,12 @@
 
 /// Calls X(T, C, E) for every channel type (uint8, uint16, float), channel count (1-4) and executor
 /// (serial_executor as passed by value or defaulted; thread_pool_executor passed as an lvalue).
-#define TESSERA_COMPILED_FORMATS_WITH(X, E)                                                                       \
-  X(std::uint8_t, 1, E)                                                                                           \
-  X(std::uint8_t, 2, E) X(std::uint8_t, 3, E) X(std::uint8_t, 4, E) X(std::uint16_t, 1, E) X(std::uint16_t, 2, E) \
-      X(std::uint16_t, 3, E) X(std::uint16_t, 4, E) X(float, 1, E) X(float, 2, E) X(float, 3, E) X(float, 4, E)
+// clang-format off
+#define TESSERA_COMPILED_FORMATS_WITH(X, E)                                                \
+  X(std::uint8_t, 1, E) X(std::uint8_t, 2, E) X(std::uint8_t, 3, E) X(std::uint8_t, 4, E)     \
+  X(std::uint16_t, 1, E) X(std::uint16_t, 2, E) X(std::uint16_t, 3, E) X(std::uint16_t, 4, E) \
+  X(float, 1, E) X(float, 2, E) X(float, 3, E) X(float, 4, E)
+// clang-format on
 #define TESSERA_COMPILED_FOR_EACH_FORMAT(X)                            \
   TESSERA_COMPILED_FORMATS_WITH(X, ::tessera::detail::compiled_serial) \
   TESSERA_COMPILED_FORMATS_WITH(X, ::tessera::detail::compiled_pool)
