@@ -5,6 +5,7 @@
 #pragma once
 
 #include "version.hpp"
+#include "core/compiled.hpp"
 #include "core/config.hpp"
 #include "core/executor.hpp"
 #include "core/explain.hpp"

@@ -13,7 +13,7 @@ if(NOT _version MATCHES "version 14\\.")
   cmake_language(EXIT 77)
 endif()
 file(GLOB_RECURSE _files ${ROOT}/include/*.hpp ${ROOT}/examples/*.cpp ${ROOT}/examples/*.hpp ${ROOT}/tests/*.cpp
-     ${ROOT}/tests/*.hpp ${ROOT}/benchmarks/*.cpp ${ROOT}/benchmarks/*.hpp)
+     ${ROOT}/tests/*.hpp ${ROOT}/benchmarks/*.cpp ${ROOT}/benchmarks/*.hpp ${ROOT}/src/*.cpp)
 list(FILTER _files EXCLUDE REGEX "/tests/structural/compile_fail/")
 execute_process(COMMAND ${CLANG_FORMAT} --dry-run -Werror --style=file ${_files} RESULT_VARIABLE _rc
                 ERROR_VARIABLE _err WORKING_DIRECTORY ${ROOT})

@@ -228,3 +228,7 @@ result<geometric_tile_set> build_geometric_wang_tiles(const M& exemplar, const g
 }
 
 TESSERA_NAMESPACE_END
+
+#ifdef TESSERA_COMPILED
+#include "detail/compiled_geometric_wang_tiles.hpp"  // extern templates: tessera::compiled (core/compiled.hpp)
+#endif

@@ -141,3 +141,7 @@ result<quilt_exemplar> prepare_quilt_exemplar(const M& exemplar, const quilt_exe
 }
 
 TESSERA_NAMESPACE_END
+
+#ifdef TESSERA_COMPILED
+#include "detail/compiled_quilt_exemplar.hpp"  // extern templates: tessera::compiled (core/compiled.hpp)
+#endif

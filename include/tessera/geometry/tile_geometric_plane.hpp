@@ -405,3 +405,7 @@ result<tri_mesh> tile_geometric_plane(const geometric_tile_set& set, const C& co
 }
 
 TESSERA_NAMESPACE_END
+
+#ifdef TESSERA_COMPILED
+#include "detail/compiled_tile_geometric_plane.hpp"  // extern templates: tessera::compiled (core/compiled.hpp)
+#endif

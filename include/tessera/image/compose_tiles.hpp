@@ -151,3 +151,7 @@ template <Channel T, int C, TileColoring Coloring, WritableImage O, Executor X =
 }
 
 TESSERA_NAMESPACE_END
+
+#ifdef TESSERA_COMPILED
+#include "detail/compiled_compose_tiles.hpp"  // extern templates: tessera::compiled (core/compiled.hpp)
+#endif

@@ -202,3 +202,7 @@ result<image_buffer<T, C>> make_exemplar(exemplar_kind kind, const exemplar_opti
 }
 
 TESSERA_NAMESPACE_END
+
+#ifdef TESSERA_COMPILED
+#include "detail/compiled_exemplars.hpp"  // extern templates: tessera::compiled (core/compiled.hpp)
+#endif

@@ -384,3 +384,7 @@ auto build_patch_model(const I& exemplar, const patch_model_options& opts = {}, 
 }
 
 TESSERA_NAMESPACE_END
+
+#ifdef TESSERA_COMPILED
+#include "detail/compiled_patch_model.hpp"  // extern templates: tessera::compiled (core/compiled.hpp)
+#endif

@@ -253,3 +253,7 @@ std::vector<seam_segment> patch_seam_lines(const patch_model<T, C>& model, index
 }
 
 TESSERA_NAMESPACE_END
+
+#ifdef TESSERA_COMPILED
+#include "detail/compiled_patch_synthesis.hpp"  // extern templates: tessera::compiled (core/compiled.hpp)
+#endif

@@ -139,3 +139,7 @@ template <Image E, WritableImage O, Executor X = serial_executor>
 }
 
 TESSERA_NAMESPACE_END
+
+#ifdef TESSERA_COMPILED
+#include "detail/compiled_quilt.hpp"  // extern templates: tessera::compiled (core/compiled.hpp)
+#endif

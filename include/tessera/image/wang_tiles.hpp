@@ -394,3 +394,7 @@ template <Image E, Executor X = serial_executor>
 }
 
 TESSERA_NAMESPACE_END
+
+#ifdef TESSERA_COMPILED
+#include "detail/compiled_wang_tiles.hpp"  // extern templates: tessera::compiled (core/compiled.hpp)
+#endif

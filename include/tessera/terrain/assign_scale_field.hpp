@@ -221,3 +221,7 @@ result<scale_field> assign_scale_field(const terrain_mesh& mesh, const screen_pr
 }
 
 TESSERA_NAMESPACE_END
+
+#ifdef TESSERA_COMPILED
+#include "detail/compiled_assign_scale_field.hpp"  // extern templates: tessera::compiled (core/compiled.hpp)
+#endif

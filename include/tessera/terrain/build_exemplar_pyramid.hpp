@@ -173,3 +173,7 @@ result<exemplar_pyramid<channel_t<I>, channels_v<I>>> build_exemplar_pyramid(con
 }
 
 TESSERA_NAMESPACE_END
+
+#ifdef TESSERA_COMPILED
+#include "detail/compiled_build_exemplar_pyramid.hpp"  // extern templates: tessera::compiled (core/compiled.hpp)
+#endif

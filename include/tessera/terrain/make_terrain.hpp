@@ -110,3 +110,7 @@ result<tri_mesh> make_terrain(const terrain_options& o = {}, E&& exec = {}) {
 }
 
 TESSERA_NAMESPACE_END
+
+#ifdef TESSERA_COMPILED
+#include "detail/compiled_make_terrain.hpp"  // extern templates: tessera::compiled (core/compiled.hpp)
+#endif

@@ -168,3 +168,7 @@ result<terrain_mesh> prepare_terrain_mesh(const M& mesh, std::string_view what =
 }
 
 TESSERA_NAMESPACE_END
+
+#ifdef TESSERA_COMPILED
+#include "detail/compiled_prepare_terrain_mesh.hpp"  // extern templates: tessera::compiled (core/compiled.hpp)
+#endif

@@ -255,3 +255,7 @@ result<screen_projection> project_mesh(const terrain_mesh& mesh, const terrain_c
 }
 
 TESSERA_NAMESPACE_END
+
+#ifdef TESSERA_COMPILED
+#include "detail/compiled_project_mesh.hpp"  // extern templates: tessera::compiled (core/compiled.hpp)
+#endif

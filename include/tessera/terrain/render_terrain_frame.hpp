@@ -189,3 +189,7 @@ status render_terrain_frame(const terrain_mesh& mesh, const screen_projection& p
 }
 
 TESSERA_NAMESPACE_END
+
+#ifdef TESSERA_COMPILED
+#include "detail/compiled_render_terrain_frame.hpp"  // extern templates: tessera::compiled (core/compiled.hpp)
+#endif

@@ -359,3 +359,7 @@ result<triangle_synthesis> synthesize_triangles(const terrain_mesh& mesh, const 
 }
 
 TESSERA_NAMESPACE_END
+
+#ifdef TESSERA_COMPILED
+#include "detail/compiled_synthesize_triangles.hpp"  // extern templates: tessera::compiled (core/compiled.hpp)
+#endif

@@ -19,9 +19,37 @@
 
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
-#include <nanoflann.hpp>
 
 #include "../../core/config.hpp"
+
+#if TESSERA_HAS_EXCEPTIONS
+#include <nanoflann.hpp>
+#else
+// nanoflann 1.4 throws std::runtime_error on a search before the index is built or an empty data
+// set, and std::bad_alloc when malloc fails: under -fno-exceptions those `throw`s would not compile.
+// Here each becomes std::abort(). lower_bound_knn never takes the runtime_error paths (it builds its
+// index over n >= 1 points before any search; validated by its callers); malloc failing aborts, as a
+// failed allocation does anywhere without exceptions (docs/no_exceptions.md).
+#include <array>
+#include <cassert>
+#include <cmath>
+#include <cstdlib>
+#include <functional>
+#include <istream>
+#include <ostream>
+#include <stdexcept>
+#include <unordered_set>
+#if defined(__clang__)
+#pragma clang diagnostic push
+#pragma clang diagnostic ignored "-Wkeyword-macro"
+#endif
+#define throw ::std::abort(),
+#include <nanoflann.hpp>
+#undef throw
+#if defined(__clang__)
+#pragma clang diagnostic pop
+#endif
+#endif
 #include "../../core/random.hpp"
 
 TESSERA_NAMESPACE_BEGIN

@@ -1,0 +1,17 @@
+// tessera/image/detail/compiled_patch_synthesis.hpp: synthesize into image_buffer and image_view, compiled once.
+// Included at the end of its public header when TESSERA_COMPILED is defined (tessera::compiled;
+// core/compiled.hpp, docs/compile_once.md); src/compiled/ turns the same lines into definitions.
+#pragma once
+
+#include "../../core/compiled.hpp"
+#include "../patch_synthesis.hpp"
+
+TESSERA_NAMESPACE_BEGIN
+#define TESSERA_X(T, C, E)                                                                                 \
+  TESSERA_COMPILED_EXTERN template result<patch_synthesis_stats> synthesize<T, C, image_buffer<T, C>&, E>( \
+      const patch_model<T, C>&, image_buffer<T, C>&, const patch_synthesis_options&, E&&);                 \
+  TESSERA_COMPILED_EXTERN template result<patch_synthesis_stats> synthesize<T, C, image_view<T, C>&, E>(   \
+      const patch_model<T, C>&, image_view<T, C>&, const patch_synthesis_options&, E&&);
+TESSERA_COMPILED_FOR_EACH_FORMAT(TESSERA_X)
+#undef TESSERA_X
+TESSERA_NAMESPACE_END
