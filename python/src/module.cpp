@@ -14,4 +14,8 @@ PYBIND11_MODULE(_tessera, m) {
   tp::bind_patch(m);
   tp::bind_quilting(m);
   tp::bind_wang(m);
+  tp::bind_fabric(m);
+  tp::bind_terrain(m);
+  tp::bind_geometry(m);
+  tp::bind_surface(m);
 }
