@@ -9,6 +9,8 @@
 #include <tessera/geometry/quilt_exemplar.hpp>
 #include <tessera/geometry/tile_geometric_plane.hpp>
 #include <tessera/io/geometric_tiles.hpp>
+#include <tessera/io/mesh_file.hpp>
+#include <tessera/render/render_mesh_preview.hpp>
 #include <tessera/tiling/hash_coloring.hpp>
 
 #include "bindings.hpp"
@@ -30,6 +32,39 @@ quilt_exemplar prepared_exemplar(const py::array& vertices, const py::array& fac
 }  // namespace
 
 void bind_geometry(py::module_& m) {
+  m.def(
+      "read_mesh", [](const std::string& path) { return mesh_to_arrays(value_or_raise(read_mesh(path))); },
+      py::arg("path"),
+      "Reads an OBJ, OFF or PLY triangle mesh (chosen by extension) as (V float64 n x 3, F int64 m x 3); raises "
+      "IOError / ParseError naming the file.");
+  m.def(
+      "write_mesh",
+      [](const std::string& path, const py::array& vertices, const py::array& faces) {
+        check(write_mesh(path, mesh_from_arrays(vertices, faces, "write_mesh")));
+      },
+      py::arg("path"), py::arg("vertices"), py::arg("faces"),
+      "Writes (V, F) as an OBJ, OFF or PLY file chosen by the extension of `path`.");
+  m.def(
+      "render_mesh_preview",
+      [](const py::array& vertices, const py::array& faces, std::int64_t width, std::int64_t height,
+         double azimuth_degrees, double elevation_degrees, double grid_spacing, int threads) {
+        const tri_mesh mesh = mesh_from_arrays(vertices, faces, "render_mesh_preview");
+        mesh_preview_options o;
+        o.width = width;
+        o.height = height;
+        o.azimuth_degrees = azimuth_degrees;
+        o.elevation_degrees = elevation_degrees;
+        o.grid_spacing = grid_spacing;
+        auto img =
+            value_or_raise(with_executor(threads, [&](auto& exec) { return render_mesh_preview(mesh, o, exec); }));
+        return to_array(std::move(img));
+      },
+      py::arg("vertices"), py::arg("faces"), py::arg("width") = 800, py::arg("height") = 600,
+      py::arg("azimuth_degrees") = -60.0, py::arg("elevation_degrees") = 45.0, py::arg("grid_spacing") = 0.0,
+      py::arg("threads") = 0,
+      R"doc(A shaded picture of a mesh (height x width x 3 uint8), elements tinted per connected component;
+grid_spacing > 0 overlays tile borders x, y = k * grid_spacing. Sizes 1 to 8192. Releases the GIL.)doc");
+
   m.def(
       "mesh_exemplar",
       [](const std::string& kind, double size, std::uint64_t seed) {
