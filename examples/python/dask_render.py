@@ -6,7 +6,7 @@ rendered on its own, anywhere, as ``model.synthesize(C, C, x, y, seed=S)``, and 
 its chunk of a Zarr array, so the whole texture is never held in memory (65536 x 65536 RGBA8 is
 16 GiB; each task holds one chunk). The model is built once here, serialized once
 (``PatchModel.save()``), scattered once to every worker (``client.scatter(..., broadcast=True)``) and
-deserialized at most once per worker process (a cache keyed by the bytes' digest).
+deserialized at most once per worker (a cache on the worker keyed by the bytes' digest).
 
     /usr/bin/python3 examples/python/dask_render.py --exemplar E.png --size 4096 --chunk 512 \\
         --seed 7 --out texture.zarr --workers 2
@@ -51,15 +51,18 @@ def parse_args(argv=None):
 
 # ---- worker side --------------------------------------------------------------------------------
 
-_MODELS = {}  # digest -> PatchModel, one per worker process (a process-wide cache)
-
-
 def _model(digest, model_bytes, threads):
-    m = _MODELS.get(digest)
+    """The worker's PatchModel for these bytes, deserialized once per worker (cached on the worker
+    object: this function is shipped by value, so a module-level cache would not persist)."""
+    from dask.distributed import get_worker
+    try:
+        cache = get_worker().__dict__.setdefault("_tessera_models", {})
+    except ValueError:  # not on a worker (called directly)
+        cache = {}
+    m = cache.get(digest)
     if m is None:
         import tessera
-        m = tessera.PatchModel.load(model_bytes, threads=threads)
-        _MODELS[digest] = m
+        m = cache[digest] = tessera.PatchModel.load(model_bytes, threads=threads)
     return m
 
 
