@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Terrain texturing (paper 002) from Python: a heightfield mesh and one synthesized frame, with the
+"""Terrain texturing (paper 003) from Python: a heightfield mesh and one synthesized frame, with the
 scale field that sizes the texture by view distance. Usage: terrain.py [OUT_DIR]"""
 import os
 import sys

@@ -1,4 +1,4 @@
-// python/src/terrain.cpp: tessera's terrain family (paper 002), one frame at a time: make_terrain
+// python/src/terrain.cpp: tessera's terrain family (paper 003), one frame at a time: make_terrain
 // (a heightfield mesh as V, F arrays) and render_terrain_frame (project, scale field, triangle
 // synthesis and rendering for one camera).
 #include <array>
@@ -152,7 +152,7 @@ Raises InvalidArgument / SizeOverflow naming the argument (cells < 1, more than 
       py::arg("seed") = 1, py::arg("shading") = "texture", py::arg("feather") = 3.0,
       py::arg("sun") = std::array<double, 3>{0, 0, 0}, py::arg("ambient") = 0.35, py::arg("threads") = 0,
       py::arg("progress") = py::none(),
-      R"doc(One synthesized frame of a terrain mesh (paper 002) seen by a camera: the mesh (V float64 n x 3, F
+      R"doc(One synthesized frame of a terrain mesh (paper 003) seen by a camera: the mesh (V float64 n x 3, F
 int32/int64 m x 3) is projected, every visible triangle gets a scale by its view distance (the scale
 field), triangles are synthesized from the exemplar (any dtype, converted to 8-bit RGB) and rendered.
 camera: a preset name ('grazing', 'oblique', 'overview', fitted to the mesh bounds) or None to use
