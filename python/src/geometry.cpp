@@ -71,7 +71,11 @@ grid_spacing > 0 overlays tile borders x, y = k * grid_spacing. Sizes 1 to 8192.
         result<tri_mesh> r = status::invalid_argument(
             cat("mesh_exemplar: kind must be 'rings', 'chain_mail', 'stones' or 'weave', got '", kind, "'"));
         if (kind == "rings" || kind == "chain_mail")
-          r = make_ring_exemplar({.size = size, .chain_mail = kind == "chain_mail", .seed = seed});
+          r = make_ring_exemplar(
+              {.size = size,
+               .minor_radius = kind == "chain_mail" ? 0.08 : 0.12,  // as `tessera exemplar --chain-mail`
+               .chain_mail = kind == "chain_mail",
+               .seed = seed});
         else if (kind == "stones")
           r = make_stone_exemplar({.size = size, .seed = seed});
         else if (kind == "weave")

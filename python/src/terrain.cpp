@@ -15,6 +15,8 @@
 #include <tessera/terrain/synthesize_triangles.hpp>
 #include <tessera/terrain/terrain_camera.hpp>
 
+#include <pybind11/stl.h>
+
 #include "bindings.hpp"
 #include "common.hpp"
 #include "mesh_arrays.hpp"
