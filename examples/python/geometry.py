@@ -18,8 +18,7 @@ def main(out="."):
     PV, PF = tiles.tile_plane(4, 3, seed=5)
     tessera.write_mesh(os.path.join(out, "geometry_plane.obj"), PV, PF)
     tessera.write_png(os.path.join(out, "geometry_plane.png"),
-                      tessera.render_mesh_preview(PV, PF, 640, 480, elevation_degrees=65,
-                                                  grid_spacing=tiles.tile_size))
+                      tessera.render_mesh_preview(PV, PF, 640, 480, elevation_degrees=65))
     print(f"plane of 4 x 3 tiles: {len(PV)} vertices, {len(PF)} faces -> {out}")
 
 
