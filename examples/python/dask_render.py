@@ -1,0 +1,160 @@
+#!/usr/bin/env python3
+"""Render an N x N patch-synthesis texture into a chunked Zarr array across a Dask cluster.
+
+Patch synthesis is a pure function of (model, seed, window): every C x C chunk of the texture is
+rendered on its own, anywhere, as ``model.synthesize(C, C, x, y, seed=S)``, and written straight into
+its chunk of a Zarr array, so the whole texture is never held in memory (65536 x 65536 RGBA8 is
+16 GiB; each task holds one chunk). The model is built once here, serialized once
+(``PatchModel.save()``), scattered once to every worker (``client.scatter(..., broadcast=True)``) and
+deserialized at most once per worker (a cache on the worker keyed by the bytes' digest).
+
+    /usr/bin/python3 examples/python/dask_render.py --exemplar E.png --size 4096 --chunk 512 \\
+        --seed 7 --out texture.zarr --workers 2
+
+Against a running cluster (every worker must import tessera and see the same --out path):
+
+    dask-scheduler                       # Dask 2022.12 (newer: `dask scheduler`)
+    dask-worker tcp://HOST:8786 --nworkers 1 --nthreads 1   # on each machine (newer: `dask worker`)
+    /usr/bin/python3 examples/python/dask_render.py ... --scheduler tcp://HOST:8786
+
+The Zarr array at the store's root has shape (N, N, channels), chunks (C, C, channels) and the
+exemplar's dtype; it equals ``tessera synth --window X0,Y0,N,N`` with the same exemplar, options and seed.
+"""
+import argparse
+import hashlib
+import sys
+import time
+
+import numpy as np
+
+
+def parse_args(argv=None):
+    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    p.add_argument("--exemplar", required=True, help="exemplar PNG (8/16-bit, 1-4 channels)")
+    p.add_argument("--size", type=int, required=True, help="side N of the N x N texture")
+    p.add_argument("--chunk", type=int, default=512, help="side C of the C x C chunks (Zarr chunks and tasks)")
+    p.add_argument("--seed", type=int, default=0)
+    p.add_argument("--out", required=True, help="Zarr store (directory), written at its root")
+    p.add_argument("--scheduler", help="address of a running scheduler, e.g. tcp://HOST:8786")
+    p.add_argument("--workers", type=int, default=2, help="LocalCluster workers when no --scheduler (default 2)")
+    p.add_argument("--threads-per-worker", type=int, default=1,
+                   help="threads of each LocalCluster worker and of each chunk's synthesis (default 1)")
+    p.add_argument("--no-processes", action="store_true", help="LocalCluster workers as threads of this process")
+    p.add_argument("--origin", default="0,0", help="X0,Y0: the texture's window origin (default 0,0)")
+    p.add_argument("--patch", type=int, help="patch side (PatchModel patch_width = patch_height)")
+    p.add_argument("--overlap", type=int, help="patch overlap")
+    p.add_argument("--seams", choices=["feather", "cut"], default="feather", help="seam handling (cut: min-cut)")
+    p.add_argument("--compressor", choices=["default", "none"], default="default",
+                   help="Zarr compressor: Zarr's default (Blosc) or none")
+    return p.parse_args(argv)
+
+
+# ---- worker side --------------------------------------------------------------------------------
+
+def _model(digest, model_bytes, threads):
+    """The worker's PatchModel for these bytes, deserialized once per worker (cached on the worker
+    object: this function is shipped by value, so a module-level cache would not persist)."""
+    from dask.distributed import get_worker
+    try:
+        cache = get_worker().__dict__.setdefault("_tessera_models", {})
+    except ValueError:  # not on a worker (called directly)
+        cache = {}
+    m = cache.get(digest)
+    if m is None:
+        import tessera
+        m = cache[digest] = tessera.PatchModel.load(model_bytes, threads=threads)
+    return m
+
+
+def render_chunk(model_bytes, digest, store, x, y, w, h, x0, y0, seed, threads):
+    """Renders the window (x0 + x, y0 + y, w, h) and writes it at [y:y+h, x:x+w] of the store's root array."""
+    import zarr
+    model = _model(digest, model_bytes, threads)
+    tile = model.synthesize(w, h, x=x0 + x, y=y0 + y, seed=seed, threads=threads)
+    zarr.open(store, mode="r+")[y:y + h, x:x + w, :] = tile
+    return w * h
+
+
+# ---- driver -------------------------------------------------------------------------------------
+
+def build_model(args):
+    import tessera
+    exemplar = tessera.read_png(args.exemplar)
+    options = {"seams": args.seams == "cut"}
+    if args.patch is not None:
+        options.update(patch_width=args.patch, patch_height=args.patch)
+    if args.overlap is not None:
+        options["overlap"] = args.overlap
+    return tessera.PatchModel(exemplar, **options)
+
+
+def chunks(n, c):
+    for y in range(0, n, c):
+        for x in range(0, n, c):
+            yield x, y, min(c, n - x), min(c, n - y)
+
+
+def render(args, client, model):
+    """Creates the Zarr array and renders every chunk on `client`; returns (pixels, seconds)."""
+    import zarr
+    from dask.distributed import as_completed
+    n, c = args.size, args.chunk
+    if n < 1 or c < 1:
+        raise SystemExit(f"--size and --chunk must be >= 1, got {n} and {c}")
+    x0, y0 = (int(v) for v in args.origin.split(","))
+    compressor = None if args.compressor == "none" else "default"
+    kwargs = {} if compressor == "default" else {"compressor": None}
+    zarr.open(args.out, mode="w", shape=(n, n, model.channels), chunks=(c, c, model.channels),
+              dtype=model.dtype, **kwargs)
+    model_bytes = model.save()
+    digest = hashlib.sha256(model_bytes).hexdigest()
+    start = time.perf_counter()
+    shipped = client.scatter(model_bytes, broadcast=True)  # once to each worker
+    pixels = 0
+    # a bounded number of tasks in flight: a 65536^2 render in 512^2 chunks is 16384 tasks
+    pending = chunks(n, c)
+    window = max(64, 8 * len(client.scheduler_info()["workers"]))
+
+    def submit(tile):
+        x, y, w, h = tile
+        return client.submit(render_chunk, shipped, digest, args.out, x, y, w, h, x0, y0, args.seed,
+                             args.threads_per_worker, key=f"tessera-chunk-{digest[:12]}-{x}-{y}", pure=False)
+
+    ac = as_completed([submit(t) for _, t in zip(range(window), pending)])
+    for fut in ac:
+        pixels += fut.result()
+        nxt = next(pending, None)
+        if nxt is not None:
+            ac.add(submit(nxt))
+    return pixels, time.perf_counter() - start
+
+
+def main(argv=None):
+    args = parse_args(argv)
+    from dask.distributed import Client, LocalCluster
+    t0 = time.perf_counter()
+    model = build_model(args)
+    t_model = time.perf_counter() - t0
+    if args.scheduler:
+        client = Client(args.scheduler)
+        cluster = None
+    else:
+        cluster = LocalCluster(n_workers=args.workers, threads_per_worker=args.threads_per_worker,
+                               processes=not args.no_processes, dashboard_address=None)
+        client = Client(cluster)
+    try:
+        workers = len(client.scheduler_info()["workers"])
+        pixels, seconds = render(args, client, model)
+    finally:
+        client.close()
+        if cluster is not None:
+            cluster.close()
+    mps = pixels / seconds / 1e6
+    print(f"rendered {args.size} x {args.size} x {model.channels} {np.dtype(model.dtype).name} in "
+          f"{args.chunk}^2 chunks on {workers} worker(s): {seconds:.2f} s, {mps:.2f} megapixels/s "
+          f"(model built in {t_model:.2f} s) -> {args.out}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

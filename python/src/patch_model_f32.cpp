@@ -1,0 +1,9 @@
+// python/src/patch_model_f32.cpp: PatchModel's kernels for float channels (see patch_model.hpp).
+#include "patch_model_impl.hpp"
+
+namespace tessera::python {
+template any_patch_model build_model<float>(const py::array&, const patch_model_options&, int, call_progress&);
+template py::array synthesize_model<float>(const any_patch_model&, const synthesis_request&, call_progress&);
+template std::string save_model<float>(const any_patch_model&);
+template any_patch_model load_model<float>(const std::string&, pixel_format, int);
+}  // namespace tessera::python

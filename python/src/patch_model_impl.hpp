@@ -1,0 +1,70 @@
+// python/src/patch_model_impl.hpp: the per-format bodies of patch_model.hpp's functions; included by
+// patch_model_u8.cpp, patch_model_u16.cpp and patch_model_f32.cpp only, each instantiating one T.
+#pragma once
+
+#include <tessera/io/patch_model_file.hpp>
+
+#include "patch_model.hpp"
+
+namespace tessera::python {
+
+template <class T>
+any_patch_model build_model(const py::array& exemplar, const patch_model_options& options, int threads,
+                            call_progress& progress) {
+  any_patch_model out;
+  out.options = options;
+  out.options.progress = {};
+  visit_image_of<T>(
+      exemplar,
+      [&]<int C>(const image_view<const T, C>& view) {
+        patch_model_options o = options;
+        o.progress = progress.sink();
+        auto built = with_executor(threads, [&](auto& exec) { return build_patch_model(view, o, exec); });
+        auto model = progress.value_or_raise(std::move(built));
+        out.model = models_of<T>(std::make_shared<const patch_model<T, C>>(std::move(model)));
+        out.format = {channel_type_of<T>, C};
+      },
+      "PatchModel: exemplar");
+  return out;
+}
+
+template <class T>
+py::array synthesize_model(const any_patch_model& model, const synthesis_request& r, call_progress& progress) {
+  return std::visit(
+      [&]<int C>(const std::shared_ptr<const patch_model<T, C>>& m) {
+        patch_synthesis_options so{.origin = r.origin, .seed = r.seed, .seams = r.seams};
+        so.progress = progress.sink();
+        auto out = value_or_raise(image_buffer<T, C>::create(r.width, r.height));
+        auto st = with_executor(r.threads, [&](auto& exec) { return synthesize(*m, out, so, exec); });
+        (void)progress.value_or_raise(std::move(st));
+        return to_array(std::move(out));
+      },
+      std::get<models_of<T>>(model.model));
+}
+
+template <class T>
+std::string save_model(const any_patch_model& model) {
+  return std::visit(
+      [&]<int C>(const std::shared_ptr<const patch_model<T, C>>& m) {
+        auto bytes = value_or_raise(encode_patch_model(*m, model.options));
+        return std::string(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+      },
+      std::get<models_of<T>>(model.model));
+}
+
+template <class T>
+any_patch_model load_model(const std::string& bytes, pixel_format format, int threads) {
+  any_patch_model out;
+  out.format = format;
+  check(dispatch_channels<T>(format.channels, [&]<class U, int C>(format_tag<U, C>) {
+    auto loaded = with_executor(threads, [&](auto& exec) {
+      return decode_patch_model<T, C>(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), exec);
+    });
+    auto file = value_or_raise(std::move(loaded));
+    out.options = file.options;
+    out.model = models_of<T>(std::make_shared<const patch_model<T, C>>(std::move(file.model)));
+  }));
+  return out;
+}
+
+}  // namespace tessera::python
