@@ -13,7 +13,7 @@ def test_quilt_formats_and_determinism(dtype):
     b = tessera.quilt(ex, 50, 30, patch_size=12, seed=3, threads=2)
     assert a.shape == (30, 50, 3) and a.dtype == np.dtype(dtype)
     np.testing.assert_array_equal(a, b)
-    assert tessera.quilt(ex[:, :, 0], 20, 20, patch_size=10).shape == (20, 20, 1)
+    assert tessera.quilt(np.ascontiguousarray(ex[:, :, 0]), 20, 20, patch_size=10).shape == (20, 20, 1)
 
 
 def test_constrained_quilt_keeps_the_unmasked_pixels():
