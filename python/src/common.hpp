@@ -138,6 +138,13 @@ py::dtype dtype_of() {
   return py::dtype::of<T>();
 }
 
+/// A new, uninitialized, C-contiguous H x W x C array of T (the caller validated the size).
+template <class T>
+py::array new_array(index_t width, index_t height, int channels) {
+  return py::array(dtype_of<T>(), {static_cast<py::ssize_t>(height), static_cast<py::ssize_t>(width),
+                                   static_cast<py::ssize_t>(channels)});
+}
+
 /// An H x W x C array (always three dimensions, also for C = 1) owning `img`'s pixels: the buffer is
 /// moved into the array, no pixel is copied.
 template <Channel T, int C>

@@ -34,10 +34,13 @@ py::array synthesize_model(const any_patch_model& model, const synthesis_request
       [&]<int C>(const std::shared_ptr<const patch_model<T, C>>& m) {
         patch_synthesis_options so{.origin = r.origin, .seed = r.seed, .seams = r.seams};
         so.progress = progress.sink();
-        auto out = value_or_raise(image_buffer<T, C>::create(r.width, r.height));
-        auto st = with_executor(r.threads, [&](auto& exec) { return synthesize(*m, out, so, exec); });
+        // synthesized in place into an uninitialized NumPy array (no fill, no copy)
+        check(validate_image_extent(r.width, r.height, C, "synthesize"));
+        py::array out = new_array<T>(r.width, r.height, C);
+        image_view<T, C> view(static_cast<T*>(out.mutable_data()), r.width, r.height);
+        auto st = with_executor(r.threads, [&](auto& exec) { return synthesize(*m, view, so, exec); });
         (void)progress.value_or_raise(std::move(st));
-        return to_array(std::move(out));
+        return out;
       },
       std::get<models_of<T>>(model.model));
 }
