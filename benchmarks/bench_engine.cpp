@@ -5,7 +5,7 @@
 // trait (every pixel through image_traits::write) and with it (image_traits::view, core/image_rows.hpp),
 // against an image_view over the same kind of memory: the same-run baseline.
 //
-// Meshes: a 64 x 64-tile geometric plane (ring tiles, as example 52) three ways: as tessera's
+// Meshes: a 64 x 64-tile geometric plane (ring tiles of size 4.0, as bench_geometry) three ways: as tessera's
 // tri_mesh (double positions, int64 indices); that tri_mesh converted into float / uint32 engine
 // buffers (write_mesh); and written straight into the engine buffers through a mesh_sink. Peak
 // memory is the largest number of bytes live on the heap during one iteration (counted by this
@@ -195,9 +195,8 @@ const geometric_tile_set& ring_tiles() {
   static const auto set = [] {
     auto prepared = *prepare_quilt_exemplar(*make_ring_exemplar());
     geometric_wang_options o;
-    o.tile_size = 6.4;
-    o.quilt.seed = 3;
-    thread_pool_executor pool;
+    o.tile_size = 4.0;  // as bench_geometry's BM_tile_plane_64x64/1: 4.5M triangles
+    thread_pool_executor pool(2);
     return *build_geometric_wang_tiles(prepared, o, pool);
   }();
   return set;
