@@ -33,6 +33,8 @@
 #include <tessera/image/wang_tiles.hpp>
 #include <tessera/tiling/hash_coloring.hpp>
 
+#include "../tests/core/packed_texture_support.hpp"
+
 // ---- heap accounting (live and peak bytes)
 namespace {
 std::atomic<std::int64_t> live_bytes{0}, peak_bytes{0};
@@ -59,44 +61,10 @@ void operator delete(void* p, std::size_t) noexcept { operator delete(p); }
 
 using namespace tessera;
 
-// ---- the engine's texture: RGBA8 packed in uint32, with and without the contiguous trait
-namespace {
-struct texture {
-  index_t w = 0, h = 0;
-  std::vector<std::uint32_t> texels;
-};
-struct texture_no_trait : texture {};
-template <class T>
-T make_texture(index_t w, index_t h) {
-  T t;
-  t.w = w;
-  t.h = h;
-  t.texels.assign(std::size_t(w * h), 0);
-  return t;
-}
-template <class Tex>
-struct texture_traits {
-  using rgba8 = pixel<std::uint8_t, 4>;
-  static index_t width(const Tex& t) { return t.w; }
-  static index_t height(const Tex& t) { return t.h; }
-  static rgba8 read(const Tex& t, index_t x, index_t y) {
-    const std::uint32_t v = t.texels[std::size_t(y * t.w + x)];
-    return {std::uint8_t(v), std::uint8_t(v >> 8), std::uint8_t(v >> 16), std::uint8_t(v >> 24)};
-  }
-  static void write(Tex& t, index_t x, index_t y, const rgba8& p) {
-    t.texels[std::size_t(y * t.w + x)] =
-        std::uint32_t(p[0]) | std::uint32_t(p[1]) << 8 | std::uint32_t(p[2]) << 16 | std::uint32_t(p[3]) << 24;
-  }
-};
-}  // namespace
-template <>
-struct tessera::image_traits<texture> : texture_traits<texture> {
-  static image_view<std::uint8_t, 4> view(texture& t) {  // little-endian: R, G, B, A in memory
-    return {reinterpret_cast<std::uint8_t*>(t.texels.data()), t.w, t.h};
-  }
-};
-template <>
-struct tessera::image_traits<texture_no_trait> : texture_traits<texture_no_trait> {};
+// ---- the engine's texture: RGBA8 packed in uint32, with and without the contiguous trait (the
+// tests' adapter, tests/core/packed_texture_support.hpp)
+using texture = test_support::packed_texture;
+using texture_no_trait = test_support::packed_texture_slow;
 static_assert(ContiguousImage<texture> && !ContiguousImage<texture_no_trait>);
 
 namespace {
@@ -147,7 +115,7 @@ static void BM_compose_image_view(benchmark::State& state) {
 }
 BENCHMARK(BM_compose_image_view)->Arg(1)->Arg(2)->ArgName("threads")->Unit(benchmark::kMillisecond)->UseRealTime();
 static void BM_compose_adapted_no_trait(benchmark::State& state) {
-  auto t = make_texture<texture_no_trait>(compose_size, compose_size);
+  auto t = texture_no_trait::make(compose_size, compose_size);
   compose_into(state, t);
 }
 BENCHMARK(BM_compose_adapted_no_trait)
@@ -157,7 +125,7 @@ BENCHMARK(BM_compose_adapted_no_trait)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 static void BM_compose_adapted_trait(benchmark::State& state) {
-  auto t = make_texture<texture>(compose_size, compose_size);
+  auto t = texture::make(compose_size, compose_size);
   compose_into(state, t);
 }
 BENCHMARK(BM_compose_adapted_trait)->Arg(1)->Arg(2)->ArgName("threads")->Unit(benchmark::kMillisecond)->UseRealTime();
@@ -169,7 +137,7 @@ static void BM_synthesize_image_view(benchmark::State& state) {
 }
 BENCHMARK(BM_synthesize_image_view)->Arg(1)->Arg(2)->ArgName("threads")->Unit(benchmark::kMillisecond)->UseRealTime();
 static void BM_synthesize_adapted_no_trait(benchmark::State& state) {
-  auto t = make_texture<texture_no_trait>(synth_size, synth_size);
+  auto t = texture_no_trait::make(synth_size, synth_size);
   synthesize_into(state, t);
 }
 BENCHMARK(BM_synthesize_adapted_no_trait)
@@ -179,7 +147,7 @@ BENCHMARK(BM_synthesize_adapted_no_trait)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 static void BM_synthesize_adapted_trait(benchmark::State& state) {
-  auto t = make_texture<texture>(synth_size, synth_size);
+  auto t = texture::make(synth_size, synth_size);
   synthesize_into(state, t);
 }
 BENCHMARK(BM_synthesize_adapted_trait)

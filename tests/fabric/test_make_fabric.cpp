@@ -4,6 +4,7 @@
 
 #include <tessera/fabric/tone_proportions.hpp>
 
+#include "../core/packed_texture_support.hpp"
 #include "fabric_test_support.hpp"
 
 using namespace tessera;
@@ -123,44 +124,10 @@ TEST_CASE("make_fabric rejects bad input and can be cancelled", "[make_fabric]")
   CHECK(make_fabric(src, out, o).code() == status_code::cancelled);
 }
 
-namespace {
-// RGBA8 packed in uint32 (R in the low byte), with and without the contiguous view (core/image_rows.hpp)
-struct packed_fabric_texture {
-  index_t w = 0, h = 0;
-  std::vector<std::uint32_t> texels;
-};
-struct packed_fabric_texture_slow : packed_fabric_texture {};
-template <class Tex>
-struct packed_fabric_traits {
-  using rgba8 = pixel<std::uint8_t, 4>;
-  static index_t width(const Tex& t) { return t.w; }
-  static index_t height(const Tex& t) { return t.h; }
-  static rgba8 read(const Tex& t, index_t x, index_t y) {
-    const std::uint32_t v = t.texels[std::size_t(y * t.w + x)];
-    return {std::uint8_t(v), std::uint8_t(v >> 8), std::uint8_t(v >> 16), std::uint8_t(v >> 24)};
-  }
-  static void write(Tex& t, index_t x, index_t y, const rgba8& p) {
-    t.texels[std::size_t(y * t.w + x)] =
-        std::uint32_t(p[0]) | std::uint32_t(p[1]) << 8 | std::uint32_t(p[2]) << 16 | std::uint32_t(p[3]) << 24;
-  }
-};
-}  // namespace
-template <>
-struct tessera::image_traits<packed_fabric_texture> : packed_fabric_traits<packed_fabric_texture> {
-  static image_view<std::uint8_t, 4> view(packed_fabric_texture& t) {  // little-endian: R, G, B, A in memory
-    return {reinterpret_cast<std::uint8_t*>(t.texels.data()), t.w, t.h};
-  }
-};
-template <>
-struct tessera::image_traits<packed_fabric_texture_slow> : packed_fabric_traits<packed_fabric_texture_slow> {};
-
 TEST_CASE("make_fabric: an adapted texture exposing its rows gets the pixels of the per-pixel path", "[fabric]") {
-  STATIC_REQUIRE(ContiguousImage<packed_fabric_texture>);
-  packed_fabric_texture fast{70, 50, std::vector<std::uint32_t>(70 * 50)};
-  packed_fabric_texture_slow slow;
-  slow.w = 70;
-  slow.h = 50;
-  slow.texels.assign(70 * 50, 0);
+  STATIC_REQUIRE(ContiguousImage<test_support::packed_texture>);
+  auto fast = test_support::packed_texture::make(70, 50);
+  auto slow = test_support::packed_texture_slow::make(70, 50);
   REQUIRE(make_fabric(fabric_preset::twill, fast, {.tile_size = 32}).ok());
   REQUIRE(make_fabric(fabric_preset::twill, slow, {.tile_size = 32}).ok());
   REQUIRE(fast.texels == slow.texels);

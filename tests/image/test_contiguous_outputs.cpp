@@ -13,49 +13,13 @@
 #include <cstdint>
 #include <vector>
 
+#include "../core/packed_texture_support.hpp"
 #include "quilt_test_support.hpp"
 
 using tessera::index_t;
 
-namespace {
-struct texture_rgba8 {
-  index_t w = 0, h = 0;
-  std::vector<std::uint32_t> texels;
-};
-struct texture_rgba8_slow : texture_rgba8 {};
-template <class Tex>
-struct rgba8_traits {
-  using rgba8 = tessera::pixel<std::uint8_t, 4>;
-  static index_t width(const Tex& t) { return t.w; }
-  static index_t height(const Tex& t) { return t.h; }
-  static rgba8 read(const Tex& t, index_t x, index_t y) {
-    const std::uint32_t v = t.texels[std::size_t(y * t.w + x)];
-    return {std::uint8_t(v), std::uint8_t(v >> 8), std::uint8_t(v >> 16), std::uint8_t(v >> 24)};
-  }
-  static void write(Tex& t, index_t x, index_t y, const rgba8& p) {
-    t.texels[std::size_t(y * t.w + x)] =
-        std::uint32_t(p[0]) | std::uint32_t(p[1]) << 8 | std::uint32_t(p[2]) << 16 | std::uint32_t(p[3]) << 24;
-  }
-};
-template <class Tex>
-Tex make_texture(index_t w, index_t h) {
-  Tex t;
-  t.w = w;
-  t.h = h;
-  t.texels.assign(std::size_t(w * h), 0xCDCDCDCDu);
-  return t;
-}
-}  // namespace
-
-static_assert(std::endian::native == std::endian::little);  // R in the low byte is R first in memory
-template <>
-struct tessera::image_traits<texture_rgba8> : rgba8_traits<texture_rgba8> {
-  static tessera::image_view<std::uint8_t, 4> view(texture_rgba8& t) {
-    return {reinterpret_cast<std::uint8_t*>(t.texels.data()), t.w, t.h};
-  }
-};
-template <>
-struct tessera::image_traits<texture_rgba8_slow> : rgba8_traits<texture_rgba8_slow> {};
+using texture_rgba8 = test_support::packed_texture;
+using texture_rgba8_slow = test_support::packed_texture_slow;
 
 TEST_CASE("contiguous outputs: compose_tiles into an adapted texture equals the generic path and a view",
           "[image_rows]") {
@@ -69,8 +33,8 @@ TEST_CASE("contiguous outputs: compose_tiles into an adapted texture equals the 
   tessera::thread_pool_executor pool(2);
   for (const tessera::compose_options o :
        {tessera::compose_options{}, tessera::compose_options{.x = -37, .y = 5, .outline = true}}) {
-    auto fast = make_texture<texture_rgba8>(53, 41);
-    auto slow = make_texture<texture_rgba8_slow>(53, 41);
+    auto fast = texture_rgba8::make(53, 41, 0xCDCDCDCDu);
+    auto slow = texture_rgba8_slow::make(53, 41, 0xCDCDCDCDu);
     std::vector<std::uint32_t> raw(53 * 41);
     auto view = tessera::make_image_view<4>(reinterpret_cast<std::uint8_t*>(raw.data()), 53, 41).value();
     REQUIRE(tessera::compose_tiles(*set4, *plane, fast, o, pool).ok());
@@ -90,8 +54,8 @@ TEST_CASE("contiguous outputs: synthesize and synthesize_aligned into an adapted
   const auto ex = quilt_test::exemplar<std::uint8_t, 4>(tessera::exemplar_kind::bricks, 48);
   const auto model = tessera::build_patch_model(ex, {.patch_width = 12, .patch_height = 12, .overlap = 4}).value();
   const tessera::patch_synthesis_options o{.origin = {-20, 33}, .seed = 5};
-  auto fast = make_texture<texture_rgba8>(70, 50);
-  auto slow = make_texture<texture_rgba8_slow>(70, 50);
+  auto fast = texture_rgba8::make(70, 50, 0xCDCDCDCDu);
+  auto slow = texture_rgba8_slow::make(70, 50, 0xCDCDCDCDu);
   tessera::thread_pool_executor pool(2);
   REQUIRE(tessera::synthesize(model, fast, o, pool).ok());
   REQUIRE(tessera::synthesize(model, slow, o).ok());
