@@ -56,10 +56,10 @@ class mesh_sink {
                 "mesh_sink indices are uint16_t or uint32_t");
 
  public:
-  using scalar_type = Scalar;
-  using index_type = Index;
+  using scalar_type = Scalar;  ///< position type written (float or double)
+  using index_type = Index;    ///< index type written (uint16_t or uint32_t)
   /// Asked for buffers holding at least `vertex_bytes` bytes and `index_count` indices (their
-  /// current contents may be dropped: nothing has been written yet). Returns an error to refuse.
+  /// current contents may be dropped: nothing of the mesh being prepared has been written yet). Returns an error to refuse.
   using grow_function = std::function<status(std::size_t vertex_bytes, std::size_t index_count, mesh_buffers<Index>&)>;
   /// Most vertices a sink takes: 65535 for uint16, 2^32 - 1 for uint32 (the all-ones index stays
   /// unused: it is the primitive-restart index of OpenGL, Vulkan and Direct3D; as in make_mesh_view).
@@ -128,11 +128,13 @@ class mesh_sink {
     d[2] = static_cast<Index>(c);
   }
 
-  /// Counts recorded by the last successful prepare().
+  /// Vertex count recorded by the last successful prepare().
   [[nodiscard]] index_t num_vertices() const noexcept { return vertices_; }
+  /// Face count recorded by the last successful prepare().
   [[nodiscard]] index_t num_faces() const noexcept { return faces_; }
   /// The buffers written (after growing, the callback's).
   [[nodiscard]] const mesh_buffers<Index>& buffers() const noexcept { return buf_; }
+  /// Where positions sit in a vertex record (as given; stride() resolves a 0 stride).
   [[nodiscard]] const vertex_layout& layout() const noexcept { return layout_; }
   /// Bytes from one vertex record to the next (the layout's stride, or 3 * sizeof(Scalar) for 0).
   [[nodiscard]] std::size_t stride() const noexcept { return stride_; }
