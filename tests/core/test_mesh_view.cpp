@@ -91,3 +91,23 @@ TEST_CASE("mesh_view: index, NaN and degenerate problems are found by validate_m
   REQUIRE(tessera::validate_mesh(*tessera::make_mesh_view(vb.data(), 3, ok.data(), 1, bad_uv.data())).code() ==
           status_code::invalid_argument);
 }
+
+TEST_CASE("mesh_view: 16-bit index buffers, and the 16-bit vertex limit", "[mesh_view]") {
+  const std::vector<float> vb = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0};
+  const std::vector<std::uint16_t> ib = {0, 1, 2, 2, 1, 3};
+  auto v = tessera::make_mesh_view(vb.data(), 4, ib.data(), 2);
+  REQUIRE(v.ok());
+  STATIC_REQUIRE(tessera::Mesh<tessera::mesh_view<float, std::uint16_t>>);
+  REQUIRE(tessera::validate_mesh(*v).ok());
+  REQUIRE(v->face_vertex(1, 2) == 3);
+  REQUIRE(tessera::vertex_position(*v, 3) == tessera::vec3{1, 1, 0});
+  // 65535 vertices fit (0xFFFF stays free: the primitive-restart index); 65536 do not, and say why
+  REQUIRE(tessera::make_mesh_view(vb.data(), 65535, ib.data(), 2).ok());
+  auto over = tessera::make_mesh_view(vb.data(), 65536, ib.data(), 2);
+  REQUIRE(over.error().code() == status_code::size_overflow);
+  REQUIRE(over.error().message().find("16-bit indices") != std::string::npos);
+  REQUIRE(over.error().message().find("65535") != std::string::npos);
+  const std::vector<std::uint16_t> out_of_range = {0, 1, 4};
+  REQUIRE(tessera::validate_mesh(*tessera::make_mesh_view(vb.data(), 4, out_of_range.data(), 1)).code() ==
+          status_code::out_of_range);
+}

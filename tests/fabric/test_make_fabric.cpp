@@ -4,6 +4,7 @@
 
 #include <tessera/fabric/tone_proportions.hpp>
 
+#include "../core/packed_texture_support.hpp"
 #include "fabric_test_support.hpp"
 
 using namespace tessera;
@@ -121,4 +122,13 @@ TEST_CASE("make_fabric rejects bad input and can be cancelled", "[make_fabric]")
   fabric_options o{.perturbation = {.generations = 2}};
   o.progress.callback = [](double f, std::string_view) { return f < 0.5; };
   CHECK(make_fabric(src, out, o).code() == status_code::cancelled);
+}
+
+TEST_CASE("make_fabric: an adapted texture exposing its rows gets the pixels of the per-pixel path", "[fabric]") {
+  STATIC_REQUIRE(ContiguousImage<test_support::packed_texture>);
+  auto fast = test_support::packed_texture::make(70, 50);
+  auto slow = test_support::packed_texture_slow::make(70, 50);
+  REQUIRE(make_fabric(fabric_preset::twill, fast, {.tile_size = 32}).ok());
+  REQUIRE(make_fabric(fabric_preset::twill, slow, {.tile_size = 32}).ok());
+  REQUIRE(fast.texels == slow.texels);
 }

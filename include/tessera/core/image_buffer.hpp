@@ -12,6 +12,7 @@
 #include "config.hpp"
 #include "image.hpp"
 #include "image_checks.hpp"
+#include "image_rows.hpp"
 #include "image_view.hpp"
 #include "status.hpp"
 
@@ -133,12 +134,18 @@ result<image_buffer<channel_t<I>, channels_v<I>>> to_buffer(const I& img, std::s
   return to_buffer<channel_t<I>, channels_v<I>>(img, what);
 }
 
-/// Copies `src` into `dst` pixel by pixel, converting pixel types. The sizes must match.
+/// Copies `src` into `dst` pixel by pixel, converting pixel types. The sizes must match. A
+/// ContiguousImage destination (core/image_rows.hpp) is written through its view.
 template <Image S, WritableImage D>
 status copy_image(const S& src, D& dst) {
   if (auto s = validate_image(src, "source"); !s) return s;
   if (auto s = validate_image(dst, "destination"); !s) return s;
   if (auto s = validate_same_size(src, "source", dst, "destination"); !s) return s;
+  if constexpr (ContiguousImage<D>) {  // adapted destination over rows of memory: write its view
+    auto view = detail::checked_contiguous_view(dst, "copy_image: destination");
+    if (!view) return view.error();
+    return copy_image(src, *view);
+  }
   const index_t w = width_of(src), h = height_of(src);
   for (index_t y = 0; y < h; ++y)
     for (index_t x = 0; x < w; ++x)

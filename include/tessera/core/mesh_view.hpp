@@ -1,6 +1,6 @@
 // tessera/core/mesh_view.hpp: a non-owning triangle mesh over raw buffers, the way engines keep
 // them: positions as float or double (x, y, z first in each vertex record, records `position_stride`
-// scalars apart, so interleaved vertex buffers fit), 32-bit indices three per face, and optional
+// scalars apart, so interleaved vertex buffers fit), 16- or 32-bit indices three per face, and optional
 // per-corner uvs (two floats per corner, six per face). Models Mesh and UVMesh.
 #pragma once
 
@@ -22,8 +22,9 @@ template <class Scalar = float, class Index = std::uint32_t>
 class mesh_view {
   static_assert(std::is_same_v<Scalar, float> || std::is_same_v<Scalar, double>,
                 "mesh_view positions are float or double");
-  static_assert(std::is_same_v<Index, std::uint32_t> || std::is_same_v<Index, std::int32_t>,
-                "mesh_view indices are 32-bit");
+  static_assert(std::is_same_v<Index, std::uint32_t> || std::is_same_v<Index, std::int32_t> ||
+                    std::is_same_v<Index, std::uint16_t>,
+                "mesh_view indices are uint16_t, uint32_t or int32_t");
 
  public:
   mesh_view() = default;
@@ -89,8 +90,8 @@ result<mesh_view<Scalar, Index>> make_mesh_view(const Scalar* positions, index_t
         detail::cat("mesh_view: position_stride must be at least 3, got ", position_stride));
   constexpr auto index_limit = static_cast<index_t>(std::numeric_limits<Index>::max());
   if (vertex_count > index_limit)
-    return status::size_overflow(detail::cat("mesh_view: ", vertex_count,
-                                             " vertices exceed what 32-bit indices can address (", index_limit, ")"));
+    return status::size_overflow(detail::cat("mesh_view: ", vertex_count, " vertices exceed what ", 8 * sizeof(Index),
+                                             "-bit indices can address (", index_limit, ")"));
   if (vertex_count > std::numeric_limits<index_t>::max() / position_stride)
     return status::size_overflow(
         detail::cat("mesh_view: ", vertex_count, " vertices x position_stride ", position_stride, " overflows"));

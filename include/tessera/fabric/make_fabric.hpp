@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <optional>
 #include <string_view>
+#include <type_traits>
 #include <utility>
 
 #include "../core/config.hpp"
@@ -26,6 +27,7 @@
 #include "../core/image.hpp"
 #include "../core/image_buffer.hpp"
 #include "../core/image_checks.hpp"
+#include "../core/image_rows.hpp"
 #include "../core/progress.hpp"
 #include "../core/status.hpp"
 #include "../image/exemplars.hpp"
@@ -83,9 +85,19 @@ status finish_fabric(image_buffer<T, C>& square, O& out, const fabric_options& o
     if (auto s = life_perturbation(mapped, mapped, p, exec); !s) return s;
   }
   const index_t n = mapped.width(), w = width_of(out), h = height_of(out);
-  for (index_t y = 0; y < h; ++y)
-    for (index_t x = 0; x < w; ++x)
-      image_traits<O>::write(out, x, y, convert_pixel<pixel_t<O>>(mapped.read(x % n, y % n)));
+  const auto tile = [&](auto& dst) {
+    using D = std::remove_cvref_t<decltype(dst)>;
+    for (index_t y = 0; y < h; ++y)
+      for (index_t x = 0; x < w; ++x)
+        image_traits<D>::write(dst, x, y, convert_pixel<pixel_t<D>>(mapped.read(x % n, y % n)));
+  };
+  if constexpr (ContiguousImage<O>) {  // adapted output over rows of memory (core/image_rows.hpp)
+    auto view = checked_contiguous_view(out, "make_fabric: output");
+    if (!view) return view.error();
+    tile(*view);
+  } else {
+    tile(out);
+  }
   o.progress.report(1.0, "done");
   return {};
 }

@@ -1,7 +1,9 @@
 // tessera/geometry/tile_geometric_plane.hpp: lays out a geometric Wang tile set on a C x R grid by
 // any TileColoring and welds it into one mesh: the border vertices of touching tiles (bit-identical
 // in tile coordinates, paper 000 §3.2) become one vertex, so elements crossing tile edges come out
-// closed. Also the border layout of a tile and the border-consistency count of a tile set.
+// closed. Also the border layout of a tile and the border-consistency count of a tile set. The
+// plane comes out as a tri_mesh, or straight into an engine's vertex and index buffers through a
+// mesh_sink (core/mesh_sink.hpp: float or double positions, uint16 or uint32 indices, any stride).
 #pragma once
 
 #include <algorithm>
@@ -14,6 +16,7 @@
 
 #include "../core/config.hpp"
 #include "../core/executor.hpp"
+#include "../core/mesh_sink.hpp"
 #include "../core/mesh_topology.hpp"
 #include "../core/status.hpp"
 #include "../core/tile_coloring.hpp"
@@ -151,6 +154,22 @@ inline result<index_t> tile_set_border_mismatch(const geometric_tile_set& set, d
   return mismatches;
 }
 
+namespace detail {
+/// Outputs of geometric_plane_layout::write_cell: tessera's arrays, or an engine's mesh_sink.
+struct plane_array_out {
+  vec3* positions;
+  std::array<index_t, 3>* faces;
+  void position(index_t v, const vec3& p) const noexcept { positions[v] = p; }
+  void face(index_t f, index_t a, index_t b, index_t c) const noexcept { faces[f] = {a, b, c}; }
+};
+template <class Scalar, class Index>
+struct plane_sink_out {
+  const mesh_sink<Scalar, Index>* sink;
+  void position(index_t v, const vec3& p) const noexcept { sink->set_position(v, p); }
+  void face(index_t f, index_t a, index_t b, index_t c) const noexcept { sink->set_face(f, a, b, c); }
+};
+}  // namespace detail
+
 /// The welded layout of a tiled plane, prepared once by plan_geometric_plane: which tile fills each
 /// cell, where each cell's vertices and faces land in the output, and per tile the precomputed
 /// weld maps of its borders. Vertices on a tile's south and east sides belong to the cell below or
@@ -183,7 +202,23 @@ class geometric_plane_layout {
       return status::invalid_argument(detail::cat("geometric_plane_layout::write: storage for ", positions.size(),
                                                   " vertices and ", faces.size(), " faces, the plane has ",
                                                   num_vertices(), " and ", num_faces()));
-    exec.parallel_for(0, cols_ * rows_, [&](index_t cell) { write_cell(cell, positions.data(), faces.data()); });
+    const detail::plane_array_out out{positions.data(), faces.data()};
+    exec.parallel_for(0, cols_ * rows_, [&](index_t cell) { write_cell(cell, out); });
+    return {};
+  }
+
+  /// Writes the welded plane into an engine's buffers through `sink` (core/mesh_sink.hpp), with
+  /// no tri_mesh in between: sink.prepare(num_vertices(), num_faces()) (growing or refusing short
+  /// buffers, refusing more vertices than 16-bit indices address), then every position (converted
+  /// from the double computation, so a double sink holds exactly what write() stores) and face.
+  /// Cells are written in parallel through `exec`; the output is identical for every executor.
+  /// Errors: those of prepare(), with nothing written. O(output size); thread-safe (const).
+  template <class Scalar, class Index, Executor E = serial_executor>
+  status write(mesh_sink<Scalar, Index>& sink, E&& exec = {}) const {
+    if (auto s = sink.prepare(num_vertices(), num_faces()); !s)
+      return status(s.code(), detail::cat("geometric_plane_layout::write: ", s.message()));
+    const detail::plane_sink_out<Scalar, Index> out{&sink};
+    exec.parallel_for(0, cols_ * rows_, [&](index_t cell) { write_cell(cell, out); });
     return {};
   }
 
@@ -198,7 +233,8 @@ class geometric_plane_layout {
     std::vector<std::array<std::int32_t, 3>> faces;  // local ids: < owned.size() owned rank, then south k, then east k
   };
 
-  void write_cell(index_t cell, vec3* out_pos, std::array<index_t, 3>* out_faces) const {
+  template <class Out>
+  void write_cell(index_t cell, const Out& out) const {
     const index_t r = cell / cols_, c = cell % cols_;
     const std::size_t t = detail::to_size(type_[detail::to_size(cell)]);
     const tile_plan& P = plan_[t];
@@ -206,15 +242,15 @@ class geometric_plane_layout {
     const vec3 off{static_cast<double>(c) * w_, static_cast<double>(rows_ - 1 - r) * w_, 0};
     const index_t base = vbase_[detail::to_size(cell)];
     const std::size_t no = P.owned.size(), ns = P.south.size(), ne = P.east.size();
-    vec3* dst = out_pos + base;
-    for (std::size_t i = 0; i < no; ++i) dst[i] = src[detail::to_size(P.owned[i])] + off;
+    for (std::size_t i = 0; i < no; ++i)
+      out.position(base + static_cast<index_t>(i), src[detail::to_size(P.owned[i])] + off);
     // global ids of the south and east vertices: new ones on the plane border, else the neighbour's
     thread_local std::vector<index_t> border;
     border.resize(ns + ne);
     index_t extra = base + static_cast<index_t>(no);
     if (r == rows_ - 1) {
       for (std::size_t k = 0; k < ns; ++k) {
-        dst[no + k] = src[detail::to_size(P.south[k])] + off;
+        out.position(base + static_cast<index_t>(no + k), src[detail::to_size(P.south[k])] + off);
         border[k] = extra + static_cast<index_t>(k);
       }
       extra += static_cast<index_t>(ns);
@@ -224,9 +260,8 @@ class geometric_plane_layout {
       for (std::size_t k = 0; k < ns; ++k) border[k] = vbase_[below] + B.north_rank[k];
     }
     if (c == cols_ - 1) {
-      vec3* de = out_pos + extra;
       for (std::size_t k = 0; k < ne; ++k) {
-        de[k] = src[detail::to_size(P.east[k])] + off;
+        out.position(extra + static_cast<index_t>(k), src[detail::to_size(P.east[k])] + off);
         border[ns + k] = extra + static_cast<index_t>(k);
       }
     } else {
@@ -236,11 +271,11 @@ class geometric_plane_layout {
     }
     const std::int32_t owned = static_cast<std::int32_t>(no);
     const index_t* bd = border.data();
-    std::array<index_t, 3>* df = out_faces + fbase_[detail::to_size(cell)];
+    const index_t fb = fbase_[detail::to_size(cell)];
     for (std::size_t f = 0; f < P.faces.size(); ++f) {
       const auto& l = P.faces[f];
-      df[f] = {l[0] < owned ? base + l[0] : bd[l[0] - owned], l[1] < owned ? base + l[1] : bd[l[1] - owned],
-               l[2] < owned ? base + l[2] : bd[l[2] - owned]};
+      out.face(fb + static_cast<index_t>(f), l[0] < owned ? base + l[0] : bd[l[0] - owned],
+               l[1] < owned ? base + l[1] : bd[l[1] - owned], l[2] < owned ? base + l[2] : bd[l[2] - owned]);
     }
   }
 
@@ -402,6 +437,19 @@ result<tri_mesh> tile_geometric_plane(const geometric_tile_set& set, const C& co
   out.faces.resize(detail::to_size(plan->num_faces()));
   if (auto s = plan->write(out.positions, out.faces, exec); !s) return s;
   return out;
+}
+
+/// tile_geometric_plane written straight into an engine's buffers through `sink`
+/// (core/mesh_sink.hpp): float or double positions at any offset and stride, uint16 or uint32
+/// indices, no double/int64 tri_mesh in between. A double/uint32 sink receives exactly the
+/// positions and indices of the tri_mesh overload. Errors: those of plan_geometric_plane and of
+/// mesh_sink::prepare (too many vertices for 16-bit indices, short buffers), with nothing written.
+template <TileColoring C, class Scalar, class Index, Executor E = serial_executor>
+status tile_geometric_plane(const geometric_tile_set& set, const C& coloring, index_t cols, index_t rows,
+                            mesh_sink<Scalar, Index>& sink, E&& exec = {}) {
+  auto plan = plan_geometric_plane(set, coloring, cols, rows);
+  if (!plan) return plan.error();
+  return plan->write(sink, exec);
 }
 
 TESSERA_NAMESPACE_END

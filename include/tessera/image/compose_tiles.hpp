@@ -8,8 +8,9 @@
 // colouring (hash_coloring) any window works, negative coordinates included.
 //
 // Composition copies whole tile rows (one memcpy per tile per output row) in parallel row bands
-// when the output is an image_view / image_buffer of the set's own pixel type; any other writable
-// image is written pixel by pixel through image_traits.
+// when the output is an image_view / image_buffer of the set's own pixel type, or an adapted image
+// exposing such a view (ContiguousImage, core/image_rows.hpp); any other writable image is written
+// pixel by pixel through image_traits.
 #pragma once
 
 #include <algorithm>
@@ -24,6 +25,7 @@
 #include "../core/image.hpp"
 #include "../core/image_buffer.hpp"
 #include "../core/image_checks.hpp"
+#include "../core/image_rows.hpp"
 #include "../core/image_view.hpp"
 #include "../core/status.hpp"
 #include "../tiling/tile_lookup.hpp"
@@ -50,7 +52,8 @@ inline constexpr bool is_raw_output = std::is_same_v<O, image_view<T, C>> || std
 ///
 /// - set: tiles and their edges; coloring: a GridTileColoring or a PlaneTileColoring
 ///   (tiling/tile_lookup.hpp) with the set's colour counts.
-/// - out: any WritableImage; fastest as image_view / image_buffer of the set's pixel type.
+/// - out: any WritableImage; fastest as image_view / image_buffer of the set's pixel type, or as a
+///   ContiguousImage whose view has that type (core/image_rows.hpp).
 /// - options: window origin, tile-border outline, variant seed.
 /// - exec: parallel over bands of output rows; output bit-identical for any executor.
 /// Errors (nothing is written): empty set or output; colour counts differing from the set's; a grid
@@ -65,6 +68,11 @@ requires GridTileColoring<Coloring> || PlaneTileColoring<Coloring>
                                    const compose_options& options = {}, X&& exec = {}) {
   if (set.size() == 0 || set.tile_size() <= 0) return status::invalid_argument("compose_tiles: the tile set is empty");
   if (auto s = validate_image(out, "output"); !s) return s;
+  if constexpr (ContiguousImage<O>) {  // adapted image over rows of memory: write through its view
+    auto view = detail::checked_contiguous_view(out, "compose_tiles: output");
+    if (!view) return view.error();
+    return compose_tiles(set, coloring, *view, options, std::forward<X>(exec));
+  }
   const tile_set_edges& edges = set.edges();
   if (coloring.num_colors(side_north) != edges.horizontal_colors() ||
       coloring.num_colors(side_east) != edges.vertical_colors())

@@ -24,6 +24,7 @@
 #include "../core/image.hpp"
 #include "../core/image_buffer.hpp"
 #include "../core/image_checks.hpp"
+#include "../core/image_rows.hpp"
 #include "../core/image_view.hpp"
 #include "../core/progress.hpp"
 #include "../core/status.hpp"
@@ -116,6 +117,11 @@ template <class T, int C, class O, class Ex>
 status render_window(const patch_plan& plan, const image_buffer<T, C>& ex, O& out, const tessera::progress& progress,
                      Ex&& exec) {
   using OT = std::remove_cvref_t<O>;
+  if constexpr (ContiguousImage<OT>) {  // adapted image over rows of memory: render through its view
+    auto view = checked_contiguous_view(out, "synthesize: output");
+    if (!view) return view.error();
+    return render_window(plan, ex, *view, progress, std::forward<Ex>(exec));
+  }
   const plan_renderer<T, C> renderer(plan, ex);
   const index_t w = plan.w, h = plan.h, band = 16, bands = (h + band - 1) / band;
   const bool report = progress.callback || progress.token != nullptr;
@@ -158,8 +164,8 @@ status render_window(const patch_plan& plan, const image_buffer<T, C>& ex, O& ou
 ///
 /// The pixel work copies exemplar row spans (memcpy) and blends only overlap strips with precomputed
 /// fixed-point weights; rows run in parallel bands on `exec`. When `out` is an image_view or
-/// image_buffer of the model's channel type and count, rows are written in place; other writable
-/// images receive converted pixels through image_traits::write, from the executor's threads, on
+/// image_buffer of the model's channel type and count (or a ContiguousImage whose view is, see
+/// core/image_rows.hpp), rows are written in place; other writable images receive converted pixels through image_traits::write, from the executor's threads, on
 /// disjoint rows.
 ///
 /// Errors: invalid_argument for an empty output or model, phase_radius < -1, min_phase_group < 1;
