@@ -91,18 +91,20 @@ options or an exemplar the library refuses, with its message.)doc");
   c.def(
       "synthesize",
       [](const any_patch_model& self, index_t width, index_t height, index_t x, index_t y, std::uint64_t seed,
-         int threads, const py::object& progress, const py::object& seams) {
+         int threads, const py::object& progress, const py::object& seams, const py::object& out) {
         synthesis_request r{.width = width,
                             .height = height,
                             .origin = {x, y},
                             .seed = seed,
                             .seams = parse_seams(seams, self),
-                            .threads = threads};
+                            .threads = threads,
+                            .out = out};
         call_progress p(progress);
         return by_type(self.format.type, [&]<class T>() { return synthesize_model<T>(self, r, p); });
       },
       py::arg("width"), py::arg("height"), py::arg("x") = 0, py::arg("y") = 0, py::arg("seed") = 0,
       py::arg("threads") = 0, py::arg("progress") = py::none(), py::arg("seams") = py::none(),
+      py::arg("out") = py::none(),
       R"doc(The width x height window at (x, y) of the unbounded texture of this model and `seed`, as an
 H x W x C array of the exemplar's dtype. Any window is a pure function of (model, seed, x, y): windows
 tile the texture seamlessly and equal `tessera synth --window x,y,w,h --seed S` of the CLI (which
@@ -111,7 +113,10 @@ builds its model with default options, seams=True for --seams cut) pixel for pix
 built with seams=True, else "feather", as the CLI does. Releases the GIL; `threads` (0: all cores);
 `progress` as for the constructor, and Ctrl-C raises KeyboardInterrupt. Raises tessera.InvalidArgument
 for a non-positive size, tessera.SizeOverflow for a window too large to allocate, tessera.OutOfRange for
-a window beyond the texture plane of +-2^52.)doc");
+a window beyond the texture plane of +-2^52. `out`: an array to render into instead of a new one (shape
+(height, width, C) or (height, width) for C = 1, the model's dtype, writable, packed pixels in rows; row
+padding allowed); it is returned. Reusing one buffer for many windows avoids the allocation and page
+faults of a new array, which are most of the Python-side cost of a fast synthesis.)doc");
   c.def("save", &save, "The model as bytes (io/patch_model_file.hpp, format version 1); PatchModel.load reads them.");
   c.def_static("load", &load, py::arg("data"), py::arg("threads") = 0,
                R"doc(A model from the bytes of save(). Raises tessera.ParseError (a ValueError) for bytes that are

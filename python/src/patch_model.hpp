@@ -34,6 +34,9 @@ struct synthesis_request {
   std::uint64_t seed = 0;
   seam_mode seams = seam_mode::feather;
   int threads = 0;
+  /// An array to render into (H x W x C, or H x W for one channel, of the model's dtype, writable,
+  /// packed pixels in rows), or None for a new array.
+  py::object out = py::none();
 };
 
 /// Builds a model from an exemplar array of channel type T (GIL released while building).

@@ -19,7 +19,11 @@ any_patch_model build_model(const py::array& exemplar, const patch_model_options
       [&]<int C>(const image_view<const T, C>& view) {
         patch_model_options o = options;
         o.progress = progress.sink();
-        auto built = with_executor(threads, [&](auto& exec) { return build_patch_model(view, o, exec); });
+        // The exemplar as an image_buffer: the type tessera::compiled instantiates build_patch_model for
+        // (docs/compile_once.md), so the module does not compile the builder again; a copy of the
+        // exemplar costs nothing next to building the model.
+        const auto ex = value_or_raise(to_buffer<T, C>(view, "PatchModel: exemplar"));
+        auto built = with_executor(threads, [&](auto& exec) { return build_patch_model(ex, o, exec); });
         auto model = progress.value_or_raise(std::move(built));
         out.model = models_of<T>(std::make_shared<const patch_model<T, C>>(std::move(model)));
         out.format = {channel_type_of<T>, C};
@@ -36,8 +40,24 @@ py::array synthesize_model(const any_patch_model& model, const synthesis_request
         so.progress = progress.sink();
         // synthesized in place into an uninitialized NumPy array (no fill, no copy)
         check(validate_image_extent(r.width, r.height, C, "synthesize"));
-        py::array out = new_array<T>(r.width, r.height, C);
-        image_view<T, C> view(static_cast<T*>(out.mutable_data()), r.width, r.height);
+        py::array out;
+        image_view<T, C> view;
+        if (r.out.is_none()) {
+          out = new_array<T>(r.width, r.height, C);
+          view = image_view<T, C>(static_cast<T*>(out.mutable_data()), r.width, r.height);
+        } else {
+          // the caller's array, rendered in place (no allocation: repeated windows reuse one buffer)
+          if (!py::isinstance<py::array>(r.out)) throw py::type_error("synthesize: out must be a NumPy array or None");
+          out = py::reinterpret_borrow<py::array>(r.out);
+          if (!detail_py::is_dtype<T>(out))
+            throw py::type_error(cat("synthesize: out has dtype ", dtype_name(out), ", the model renders ",
+                                     py::str(dtype_of<T>()).cast<std::string>()));
+          if (channels_of(out, "synthesize: out") != C || out.shape(0) != r.height || out.shape(1) != r.width)
+            raise_invalid(cat("synthesize: out must have shape (", r.height, ", ", r.width, ", ", C, ")"));
+          if (!out.writeable()) raise_invalid("synthesize: out is read-only");
+          const auto checked = detail_py::view_of<T, C>(out, "synthesize: out");
+          view = image_view<T, C>(static_cast<T*>(out.mutable_data()), r.width, r.height, checked.stride());
+        }
         auto st = with_executor(r.threads, [&](auto& exec) { return synthesize(*m, view, so, exec); });
         (void)progress.value_or_raise(std::move(st));
         return out;

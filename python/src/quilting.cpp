@@ -49,7 +49,9 @@ void bind_quilting(py::module_& m) {
               using T = typename V::value_type;
               constexpr int C = V::channels;
               auto out = value_or_raise(image_buffer<T, C>::create(width, height));
-              const status s = with_executor(threads, [&](auto& exec) { return quilt(ex, out, o, exec); });
+              // image_buffer in and out: the instantiation tessera::compiled holds (docs/compile_once.md)
+              const auto exb = value_or_raise(to_buffer<T, C>(ex, "quilt: exemplar"));
+              const status s = with_executor(threads, [&](auto& exec) { return quilt(exb, out, o, exec); });
               p.check(s);
               return to_array(std::move(out));
             },

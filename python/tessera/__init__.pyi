@@ -43,7 +43,8 @@ class PatchModel:
                  search_pool: int = 16, refine_iterations: int = 4, seams: bool = False, threads: int = 0,
                  progress: Progress = None) -> None: ...
     def synthesize(self, width: int, height: int, x: int = 0, y: int = 0, seed: int = 0, threads: int = 0,
-                   progress: Progress = None, seams: Optional[Literal["feather", "cut"]] = None) -> Image:
+                   progress: Progress = None, seams: Optional[Literal["feather", "cut"]] = None,
+                   out: Optional[Image] = None) -> Image:
         """The width x height window at (x, y) of the unbounded texture of (model, seed)."""
     def save(self) -> bytes:
         """The model as bytes (format version 1)."""
@@ -91,6 +92,53 @@ def constrained_quilt(image: Image, mask: npt.NDArray[Union[np.bool_, np.uint8]]
                       boundary_weight: float = 64.0, seed: int = 1, threads: int = 0,
                       progress: Progress = None) -> Image:
     """Fills the masked pixels of ``image`` by constrained quilting; other pixels are unchanged."""
+
+# ---- Wang tiles (Cohen et al. 2003) ---------------------------------------------------------------
+
+Coloring = Union[Literal["hash", "scanline", "periodic"], npt.NDArray[np.integer]]
+
+def build_wang_tiles(exemplar: Image, *, tile_size: int = 64, horizontal_colors: int = 2, vertical_colors: int = 2,
+                     mip_levels: int = 0, overlap: int = 0, patch_size: int = 0, border: int = 0,
+                     tolerance: float = 0.1, boundary_weight: float = 64.0, min_candidates: int = 4, seed: int = 1,
+                     threads: int = 0, progress: Progress = None) -> "WangTileSet":
+    """The complete Wang tile set (horizontal_colors**2 * vertical_colors**2 tiles) of an exemplar."""
+
+class WangTileSet:
+    """Square image tiles with edge colours; immutable."""
+    @staticmethod
+    def load(directory: str, dtype: Optional[Literal["uint8", "uint16", "float32"]] = None,
+             channels: int = 0) -> "WangTileSet":
+        """Reads a tile directory (tiles.json + tile_<i>.png)."""
+    def save(self, directory: str) -> None:
+        """Writes DIR/tiles.json and DIR/tile_<i>.png."""
+    @property
+    def tile_size(self) -> int: ...
+    @property
+    def num_tiles(self) -> int: ...
+    def __len__(self) -> int: ...
+    @property
+    def horizontal_colors(self) -> int: ...
+    @property
+    def vertical_colors(self) -> int: ...
+    @property
+    def shared_border(self) -> int: ...
+    @property
+    def exact_mip_levels(self) -> int: ...
+    @property
+    def dtype(self) -> np.dtype: ...
+    @property
+    def channels(self) -> int: ...
+    @property
+    def edges(self) -> npt.NDArray[np.int32]:
+        """num_tiles x 4 edge colours [north, east, south, west]."""
+    def tile(self, index: int) -> Image: ...
+    def compose(self, width: int, height: int, x: int = 0, y: int = 0, *, coloring: Coloring = "hash",
+                seed: int = 1, variant_seed: int = 1, period: int = 4, outline: bool = False,
+                threads: int = 0) -> Image:
+        """The window (x, y, width, height) of the plane tiled through ``coloring``."""
+    def atlas(self, layout: Literal["edge_ordered", "padded"] = "edge_ordered", mip_levels: int = 0,
+              padding: int = 0) -> dict:
+        """The set packed into one texture: image, tile_size, padding, slot_size, mip_levels, slot_col, slot_row."""
 
 # ---- fabric (paper 001) --------------------------------------------------------------------------
 

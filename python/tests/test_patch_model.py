@@ -107,3 +107,30 @@ def test_cli_bit_identity_16_bit_grey(tmp_path, cli):
                     "--patch", "12", "--overlap", "4"], check=True, capture_output=True)
     m = tessera.PatchModel(tessera.read_png(path), patch_width=12, patch_height=12, overlap=4)
     np.testing.assert_array_equal(m.synthesize(70, 50, seed=7), tessera.read_png(out))
+
+
+def test_synthesize_into_out(model):
+    """out=: rendered in place into the caller's array (returned as is), equal to a new array's pixels."""
+    fresh = model.synthesize(48, 40, 5, 9, seed=3)
+    buf = np.zeros((40, 48, 3), dtype=np.uint8)
+    got = model.synthesize(48, 40, 5, 9, seed=3, out=buf)
+    assert got is buf and np.array_equal(buf, fresh)
+    # row padding is fine: a view of a wider array
+    wide = np.zeros((40, 64, 3), dtype=np.uint8)
+    model.synthesize(48, 40, 5, 9, seed=3, out=wide[:, :48])
+    assert np.array_equal(wide[:, :48], fresh) and not wide[:, 48:].any()
+
+
+def test_synthesize_out_refused(model):
+    with pytest.raises(TypeError, match="dtype"):
+        model.synthesize(8, 8, out=np.zeros((8, 8, 3), dtype=np.float32))
+    with pytest.raises(ValueError, match="shape"):
+        model.synthesize(8, 8, out=np.zeros((8, 9, 3), dtype=np.uint8))
+    ro = np.zeros((8, 8, 3), dtype=np.uint8)
+    ro.flags.writeable = False
+    with pytest.raises(ValueError, match="read-only"):
+        model.synthesize(8, 8, out=ro)
+    with pytest.raises(ValueError, match="layout"):
+        model.synthesize(8, 8, out=np.zeros((8, 16, 3), dtype=np.uint8)[:, ::2])
+    with pytest.raises(TypeError):
+        model.synthesize(8, 8, out=[1, 2, 3])

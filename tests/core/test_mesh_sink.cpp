@@ -52,7 +52,7 @@ TEST_CASE("mesh_sink: packed float / uint32 buffers receive the mesh, readable a
     for (int k = 0; k < 3; ++k) REQUIRE(view->face_vertex(f, k) == m.face_vertex(f, k));
 }
 
-TEST_CASE("mesh_sink: double positions are bit-identical; uint16 indices through mesh_view", "[mesh_sink]") {
+TEST_CASE("mesh_sink: double positions are bit-identical, uint16 indices through mesh_view", "[mesh_sink]") {
   const tri_mesh m = strip(7);
   std::vector<double> vb(3 * std::size_t(m.num_vertices()));
   std::vector<std::uint16_t> ib(3 * std::size_t(m.num_faces()));
@@ -68,7 +68,7 @@ TEST_CASE("mesh_sink: double positions are bit-identical; uint16 indices through
   REQUIRE(back == m);  // bit for bit
 }
 
-TEST_CASE("mesh_sink: interleaved records at a byte offset and stride; bytes outside stay untouched", "[mesh_sink]") {
+TEST_CASE("mesh_sink: interleaved records at a byte offset and stride, bytes outside stay untouched", "[mesh_sink]") {
   // property-style: every offset / stride that fits, including unaligned ones
   const tri_mesh m = strip(3);
   const std::size_t nv = std::size_t(m.num_vertices());
@@ -97,7 +97,7 @@ TEST_CASE("mesh_sink: interleaved records at a byte offset and stride; bytes out
   }
 }
 
-TEST_CASE("mesh_sink: short buffers, bad layouts and uint16 overflow are statuses; nothing is written", "[mesh_sink]") {
+TEST_CASE("mesh_sink: short buffers, bad layouts and uint16 overflow are statuses, nothing is written", "[mesh_sink]") {
   const tri_mesh m = strip(4);
   const std::size_t nv = std::size_t(m.num_vertices()), nf = std::size_t(m.num_faces());
   std::vector<float> vb(3 * nv, -1.0f);

@@ -40,8 +40,8 @@ inline constexpr std::uint32_t patch_model_file_version = 1;
 /// A decoded model and the options it was built with (patch sizes resolved; progress empty).
 template <Channel T, int C>
 struct patch_model_file {
-  patch_model<T, C> model;
-  patch_model_options options;
+  patch_model<T, C> model;      ///< the model, rebuilt from the stored exemplar and options
+  patch_model_options options;  ///< the options it was built with, patch sizes resolved
 };
 
 namespace detail {
