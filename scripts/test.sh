@@ -3,7 +3,9 @@
 #   scripts/test.sh               Release build in build/, all tests (unit, CLI, examples, structural)
 #   scripts/test.sh --sanitize    AddressSanitizer + UndefinedBehaviorSanitizer build in build-asan/
 #                                 (-Og; library tests only), same tests except the structural
-#                                 build-shape checks, the examples and the tessera command's tests
+#                                 build-shape checks, the examples, the Python module (an ASan
+#                                 extension cannot load into an uninstrumented interpreter; the
+#                                 C++ it calls is instrumented in the library tests) and the tessera command's tests
 #                                 (its instrumented compile, ~5 minutes of a 2-core CI, kept CI
 #                                 over 40 minutes; the library code it runs is instrumented in the
 #                                 library tests, its file readers in the fuzzers)
@@ -28,7 +30,7 @@ if ((sanitize)); then
   step "configure $build (ASan + UBSan, -Og)"
   configure "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-Og -g1" \
     -DTESSERA_SANITIZE=ON -DTESSERA_BUILD_TESTS=ON -DTESSERA_BUILD_CLI=OFF -DTESSERA_BUILD_EXAMPLES=OFF \
-    -DTESSERA_BUILD_BENCHMARKS=OFF -DTESSERA_WERROR=OFF
+    -DTESSERA_BUILD_BENCHMARKS=OFF -DTESSERA_WERROR=OFF -DTESSERA_BUILD_PYTHON=OFF
   export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1:strict_string_checks=1}
   export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
 else
