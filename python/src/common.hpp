@@ -126,6 +126,21 @@ decltype(auto) visit_image(const py::array& a, F&& f, const char* what = "image"
                            "; convert with array.astype(numpy.float32) or numpy.uint8"));
 }
 
+/// visit_image, with the array copied into an image_buffer<T, C>: calls f(const image_buffer<T, C>&).
+/// For exemplars: the buffer type is the one tessera::compiled instantiates the builders for
+/// (docs/compile_once.md), so the module does not compile them again; the copy costs nothing next to
+/// building a model, a quilt or a tile set.
+template <class F>
+decltype(auto) visit_exemplar(const py::array& a, F&& f, const char* what = "exemplar") {
+  return visit_image(
+      a,
+      [&]<class T, int C>(const image_view<const T, C>& view) -> decltype(auto) {
+        const auto buffer = value_or_raise(to_buffer<T, C>(view, what));
+        return f(buffer);
+      },
+      what);
+}
+
 /// The runtime pixel format of an array (raises like visit_image).
 inline pixel_format format_of(const py::array& a, const char* what = "image") {
   return visit_image(

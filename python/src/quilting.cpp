@@ -42,16 +42,11 @@ void bind_quilting(py::module_& m) {
         quilt_options o = make_options(patch_size, overlap, tolerance, seamless, 64, seed);
         call_progress p(progress);
         o.progress = p.sink();
-        return visit_image(
+        return visit_exemplar(
             exemplar,
-            [&](const auto& ex) {
-              using V = std::remove_cvref_t<decltype(ex)>;
-              using T = typename V::value_type;
-              constexpr int C = V::channels;
+            [&]<class T, int C>(const image_buffer<T, C>& ex) {
               auto out = value_or_raise(image_buffer<T, C>::create(width, height));
-              // image_buffer in and out: the instantiation tessera::compiled holds (docs/compile_once.md)
-              const auto exb = value_or_raise(to_buffer<T, C>(ex, "quilt: exemplar"));
-              const status s = with_executor(threads, [&](auto& exec) { return quilt(exb, out, o, exec); });
+              const status s = with_executor(threads, [&](auto& exec) { return quilt(ex, out, o, exec); });
               p.check(s);
               return to_array(std::move(out));
             },

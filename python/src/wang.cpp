@@ -329,15 +329,10 @@ edge-ordered layout slots follow the edges, Wei's edge_order_index).)doc");
                             .seed = seed};
         call_progress p(progress);
         o.progress = p.sink();
-        return visit_image(
+        return visit_exemplar(
             exemplar,
             [&](const auto& ex) {
-              using V = std::remove_cvref_t<decltype(ex)>;
-              using T = typename V::value_type;
-              constexpr int C = V::channels;
-              // image_buffer: the instantiation tessera::compiled holds (docs/compile_once.md)
-              const auto exb = value_or_raise(to_buffer<T, C>(ex, "build_wang_tiles: exemplar"));
-              auto built = with_executor(threads, [&](auto& exec) { return build_wang_tiles(exb, o, exec); });
+              auto built = with_executor(threads, [&](auto& exec) { return build_wang_tiles(ex, o, exec); });
               return hold(p.value_or_raise(std::move(built)));
             },
             "build_wang_tiles: exemplar");
