@@ -5,7 +5,9 @@ Both sides synthesize the same 1024 x 1024 window from the same exemplar, option
 same run: the C++ figure is the median `synthesis_ms` that `tessera synth --stats --repeat N`
 reports (the synthesize() call alone, its thread pool made once), the Python figure the median wall
 time of N `model.synthesize(...)` calls (argument parsing, GIL release, a thread pool per call, the
-output array), and of N calls rendering into one reused array (`out=`, the CLI's situation). Prints both and their ratio; on a loaded machine compare the ratio, not the times.
+output array), and of N calls rendering into one reused array (`out=`, the CLI's situation). The two
+sides alternate for --rounds rounds; it prints the median of the per-round ratios (`overhead`) and the
+ratio of the fastest rounds (`overhead_best`, the least disturbed by other load).
 
     PYTHONPATH=build/python /usr/bin/python3 benchmarks/python_overhead.py --cli build/bin/tessera
 """
@@ -23,11 +25,27 @@ import numpy as np
 import tessera
 
 
+def cli_ms(cmd):
+    """Median synthesis_ms of one `tessera synth --stats --repeat N` run."""
+    return json.loads(subprocess.run(cmd, check=True, capture_output=True, text=True).stdout.strip())["synthesis_ms"]
+
+
+def python_ms(call, repeat):
+    """Median wall time (ms) of `repeat` calls."""
+    times = []
+    for _ in range(repeat):
+        t = time.perf_counter()
+        call()
+        times.append((time.perf_counter() - t) * 1e3)
+    return statistics.median(times)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--cli", default=os.environ.get("TESSERA_CLI", "build/bin/tessera"))
     ap.add_argument("--size", type=int, default=1024)
-    ap.add_argument("--repeat", type=int, default=15)
+    ap.add_argument("--repeat", type=int, default=21, help="calls per round (each side reports its median)")
+    ap.add_argument("--rounds", type=int, default=7, help="alternating C++ / Python rounds")
     ap.add_argument("--threads", type=int, default=1)
     ap.add_argument("--seed", type=int, default=5)
     a = ap.parse_args()
@@ -37,29 +55,26 @@ def main():
         out = os.path.join(tmp, "out.png")
         cmd = [a.cli, "synth", "--exemplar", ex_path, "--size", f"{a.size}x{a.size}", "--out", out, "--seed",
                str(a.seed), "--threads", str(a.threads), "--repeat", str(a.repeat), "--stats"]
-        stats = json.loads(subprocess.run(cmd, check=True, capture_output=True, text=True).stdout.strip())
-        cpp_ms = stats["synthesis_ms"]
         model = tessera.PatchModel(tessera.read_png(ex_path))
-        model.synthesize(64, 64, seed=a.seed, threads=a.threads)  # warm-up
-        times = []
-        for _ in range(a.repeat):
-            t = time.perf_counter()
-            img = model.synthesize(a.size, a.size, seed=a.seed, threads=a.threads)
-            times.append((time.perf_counter() - t) * 1e3)
-        py_ms = statistics.median(times)
-        # into one reused array (out=), as the CLI reuses its output buffer across --repeat
+        img = model.synthesize(a.size, a.size, seed=a.seed, threads=a.threads)  # warm-up
         buf = np.empty_like(img)
-        times_out = []
-        for _ in range(a.repeat):
-            t = time.perf_counter()
-            model.synthesize(a.size, a.size, seed=a.seed, threads=a.threads, out=buf)
-            times_out.append((time.perf_counter() - t) * 1e3)
-        py_out_ms = statistics.median(times_out)
+        cpp, new, reused = [], [], []
+        for _ in range(a.rounds):  # alternate, so that a burst of load hits both sides alike
+            cpp.append(cli_ms(cmd))
+            new.append(python_ms(lambda: model.synthesize(a.size, a.size, seed=a.seed, threads=a.threads), a.repeat))
+            # into one reused array (out=), as the CLI reuses its output buffer across --repeat
+            reused.append(python_ms(
+                lambda: model.synthesize(a.size, a.size, seed=a.seed, threads=a.threads, out=buf), a.repeat))
         same = np.array_equal(img, tessera.read_png(out)) and np.array_equal(buf, img)
-    print(json.dumps({"size": a.size, "threads": a.threads, "repeat": a.repeat, "cpp_ms": round(cpp_ms, 3),
-                      "python_ms": round(py_ms, 3), "overhead": round(py_ms / cpp_ms - 1, 4),
-                      "python_out_ms": round(py_out_ms, 3), "overhead_out": round(py_out_ms / cpp_ms - 1, 4),
-                      "bit_identical": same}))
+    # per-round ratios (same load), then their median; and the fastest round of each side
+    ratio = statistics.median(n / c for n, c in zip(new, cpp))
+    ratio_out = statistics.median(r / c for r, c in zip(reused, cpp))
+    print(json.dumps({"size": a.size, "threads": a.threads, "repeat": a.repeat, "rounds": a.rounds,
+                      "cpp_ms": round(statistics.median(cpp), 3), "python_ms": round(statistics.median(new), 3),
+                      "python_out_ms": round(statistics.median(reused), 3),
+                      "overhead": round(ratio - 1, 4), "overhead_out": round(ratio_out - 1, 4),
+                      "overhead_best": round(min(new) / min(cpp) - 1, 4),
+                      "overhead_out_best": round(min(reused) / min(cpp) - 1, 4), "bit_identical": same}))
     return 0 if same else 1
 
 

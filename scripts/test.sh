@@ -14,6 +14,8 @@
 # 52 s, run 9.7 and 9.6 s against 10.3 and 8.0 s in two runs; -O0 compiles in 27 s but runs 3x
 # slower), and the sanitizers check the same accesses. Warnings are errors in the Release build; here they are only printed (the optimizer's
 # flow warnings differ with -Og and the instrumentation, and would fail the run on false positives).
+# TESSERA_SANITIZE_FUZZ_REPLAY=OFF leaves the fuzz corpus replay out of the sanitizer build (.ci/run, whose
+# fuzz step replays the same corpus under ASan + UBSan).
 # Arguments after the options go to ctest (e.g. scripts/test.sh -R adapters).
 set -euo pipefail
 source "$(dirname "$0")/common.sh"
@@ -30,7 +32,8 @@ if ((sanitize)); then
   step "configure $build (ASan + UBSan, -Og)"
   configure "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-Og -g1" \
     -DTESSERA_SANITIZE=ON -DTESSERA_BUILD_TESTS=ON -DTESSERA_BUILD_CLI=OFF -DTESSERA_BUILD_EXAMPLES=OFF \
-    -DTESSERA_BUILD_BENCHMARKS=OFF -DTESSERA_WERROR=OFF -DTESSERA_BUILD_PYTHON=OFF
+    -DTESSERA_BUILD_BENCHMARKS=OFF -DTESSERA_WERROR=OFF -DTESSERA_BUILD_PYTHON=OFF \
+    -DTESSERA_FUZZ_REPLAY="${TESSERA_SANITIZE_FUZZ_REPLAY:-ON}"
   export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1:strict_string_checks=1}
   export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
 else
