@@ -59,8 +59,8 @@ inline vec2 anchored_extend(const terrain_mesh& mesh, const anchored_atlas& atla
 /// WritableImage of the viewport's size). Errors: no frame yet or a failed last update, `out` of
 /// another size, a mesh other than the session's (sizes), an empty pyramid or one of another
 /// exemplar size, a pyramid whose min_scale is above the session's, feather outside [0, 64],
-/// ambient outside [0, 1]. O(visible faces + pixels), parallel through `exec`; bit-identical for
-/// any executor.
+/// ambient outside [0, 1]. O(V + visible faces + pixels) (it projects the vertices with the
+/// session's camera()), parallel through `exec`; bit-identical for any executor.
 template <Channel T, int C, WritableImage O, Executor E = serial_executor>
 status render_anchored_frame(const terrain_mesh& mesh, const terrain_session& session,
                              const exemplar_pyramid<T, C>& pyramid, O& out, const render_anchored_options& opts = {},

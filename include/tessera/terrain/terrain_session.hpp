@@ -1,10 +1,14 @@
 // tessera/terrain/terrain_session.hpp: ground-anchored, incremental terrain synthesis for a moving
 // camera (paper 003 made frame-coherent; see docs/terrain.md, "Ground-anchored mode").
 //
-// A terrain_session keeps the state between frames; update() takes the next camera and
-//   1. projects the mesh (§2.1; detail/session_projection.hpp, a lean project_mesh: the session's
-//      projection() has clip coordinates, states and the visible list, not screen positions or
-//      bounds, which ground-anchored coordinates do not need): which faces are visible;
+// A terrain_session keeps the state between frames; update() takes the next camera and does work
+// in proportion to what changed, not to the mesh: the mesh is cut once into BLOCKS (square pieces
+// of the regions, about 192 faces each; detail/session_projection.hpp), and a block is visited
+// only when something in it may change (see update_terrain_session). For the visited blocks it
+//   1. decides which faces are visible (§2.1): regions, then blocks of regions partly in view, are
+//      tested against the frustum by the box of their vertices (culled whole, inside whole, or
+//      face by face); the session projects no vertices (a renderer does; projection() has the
+//      per-face states and the visible list, updated in place);
 //   2. gives each visible face a LEVEL from its view distance D on a fixed, camera-independent
 //      scale (§2.2 made view-independent): g(D) = ln(max(D, D0) / D0) / ln(ratio), raw level
 //      floor(g) clamped to [0, levels - 1]; level l has scale max(min_scale, ratio^-l), a mipmap-
@@ -13,6 +17,10 @@
 //      ((1 - 2 hysteresis) ln ratio), so that g differs by less than 1 - 2 hysteresis between
 //      neighbours and levels never differ by more than one, HYSTERESIS included: a face visible in
 //      the previous frame keeps its level l while g stays in [l - hysteresis, l + 1 + hysteresis];
+//      A block whose faces were all visible and stay inside the frustum is skipped while the eye is
+//      within its SLACK of where it was at the block's last visit (the least distance any of its
+//      faces then was from the edge of its band: a face's distance changes by at most the eye's
+//      move), so levels are checked face by face only near band edges;
 //   3. re-synthesizes only faces that became visible or changed level: their regions are grown
 //      if they were not yet (synthesize_anchored_region.hpp, in parallel over regions), and their
 //      corner coordinates in texels of their level image (anchored uv * scale of the level) are
@@ -212,7 +220,7 @@ inline std::uint64_t terrain_mesh_fingerprint(const terrain_mesh& m) {
 }  // namespace detail
 
 /// Makes a session for `mesh` and an exemplar of `exemplar_width` x `exemplar_height` pixels:
-/// plans the regions (plan_anchored_regions) and the level width. Errors (invalid_argument naming
+/// plans the regions (plan_anchored_regions), their blocks and the level width. Errors (invalid_argument naming
 /// the value): as plan_anchored_regions; min_scale outside (0, 1], max_levels outside 1..65536,
 /// level_ratio outside (1, 16], hysteresis outside [0, 0.45], blend_frames outside 0..255,
 /// near_distance negative, not finite, or below the minimum that keeps adjacent faces within one
