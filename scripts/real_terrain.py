@@ -5,6 +5,8 @@
   real_terrain.py path OUT.obj PATH.txt N    N cameras flying over it, 1 % of the view distance per frame
   real_terrain.py stats STATS.jsonl          min/mean stability, continuity, level jump, frame time
   real_terrain.py stretch OUT.obj F.tsuv     texture stretch per visible face (anisotropy of its uv map)
+  real_terrain.py plot A.jsonl B.jsonl OUT.png  per-frame frame_ms of two --stats runs (A red, B blue;
+                                                 grid lines every 50 ms), a PNG written with zlib
 
 The DEM is matplotlib's sample jacksboro_fault_dem.npz (USGS, 3 arc-second, 344 x 403 samples round
 the Jacksboro fault, Tennessee; Debian package python-matplotlib-data). Uses Debian's numpy.
@@ -13,6 +15,7 @@ import json
 import math
 import struct
 import sys
+import zlib
 
 import numpy as np
 
@@ -121,6 +124,36 @@ def stretch(obj, tsuv):
                       "slope_max_deg": round(float(slope.max()), 1)}))
 
 
+def plot(a, b, out, ymax=550.0):
+    w, h, m = 720, 320, 20
+    img = np.full((h, w, 3), 255, np.uint8)
+
+    def ypix(ms):
+        return int(round(h - m - (min(ms, ymax) / ymax) * (h - 2 * m)))
+
+    for g in range(0, int(ymax) + 1, 50):
+        img[ypix(g), m:w - m] = (215, 215, 215) if g else (90, 90, 90)
+    img[m:h - m + 1, m] = (90, 90, 90)
+    for path, colour in ((a, (200, 40, 40)), (b, (40, 80, 200))):
+        ms = [json.loads(line)["frame_ms"] for line in open(path) if line.startswith("{")]
+        xs = [m + int(round(i * (w - 2 * m - 1) / (len(ms) - 1))) for i in range(len(ms))]
+        for i in range(len(ms) - 1):
+            for t in np.linspace(0, 1, 200):
+                x = int(round(xs[i] + t * (xs[i + 1] - xs[i])))
+                y = int(round(ypix(ms[i]) + t * (ypix(ms[i + 1]) - ypix(ms[i]))))
+                img[max(0, y - 1):y + 2, max(0, x - 1):x + 2] = colour
+        for x, v in zip(xs, ms):
+            img[max(0, ypix(v) - 3):ypix(v) + 4, max(0, x - 3):x + 4] = colour
+    raw = b"".join(b"\0" + img[y].tobytes() for y in range(h))
+
+    def chunk(tag, data):
+        return struct.pack(">I", len(data)) + tag + data + struct.pack(">I", zlib.crc32(tag + data) & 0xffffffff)
+
+    with open(out, "wb") as f:
+        f.write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, 2, 0, 0, 0)) +
+                chunk(b"IDAT", zlib.compress(raw, 9)) + chunk(b"IEND", b""))
+
+
 if __name__ == "__main__":
     cmd = sys.argv[1]
     if cmd == "mesh":
@@ -131,5 +164,7 @@ if __name__ == "__main__":
         stats(sys.argv[2])
     elif cmd == "stretch":
         stretch(sys.argv[2], sys.argv[3])
+    elif cmd == "plot":
+        plot(sys.argv[2], sys.argv[3], sys.argv[4])
     else:
         sys.exit(__doc__)
