@@ -131,9 +131,10 @@ TEST_CASE("terrain_session: the incremental frame equals a full recomputation of
   // the session visits only blocks that may have changed; an oracle recomputes every face every
   // frame (project_mesh's culling rule on the clip coordinates, the level rule with hysteresis)
   const auto mesh = terrain_test::prepared_terrain(64, 8, 10);
-  auto s = tessera::make_terrain_session(mesh, 64, 64,
-                                         {.synthesis = {.region_size = 0.3}, .min_scale = 0.02, .hysteresis = 0.1, .blend_frames = 2})
-               .value();
+  auto s =
+      tessera::make_terrain_session(
+          mesh, 64, 64, {.synthesis = {.region_size = 0.3}, .min_scale = 0.02, .hysteresis = 0.1, .blend_frames = 2})
+          .value();
   REQUIRE(s.regions().num_regions() > 4);
   auto path = fly(mesh, 24, 0.03, 0.04);
   for (std::uint64_t k = 0; k < 4; ++k) path.push_back(terrain_test::random_camera(mesh, k));
