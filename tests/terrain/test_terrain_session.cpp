@@ -297,4 +297,14 @@ TEST_CASE("terrain_session: bad input gets a clear status", "[terrain][session]"
   REQUIRE(s.stats().visible > 0);
   REQUIRE(s.stats().common == 0);
   REQUIRE(s.stats().warning.ok());
+  // an error after frames empties the visible list and keeps the per-face state: the next good
+  // frame continues from the last good one and lists every visible face again
+  const index_t seen = s.stats().visible;
+  REQUIRE(!s.update(mesh, nan_cam));
+  REQUIRE(s.projection().visible.empty());
+  REQUIRE(s.update(mesh, cam));
+  REQUIRE(s.stats().visible == seen);
+  REQUIRE(s.stats().common == seen);
+  REQUIRE(s.stats().stable_faces == seen);
+  REQUIRE(static_cast<index_t>(s.projection().visible.size()) == seen);
 }
