@@ -510,6 +510,7 @@ status update_terrain_session(terrain_session& s, const terrain_mesh& mesh, cons
   auto& list = s.proj_.visible;
   if (s.rebuild_visible_) {
     list.clear();
+    list.reserve(detail::to_size(nvis));
     for (index_t f = 0; f < s.nf_; ++f) {
       const auto fi = detail::to_size(f);
       s.vpos_[fi] = -1;
