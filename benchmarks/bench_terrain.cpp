@@ -7,7 +7,7 @@
 //
 // Ground-anchored sessions (issue 18): BM_SessionFirstFrame (a fresh terrain_session's first
 // update), BM_SessionIncremental (the camera moving 1 % of its view distance per frame, back and
-// forth) with counters stable (faces visible in consecutive frames with unchanged coordinates),
+// forth; the overview camera with every face in view, and the grazing one) with counters stable (faces visible in consecutive frames with unchanged coordinates),
 // continuous (shared edges), jump (largest level jump), resynth (faces re-synthesized per frame)
 // and bytes_per_face (session memory); BM_MemcpyFaceOutput, a memcpy of the per-face corner
 // coordinates (24 bytes a face), is their same-run baseline.
@@ -265,11 +265,18 @@ void BM_MemcpyFrame(benchmark::State& state) {
 }
 BENCHMARK(BM_MemcpyFrame)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-/// The overview camera of a grid moved by `t` view distances along x.
-tessera::terrain_camera moved_camera(const tessera::terrain_mesh& mesh, double t) {
-  auto l = tessera::camera_preset_look_at(tessera::camera_preset::overview, tessera::bounding_box(mesh)).value();
-  const double d = tessera::norm(l.target - l.eye);
-  l.eye.x += t * d, l.target.x += t * d;
+/// The overview camera of a grid moved by `t` view distances along x; or the grazing camera (low
+/// over one edge, looking across) moved by `t` view distances along its horizontal view direction.
+tessera::terrain_camera moved_camera(const tessera::terrain_mesh& mesh, double t,
+                                     tessera::camera_preset preset = tessera::camera_preset::overview) {
+  auto l = tessera::camera_preset_look_at(preset, tessera::bounding_box(mesh)).value();
+  const tessera::vec3 dir = l.target - l.eye;
+  const double d = tessera::norm(dir);
+  const tessera::vec3 h = preset == tessera::camera_preset::overview
+                              ? tessera::vec3{1, 0, 0}
+                              : tessera::normalized(tessera::vec3{dir.x, dir.y, 0});
+  l.eye = l.eye + h * (t * d);
+  l.target = l.target + h * (t * d);
   return tessera::make_camera(l, frame_w, frame_h).value();
 }
 
@@ -303,20 +310,29 @@ void BM_SessionFirstFrame(benchmark::State& state) {
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * s->proj.num_visible());
 }
-BENCHMARK(BM_SessionFirstFrame)->Arg(100000)->Arg(1000000)->Iterations(3)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_SessionFirstFrame)
+    ->Arg(100000)
+    ->Arg(1000000)
+    ->Iterations(5)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MeasureProcessCPUTime();
 
+/// Range 0: faces; range 1: 0 the overview camera (every face in view), 1 the grazing one (faces
+/// entering and leaving the view and changing level every frame).
 void BM_SessionIncremental(benchmark::State& state) {
   scene* s = scene_or_skip(state, state.range(0));
   if (!s) return;
   auto session = make_session(s->mesh);
   if (!session) return (void)failed(state, session.error());
+  const auto preset = state.range(1) == 0 ? tessera::camera_preset::overview : tessera::camera_preset::grazing;
   // 40 frames moving 1 % of the view distance each, forth then back
   std::vector<tessera::terrain_camera> path;
-  for (int i = 0; i < 20; ++i) path.push_back(moved_camera(s->mesh, 0.01 * i));
-  for (int i = 20; i > 0; --i) path.push_back(moved_camera(s->mesh, 0.01 * i));
+  for (int i = 0; i < 20; ++i) path.push_back(moved_camera(s->mesh, 0.01 * i, preset));
+  for (int i = 20; i > 0; --i) path.push_back(moved_camera(s->mesh, 0.01 * i, preset));
   if (failed(state, session->update(s->mesh, path[0], pool()))) return;
   std::size_t at = 1;
-  double stable = 1, continuous = 1, resynth = 0;
+  double stable = 1, continuous = 1, resynth = 0, visible = 0;
   int jump = 0;
   std::int64_t frames = 0;
   for (auto _ : state) {
@@ -327,19 +343,23 @@ void BM_SessionIncremental(benchmark::State& state) {
     continuous = std::min(continuous, st.continuous_fraction);
     jump = std::max(jump, st.max_level_jump);
     resynth += static_cast<double>(st.resynthesized);
+    visible += static_cast<double>(st.visible);
     ++frames;
   }
   state.counters["stable_min"] = stable;
   state.counters["continuous_min"] = continuous;
   state.counters["jump_max"] = jump;
   state.counters["resynth"] = frames > 0 ? resynth / static_cast<double>(frames) : 0;
+  state.counters["visible"] = frames > 0 ? visible / static_cast<double>(frames) : 0;
   state.counters["bytes_per_face"] =
       static_cast<double>(session->memory_bytes()) / static_cast<double>(s->mesh.num_faces());
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * s->proj.num_visible());
 }
 BENCHMARK(BM_SessionIncremental)
-    ->Arg(100000)
-    ->Arg(1000000)
+    ->Args({100000, 0})
+    ->Args({1000000, 0})
+    ->Args({100000, 1})
+    ->Args({1000000, 1})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->MeasureProcessCPUTime();

@@ -1,5 +1,6 @@
 #include <tessera/terrain/terrain_session.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -126,6 +127,67 @@ TEST_CASE("terrain_session: coordinates are a pure function of mesh, exemplar, s
       REQUIRE(a.corner_uv()[static_cast<std::size_t>(f)] == before.uv[static_cast<std::size_t>(f)]);
 }
 
+TEST_CASE("terrain_session: the incremental frame equals a full recomputation of every face", "[terrain][session]") {
+  // the session visits only blocks that may have changed; an oracle recomputes every face every
+  // frame (project_mesh's culling rule on the clip coordinates, the level rule with hysteresis)
+  const auto mesh = terrain_test::prepared_terrain(64, 8, 10);
+  auto s =
+      tessera::make_terrain_session(
+          mesh, 64, 64, {.synthesis = {.region_size = 0.3}, .min_scale = 0.02, .hysteresis = 0.1, .blend_frames = 2})
+          .value();
+  REQUIRE(s.regions().num_regions() > 4);
+  auto path = fly(mesh, 24, 0.03, 0.04);
+  for (std::uint64_t k = 0; k < 4; ++k) path.push_back(terrain_test::random_camera(mesh, k));
+  path.push_back(path.front());
+  const auto nf = static_cast<std::size_t>(mesh.num_faces());
+  std::vector<std::int32_t> level(nf, -1);
+  std::vector<bool> was(nf, false);
+  const double rho = s.options().level_ratio, beta = s.options().hysteresis, d0 = s.near_distance();
+  const auto top = static_cast<std::int32_t>(s.levels() - 1);
+  auto bound = [&](double l) { return std::pow(d0 * std::pow(rho, l), 2); };
+  tessera::thread_pool_executor pool(2);
+  for (const auto& cam : path) {
+    REQUIRE(s.update(mesh, cam, pool));
+    const glm::dmat4 m = cam.projection * cam.view;
+    const tessera::vec3 eye = tessera::camera_eye(cam);
+    index_t visible = 0, changes = 0;
+    for (std::size_t f = 0; f < nf; ++f) {
+      unsigned all = 63;
+      for (const std::int32_t v : mesh.faces[f]) {
+        const auto& p = mesh.positions[static_cast<std::size_t>(v)];
+        const glm::dvec4 c = m * glm::dvec4(p.x, p.y, p.z, 1.0);
+        all &= (c.x < -c.w ? 1u : 0u) | (c.x > c.w ? 2u : 0u) | (c.y < -c.w ? 4u : 0u) | (c.y > c.w ? 8u : 0u) |
+               (c.z < -c.w ? 16u : 0u) | (c.z > c.w ? 32u : 0u);
+      }
+      const bool vis = all == 0;
+      REQUIRE(s.visible(static_cast<index_t>(f)) == vis);
+      if (vis) {
+        const tessera::vec3 d = mesh.centroids[f] - eye;
+        const double d2 = tessera::dot(d, d);
+        std::int32_t l = 0;
+        while (l < top && d2 >= bound(l + 1)) ++l;
+        const std::int32_t old = level[f];
+        if (was[f] && (old == 0 || d2 >= bound(old - beta)) && (old == top || d2 <= bound(old + 1 + beta))) l = old;
+        changes += was[f] && l != old ? 1 : 0;
+        level[f] = l;
+        REQUIRE(s.level()[f] == l);
+        const float sc = static_cast<float>(s.level_scale(l));
+        for (std::size_t k = 0; k < 6; ++k) REQUIRE(s.corner_uv()[f][k] == s.atlas().uv[f][k] * sc);
+        ++visible;
+      }
+      was[f] = vis;
+    }
+    REQUIRE(s.stats().visible == visible);
+    REQUIRE(s.stats().level_changes == changes);
+    // the visible list holds each visible face once
+    auto list = s.projection().visible;
+    REQUIRE(static_cast<index_t>(list.size()) == visible);
+    std::sort(list.begin(), list.end());
+    REQUIRE(std::adjacent_find(list.begin(), list.end()) == list.end());
+    for (const std::int32_t f : list) REQUIRE(s.visible(f));
+  }
+}
+
 TEST_CASE("terrain_session: identical for any executor and thread count", "[terrain][session]") {
   const auto mesh = terrain_test::prepared_terrain(48, 5);
   const auto path = fly(mesh, 5, 0.03, 0.02);
@@ -142,6 +204,7 @@ TEST_CASE("terrain_session: identical for any executor and thread count", "[terr
       REQUIRE(t->stats().resynthesized == serial.stats().resynthesized);
       REQUIRE(t->stats().continuous_edges == serial.stats().continuous_edges);
       REQUIRE(t->stats().regions_grown == serial.stats().regions_grown);
+      REQUIRE(t->projection().visible == serial.projection().visible);
     }
   }
 }
@@ -234,4 +297,14 @@ TEST_CASE("terrain_session: bad input gets a clear status", "[terrain][session]"
   REQUIRE(s.stats().visible > 0);
   REQUIRE(s.stats().common == 0);
   REQUIRE(s.stats().warning.ok());
+  // an error after frames empties the visible list and keeps the per-face state: the next good
+  // frame continues from the last good one and lists every visible face again
+  const index_t seen = s.stats().visible;
+  REQUIRE(!s.update(mesh, nan_cam));
+  REQUIRE(s.projection().visible.empty());
+  REQUIRE(s.update(mesh, cam));
+  REQUIRE(s.stats().visible == seen);
+  REQUIRE(s.stats().common == seen);
+  REQUIRE(s.stats().stable_faces == seen);
+  REQUIRE(static_cast<index_t>(s.projection().visible.size()) == seen);
 }

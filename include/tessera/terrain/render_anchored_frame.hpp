@@ -59,8 +59,8 @@ inline vec2 anchored_extend(const terrain_mesh& mesh, const anchored_atlas& atla
 /// WritableImage of the viewport's size). Errors: no frame yet or a failed last update, `out` of
 /// another size, a mesh other than the session's (sizes), an empty pyramid or one of another
 /// exemplar size, a pyramid whose min_scale is above the session's, feather outside [0, 64],
-/// ambient outside [0, 1]. O(visible faces + pixels), parallel through `exec`; bit-identical for
-/// any executor.
+/// ambient outside [0, 1]. O(V + visible faces + pixels) (it projects the vertices with the
+/// session's camera()), parallel through `exec`; bit-identical for any executor.
 template <Channel T, int C, WritableImage O, Executor E = serial_executor>
 status render_anchored_frame(const terrain_mesh& mesh, const terrain_session& session,
                              const exemplar_pyramid<T, C>& pyramid, O& out, const render_anchored_options& opts = {},
@@ -87,8 +87,21 @@ status render_anchored_frame(const terrain_mesh& mesh, const terrain_session& se
     return status::invalid_argument(detail::cat("render_anchored_frame: the session reaches scale ",
                                                 session.options().min_scale, " but the pyramid only ",
                                                 pyramid.min_scale()));
-  if (auto s = detail::check_visible_geometry(mesh, proj, "render_anchored_frame", exec); !s) return s;
+  if (auto s = detail::check_terrain_mesh_sizes(mesh); !s) return s;
+  if (auto s = detail::check_visible_entries(mesh, proj, "render_anchored_frame", exec); !s) return s;
   const index_t w = proj.width, h = proj.height;
+  // the session does not project vertices: clip coordinates of the camera of its frame
+  const glm::dmat4 m = session.camera().projection * session.camera().view;
+  const index_t nv = mesh.num_vertices();
+  std::vector<std::array<double, 4>> clip(detail::to_size(nv));
+  constexpr index_t vblock = 16384;
+  exec.parallel_for(0, (nv + vblock - 1) / vblock, [&](index_t b) {
+    for (index_t v = b * vblock; v < std::min(nv, (b + 1) * vblock); ++v) {
+      const vec3& p = mesh.positions[detail::to_size(v)];
+      const glm::dvec4 c = m * glm::dvec4(p.x, p.y, p.z, 1.0);
+      clip[detail::to_size(v)] = {c.x, c.y, c.z, c.w};
+    }
+  });
   std::vector<std::int32_t> face(detail::to_size(w * h), -1);
   std::vector<float> depth(face.size(), std::numeric_limits<float>::infinity());
   std::vector<std::array<float, 2>> bary(face.size());
@@ -96,7 +109,11 @@ status render_anchored_frame(const terrain_mesh& mesh, const terrain_session& se
   if (auto s = rasterize_clip_triangles(
           proj.num_visible(), vp, pixel_rect{0, 0, w, h},
           [&](index_t i, clip_triangle& t) {
-            t = proj.clip_face(mesh, proj.visible[detail::to_size(i)]);
+            const auto& fv = mesh.faces[detail::to_size(proj.visible[detail::to_size(i)])];
+            for (std::size_t k = 0; k < 3; ++k) {
+              const auto& c = clip[detail::to_size(fv[k])];
+              t[k] = {c[0], c[1], c[2], c[3]};
+            }
             return true;
           },
           [&](index_t i, const fragment& f) {

@@ -133,6 +133,30 @@ inline tri_uv anchored_face_coords(const terrain_mesh& mesh, const anchored_fram
   return t;
 }
 
+/// anchored_face_coords for face f next to face n (across f's side k) already in placement fr with
+/// corners `uv_n`: the two shared corners are copied from n (the same formula gave them), the
+/// third is computed.
+inline tri_uv anchored_face_coords_across(const terrain_mesh& mesh, const anchored_frame& fr, std::int32_t f, int k,
+                                          std::int32_t n, const tri_uv& uv_n, double tpu) {
+  const auto& fv = mesh.faces[to_size(f)];
+  const auto& nv = mesh.faces[to_size(n)];
+  tri_uv t;
+  for (std::size_t c = 0; c < 3; ++c) {
+    const std::int32_t v = fv[c];
+    std::size_t j = 3;
+    if (c != (to_size(k) + 2) % 3) j = nv[0] == v ? 0 : nv[1] == v ? 1 : nv[2] == v ? 2 : 3;
+    if (j < 3) {
+      t[2 * c] = uv_n[2 * j];
+      t[2 * c + 1] = uv_n[2 * j + 1];
+    } else {
+      const vec2 q = anchored_coord(fr, mesh.position(v), tpu);
+      t[2 * c] = static_cast<float>(q.x);
+      t[2 * c + 1] = static_cast<float>(q.y);
+    }
+  }
+  return t;
+}
+
 inline bool anchored_fits_axis(const tri_uv& t, int axis, double half) noexcept {
   for (int k = 0; k < 3; ++k)
     if (!(std::abs(static_cast<double>(t[to_size(2 * k + axis)])) <= half)) return false;
@@ -175,6 +199,7 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
   std::int32_t patches = 0;
   std::vector<detail::anchored_frame> frames;  // placements of this region
   const double tpu = plan.texels_per_unit, cos_tilt = std::cos(opts.max_tilt_degrees * std::numbers::pi / 180);
+  const double cos2_tilt = cos_tilt * cos_tilt;
   // the region's mean plane (area-weighted normal): new placements lie in it unless the face is
   // tilted against it by more than max_tilt (then in the face's own plane)
   vec3 mean{};
@@ -199,8 +224,14 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
     int placed = 0, oldest = -1;
     std::int32_t best_patch = -1, oldest_patch = std::numeric_limits<std::int32_t>::max();
     const auto& fv3 = mesh.faces[fi];
+    // tilt test without a square root: n . m >= cos |n| for the face's (unnormalized) normal n
     const vec3 normal =
-        normalized(cross(mesh.position(fv3[1]) - mesh.position(fv3[0]), mesh.position(fv3[2]) - mesh.position(fv3[0])));
+        cross(mesh.position(fv3[1]) - mesh.position(fv3[0]), mesh.position(fv3[2]) - mesh.position(fv3[0]));
+    const double len2 = dot(normal, normal);
+    auto tilted_within = [&](const vec3& m) {
+      const double d = dot(normal, m);
+      return len2 > 0 && d >= 0 && d * d >= cos2_tilt * len2;
+    };
     detail::tri_uv best_uv{};
     for (int k = 0; k < 3; ++k) {
       const std::int32_t n = nb[detail::to_size(k)];
@@ -213,8 +244,9 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
       }
       if (best_patch >= 0 && p >= best_patch) continue;
       const auto& fr = frames[detail::to_size(p)];
-      if (!(dot(normal, fr.n) >= cos_tilt)) continue;
-      const detail::tri_uv t = detail::anchored_face_coords(mesh, fr, f, tpu);
+      if (!tilted_within(fr.n)) continue;
+      const detail::tri_uv t =
+          detail::anchored_face_coords_across(mesh, fr, f, k, n, atlas.uv[detail::to_size(n)], tpu);
       if (detail::anchored_fits_axis(t, 0, hw) && detail::anchored_fits_axis(t, 1, hh)) {
         best_patch = p;
         best_uv = t;

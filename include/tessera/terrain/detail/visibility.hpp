@@ -31,8 +31,18 @@ struct visibility_buffer {
 /// visible entry names a visible face whose corners are vertices of the mesh. O(visible faces), in
 /// parallel chunks; the first failure in visible order is reported.
 template <class E>
+status check_visible_entries(const terrain_mesh& mesh, const screen_projection& proj, const char* stage, E& exec);
+template <class E>
 status check_visible_geometry(const terrain_mesh& mesh, const screen_projection& proj, const char* stage, E& exec) {
   if (auto s = check_projection(mesh, proj, stage); !s) return s;
+  return check_visible_entries(mesh, proj, stage, exec);
+}
+/// The per-entry part of check_visible_geometry (for a projection without clip coordinates: a
+/// terrain_session's).
+template <class E>
+status check_visible_entries(const terrain_mesh& mesh, const screen_projection& proj, const char* stage, E& exec) {
+  if (proj.visible.size() > proj.state.size())
+    return status::invalid_argument(detail::cat(stage, ": the projection lists more visible faces than it has"));
   const index_t nvis = proj.num_visible(), nv = mesh.num_vertices();
   constexpr index_t block = 16384;
   const index_t chunks = (nvis + block - 1) / block;
