@@ -68,7 +68,11 @@ def _model(digest, model_bytes, threads):
 
 def render_chunk(model_bytes, digest, store, x, y, w, h, x0, y0, seed, threads):
     """Renders the window (x0 + x, y0 + y, w, h) and writes it at [y:y+h, x:x+w] of the store's root array."""
+    import numcodecs.blosc
     import zarr
+    # Blosc compresses on a thread per core by default: the tasks already run side by side, one per
+    # worker thread, so compress on the task's own thread instead of competing for the same cores
+    numcodecs.blosc.use_threads = False
     model = _model(digest, model_bytes, threads)
     tile = model.synthesize(w, h, x=x0 + x, y=y0 + y, seed=seed, threads=threads)
     zarr.open(store, mode="r+")[y:y + h, x:x + w, :] = tile
