@@ -152,6 +152,7 @@ struct polycube_options {
   int max_expansion_cycles = 6;     ///< α-expansion sweeps over the six labels
   int max_repair_iterations = 200;  ///< relabelling steps of the validity repair
   int untangle_iterations = 300;    ///< smoothing rounds that unflip faces after the final solve
+  int max_relabel_rounds = 24;      ///< relabellings of a chart whose deformation fails, then a new solve
 };
 
 namespace detail {

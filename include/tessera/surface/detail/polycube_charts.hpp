@@ -70,6 +70,49 @@ inline polycube_chart_set find_polycube_charts(const tri_mesh& m, const std::vec
   return cs;
 }
 
+/// One polycube edge of a labelling: the boundary path between charts c < d from corner to corner
+/// (vertices with at least three charts), in the orientation of chart c's faces.
+struct polycube_edge_path {
+  index_t c = -1, d = -1;
+  std::vector<index_t> vertices;  ///< front and back are corners
+};
+
+/// Every polycube edge of a labelling, in order of its first corner, then of its first half-edge's face
+/// and side. Boundary loops without a corner are left out (find_label_problem names them). O(F).
+inline std::vector<polycube_edge_path> find_polycube_edge_paths(const tri_mesh& m,
+                                                                const std::vector<std::array<index_t, 3>>& nb,
+                                                                const polycube_chart_set& cs) {
+  struct half {
+    index_t to, c, d;
+  };
+  const auto nv = to_size(m.num_vertices());
+  std::vector<std::vector<half>> out(nv);
+  for (std::size_t f = 0; f < m.faces.size(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const index_t g = nb[f][to_size(k)];
+      if (g < 0) continue;
+      const index_t c = cs.face_chart[f], d = cs.face_chart[to_size(g)];
+      if (c < d) out[to_size(m.faces[f][to_size(k)])].push_back({m.faces[f][to_size((k + 1) % 3)], c, d});
+    }
+  auto corner = [&](index_t v) { return cs.vertex_charts[to_size(v)].size() >= 3; };
+  std::vector<polycube_edge_path> paths;
+  for (std::size_t u = 0; u < nv; ++u) {
+    if (!corner(static_cast<index_t>(u))) continue;
+    for (const half& h0 : out[u]) {
+      polycube_edge_path p{h0.c, h0.d, {static_cast<index_t>(u), h0.to}};
+      for (std::size_t guard = 0; guard < nv && !corner(p.vertices.back()); ++guard) {
+        index_t next = -1;
+        for (const half& h : out[to_size(p.vertices.back())])
+          if (h.c == h0.c && h.d == h0.d) next = h.to;
+        if (next < 0) break;
+        p.vertices.push_back(next);
+      }
+      if (corner(p.vertices.back())) paths.push_back(std::move(p));
+    }
+  }
+  return paths;
+}
+
 /// Euler characteristic V - E + F of each chart's faces.
 inline std::vector<index_t> chart_euler(const tri_mesh&, const std::vector<std::array<index_t, 3>>& nb,
                                         const polycube_chart_set& cs) {

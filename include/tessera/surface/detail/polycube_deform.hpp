@@ -14,15 +14,16 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <map>
 #include <utility>
 #include <numeric>
+#include <tuple>
 #include <vector>
 
 #include "../../core/config.hpp"
 #include "../../core/status.hpp"
 #include "../../core/tri_mesh.hpp"
 #include "../polycube_map.hpp"
+#include "polycube_charts.hpp"
 #include "tolerances.hpp"
 
 TESSERA_NAMESPACE_BEGIN
@@ -39,7 +40,8 @@ struct polycube_axis_classes {
 };
 
 inline result<polycube_axis_classes> polycube_classes(const tri_mesh& m, const std::vector<index_t>& face_chart,
-                                                      const std::vector<std::uint8_t>& chart_label, int axis) {
+                                                      const std::vector<std::uint8_t>& chart_label, int axis,
+                                                      index_t* bad_chart = nullptr) {
   const index_t nv = m.num_vertices();
   const auto nc = static_cast<index_t>(chart_label.size());
   std::vector<index_t> parent(to_size(nv + nc));
@@ -65,6 +67,7 @@ inline result<polycube_axis_classes> polycube_classes(const tri_mesh& m, const s
     if (root_chart[r] >= 0 && root_chart[r] != c) {
       index_t shared = 0;
       while (shared < nv && to_size(find(shared)) != r) ++shared;
+      if (bad_chart) *bad_chart = c;
       return status::not_converged(cat("polycube: charts ", root_chart[r], " and ", c, " of axis ", "XYZ"[axis],
                                        " are joined through vertex ", shared, ": their planes would coincide"));
     }
@@ -151,55 +154,78 @@ result<std::vector<double>> polycube_axis_solve(const tri_mesh& m, const std::ve
   return x;
 }
 
-/// Pairs of charts whose planes must stay at least one tile apart: on the boundary between two
-/// adjacent charts C and D (axes a and b), the charts of the third axis met at its corners bound the
-/// polycube edges there, so any two of them must not share a plane. Returns each chart's partners.
-inline std::vector<std::vector<index_t>> polycube_plane_partners(const std::vector<std::vector<index_t>>& vertex_charts,
-                                                                 const std::vector<std::uint8_t>& chart_label) {
-  std::map<std::pair<index_t, index_t>, std::vector<index_t>> on_boundary;
-  for (const auto& vc : vertex_charts) {
-    if (vc.size() < 3) continue;
-    for (index_t c : vc)
-      for (index_t d : vc) {
-        const int a = chart_label[to_size(c)] / 2, b = chart_label[to_size(d)] / 2;
-        if (c >= d || a == b) continue;
-        for (index_t e : vc)
-          if (chart_label[to_size(e)] / 2 == 3 - a - b) on_boundary[{c, d}].push_back(e);
-      }
+/// A polycube edge along some axis runs from the plane of chart `from` to the plane of chart `to`
+/// (both of that axis): `to` must lie at least one tile above `from`.
+struct polycube_plane_order {
+  index_t from = -1, to = -1;
+};
+
+/// The order constraints of one axis: every polycube edge along `axis` (paths) keeps the direction it
+/// has on the base mesh, the sign of its corners' difference along the axis (ties: the continuous
+/// planes `plane`, then the chart index), so no edge is inverted or collapsed by the quantization and
+/// every chart keeps the turning of its boundary. not_converged when both corners of an edge lie on
+/// the same chart of the axis (the edge would have length zero), naming the charts and the corners.
+inline result<std::vector<polycube_plane_order>> polycube_plane_orders(
+    const tri_mesh& m, const std::vector<polycube_edge_path>& paths, const std::vector<std::uint8_t>& chart_label,
+    const polycube_axis_classes& cl, int axis, const std::vector<double>& plane, index_t* bad_chart = nullptr) {
+  std::vector<polycube_plane_order> out;
+  for (const auto& p : paths) {
+    if (3 - chart_label[to_size(p.c)] / 2 - chart_label[to_size(p.d)] / 2 != axis) continue;
+    const index_t a = p.vertices.front(), b = p.vertices.back();
+    const index_t ca = cl.class_chart[to_size(cl.vertex_class[to_size(a)])];
+    const index_t cb = cl.class_chart[to_size(cl.vertex_class[to_size(b)])];
+    if (ca < 0 || cb < 0) continue;
+    if (ca == cb) {
+      if (bad_chart) *bad_chart = p.c;
+      return status::not_converged(cat("polycube: the edge between charts ", p.c, " and ", p.d,
+                                       " from the corner at vertex ", a, " to vertex ", b, " has both ends on chart ",
+                                       ca, ": it would collapse"));
+    }
+    double s = m.position(b)[axis] - m.position(a)[axis];
+    if (s == 0) s = plane[to_size(cb)] - plane[to_size(ca)];
+    if (s == 0) s = static_cast<double>(cb - ca);
+    out.push_back(s > 0 ? polycube_plane_order{ca, cb} : polycube_plane_order{cb, ca});
   }
-  std::vector<std::vector<index_t>> partners(chart_label.size());
-  for (auto& [cd, es] : on_boundary)
-    for (index_t e : es)
-      for (index_t g : es)
-        if (e != g) partners[to_size(e)].push_back(g);
-  for (auto& p : partners) {
-    std::sort(p.begin(), p.end());
-    p.erase(std::unique(p.begin(), p.end()), p.end());
-  }
-  return partners;
+  std::sort(out.begin(), out.end(), [&](const polycube_plane_order& x, const polycube_plane_order& y) {
+    return std::tuple(plane[to_size(x.from)], x.from, x.to) < std::tuple(plane[to_size(y.from)], y.from, y.to);
+  });
+  out.erase(std::unique(out.begin(), out.end(),
+                        [](const polycube_plane_order& x, const polycube_plane_order& y) {
+                          return x.from == y.from && x.to == y.to;
+                        }),
+            out.end());
+  return out;
 }
 
 /// Integer planes of the charts of one axis from their continuous values `p` (mesh units): each chart
-/// plane is rounded to the nearest multiple of the tile, then, in order of p (ties: chart index),
-/// raised to at least one tile above each of its partners (polycube_plane_partners) placed before it:
-/// a polycube edge never collapses below one tile.
-inline std::vector<std::int64_t> quantize_planes(const std::vector<double>& p, const std::vector<int>& axis_of,
-                                                 const std::vector<std::vector<index_t>>& partners, int axis,
-                                                 double tile) {
+/// plane is rounded to the nearest multiple of the tile, then raised until every order constraint
+/// holds (`to` at least one tile above `from`): a polycube edge never collapses below one tile nor
+/// turns around. Bellman-Ford rounds, at most one per chart plus one; not_converged naming a chart
+/// when the constraints form a cycle (no polycube realizes the labelling's edge directions).
+inline result<std::vector<std::int64_t>> quantize_planes(const std::vector<double>& p, const std::vector<int>& axis_of,
+                                                         const std::vector<polycube_plane_order>& orders, int axis,
+                                                         double tile, index_t* bad_chart = nullptr) {
   const std::size_t nc = p.size();
-  std::vector<index_t> order;
-  for (std::size_t c = 0; c < nc; ++c)
-    if (axis_of[c] == axis) order.push_back(static_cast<index_t>(c));
-  std::stable_sort(order.begin(), order.end(), [&](index_t a, index_t b) { return p[to_size(a)] < p[to_size(b)]; });
   std::vector<std::int64_t> q(nc, 0);
-  std::vector<bool> done(nc, false);
-  for (index_t c : order) {
-    const auto cs = to_size(c);
-    std::int64_t v = std::llround(p[cs] / tile);
-    for (index_t d : partners[cs])
-      if (done[to_size(d)]) v = std::max(v, q[to_size(d)] + 1);
-    q[cs] = v;
-    done[cs] = true;
+  std::size_t n = 0;
+  for (std::size_t c = 0; c < nc; ++c)
+    if (axis_of[c] == axis) {
+      q[c] = std::llround(p[c] / tile);
+      ++n;
+    }
+  for (std::size_t round = 0; round <= n; ++round) {
+    index_t changed = -1;
+    for (const auto& o : orders)
+      if (q[to_size(o.to)] < q[to_size(o.from)] + 1) {
+        q[to_size(o.to)] = q[to_size(o.from)] + 1;
+        changed = o.to;
+      }
+    if (changed < 0) return q;
+    if (round == n) {
+      if (bad_chart) *bad_chart = changed;
+      return status::not_converged(cat("polycube: the edges along ", "XYZ"[axis], " around chart ", changed,
+                                       " form a cycle of directions: no polycube has these edges"));
+    }
   }
   return q;
 }
