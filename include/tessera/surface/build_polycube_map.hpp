@@ -46,12 +46,13 @@ inline tri_mesh polycube_base_copy(const tri_mesh& m) {
 
 /// Steps (3) to (5) for a valid labelling. On failure, `bad_chart` names the chart to relabel when
 /// the failure is one chart's (an edge cycle, a collapsed edge, a boundary that does not turn as a
-/// polycube face), else -1 (folded faces are the embedding's, not one chart's labelling).
+/// polycube face), else -1; `folded` receives the faces still folded after the untangling.
 template <Executor E>
 result<polycube_map> deform_polycube(tri_mesh base, const std::vector<std::array<index_t, 3>>& nb,
                                      const std::vector<std::uint8_t>& lab, double t, int untangle_iterations, E& exec,
-                                     index_t& bad_chart) {
+                                     index_t& bad_chart, std::vector<index_t>& folded) {
   bad_chart = -1;
+  folded.clear();
   const auto cs = find_polycube_charts(base, nb, lab);
   const std::size_t nc = cs.chart_label.size();
   std::vector<int> axis_of(nc);
@@ -89,8 +90,9 @@ result<polycube_map> deform_polycube(tri_mesh base, const std::vector<std::array
     return status::not_converged(cat("polycube: chart ", c, " is not a polycube face: ", why));
   }
   if (auto s = embed_polycube<E>(base, cs, classes, paths, loops, t, true, pos); !s) return s;
-  (void)untangle_polycube(base, pos, cs.face_chart, cs.chart_label, {&classes[0], &classes[1], &classes[2]}, t,
-                          untangle_iterations);
+  if (untangle_polycube(base, pos, cs.face_chart, cs.chart_label, {&classes[0], &classes[1], &classes[2]}, t,
+                        untangle_iterations) > 0)
+    folded = polycube_flipped_faces(base, pos, cs.face_chart, cs.chart_label, t);
   return assemble_polycube_map(std::move(base), lab, std::move(pos), t, exec);
 }
 }  // namespace detail
@@ -124,16 +126,35 @@ result<polycube_map> build_polycube_map(const M& mesh, const polycube_options& o
   // label -> repair -> deform; a failure of one chart relabels it, and its faces' old label costs
   // more from then on (so the repair cannot bring it back), then runs again (bounded)
   auto data = en.data;
+  std::size_t stall = 0, last_folded = std::numeric_limits<std::size_t>::max();
+  status last;
   for (int round = 0;; ++round) {
     const auto problem = detail::repair_polycube_labels(base, adj.neighbor, data, *lab, options.max_repair_iterations);
-    if (problem.kind != detail::polycube_label_problem::none) return problem.to_status();
+    // a relabelling the repair cannot make valid ends the rounds with the previous round's failure
+    if (problem.kind != detail::polycube_label_problem::none) return round == 0 ? problem.to_status() : last;
     index_t bad = -1;
-    auto r = detail::deform_polycube(base, adj.neighbor, *lab, *t, options.untangle_iterations, exec, bad);
-    if (r || bad < 0 || round >= options.max_relabel_rounds) return r;
-    const auto cs = detail::find_polycube_charts(base, adj.neighbor, *lab);
-    for (std::size_t f = 0; f < data.size(); ++f)
-      if (cs.face_chart[f] == bad) data[f][(*lab)[f]] += detail::relabel_tabu_cost;
-    detail::relabel_chart(cs, bad, data, *lab, false);
+    std::vector<index_t> folded;
+    auto r = detail::deform_polycube(base, adj.neighbor, *lab, *t, options.untangle_iterations, exec, bad, folded);
+    if (r || round >= options.max_relabel_rounds) return r;
+    last = r.error();
+    if (bad >= 0) {
+      const auto cs = detail::find_polycube_charts(base, adj.neighbor, *lab);
+      for (std::size_t f = 0; f < data.size(); ++f)
+        if (cs.face_chart[f] == bad) data[f][(*lab)[f]] += detail::relabel_tabu_cost;
+      detail::relabel_chart(cs, bad, data, *lab, false);
+    } else if (folded.empty()) {
+      return r;
+    } else {
+      // folded faces take a neighbouring chart's label; when that does not lower their count, the
+      // region grows by a ring of faces per stalled round and the labels propagate into it
+      stall = folded.size() < last_folded ? 0 : stall + 1;
+      last_folded = folded.size();
+      const auto region = detail::grow_face_region(adj.neighbor, folded, stall);
+      bool changed = false;
+      for (std::size_t k = 0; k <= stall; ++k)
+        changed = detail::relabel_folded_faces(adj.neighbor, region, detail::relabel_tabu_cost, data, *lab) || changed;
+      if (!changed) return r;
+    }
   }
 }
 
@@ -163,7 +184,9 @@ result<polycube_map> build_polycube_map_from_labels(const M& mesh, std::span<con
   if (auto p = detail::find_label_problem(base, adj.neighbor, cs); p.kind != detail::polycube_label_problem::none)
     return p.to_status();
   index_t bad = -1;
-  return detail::deform_polycube(std::move(base), adj.neighbor, lab, *t, options.untangle_iterations, exec, bad);
+  std::vector<index_t> folded;
+  return detail::deform_polycube(std::move(base), adj.neighbor, lab, *t, options.untangle_iterations, exec, bad,
+                                 folded);
 }
 
 /// Builds the polycube map of `mesh` from `deformed`, a copy of it (same vertex count, same faces)

@@ -8,8 +8,6 @@
 #pragma once
 
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -27,7 +25,6 @@
 
 TESSERA_NAMESPACE_BEGIN
 namespace detail {
-#define DBG(...) if (getenv("PCDBG")) fprintf(stderr, __VA_ARGS__)
 
 /// One side of a chart's boundary loop: a polycube edge path, forward when the chart is the path's c
 /// (the path then runs in the chart's orientation, interior on its left).
@@ -224,7 +221,7 @@ index_t cut_charts_into_rectangles(const tri_mesh& m, const polycube_chart_set& 
           hit = k;
           hit_frac = std::clamp((b.y - sd.a.y) / (sd.b.y - sd.a.y), 0.0, 1.0);
         }
-        if (hit == sides.size()) { DBG("chart %zu reflex %d: no hit\n", c, (int)r); continue; }
+        if (hit == sides.size()) continue;
         const auto& hs = sides[hit];
         const auto pi = to_size(hs.s.path);
         const auto& pv = paths[pi].vertices;
@@ -251,7 +248,7 @@ index_t cut_charts_into_rectangles(const tri_mesh& m, const polycube_chart_set& 
           for (std::size_t k = lo + 1; k < hi; ++k)
             if (slot == pv.size() || std::abs(at(k) - frac) < std::abs(at(slot) - frac)) slot = k;
         }
-        if (slot == pv.size()) { DBG("chart %zu reflex %d: no slot (path len %zu)\n", c, (int)r, pv.size()); continue; }
+        if (slot == pv.size()) continue;
         const index_t target = pv[slot];
         if (std::find(done.begin(), done.end(), std::pair{std::min(r, target), std::max(r, target)}) != done.end())
           continue;
@@ -311,10 +308,7 @@ index_t cut_charts_into_rectangles(const tri_mesh& m, const polycube_chart_set& 
           from[to_size(v)] = -1;
         }
         std::fill(on_line.begin(), on_line.end(), std::uint8_t{0});
-        if (cut.size() < 2) { DBG("chart %zu reflex %d: no path to %d (slot %zu/%zu) touched %zu:", c, (int)r, (int)target, slot, pv.size(), touched.size());
-          for (index_t w : ring[to_size(r)]) DBG(" %d[%zu%s%s]", (int)w, cs.vertex_charts[to_size(w)].size(), fixed[to_size(w)] ? "F" : "", closes_line_face(r, w) ? "L" : "");
-          DBG("\n"); continue; }
-        DBG("chart %zu reflex %d: cut to %d len %zu\n", c, (int)r, (int)target, cut.size());
+        if (cut.size() < 2) continue;
         std::reverse(cut.begin(), cut.end());  // r ... target
         // pin the target on its path, then spread the cut from r to the hit point by arc length
         if (slot != 0 && slot != pv.size() - 1) {

@@ -277,6 +277,56 @@ inline void relabel_chart(const polycube_chart_set& cs, index_t c, const std::ve
     if (cs.face_chart[f] == c) lab[f] = static_cast<std::uint8_t>(best);
 }
 
+/// Flip-driven relabelling: each of `faces` (folded in the deformation) that borders another chart
+/// takes the label of a neighbouring face of another chart with the smallest fidelity cost that is not
+/// opposite to any of its neighbours' labels; its old label then costs `tabu` more. Decisions read
+/// the labels before the call (order-independent). Returns whether a label changed.
+inline bool relabel_folded_faces(const std::vector<std::array<index_t, 3>>& nb, const std::vector<index_t>& faces,
+                                 double tabu, std::vector<std::array<double, 6>>& data,
+                                 std::vector<std::uint8_t>& lab) {
+  const auto old = lab;
+  bool changed = false;
+  for (index_t f : faces) {
+    const auto fs = to_size(f);
+    int best = -1;
+    for (index_t g : nb[fs]) {
+      if (g < 0) continue;
+      const int l = old[to_size(g)];
+      if (l == old[fs]) continue;
+      bool opposite = false;
+      for (index_t h : nb[fs])
+        if (h >= 0 && (old[to_size(h)] ^ 1) == l) opposite = true;
+      if (!opposite && (best < 0 || data[fs][to_size(l)] < data[fs][to_size(best)])) best = l;
+    }
+    if (best < 0) continue;
+    data[fs][old[fs]] += tabu;
+    lab[fs] = static_cast<std::uint8_t>(best);
+    changed = true;
+  }
+  return changed;
+}
+
+/// `faces` and every face within `rings` steps of them across edges, ascending.
+inline std::vector<index_t> grow_face_region(const std::vector<std::array<index_t, 3>>& nb,
+                                             const std::vector<index_t>& faces, std::size_t rings) {
+  std::vector<std::uint8_t> in(nb.size(), 0);
+  std::vector<index_t> out = faces, front = faces;
+  for (index_t f : faces) in[to_size(f)] = 1;
+  for (std::size_t k = 0; k < rings; ++k) {
+    std::vector<index_t> next;
+    for (index_t f : front)
+      for (index_t g : nb[to_size(f)])
+        if (g >= 0 && !in[to_size(g)]) {
+          in[to_size(g)] = 1;
+          next.push_back(g);
+        }
+    out.insert(out.end(), next.begin(), next.end());
+    front.swap(next);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
 /// The repair loop: while a problem remains and fewer than max_iterations steps ran, relabel the
 /// chart it names (an island takes its surrounding chart's label). Returns the last problem (kind none
 /// when the labelling became valid).
