@@ -58,21 +58,30 @@ result<polycube_map> deform_polycube(tri_mesh base, const std::vector<std::array
   std::vector<int> axis_of(nc);
   for (std::size_t c = 0; c < nc; ++c) axis_of[c] = cs.chart_label[c] / 2;
   const auto paths = find_polycube_edge_paths(base, nb, cs);
-  std::vector<vec3> pos(base.positions.size());
+  const auto loops = chart_boundary_loops(nc, paths);
+  std::vector<vec3> pos(base.positions.size()), cont(base.positions.size());
   std::array<polycube_axis_classes, 3> classes;
-  for (int a = 0; a < 3; ++a) {
+  std::array<std::vector<double>, 3> planes;
+  for (int a = 0; a < 3; ++a) {  // continuous planes of all three axes first: the facing sides need them
     auto cl_or = polycube_classes(base, cs.face_chart, cs.chart_label, a, &bad_chart);
     if (!cl_or) return cl_or.error();
     classes[to_size(a)] = std::move(*cl_or);
+    const polycube_axis_classes& cl = classes[to_size(a)];
+    const auto ncl = cl.class_chart.size();
+    auto x =
+        polycube_axis_solve<E>(base, nb, cl, a, std::vector<double>(ncl, std::numeric_limits<double>::quiet_NaN()));
+    if (!x) return x.error();
+    planes[to_size(a)].assign(nc, 0.0);
+    for (std::size_t k = 0; k < ncl; ++k)
+      if (cl.class_chart[k] >= 0) planes[to_size(a)][to_size(cl.class_chart[k])] = (*x)[k];
+    for (std::size_t v = 0; v < cont.size(); ++v) cont[v][a] = (*x)[to_size(cl.vertex_class[v])];
+  }
+  for (int a = 0; a < 3; ++a) {
     const polycube_axis_classes* cl = &classes[to_size(a)];
     const auto ncl = cl->class_chart.size();
-    auto x =
-        polycube_axis_solve<E>(base, nb, *cl, a, std::vector<double>(ncl, std::numeric_limits<double>::quiet_NaN()));
-    if (!x) return x.error();
-    std::vector<double> plane(nc, 0.0);
-    for (std::size_t k = 0; k < ncl; ++k)
-      if (cl->class_chart[k] >= 0) plane[to_size(cl->class_chart[k])] = (*x)[k];
-    const auto orders = polycube_plane_orders(base, paths, cs.chart_label, *cl, a, plane, &bad_chart);
+    const auto& plane = planes[to_size(a)];
+    const auto orders = polycube_plane_orders(base, paths, cs.chart_label, *cl, a, plane, &bad_chart,
+                                              chart_facing_orders(cs, paths, loops, cont, a));
     if (!orders) return orders.error();
     const auto q = quantize_planes(plane, axis_of, *orders, a, t, &bad_chart);
     if (!q) return q.error();
@@ -83,15 +92,15 @@ result<polycube_map> deform_polycube(tri_mesh base, const std::vector<std::array
     if (!y) return y.error();
     for (std::size_t v = 0; v < pos.size(); ++v) pos[v][a] = (*y)[to_size(cl->vertex_class[v])];
   }
-  const auto loops = chart_boundary_loops(nc, paths);
   std::string why;
   if (const index_t c = find_unturnable_chart(cs, paths, loops, pos, t, why); c >= 0) {
     bad_chart = c;
     return status::not_converged(cat("polycube: chart ", c, " is not a polycube face: ", why));
   }
-  if (auto s = embed_polycube<E>(base, cs, classes, paths, loops, t, true, pos); !s) return s;
+  std::vector<std::uint8_t> cut;
+  if (auto s = embed_polycube<E>(base, cs, classes, paths, loops, t, true, pos, &cut); !s) return s;
   if (untangle_polycube(base, pos, cs.face_chart, cs.chart_label, {&classes[0], &classes[1], &classes[2]}, t,
-                        untangle_iterations) > 0)
+                        untangle_iterations, &cut) > 0)
     folded = polycube_flipped_faces(base, pos, cs.face_chart, cs.chart_label, t);
   return assemble_polycube_map(std::move(base), lab, std::move(pos), t, exec);
 }

@@ -22,6 +22,7 @@
 #include "../../core/tri_mesh.hpp"
 #include "../quad_layout.hpp"
 #include "polycube_charts.hpp"
+#include "polycube_deform.hpp"
 
 TESSERA_NAMESPACE_BEGIN
 namespace detail {
@@ -131,6 +132,46 @@ inline index_t find_unturnable_chart(const polycube_chart_set& cs, const std::ve
     }
   }
   return -1;
+}
+
+/// Order constraints that keep every chart's interior open: two parallel sides of a chart that face
+/// each other across it (overlapping in the continuous solution `cont`, the first with the interior
+/// above it, the second below, in that order along the axis across them) keep their order with at
+/// least one tile between them; so a hole cannot touch its chart's outer boundary. Per axis, in chart
+/// and side order.
+inline std::vector<polycube_plane_order> chart_facing_orders(
+    const polycube_chart_set& cs, const std::vector<polycube_edge_path>& paths,
+    const std::vector<std::vector<std::vector<chart_loop_side>>>& loops, const std::vector<vec3>& cont, int axis) {
+  std::vector<polycube_plane_order> out;
+  struct side2 {
+    index_t other;
+    double lo, hi, at;
+    bool up;  // interior on the + side of the axis
+  };
+  for (std::size_t c = 0; c < loops.size(); ++c) {
+    const auto l = static_cast<polycube_label>(cs.chart_label[c]);
+    const auto ax = quad_plane_axes(l);
+    if (ax[0] != axis && ax[1] != axis) continue;
+    const int k = ax[0] == axis ? 1 : 0;  // sides along ax[k] lie on planes of `axis`
+    std::vector<side2> sides;
+    for (const auto& loop : loops[c])
+      for (const auto& sd : loop) {
+        const auto& p = paths[to_size(sd.path)];
+        const index_t other = p.c == static_cast<index_t>(c) ? p.d : p.c;
+        if (cs.chart_label[to_size(other)] / 2 != axis) continue;
+        const vec3 a = cont[to_size(side_start(paths, sd))], b = cont[to_size(side_end(paths, sd))];
+        const double da = b[ax[to_size(k)]] - a[ax[to_size(k)]];
+        // left of the direction in the chart's counter-clockwise frame: +ax[1] for +ax[0], -ax[0] for +ax[1]
+        const bool up = k == 0 ? da > 0 : da < 0;
+        sides.push_back({other, std::min(a[ax[to_size(k)]], b[ax[to_size(k)]]),
+                         std::max(a[ax[to_size(k)]], b[ax[to_size(k)]]), 0.5 * (a[axis] + b[axis]), up});
+      }
+    for (const auto& s1 : sides)
+      for (const auto& s2 : sides)
+        if (s1.up && !s2.up && s1.other != s2.other && s1.at < s2.at && std::min(s1.hi, s2.hi) > std::max(s1.lo, s2.lo))
+          out.push_back({s1.other, s2.other});
+  }
+  return out;
 }
 
 /// Placement of the vertices of the polycube edge paths: each path's vertices spread by the base

@@ -75,6 +75,7 @@ inline polycube_chart_set find_polycube_charts(const tri_mesh& m, const std::vec
 struct polycube_edge_path {
   index_t c = -1, d = -1;
   std::vector<index_t> vertices;  ///< front and back are corners
+  double convexity = 0;           ///< > 0: the base mesh bends outwards along the path (summed over its edges)
 };
 
 /// Every polycube edge of a labelling, in order of its first corner, then of its first half-edge's face
@@ -84,6 +85,7 @@ inline std::vector<polycube_edge_path> find_polycube_edge_paths(const tri_mesh& 
                                                                 const polycube_chart_set& cs) {
   struct half {
     index_t to, c, d;
+    double bend;  // how far the face across lies below this face's plane (> 0: convex edge)
   };
   const auto nv = to_size(m.num_vertices());
   std::vector<std::vector<half>> out(nv);
@@ -92,20 +94,27 @@ inline std::vector<polycube_edge_path> find_polycube_edge_paths(const tri_mesh& 
       const index_t g = nb[f][to_size(k)];
       if (g < 0) continue;
       const index_t c = cs.face_chart[f], d = cs.face_chart[to_size(g)];
-      if (c < d) out[to_size(m.faces[f][to_size(k)])].push_back({m.faces[f][to_size((k + 1) % 3)], c, d});
+      if (c >= d) continue;
+      const index_t u = m.faces[f][to_size(k)];
+      index_t w = -1;  // the vertex of face g across the edge
+      for (index_t x : m.faces[to_size(g)])
+        if (x != u && x != m.faces[f][to_size((k + 1) % 3)]) w = x;
+      const double bend = -dot(normalized(face_area_normal(m, static_cast<index_t>(f))), m.position(w) - m.position(u));
+      out[to_size(u)].push_back({m.faces[f][to_size((k + 1) % 3)], c, d, bend});
     }
   auto corner = [&](index_t v) { return cs.vertex_charts[to_size(v)].size() >= 3; };
   std::vector<polycube_edge_path> paths;
   for (std::size_t u = 0; u < nv; ++u) {
     if (!corner(static_cast<index_t>(u))) continue;
     for (const half& h0 : out[u]) {
-      polycube_edge_path p{h0.c, h0.d, {static_cast<index_t>(u), h0.to}};
+      polycube_edge_path p{h0.c, h0.d, {static_cast<index_t>(u), h0.to}, h0.bend};
       for (std::size_t guard = 0; guard < nv && !corner(p.vertices.back()); ++guard) {
-        index_t next = -1;
+        const half* next = nullptr;
         for (const half& h : out[to_size(p.vertices.back())])
-          if (h.c == h0.c && h.d == h0.d) next = h.to;
-        if (next < 0) break;
-        p.vertices.push_back(next);
+          if (h.c == h0.c && h.d == h0.d) next = &h;
+        if (!next) break;
+        p.vertices.push_back(next->to);
+        p.convexity += next->bend;
       }
       if (corner(p.vertices.back())) paths.push_back(std::move(p));
     }

@@ -154,6 +154,10 @@ result<std::vector<double>> polycube_axis_solve(const tri_mesh& m, const std::ve
   return x;
 }
 
+/// A polycube edge whose corners differ along its axis by less than this fraction of its path length
+/// takes its direction from the base mesh's convexity along it instead.
+inline constexpr double edge_direction_min_fraction = 0.1;
+
 /// A polycube edge along some axis runs from the plane of chart `from` to the plane of chart `to`
 /// (both of that axis): `to` must lie at least one tile above `from`.
 struct polycube_plane_order {
@@ -161,14 +165,20 @@ struct polycube_plane_order {
 };
 
 /// The order constraints of one axis: every polycube edge along `axis` (paths) keeps the direction it
-/// has on the base mesh, the sign of its corners' difference along the axis (ties: the continuous
-/// planes `plane`, then the chart index), so no edge is inverted or collapsed by the quantization and
-/// every chart keeps the turning of its boundary. not_converged when both corners of an edge lie on
+/// has on the base mesh, the sign of its corners' difference along the axis (when that is under a
+/// tenth of the path's length: the base mesh's convexity along it), so no edge is inverted or
+/// collapsed by the quantization and every chart keeps the turning of its boundary. Constraints are
+/// taken most confident first (the difference over the path length); one that would close a cycle
+/// falls back to the order of the continuous planes `plane`, or is dropped when that closes one too
+/// (the verification then names what fails). `facing` adds constraints between sides of one chart
+/// (chart_facing_orders), after those of the edges. not_converged when both corners of an edge lie on
 /// the same chart of the axis (the edge would have length zero), naming the charts and the corners.
 inline result<std::vector<polycube_plane_order>> polycube_plane_orders(
     const tri_mesh& m, const std::vector<polycube_edge_path>& paths, const std::vector<std::uint8_t>& chart_label,
-    const polycube_axis_classes& cl, int axis, const std::vector<double>& plane, index_t* bad_chart = nullptr) {
+    const polycube_axis_classes& cl, int axis, const std::vector<double>& plane, index_t* bad_chart = nullptr,
+    const std::vector<polycube_plane_order>& facing = {}) {
   std::vector<polycube_plane_order> out;
+  std::vector<std::pair<polycube_plane_order, double>> cand;  // constraint, confidence
   for (const auto& p : paths) {
     if (3 - chart_label[to_size(p.c)] / 2 - chart_label[to_size(p.d)] / 2 != axis) continue;
     const index_t a = p.vertices.front(), b = p.vertices.back();
@@ -182,9 +192,53 @@ inline result<std::vector<polycube_plane_order>> polycube_plane_orders(
                                        ca, ": it would collapse"));
     }
     double s = m.position(b)[axis] - m.position(a)[axis];
-    if (s == 0) s = plane[to_size(cb)] - plane[to_size(ca)];
-    if (s == 0) s = static_cast<double>(cb - ca);
-    out.push_back(s > 0 ? polycube_plane_order{ca, cb} : polycube_plane_order{cb, ca});
+    double len = 0;
+    for (std::size_t k = 1; k < p.vertices.size(); ++k)
+      len += distance(m.position(p.vertices[k - 1]), m.position(p.vertices[k]));
+    double confidence = len > 0 ? std::abs(s) / len : 0.0;
+    if (confidence < edge_direction_min_fraction && p.convexity != 0) {
+      // a path that returns near its start: the edge runs along n_c x n_d when convex, against it when
+      // concave (c on its left)
+      const vec3 nc = label_direction(static_cast<polycube_label>(chart_label[to_size(p.c)]));
+      const vec3 nd = label_direction(static_cast<polycube_label>(chart_label[to_size(p.d)]));
+      s = (p.convexity > 0 ? 1.0 : -1.0) * cross(nc, nd)[axis];
+      confidence = edge_direction_min_fraction;
+    }
+    if (s != 0) cand.push_back({s > 0 ? polycube_plane_order{ca, cb} : polycube_plane_order{cb, ca}, confidence});
+    // the fallback when that direction closes a cycle: the continuous planes' order
+    double sp = plane[to_size(cb)] - plane[to_size(ca)];
+    if (sp == 0) sp = static_cast<double>(cb - ca);
+    cand.push_back({sp > 0 ? polycube_plane_order{ca, cb} : polycube_plane_order{cb, ca}, -1.0});
+  }
+  for (const auto& o : facing) cand.push_back({o, -0.5});
+  // most confident first; a constraint that would close a cycle with those before it is dropped
+  std::stable_sort(cand.begin(), cand.end(), [](const auto& x, const auto& y) {
+    return std::tuple(-x.second, x.first.from, x.first.to) < std::tuple(-y.second, y.first.from, y.first.to);
+  });
+  std::vector<std::vector<index_t>> succ(chart_label.size());
+  std::vector<std::uint8_t> seen(chart_label.size(), 0);
+  std::vector<index_t> stack;
+  auto reaches = [&](index_t from, index_t to) {
+    std::fill(seen.begin(), seen.end(), std::uint8_t{0});
+    stack.assign(1, from);
+    seen[to_size(from)] = 1;
+    while (!stack.empty()) {
+      const index_t x = stack.back();
+      stack.pop_back();
+      if (x == to) return true;
+      for (index_t y : succ[to_size(x)])
+        if (!seen[to_size(y)]) {
+          seen[to_size(y)] = 1;
+          stack.push_back(y);
+        }
+    }
+    return false;
+  };
+  for (const auto& [o, conf] : cand) {
+    (void)conf;
+    if (reaches(o.to, o.from)) continue;
+    succ[to_size(o.from)].push_back(o.to);
+    out.push_back(o);
   }
   std::sort(out.begin(), out.end(), [&](const polycube_plane_order& x, const polycube_plane_order& y) {
     return std::tuple(plane[to_size(x.from)], x.from, x.to) < std::tuple(plane[to_size(y.from)], y.from, y.to);
@@ -247,11 +301,13 @@ inline std::vector<index_t> polycube_flipped_faces(const tri_mesh& m, const std:
 
 /// Untangling after the final solve: while faces are flipped (at most `iterations` rounds), every free
 /// coordinate of the vertices within two rings of a flipped face moves to the mean of its neighbours'
-/// (Jacobi steps of a Tutte embedding, which is injective on convex charts). Chart planes never move.
+/// (Jacobi steps of a Tutte embedding, which is injective on convex charts). Chart planes never move,
+/// nor do the chart-interior vertices marked in `hold` (the cuts of polycube_chart_cuts.hpp).
 /// Returns the number of faces still flipped.
 inline index_t untangle_polycube(const tri_mesh& m, std::vector<vec3>& pos, const std::vector<index_t>& face_chart,
                                  const std::vector<std::uint8_t>& chart_label,
-                                 const std::array<const polycube_axis_classes*, 3>& cl, double t, int iterations) {
+                                 const std::array<const polycube_axis_classes*, 3>& cl, double t, int iterations,
+                                 const std::vector<std::uint8_t>* hold = nullptr) {
   const auto nv = to_size(m.num_vertices());
   std::vector<std::vector<index_t>> ring(nv);
   for (const auto& f : m.faces)
@@ -273,7 +329,7 @@ inline index_t untangle_polycube(const tri_mesh& m, std::vector<vec3>& pos, cons
     }
     std::vector<vec3> next = pos;
     for (std::size_t v = 0; v < nv; ++v) {
-      if (!mark[v]) continue;
+      if (!mark[v] || (hold && (*hold)[v])) continue;
       int free_axes = 0;
       for (int a = 0; a < 3; ++a) free_axes += is_free(v, a) ? 1 : 0;
       if (free_axes == 0) continue;

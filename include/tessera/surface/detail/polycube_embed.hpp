@@ -32,12 +32,13 @@ inline constexpr double embed_min_weight = 1e-2;
 inline constexpr double embed_max_weight = 1e2;
 
 /// Places edge and interior vertices (see the file comment); `pos` holds the planes' coordinates on
-/// entry (from polycube_axis_solve with fixed planes) and is updated in place.
+/// entry (from polycube_axis_solve with fixed planes) and is updated in place. `cut_vertices`, when
+/// given, receives a mark per vertex on a cut (held by the untangling).
 template <class Dep>
 status embed_polycube(const tri_mesh& m, const polycube_chart_set& cs, const std::array<polycube_axis_classes, 3>& cl,
                       const std::vector<polycube_edge_path>& paths,
                       const std::vector<std::vector<std::vector<chart_loop_side>>>& loops, double t, bool cut_charts,
-                      std::vector<vec3>& pos) {
+                      std::vector<vec3>& pos, std::vector<std::uint8_t>* cut_vertices = nullptr) {
   using real = dependent_t<double, Dep>;
   using sparse = Eigen::SparseMatrix<real>;
   using vector = Eigen::Matrix<real, Eigen::Dynamic, 1>;
@@ -88,6 +89,10 @@ status embed_polycube(const tri_mesh& m, const polycube_chart_set& cs, const std
     for (std::size_t v = 0; v < nv; ++v)
       for (const auto& e : nbr[v]) ring[v].push_back(e.first);
     cut_charts_into_rectangles(m, cs, paths, loops, ring, t, pp, pos, fixed, is_free);
+  }
+  if (cut_vertices) {
+    cut_vertices->assign(nv, 0);
+    for (std::size_t v = 0; v < nv; ++v) (*cut_vertices)[v] = fixed[v] && cs.vertex_charts[v].size() == 1 ? 1 : 0;
   }
   // 2) chart interiors: per axis, the free coordinates of interior vertices
   for (int a = 0; a < 3; ++a) {
