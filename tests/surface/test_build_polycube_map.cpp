@@ -315,3 +315,26 @@ TEST_CASE("polycube repair: relabel rounds are bounded and checked") {
   o.tiles_across = 6;
   CHECK(build_polycube_map(shapes::sphere(8), o));
 }
+
+TEST_CASE("polycube repair: two charts of one axis meeting at a vertex are named by that vertex") {
+  auto l = label_voxels(shapes::cube(), 2);
+  // on the top face, the squares at (0, 1) and (1, 0) take label +X: the two +Z squares left meet at
+  // the face centre only
+  index_t centre = -1;
+  for (index_t v = 0; v < l.m.num_vertices(); ++v)
+    if (distance(l.m.position(v), {0.5, 0.5, 1}) < 1e-12) centre = v;
+  REQUIRE(centre >= 0);
+  for (index_t f = 0; f < l.m.num_faces(); ++f) {
+    const vec3 c = (l.m.position(l.m.face_vertex(f, 0)) + l.m.position(l.m.face_vertex(f, 1)) +
+                    l.m.position(l.m.face_vertex(f, 2))) /
+                   3.0;
+    if (c.z > 0.999 && (c.x < 0.5) != (c.y < 0.5)) l.lab[detail::to_size(f)] = 0;
+  }
+  const auto cs = detail::find_polycube_charts(l.m, l.nb, l.lab);
+  index_t bad = -1, pinch = -1;
+  auto r = detail::polycube_classes(l.m, cs.face_chart, cs.chart_label, 2, &bad, &pinch);
+  REQUIRE(!r);
+  CHECK(pinch == centre);
+  CHECK(bad == -1);  // with pinch_vertex given, the faces around it are relabelled, not a whole chart
+  CHECK(r.error().message().find("joined through vertex " + std::to_string(centre)) != std::string::npos);
+}

@@ -46,7 +46,8 @@ inline tri_mesh polycube_base_copy(const tri_mesh& m) {
 
 /// Steps (3) to (5) for a valid labelling. On failure, `bad_chart` names the chart to relabel when
 /// the failure is one chart's (an edge cycle, a collapsed edge, a boundary that does not turn as a
-/// polycube face), else -1; `folded` receives the faces still folded after the untangling.
+/// polycube face), else -1; `folded` receives the faces still folded after the untangling, or the faces
+/// around a vertex where two charts of one axis meet.
 template <Executor E>
 result<polycube_map> deform_polycube(tri_mesh base, const std::vector<std::array<index_t, 3>>& nb,
                                      const std::vector<std::uint8_t>& lab, double t, int untangle_iterations, E& exec,
@@ -63,8 +64,15 @@ result<polycube_map> deform_polycube(tri_mesh base, const std::vector<std::array
   std::array<polycube_axis_classes, 3> classes;
   std::array<std::vector<double>, 3> planes;
   for (int a = 0; a < 3; ++a) {  // continuous planes of all three axes first: the facing sides need them
-    auto cl_or = polycube_classes(base, cs.face_chart, cs.chart_label, a, &bad_chart);
-    if (!cl_or) return cl_or.error();
+    index_t pinch = -1;
+    auto cl_or = polycube_classes(base, cs.face_chart, cs.chart_label, a, &bad_chart, &pinch);
+    if (!cl_or) {
+      // two charts of one axis meet at a vertex: their faces there are relabelled as folded faces
+      for (std::size_t f = 0; f < base.faces.size(); ++f)
+        for (index_t v : base.faces[f])
+          if (v == pinch) folded.push_back(static_cast<index_t>(f));
+      return cl_or.error();
+    }
     classes[to_size(a)] = std::move(*cl_or);
     const polycube_axis_classes& cl = classes[to_size(a)];
     const auto ncl = cl.class_chart.size();

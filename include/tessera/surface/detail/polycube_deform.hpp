@@ -41,7 +41,7 @@ struct polycube_axis_classes {
 
 inline result<polycube_axis_classes> polycube_classes(const tri_mesh& m, const std::vector<index_t>& face_chart,
                                                       const std::vector<std::uint8_t>& chart_label, int axis,
-                                                      index_t* bad_chart = nullptr) {
+                                                      index_t* bad_chart = nullptr, index_t* pinch_vertex = nullptr) {
   const index_t nv = m.num_vertices();
   const auto nc = static_cast<index_t>(chart_label.size());
   std::vector<index_t> parent(to_size(nv + nc));
@@ -50,6 +50,29 @@ inline result<polycube_axis_classes> polycube_classes(const tri_mesh& m, const s
     while (parent[to_size(x)] != x) x = parent[to_size(x)] = parent[to_size(parent[to_size(x)])];
     return x;
   };
+  // two charts of the axis that share a vertex (first by face order) would share their plane
+  std::vector<index_t> vertex_chart(to_size(nv), -1);
+  index_t pinch = -1, pinch_a = -1, pinch_b = -1;
+  for (std::size_t f = 0; f < m.faces.size(); ++f) {
+    const index_t c = face_chart[f];
+    if (chart_label[to_size(c)] / 2 != axis) continue;
+    for (index_t v : m.faces[f]) {
+      auto& vc = vertex_chart[to_size(v)];
+      if (vc < 0) vc = c;
+      if (vc != c && pinch < 0) {
+        pinch = v;
+        pinch_a = vc;
+        pinch_b = c;
+      }
+    }
+  }
+  if (pinch >= 0) {
+    if (bad_chart) *bad_chart = pinch_vertex ? -1 : pinch_b;
+    if (pinch_vertex) *pinch_vertex = pinch;
+    return status::not_converged(cat("polycube: charts ", std::min(pinch_a, pinch_b), " and ",
+                                     std::max(pinch_a, pinch_b), " of axis ", "XYZ"[axis],
+                                     " are joined through vertex ", pinch, ": their planes would coincide"));
+  }
   for (std::size_t f = 0; f < m.faces.size(); ++f) {
     const index_t c = face_chart[f];
     if (chart_label[to_size(c)] / 2 != axis) continue;
@@ -64,14 +87,7 @@ inline result<polycube_axis_classes> polycube_classes(const tri_mesh& m, const s
   for (index_t c = 0; c < nc; ++c) {
     if (chart_label[to_size(c)] / 2 != axis) continue;
     const auto r = to_size(find(nv + c));
-    if (root_chart[r] >= 0 && root_chart[r] != c) {
-      index_t shared = 0;
-      while (shared < nv && to_size(find(shared)) != r) ++shared;
-      if (bad_chart) *bad_chart = c;
-      return status::not_converged(cat("polycube: charts ", root_chart[r], " and ", c, " of axis ", "XYZ"[axis],
-                                       " are joined through vertex ", shared, ": their planes would coincide"));
-    }
-    root_chart[r] = c;
+    root_chart[r] = c;  // one chart per class: charts of the axis share no vertex (checked above)
   }
   for (index_t v = 0; v < nv; ++v) {
     const auto r = to_size(find(v));
