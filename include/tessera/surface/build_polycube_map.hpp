@@ -37,6 +37,9 @@ inline constexpr double axis_aligned_cos_slack = 1e-9;
 /// Fidelity cost added to a face's label when the deformation fails on its chart and the chart is
 /// relabelled: more than any fidelity cost (at most the face's normalized area, about 1).
 inline constexpr double relabel_tabu_cost = 100;
+/// Multiples of polycube_options::compactness tried in turn by build_polycube_map until one gives a
+/// valid polycube (the first is the option itself).
+inline constexpr double compactness_schedule[] = {1, 4, 3, 8, 2, 0.5};
 inline tri_mesh polycube_base_copy(const tri_mesh& m) {
   tri_mesh b;
   b.positions = m.positions;
@@ -112,36 +115,15 @@ result<polycube_map> deform_polycube(tri_mesh base, const std::vector<std::array
     folded = polycube_flipped_faces(base, pos, cs.face_chart, cs.chart_label, t);
   return assemble_polycube_map(std::move(base), lab, std::move(pos), t, exec);
 }
-}  // namespace detail
-
-/// Builds the polycube map of `mesh` automatically (see the file comment). The map keeps the input's
-/// vertex and face order (no refinement: every face lies in one chart). Deterministic: the same output
-/// for every executor and thread count. Errors: invalid_argument from validate_polycube_input and
-/// polycube_tile_size; not_converged naming the chart, corner, face or edge when the repaired labelling
-/// or the deformed polycube is not valid (never a half-valid map); internal_error for a failed solve.
-/// Typical cost: O(F log F) plus six max-flows per α-expansion sweep and six sparse factorisations.
-template <Mesh M, Executor E = serial_executor>
-result<polycube_map> build_polycube_map(const M& mesh, const polycube_options& options = {}, E&& exec = E{}) {
-  if (auto s = validate_polycube_input(mesh); !s) return s;
-  auto t = polycube_tile_size(mesh, options);
-  if (!t) return t.error();
-  if (options.max_expansion_cycles < 0 || options.max_repair_iterations < 0 || options.untangle_iterations < 0 ||
-      options.max_relabel_rounds < 0 || !(options.compactness >= 0) ||
-      !(options.opposite_penalty >= 1 && options.opposite_penalty <= 2))
-    return status::invalid_argument(detail::cat(
-        "polycube_options: max_expansion_cycles, max_repair_iterations, untangle_iterations and "
-        "max_relabel_rounds must be >= 0, compactness >= 0 and opposite_penalty in [1, 2]; got ",
-        options.max_expansion_cycles, ", ", options.max_repair_iterations, ", ", options.untangle_iterations, ", ",
-        options.max_relabel_rounds, ", ", options.compactness, ", ", options.opposite_penalty));
-  auto m = to_tri_mesh(mesh);
-  if (!m) return m.error();
-  tri_mesh base = detail::polycube_base_copy(*m);
-  const auto adj = face_adjacency(base);
+/// One automatic attempt at a given compactness: label, then label -> repair -> deform rounds; a
+/// failure of one chart relabels it, and its faces' old label costs more from then on (so the repair
+/// cannot bring it back), then runs again (bounded by max_relabel_rounds).
+template <Executor E>
+result<polycube_map> build_polycube_attempt(const tri_mesh& base, const face_adjacency_result& adj,
+                                            const polycube_options& options, double t, E& exec) {
   const auto en = detail::make_polycube_energy(base, adj.neighbor, options, exec);
   auto lab = detail::alpha_expansion_labels(en, options.max_expansion_cycles);
   if (!lab) return lab.error();
-  // label -> repair -> deform; a failure of one chart relabels it, and its faces' old label costs
-  // more from then on (so the repair cannot bring it back), then runs again (bounded)
   auto data = en.data;
   std::size_t stall = 0, last_folded = std::numeric_limits<std::size_t>::max();
   status last;
@@ -151,7 +133,7 @@ result<polycube_map> build_polycube_map(const M& mesh, const polycube_options& o
     if (problem.kind != detail::polycube_label_problem::none) return round == 0 ? problem.to_status() : last;
     index_t bad = -1;
     std::vector<index_t> folded;
-    auto r = detail::deform_polycube(base, adj.neighbor, *lab, *t, options.untangle_iterations, exec, bad, folded);
+    auto r = detail::deform_polycube(base, adj.neighbor, *lab, t, options.untangle_iterations, exec, bad, folded);
     if (r || round >= options.max_relabel_rounds) return r;
     last = r.error();
     if (bad >= 0) {
@@ -173,6 +155,50 @@ result<polycube_map> build_polycube_map(const M& mesh, const polycube_options& o
       if (!changed) return r;
     }
   }
+}
+}  // namespace detail
+
+/// Builds the polycube map of `mesh` automatically (see the file comment). The map keeps the input's
+/// vertex and face order (no refinement: every face lies in one chart). Deterministic: the same output
+/// for every executor and thread count. Errors: invalid_argument from validate_polycube_input and
+/// polycube_tile_size; not_converged naming the chart, corner, face or edge when the repaired labelling
+/// or the deformed polycube is not valid (never a half-valid map); internal_error for a failed solve.
+/// Typical cost: O(F log F) plus six max-flows per α-expansion sweep and six sparse factorisations.
+template <Mesh M, Executor E = serial_executor>
+result<polycube_map> build_polycube_map(const M& mesh, const polycube_options& options = {}, E&& exec = E{}) {
+  if (auto s = validate_polycube_input(mesh); !s) return s;
+  auto t = polycube_tile_size(mesh, options);
+  if (!t) return t.error();
+  if (options.max_expansion_cycles < 0 || options.max_repair_iterations < 0 || options.untangle_iterations < 0 ||
+      options.max_relabel_rounds < 0 || options.max_compactness_retries < 0 || !(options.compactness >= 0) ||
+      !(options.opposite_penalty >= 1 && options.opposite_penalty <= 2))
+    return status::invalid_argument(detail::cat(
+        "polycube_options: max_expansion_cycles, max_repair_iterations, untangle_iterations, "
+        "max_relabel_rounds and max_compactness_retries must be >= 0, compactness >= 0 and opposite_penalty in "
+        "[1, 2]; got ",
+        options.max_expansion_cycles, ", ", options.max_repair_iterations, ", ", options.untangle_iterations, ", ",
+        options.max_relabel_rounds, ", ", options.max_compactness_retries, ", ", options.compactness, ", ",
+        options.opposite_penalty));
+  auto m = to_tri_mesh(mesh);
+  if (!m) return m.error();
+  tri_mesh base = detail::polycube_base_copy(*m);
+  const auto adj = face_adjacency(base);
+  if (options.compactness == 0 || options.max_compactness_retries == 0)
+    return detail::build_polycube_attempt(base, adj, options, *t, exec);
+  // the labelling's compactness decides most failures on scanned meshes: retry with other multiples
+  result<polycube_map> first = status::internal_error("polycube: no attempt");
+  const int tries =
+      std::min<int>(options.max_compactness_retries, static_cast<int>(std::size(detail::compactness_schedule)) - 1);
+  for (int k = 0; k <= tries; ++k) {
+    polycube_options o = options;
+    o.compactness = options.compactness * detail::compactness_schedule[detail::to_size(k)];
+    auto r = detail::build_polycube_attempt(base, adj, o, *t, exec);
+    if (r || k == 0) first = std::move(r);
+    if (first) return first;
+  }
+  return status::not_converged(detail::cat(first.error().message(), " (also tried compactness x",
+                                           detail::compactness_schedule[1], " .. x",
+                                           detail::compactness_schedule[detail::to_size(tries)], ": none valid)"));
 }
 
 /// Builds the polycube map of `mesh` from a user labelling: one label per face (input face order),
