@@ -305,7 +305,7 @@ TEST_CASE("polycube repair: folded faces take a neighbouring chart's label") {
   CHECK(std::is_sorted(region.begin(), region.end()));
 }
 
-TEST_CASE("polycube repair: relabel rounds are bounded and checked") {
+TEST_CASE("polycube repair: relabel rounds and compactness retries are bounded and checked") {
   polycube_options o;
   o.max_relabel_rounds = -1;
   auto r = build_polycube_map(shapes::sphere(3), o);
@@ -314,6 +314,19 @@ TEST_CASE("polycube repair: relabel rounds are bounded and checked") {
   o.max_relabel_rounds = 0;  // no relabelling: the sphere needs none
   o.tiles_across = 6;
   CHECK(build_polycube_map(shapes::sphere(8), o));
+  o.max_compactness_retries = -1;
+  r = build_polycube_map(shapes::sphere(3), o);
+  REQUIRE(!r);
+  CHECK(r.error().message().find("max_compactness_retries") != std::string::npos);
+  // the first attempt succeeds on the sphere: retries change nothing
+  o.max_compactness_retries = 0;
+  const auto a = build_polycube_map(shapes::sphere(8), o);
+  o.max_compactness_retries = 5;
+  const auto b = build_polycube_map(shapes::sphere(8), o);
+  REQUIRE(a);
+  REQUIRE(b);
+  CHECK(a->labels == b->labels);
+  CHECK(a->polycube == b->polycube);
 }
 
 TEST_CASE("polycube repair: two charts of one axis meeting at a vertex are named by that vertex") {
