@@ -1,6 +1,8 @@
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include <tessera/core/executor.hpp>
@@ -155,4 +157,197 @@ TEST_CASE("polycube: bad input and options never crash") {
   o.tile_size = 0.5;
   o.opposite_penalty = 5;
   CHECK(!build_polycube_map(shapes::sphere(3), o));
+}
+
+namespace {
+/// Labels of a voxel surface from its face normals, and the chart set.
+struct labelled {
+  tri_mesh m;
+  std::vector<std::array<index_t, 3>> nb;
+  std::vector<std::uint8_t> lab;
+  detail::polycube_chart_set cs;
+};
+labelled label_voxels(const std::set<shapes::voxel>& vox, int s) {
+  labelled l;
+  l.m = shapes::voxel_surface(vox, s);
+  l.nb = face_adjacency(l.m).neighbor;
+  for (index_t f = 0; f < l.m.num_faces(); ++f) {
+    const vec3 n = normalized(face_area_normal(l.m, f));
+    for (int k = 0; k < 6; ++k)
+      if (dot(n, label_direction(static_cast<polycube_label>(k))) > 0.5) l.lab.push_back(static_cast<std::uint8_t>(k));
+  }
+  l.cs = detail::find_polycube_charts(l.m, l.nb, l.lab);
+  return l;
+}
+}  // namespace
+
+TEST_CASE("polycube repair: edge paths run from corner to corner") {
+  const auto l = label_voxels(shapes::cube(), 2);
+  const auto paths = detail::find_polycube_edge_paths(l.m, l.nb, l.cs);
+  REQUIRE(paths.size() == 12);
+  for (const auto& p : paths) {
+    CHECK(p.c < p.d);
+    CHECK(p.vertices.size() == 3);  // two corners and the midpoint of the unit edge
+    CHECK(l.cs.vertex_charts[detail::to_size(p.vertices.front())].size() == 3);
+    CHECK(l.cs.vertex_charts[detail::to_size(p.vertices.back())].size() == 3);
+    CHECK(l.cs.vertex_charts[detail::to_size(p.vertices[1])].size() == 2);
+  }
+  const auto loops = detail::chart_boundary_loops(l.cs.chart_label.size(), paths);
+  for (const auto& cl : loops) {
+    REQUIRE(cl.size() == 1);  // one loop of four sides per square chart
+    CHECK(cl[0].size() == 4);
+  }
+}
+
+TEST_CASE("polycube repair: quantization keeps the direction of every edge, and finds cycles") {
+  // three charts of axis X whose continuous planes all round to 0; edges 0 -> 1 -> 2 raise them
+  const std::vector<double> p{0.2, 0.1, 0.0};
+  const std::vector<int> axis{0, 0, 0};
+  auto q = detail::quantize_planes(p, axis, {{0, 1}, {1, 2}}, 0, 1.0);
+  REQUIRE(q);
+  CHECK(*q == std::vector<std::int64_t>{0, 1, 2});
+  auto bad = index_t{-1};
+  auto cyc = detail::quantize_planes(p, axis, {{0, 1}, {1, 2}, {2, 0}}, 0, 1.0, &bad);
+  REQUIRE(!cyc);
+  CHECK(cyc.error().message().find("cycle of directions") != std::string::npos);
+  CHECK(bad >= 0);
+}
+
+TEST_CASE("polycube repair: a chart boundary that does not turn as a polycube face is named") {
+  const auto l = label_voxels(shapes::l_shape(), 2);
+  const auto paths = detail::find_polycube_edge_paths(l.m, l.nb, l.cs);
+  const auto loops = detail::chart_boundary_loops(l.cs.chart_label.size(), paths);
+  std::string why;
+  CHECK(detail::find_unturnable_chart(l.cs, paths, loops, l.m.positions, 0.5, why) == -1);
+  // all corners at one point: every side has length zero
+  const std::vector<vec3> flat(l.m.positions.size());
+  CHECK(detail::find_unturnable_chart(l.cs, paths, loops, flat, 0.5, why) == 0);
+  CHECK(why.find("length zero") != std::string::npos);
+  // mirrored along X: the loops of the charts facing Y and Z turn by -4, as holes without an outer loop
+  auto mirrored = l.m.positions;
+  for (auto& p : mirrored) p.x = -p.x;
+  CHECK(detail::find_unturnable_chart(l.cs, paths, loops, mirrored, 0.5, why) >= 0);
+  CHECK(why.find("0 outer boundary loops") != std::string::npos);
+}
+
+TEST_CASE("polycube repair: the L-shaped charts are cut into rectangles, then embedded unfolded") {
+  const auto l = label_voxels(shapes::l_shape(), 4);
+  const auto paths = detail::find_polycube_edge_paths(l.m, l.nb, l.cs);
+  const auto loops = detail::chart_boundary_loops(l.cs.chart_label.size(), paths);
+  std::array<detail::polycube_axis_classes, 3> cl;
+  for (int a = 0; a < 3; ++a)
+    cl[detail::to_size(a)] = *detail::polycube_classes(l.m, l.cs.face_chart, l.cs.chart_label, a);
+  auto is_free = [&](std::size_t v, int a) {
+    return cl[detail::to_size(a)].class_chart[detail::to_size(cl[detail::to_size(a)].vertex_class[v])] < 0;
+  };
+  std::vector<std::vector<index_t>> ring(l.m.positions.size());
+  for (const auto& f : l.m.faces)
+    for (int k = 0; k < 3; ++k) ring[detail::to_size(f[detail::to_size(k)])].push_back(f[detail::to_size((k + 1) % 3)]);
+  // interior vertices scrambled: the cuts must not depend on them
+  auto pos = l.m.positions;
+  std::vector<std::uint8_t> fixed(pos.size(), 0);
+  detail::polycube_path_pins pp;
+  pp.arc.resize(paths.size());
+  pp.pins.resize(paths.size());
+  for (std::size_t i = 0; i < paths.size(); ++i) {
+    for (index_t v : paths[i].vertices) fixed[detail::to_size(v)] = 1;
+    pp.arc[i].assign(paths[i].vertices.size(), 0.0);
+    for (std::size_t k = 0; k < paths[i].vertices.size(); ++k)
+      pp.arc[i][k] = static_cast<double>(k) / static_cast<double>(paths[i].vertices.size() - 1);
+  }
+  const index_t cuts = detail::cut_charts_into_rectangles(l.m, l.cs, paths, loops, ring, 0.25, pp, pos, fixed, is_free);
+  CHECK(cuts == 2);  // one reflex corner on the top and one on the bottom face
+  // every cut vertex lies on its chart's plane and on a grid line through the reflex corner (x or y = 1)
+  for (std::size_t v = 0; v < pos.size(); ++v)
+    if (fixed[v] && l.cs.vertex_charts[v].size() == 1) {
+      CHECK(std::abs(pos[v].z - l.m.positions[v].z) < 1e-12);
+      CHECK(std::min(std::abs(pos[v].x - 1), std::abs(pos[v].y - 1)) < 1e-9);
+    }
+  // and the whole pipeline from these labels: valid, no folded face
+  auto r = build_polycube_map_from_labels(l.m, l.lab, [] {
+    polycube_options o;
+    o.tile_size = 0.25;
+    return o;
+  }());
+  INFO(r.error().to_string());
+  REQUIRE(r);
+  check_polycube(*r);
+}
+
+TEST_CASE("polycube repair: folded faces take a neighbouring chart's label") {
+  const auto l = label_voxels(shapes::cube(), 2);
+  auto lab = l.lab;
+  std::vector<std::array<double, 6>> data(lab.size(), std::array<double, 6>{1, 1, 1, 1, 1, 1});
+  // a face on an edge of the cube borders another chart; a face inside a chart borders none when s = 4
+  index_t border = -1;
+  for (std::size_t f = 0; f < lab.size() && border < 0; ++f)
+    for (index_t g : l.nb[f])
+      if (lab[detail::to_size(g)] != lab[f]) border = static_cast<index_t>(f);
+  REQUIRE(border >= 0);
+  const auto old = lab[detail::to_size(border)];
+  CHECK(detail::relabel_folded_faces(l.nb, {border}, 100, data, lab));
+  CHECK(lab[detail::to_size(border)] != old);
+  CHECK((lab[detail::to_size(border)] ^ 1) != old);  // never the opposite label of a neighbour
+  CHECK(data[detail::to_size(border)][old] == 101);  // the old label is tabu from now on
+  const auto big = label_voxels(shapes::cube(), 4);
+  auto lab4 = big.lab;
+  std::vector<std::array<double, 6>> data4(lab4.size(), std::array<double, 6>{});
+  index_t inner = -1;
+  for (std::size_t f = 0; f < lab4.size() && inner < 0; ++f) {
+    bool all = true;
+    for (index_t g : big.nb[f]) all = all && lab4[detail::to_size(g)] == lab4[f];
+    if (all) inner = static_cast<index_t>(f);
+  }
+  REQUIRE(inner >= 0);
+  CHECK(!detail::relabel_folded_faces(big.nb, {inner}, 100, data4, lab4));
+  const auto region = detail::grow_face_region(big.nb, {inner}, 1);
+  CHECK(region.size() == 4);
+  CHECK(std::is_sorted(region.begin(), region.end()));
+}
+
+TEST_CASE("polycube repair: relabel rounds and compactness retries are bounded and checked") {
+  polycube_options o;
+  o.max_relabel_rounds = -1;
+  auto r = build_polycube_map(shapes::sphere(3), o);
+  REQUIRE(!r);
+  CHECK(r.error().message().find("max_relabel_rounds") != std::string::npos);
+  o.max_relabel_rounds = 0;  // no relabelling: the sphere needs none
+  o.tiles_across = 6;
+  CHECK(build_polycube_map(shapes::sphere(8), o));
+  o.max_compactness_retries = -1;
+  r = build_polycube_map(shapes::sphere(3), o);
+  REQUIRE(!r);
+  CHECK(r.error().message().find("max_compactness_retries") != std::string::npos);
+  // the first attempt succeeds on the sphere: retries change nothing
+  o.max_compactness_retries = 0;
+  const auto a = build_polycube_map(shapes::sphere(8), o);
+  o.max_compactness_retries = 5;
+  const auto b = build_polycube_map(shapes::sphere(8), o);
+  REQUIRE(a);
+  REQUIRE(b);
+  CHECK(a->labels == b->labels);
+  CHECK(a->polycube == b->polycube);
+}
+
+TEST_CASE("polycube repair: two charts of one axis meeting at a vertex are named by that vertex") {
+  auto l = label_voxels(shapes::cube(), 2);
+  // on the top face, the squares at (0, 1) and (1, 0) take label +X: the two +Z squares left meet at
+  // the face centre only
+  index_t centre = -1;
+  for (index_t v = 0; v < l.m.num_vertices(); ++v)
+    if (distance(l.m.position(v), {0.5, 0.5, 1}) < 1e-12) centre = v;
+  REQUIRE(centre >= 0);
+  for (index_t f = 0; f < l.m.num_faces(); ++f) {
+    const vec3 c = (l.m.position(l.m.face_vertex(f, 0)) + l.m.position(l.m.face_vertex(f, 1)) +
+                    l.m.position(l.m.face_vertex(f, 2))) /
+                   3.0;
+    if (c.z > 0.999 && (c.x < 0.5) != (c.y < 0.5)) l.lab[detail::to_size(f)] = 0;
+  }
+  const auto cs = detail::find_polycube_charts(l.m, l.nb, l.lab);
+  index_t bad = -1, pinch = -1;
+  auto r = detail::polycube_classes(l.m, cs.face_chart, cs.chart_label, 2, &bad, &pinch);
+  REQUIRE(!r);
+  CHECK(pinch == centre);
+  CHECK(bad == -1);  // with pinch_vertex given, the faces around it are relabelled, not a whole chart
+  CHECK(r.error().message().find("joined through vertex " + std::to_string(centre)) != std::string::npos);
 }

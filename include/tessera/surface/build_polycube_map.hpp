@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <limits>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "../core/config.hpp"
@@ -33,6 +34,12 @@ TESSERA_NAMESPACE_BEGIN
 namespace detail {
 /// A deformed face is axis-aligned when its unit normal's dot with a label direction exceeds 1 minus this.
 inline constexpr double axis_aligned_cos_slack = 1e-9;
+/// Fidelity cost added to a face's label when the deformation fails on its chart and the chart is
+/// relabelled: more than any fidelity cost (at most the face's normalized area, about 1).
+inline constexpr double relabel_tabu_cost = 100;
+/// Multiples of polycube_options::compactness tried in turn by build_polycube_map until one gives a
+/// valid polycube (the first is the option itself).
+inline constexpr double compactness_schedule[] = {1, 4, 3, 8, 2, 0.5};
 inline tri_mesh polycube_base_copy(const tri_mesh& m) {
   tri_mesh b;
   b.positions = m.positions;
@@ -40,41 +47,114 @@ inline tri_mesh polycube_base_copy(const tri_mesh& m) {
   return b;
 }
 
-/// Steps (3) to (5) for a valid labelling.
+/// Steps (3) to (5) for a valid labelling. On failure, `bad_chart` names the chart to relabel when
+/// the failure is one chart's (an edge cycle, a collapsed edge, a boundary that does not turn as a
+/// polycube face), else -1; `folded` receives the faces still folded after the untangling, or the faces
+/// around a vertex where two charts of one axis meet.
 template <Executor E>
 result<polycube_map> deform_polycube(tri_mesh base, const std::vector<std::array<index_t, 3>>& nb,
-                                     const std::vector<std::uint8_t>& lab, double t, int untangle_iterations, E& exec) {
+                                     const std::vector<std::uint8_t>& lab, double t, int untangle_iterations, E& exec,
+                                     index_t& bad_chart, std::vector<index_t>& folded) {
+  bad_chart = -1;
+  folded.clear();
   const auto cs = find_polycube_charts(base, nb, lab);
   const std::size_t nc = cs.chart_label.size();
   std::vector<int> axis_of(nc);
   for (std::size_t c = 0; c < nc; ++c) axis_of[c] = cs.chart_label[c] / 2;
-  const auto partners = polycube_plane_partners(cs.vertex_charts, cs.chart_label);
-  std::vector<vec3> pos(base.positions.size());
+  const auto paths = find_polycube_edge_paths(base, nb, cs);
+  const auto loops = chart_boundary_loops(nc, paths);
+  std::vector<vec3> pos(base.positions.size()), cont(base.positions.size());
   std::array<polycube_axis_classes, 3> classes;
-  for (int a = 0; a < 3; ++a) {
-    auto cl_or = polycube_classes(base, cs.face_chart, cs.chart_label, a);
-    if (!cl_or) return cl_or.error();
+  std::array<std::vector<double>, 3> planes;
+  for (int a = 0; a < 3; ++a) {  // continuous planes of all three axes first: the facing sides need them
+    index_t pinch = -1;
+    auto cl_or = polycube_classes(base, cs.face_chart, cs.chart_label, a, &bad_chart, &pinch);
+    if (!cl_or) {
+      // two charts of one axis meet at a vertex: their faces there are relabelled as folded faces
+      for (std::size_t f = 0; f < base.faces.size(); ++f)
+        for (index_t v : base.faces[f])
+          if (v == pinch) folded.push_back(static_cast<index_t>(f));
+      return cl_or.error();
+    }
     classes[to_size(a)] = std::move(*cl_or);
+    const polycube_axis_classes& cl = classes[to_size(a)];
+    const auto ncl = cl.class_chart.size();
+    auto x =
+        polycube_axis_solve<E>(base, nb, cl, a, std::vector<double>(ncl, std::numeric_limits<double>::quiet_NaN()));
+    if (!x) return x.error();
+    planes[to_size(a)].assign(nc, 0.0);
+    for (std::size_t k = 0; k < ncl; ++k)
+      if (cl.class_chart[k] >= 0) planes[to_size(a)][to_size(cl.class_chart[k])] = (*x)[k];
+    for (std::size_t v = 0; v < cont.size(); ++v) cont[v][a] = (*x)[to_size(cl.vertex_class[v])];
+  }
+  for (int a = 0; a < 3; ++a) {
     const polycube_axis_classes* cl = &classes[to_size(a)];
     const auto ncl = cl->class_chart.size();
-    auto x =
-        polycube_axis_solve<E>(base, nb, *cl, a, std::vector<double>(ncl, std::numeric_limits<double>::quiet_NaN()));
-    if (!x) return x.error();
-    std::vector<double> plane(nc, 0.0);
-    for (std::size_t k = 0; k < ncl; ++k)
-      if (cl->class_chart[k] >= 0) plane[to_size(cl->class_chart[k])] = (*x)[k];
-    const auto q = quantize_planes(plane, axis_of, partners, a, t);
+    const auto& plane = planes[to_size(a)];
+    const auto orders = polycube_plane_orders(base, paths, cs.chart_label, *cl, a, plane, &bad_chart,
+                                              chart_facing_orders(cs, paths, loops, cont, a));
+    if (!orders) return orders.error();
+    const auto q = quantize_planes(plane, axis_of, *orders, a, t, &bad_chart);
+    if (!q) return q.error();
     std::vector<double> fixed(ncl, std::numeric_limits<double>::quiet_NaN());
     for (std::size_t k = 0; k < ncl; ++k)
-      if (cl->class_chart[k] >= 0) fixed[k] = static_cast<double>(q[to_size(cl->class_chart[k])]) * t;
+      if (cl->class_chart[k] >= 0) fixed[k] = static_cast<double>((*q)[to_size(cl->class_chart[k])]) * t;
     auto y = polycube_axis_solve<E>(base, nb, *cl, a, fixed);
     if (!y) return y.error();
     for (std::size_t v = 0; v < pos.size(); ++v) pos[v][a] = (*y)[to_size(cl->vertex_class[v])];
   }
-  if (auto s = embed_polycube<E>(base, cs, classes, pos); !s) return s;
-  untangle_polycube(base, pos, cs.face_chart, cs.chart_label, {&classes[0], &classes[1], &classes[2]}, t,
-                    untangle_iterations);
+  std::string why;
+  if (const index_t c = find_unturnable_chart(cs, paths, loops, pos, t, why); c >= 0) {
+    bad_chart = c;
+    return status::not_converged(cat("polycube: chart ", c, " is not a polycube face: ", why));
+  }
+  std::vector<std::uint8_t> cut;
+  if (auto s = embed_polycube<E>(base, cs, classes, paths, loops, t, true, pos, &cut); !s) return s;
+  if (untangle_polycube(base, pos, cs.face_chart, cs.chart_label, {&classes[0], &classes[1], &classes[2]}, t,
+                        untangle_iterations, &cut) > 0)
+    folded = polycube_flipped_faces(base, pos, cs.face_chart, cs.chart_label, t);
   return assemble_polycube_map(std::move(base), lab, std::move(pos), t, exec);
+}
+/// One automatic attempt at a given compactness: label, then label -> repair -> deform rounds; a
+/// failure of one chart relabels it, and its faces' old label costs more from then on (so the repair
+/// cannot bring it back), then runs again (bounded by max_relabel_rounds).
+template <Executor E>
+result<polycube_map> build_polycube_attempt(const tri_mesh& base, const face_adjacency_result& adj,
+                                            const polycube_options& options, double t, E& exec) {
+  const auto en = detail::make_polycube_energy(base, adj.neighbor, options, exec);
+  auto lab = detail::alpha_expansion_labels(en, options.max_expansion_cycles);
+  if (!lab) return lab.error();
+  auto data = en.data;
+  std::size_t stall = 0, last_folded = std::numeric_limits<std::size_t>::max();
+  status last;
+  for (int round = 0;; ++round) {
+    const auto problem = detail::repair_polycube_labels(base, adj.neighbor, data, *lab, options.max_repair_iterations);
+    // a relabelling the repair cannot make valid ends the rounds with the previous round's failure
+    if (problem.kind != detail::polycube_label_problem::none) return round == 0 ? problem.to_status() : last;
+    index_t bad = -1;
+    std::vector<index_t> folded;
+    auto r = detail::deform_polycube(base, adj.neighbor, *lab, t, options.untangle_iterations, exec, bad, folded);
+    if (r || round >= options.max_relabel_rounds) return r;
+    last = r.error();
+    if (bad >= 0) {
+      const auto cs = detail::find_polycube_charts(base, adj.neighbor, *lab);
+      for (std::size_t f = 0; f < data.size(); ++f)
+        if (cs.face_chart[f] == bad) data[f][(*lab)[f]] += detail::relabel_tabu_cost;
+      detail::relabel_chart(cs, bad, data, *lab, false);
+    } else if (folded.empty()) {
+      return r;
+    } else {
+      // folded faces take a neighbouring chart's label; when that does not lower their count, the
+      // region grows by a ring of faces per stalled round and the labels propagate into it
+      stall = folded.size() < last_folded ? 0 : stall + 1;
+      last_folded = folded.size();
+      const auto region = detail::grow_face_region(adj.neighbor, folded, stall);
+      bool changed = false;
+      for (std::size_t k = 0; k <= stall; ++k)
+        changed = detail::relabel_folded_faces(adj.neighbor, region, detail::relabel_tabu_cost, data, *lab) || changed;
+      if (!changed) return r;
+    }
+  }
 }
 }  // namespace detail
 
@@ -90,22 +170,35 @@ result<polycube_map> build_polycube_map(const M& mesh, const polycube_options& o
   auto t = polycube_tile_size(mesh, options);
   if (!t) return t.error();
   if (options.max_expansion_cycles < 0 || options.max_repair_iterations < 0 || options.untangle_iterations < 0 ||
-      !(options.compactness >= 0) || !(options.opposite_penalty >= 1 && options.opposite_penalty <= 2))
-    return status::invalid_argument(
-        detail::cat("polycube_options: max_expansion_cycles and max_repair_iterations must be >= 0, compactness >= 0 "
-                    "and opposite_penalty in [1, 2]; got ",
-                    options.max_expansion_cycles, ", ", options.max_repair_iterations, ", ", options.compactness, ", ",
-                    options.opposite_penalty));
+      options.max_relabel_rounds < 0 || options.max_compactness_retries < 0 || !(options.compactness >= 0) ||
+      !(options.opposite_penalty >= 1 && options.opposite_penalty <= 2))
+    return status::invalid_argument(detail::cat(
+        "polycube_options: max_expansion_cycles, max_repair_iterations, untangle_iterations, "
+        "max_relabel_rounds and max_compactness_retries must be >= 0, compactness >= 0 and opposite_penalty in "
+        "[1, 2]; got ",
+        options.max_expansion_cycles, ", ", options.max_repair_iterations, ", ", options.untangle_iterations, ", ",
+        options.max_relabel_rounds, ", ", options.max_compactness_retries, ", ", options.compactness, ", ",
+        options.opposite_penalty));
   auto m = to_tri_mesh(mesh);
   if (!m) return m.error();
   tri_mesh base = detail::polycube_base_copy(*m);
   const auto adj = face_adjacency(base);
-  const auto en = detail::make_polycube_energy(base, adj.neighbor, options, exec);
-  auto lab = detail::alpha_expansion_labels(en, options.max_expansion_cycles);
-  if (!lab) return lab.error();
-  const auto problem = detail::repair_polycube_labels(base, adj.neighbor, en.data, *lab, options.max_repair_iterations);
-  if (problem.kind != detail::polycube_label_problem::none) return problem.to_status();
-  return detail::deform_polycube(std::move(base), adj.neighbor, *lab, *t, options.untangle_iterations, exec);
+  if (options.compactness == 0 || options.max_compactness_retries == 0)
+    return detail::build_polycube_attempt(base, adj, options, *t, exec);
+  // the labelling's compactness decides most failures on scanned meshes: retry with other multiples
+  result<polycube_map> first = status::internal_error("polycube: no attempt");
+  const int tries =
+      std::min<int>(options.max_compactness_retries, static_cast<int>(std::size(detail::compactness_schedule)) - 1);
+  for (int k = 0; k <= tries; ++k) {
+    polycube_options o = options;
+    o.compactness = options.compactness * detail::compactness_schedule[detail::to_size(k)];
+    auto r = detail::build_polycube_attempt(base, adj, o, *t, exec);
+    if (r || k == 0) first = std::move(r);
+    if (first) return first;
+  }
+  return status::not_converged(detail::cat(first.error().message(), " (also tried compactness x",
+                                           detail::compactness_schedule[1], " .. x",
+                                           detail::compactness_schedule[detail::to_size(tries)], ": none valid)"));
 }
 
 /// Builds the polycube map of `mesh` from a user labelling: one label per face (input face order),
@@ -133,7 +226,10 @@ result<polycube_map> build_polycube_map_from_labels(const M& mesh, std::span<con
   const auto cs = detail::find_polycube_charts(base, adj.neighbor, lab);
   if (auto p = detail::find_label_problem(base, adj.neighbor, cs); p.kind != detail::polycube_label_problem::none)
     return p.to_status();
-  return detail::deform_polycube(std::move(base), adj.neighbor, lab, *t, options.untangle_iterations, exec);
+  index_t bad = -1;
+  std::vector<index_t> folded;
+  return detail::deform_polycube(std::move(base), adj.neighbor, lab, *t, options.untangle_iterations, exec, bad,
+                                 folded);
 }
 
 /// Builds the polycube map of `mesh` from `deformed`, a copy of it (same vertex count, same faces)

@@ -152,6 +152,8 @@ struct polycube_options {
   int max_expansion_cycles = 6;     ///< α-expansion sweeps over the six labels
   int max_repair_iterations = 200;  ///< relabelling steps of the validity repair
   int untangle_iterations = 300;    ///< smoothing rounds that unflip faces after the final solve
+  int max_relabel_rounds = 24;      ///< relabellings of a chart whose deformation fails, then a new solve
+  int max_compactness_retries = 5;  ///< further attempts at other compactness multiples (x4, x3, x8, x2, x0.5)
 };
 
 namespace detail {

@@ -70,6 +70,58 @@ inline polycube_chart_set find_polycube_charts(const tri_mesh& m, const std::vec
   return cs;
 }
 
+/// One polycube edge of a labelling: the boundary path between charts c < d from corner to corner
+/// (vertices with at least three charts), in the orientation of chart c's faces.
+struct polycube_edge_path {
+  index_t c = -1, d = -1;
+  std::vector<index_t> vertices;  ///< front and back are corners
+  double convexity = 0;           ///< > 0: the base mesh bends outwards along the path (summed over its edges)
+};
+
+/// Every polycube edge of a labelling, in order of its first corner, then of its first half-edge's face
+/// and side. Boundary loops without a corner are left out (find_label_problem names them). O(F).
+inline std::vector<polycube_edge_path> find_polycube_edge_paths(const tri_mesh& m,
+                                                                const std::vector<std::array<index_t, 3>>& nb,
+                                                                const polycube_chart_set& cs) {
+  struct half {
+    index_t to, c, d;
+    double bend;  // how far the face across lies below this face's plane (> 0: convex edge)
+  };
+  const auto nv = to_size(m.num_vertices());
+  std::vector<std::vector<half>> out(nv);
+  for (std::size_t f = 0; f < m.faces.size(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const index_t g = nb[f][to_size(k)];
+      if (g < 0) continue;
+      const index_t c = cs.face_chart[f], d = cs.face_chart[to_size(g)];
+      if (c >= d) continue;
+      const index_t u = m.faces[f][to_size(k)];
+      index_t w = -1;  // the vertex of face g across the edge
+      for (index_t x : m.faces[to_size(g)])
+        if (x != u && x != m.faces[f][to_size((k + 1) % 3)]) w = x;
+      const double bend = -dot(normalized(face_area_normal(m, static_cast<index_t>(f))), m.position(w) - m.position(u));
+      out[to_size(u)].push_back({m.faces[f][to_size((k + 1) % 3)], c, d, bend});
+    }
+  auto corner = [&](index_t v) { return cs.vertex_charts[to_size(v)].size() >= 3; };
+  std::vector<polycube_edge_path> paths;
+  for (std::size_t u = 0; u < nv; ++u) {
+    if (!corner(static_cast<index_t>(u))) continue;
+    for (const half& h0 : out[u]) {
+      polycube_edge_path p{h0.c, h0.d, {static_cast<index_t>(u), h0.to}, h0.bend};
+      for (std::size_t guard = 0; guard < nv && !corner(p.vertices.back()); ++guard) {
+        const half* next = nullptr;
+        for (const half& h : out[to_size(p.vertices.back())])
+          if (h.c == h0.c && h.d == h0.d) next = &h;
+        if (!next) break;
+        p.vertices.push_back(next->to);
+        p.convexity += next->bend;
+      }
+      if (corner(p.vertices.back())) paths.push_back(std::move(p));
+    }
+  }
+  return paths;
+}
+
 /// Euler characteristic V - E + F of each chart's faces.
 inline std::vector<index_t> chart_euler(const tri_mesh&, const std::vector<std::array<index_t, 3>>& nb,
                                         const polycube_chart_set& cs) {
@@ -232,6 +284,56 @@ inline void relabel_chart(const polycube_chart_set& cs, index_t c, const std::ve
     }
   for (std::size_t f = 0; f < lab.size(); ++f)
     if (cs.face_chart[f] == c) lab[f] = static_cast<std::uint8_t>(best);
+}
+
+/// Flip-driven relabelling: each of `faces` (folded in the deformation) that borders another chart
+/// takes the label of a neighbouring face of another chart with the smallest fidelity cost that is not
+/// opposite to any of its neighbours' labels; its old label then costs `tabu` more. Decisions read
+/// the labels before the call (order-independent). Returns whether a label changed.
+inline bool relabel_folded_faces(const std::vector<std::array<index_t, 3>>& nb, const std::vector<index_t>& faces,
+                                 double tabu, std::vector<std::array<double, 6>>& data,
+                                 std::vector<std::uint8_t>& lab) {
+  const auto old = lab;
+  bool changed = false;
+  for (index_t f : faces) {
+    const auto fs = to_size(f);
+    int best = -1;
+    for (index_t g : nb[fs]) {
+      if (g < 0) continue;
+      const int l = old[to_size(g)];
+      if (l == old[fs]) continue;
+      bool opposite = false;
+      for (index_t h : nb[fs])
+        if (h >= 0 && (old[to_size(h)] ^ 1) == l) opposite = true;
+      if (!opposite && (best < 0 || data[fs][to_size(l)] < data[fs][to_size(best)])) best = l;
+    }
+    if (best < 0) continue;
+    data[fs][old[fs]] += tabu;
+    lab[fs] = static_cast<std::uint8_t>(best);
+    changed = true;
+  }
+  return changed;
+}
+
+/// `faces` and every face within `rings` steps of them across edges, ascending.
+inline std::vector<index_t> grow_face_region(const std::vector<std::array<index_t, 3>>& nb,
+                                             const std::vector<index_t>& faces, std::size_t rings) {
+  std::vector<std::uint8_t> in(nb.size(), 0);
+  std::vector<index_t> out = faces, front = faces;
+  for (index_t f : faces) in[to_size(f)] = 1;
+  for (std::size_t k = 0; k < rings; ++k) {
+    std::vector<index_t> next;
+    for (index_t f : front)
+      for (index_t g : nb[to_size(f)])
+        if (g >= 0 && !in[to_size(g)]) {
+          in[to_size(g)] = 1;
+          next.push_back(g);
+        }
+    out.insert(out.end(), next.begin(), next.end());
+    front.swap(next);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
 }
 
 /// The repair loop: while a problem remains and fewer than max_iterations steps ran, relabel the

@@ -14,15 +14,16 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <map>
 #include <utility>
 #include <numeric>
+#include <tuple>
 #include <vector>
 
 #include "../../core/config.hpp"
 #include "../../core/status.hpp"
 #include "../../core/tri_mesh.hpp"
 #include "../polycube_map.hpp"
+#include "polycube_charts.hpp"
 #include "tolerances.hpp"
 
 TESSERA_NAMESPACE_BEGIN
@@ -39,7 +40,8 @@ struct polycube_axis_classes {
 };
 
 inline result<polycube_axis_classes> polycube_classes(const tri_mesh& m, const std::vector<index_t>& face_chart,
-                                                      const std::vector<std::uint8_t>& chart_label, int axis) {
+                                                      const std::vector<std::uint8_t>& chart_label, int axis,
+                                                      index_t* bad_chart = nullptr, index_t* pinch_vertex = nullptr) {
   const index_t nv = m.num_vertices();
   const auto nc = static_cast<index_t>(chart_label.size());
   std::vector<index_t> parent(to_size(nv + nc));
@@ -48,6 +50,29 @@ inline result<polycube_axis_classes> polycube_classes(const tri_mesh& m, const s
     while (parent[to_size(x)] != x) x = parent[to_size(x)] = parent[to_size(parent[to_size(x)])];
     return x;
   };
+  // two charts of the axis that share a vertex (first by face order) would share their plane
+  std::vector<index_t> vertex_chart(to_size(nv), -1);
+  index_t pinch = -1, pinch_a = -1, pinch_b = -1;
+  for (std::size_t f = 0; f < m.faces.size(); ++f) {
+    const index_t c = face_chart[f];
+    if (chart_label[to_size(c)] / 2 != axis) continue;
+    for (index_t v : m.faces[f]) {
+      auto& vc = vertex_chart[to_size(v)];
+      if (vc < 0) vc = c;
+      if (vc != c && pinch < 0) {
+        pinch = v;
+        pinch_a = vc;
+        pinch_b = c;
+      }
+    }
+  }
+  if (pinch >= 0) {
+    if (bad_chart) *bad_chart = pinch_vertex ? -1 : pinch_b;
+    if (pinch_vertex) *pinch_vertex = pinch;
+    return status::not_converged(cat("polycube: charts ", std::min(pinch_a, pinch_b), " and ",
+                                     std::max(pinch_a, pinch_b), " of axis ", "XYZ"[axis],
+                                     " are joined through vertex ", pinch, ": their planes would coincide"));
+  }
   for (std::size_t f = 0; f < m.faces.size(); ++f) {
     const index_t c = face_chart[f];
     if (chart_label[to_size(c)] / 2 != axis) continue;
@@ -62,13 +87,7 @@ inline result<polycube_axis_classes> polycube_classes(const tri_mesh& m, const s
   for (index_t c = 0; c < nc; ++c) {
     if (chart_label[to_size(c)] / 2 != axis) continue;
     const auto r = to_size(find(nv + c));
-    if (root_chart[r] >= 0 && root_chart[r] != c) {
-      index_t shared = 0;
-      while (shared < nv && to_size(find(shared)) != r) ++shared;
-      return status::not_converged(cat("polycube: charts ", root_chart[r], " and ", c, " of axis ", "XYZ"[axis],
-                                       " are joined through vertex ", shared, ": their planes would coincide"));
-    }
-    root_chart[r] = c;
+    root_chart[r] = c;  // one chart per class: charts of the axis share no vertex (checked above)
   }
   for (index_t v = 0; v < nv; ++v) {
     const auto r = to_size(find(v));
@@ -151,55 +170,132 @@ result<std::vector<double>> polycube_axis_solve(const tri_mesh& m, const std::ve
   return x;
 }
 
-/// Pairs of charts whose planes must stay at least one tile apart: on the boundary between two
-/// adjacent charts C and D (axes a and b), the charts of the third axis met at its corners bound the
-/// polycube edges there, so any two of them must not share a plane. Returns each chart's partners.
-inline std::vector<std::vector<index_t>> polycube_plane_partners(const std::vector<std::vector<index_t>>& vertex_charts,
-                                                                 const std::vector<std::uint8_t>& chart_label) {
-  std::map<std::pair<index_t, index_t>, std::vector<index_t>> on_boundary;
-  for (const auto& vc : vertex_charts) {
-    if (vc.size() < 3) continue;
-    for (index_t c : vc)
-      for (index_t d : vc) {
-        const int a = chart_label[to_size(c)] / 2, b = chart_label[to_size(d)] / 2;
-        if (c >= d || a == b) continue;
-        for (index_t e : vc)
-          if (chart_label[to_size(e)] / 2 == 3 - a - b) on_boundary[{c, d}].push_back(e);
-      }
+/// A polycube edge whose corners differ along its axis by less than this fraction of its path length
+/// takes its direction from the base mesh's convexity along it instead.
+inline constexpr double edge_direction_min_fraction = 0.1;
+
+/// A polycube edge along some axis runs from the plane of chart `from` to the plane of chart `to`
+/// (both of that axis): `to` must lie at least one tile above `from`.
+struct polycube_plane_order {
+  index_t from = -1, to = -1;
+};
+
+/// The order constraints of one axis: every polycube edge along `axis` (paths) keeps the direction it
+/// has on the base mesh, the sign of its corners' difference along the axis (when that is under a
+/// tenth of the path's length: the base mesh's convexity along it), so no edge is inverted or
+/// collapsed by the quantization and every chart keeps the turning of its boundary. Constraints are
+/// taken most confident first (the difference over the path length); one that would close a cycle
+/// falls back to the order of the continuous planes `plane`, or is dropped when that closes one too
+/// (the verification then names what fails). `facing` adds constraints between sides of one chart
+/// (chart_facing_orders), after those of the edges. not_converged when both corners of an edge lie on
+/// the same chart of the axis (the edge would have length zero), naming the charts and the corners.
+inline result<std::vector<polycube_plane_order>> polycube_plane_orders(
+    const tri_mesh& m, const std::vector<polycube_edge_path>& paths, const std::vector<std::uint8_t>& chart_label,
+    const polycube_axis_classes& cl, int axis, const std::vector<double>& plane, index_t* bad_chart = nullptr,
+    const std::vector<polycube_plane_order>& facing = {}) {
+  std::vector<polycube_plane_order> out;
+  std::vector<std::pair<polycube_plane_order, double>> cand;  // constraint, confidence
+  for (const auto& p : paths) {
+    if (3 - chart_label[to_size(p.c)] / 2 - chart_label[to_size(p.d)] / 2 != axis) continue;
+    const index_t a = p.vertices.front(), b = p.vertices.back();
+    const index_t ca = cl.class_chart[to_size(cl.vertex_class[to_size(a)])];
+    const index_t cb = cl.class_chart[to_size(cl.vertex_class[to_size(b)])];
+    if (ca < 0 || cb < 0) continue;
+    if (ca == cb) {
+      if (bad_chart) *bad_chart = p.c;
+      return status::not_converged(cat("polycube: the edge between charts ", p.c, " and ", p.d,
+                                       " from the corner at vertex ", a, " to vertex ", b, " has both ends on chart ",
+                                       ca, ": it would collapse"));
+    }
+    double s = m.position(b)[axis] - m.position(a)[axis];
+    double len = 0;
+    for (std::size_t k = 1; k < p.vertices.size(); ++k)
+      len += distance(m.position(p.vertices[k - 1]), m.position(p.vertices[k]));
+    double confidence = len > 0 ? std::abs(s) / len : 0.0;
+    if (confidence < edge_direction_min_fraction && p.convexity != 0) {
+      // a path that returns near its start: the edge runs along n_c x n_d when convex, against it when
+      // concave (c on its left)
+      const vec3 nc = label_direction(static_cast<polycube_label>(chart_label[to_size(p.c)]));
+      const vec3 nd = label_direction(static_cast<polycube_label>(chart_label[to_size(p.d)]));
+      s = (p.convexity > 0 ? 1.0 : -1.0) * cross(nc, nd)[axis];
+      confidence = edge_direction_min_fraction;
+    }
+    if (s != 0) cand.push_back({s > 0 ? polycube_plane_order{ca, cb} : polycube_plane_order{cb, ca}, confidence});
+    // the fallback when that direction closes a cycle: the continuous planes' order
+    double sp = plane[to_size(cb)] - plane[to_size(ca)];
+    if (sp == 0) sp = static_cast<double>(cb - ca);
+    cand.push_back({sp > 0 ? polycube_plane_order{ca, cb} : polycube_plane_order{cb, ca}, -1.0});
   }
-  std::vector<std::vector<index_t>> partners(chart_label.size());
-  for (auto& [cd, es] : on_boundary)
-    for (index_t e : es)
-      for (index_t g : es)
-        if (e != g) partners[to_size(e)].push_back(g);
-  for (auto& p : partners) {
-    std::sort(p.begin(), p.end());
-    p.erase(std::unique(p.begin(), p.end()), p.end());
+  for (const auto& o : facing) cand.push_back({o, -0.5});
+  // most confident first; a constraint that would close a cycle with those before it is dropped
+  std::stable_sort(cand.begin(), cand.end(), [](const auto& x, const auto& y) {
+    return std::tuple(-x.second, x.first.from, x.first.to) < std::tuple(-y.second, y.first.from, y.first.to);
+  });
+  std::vector<std::vector<index_t>> succ(chart_label.size());
+  std::vector<std::uint8_t> seen(chart_label.size(), 0);
+  std::vector<index_t> stack;
+  auto reaches = [&](index_t from, index_t to) {
+    std::fill(seen.begin(), seen.end(), std::uint8_t{0});
+    stack.assign(1, from);
+    seen[to_size(from)] = 1;
+    while (!stack.empty()) {
+      const index_t x = stack.back();
+      stack.pop_back();
+      if (x == to) return true;
+      for (index_t y : succ[to_size(x)])
+        if (!seen[to_size(y)]) {
+          seen[to_size(y)] = 1;
+          stack.push_back(y);
+        }
+    }
+    return false;
+  };
+  for (const auto& [o, conf] : cand) {
+    (void)conf;
+    if (reaches(o.to, o.from)) continue;
+    succ[to_size(o.from)].push_back(o.to);
+    out.push_back(o);
   }
-  return partners;
+  std::sort(out.begin(), out.end(), [&](const polycube_plane_order& x, const polycube_plane_order& y) {
+    return std::tuple(plane[to_size(x.from)], x.from, x.to) < std::tuple(plane[to_size(y.from)], y.from, y.to);
+  });
+  out.erase(std::unique(out.begin(), out.end(),
+                        [](const polycube_plane_order& x, const polycube_plane_order& y) {
+                          return x.from == y.from && x.to == y.to;
+                        }),
+            out.end());
+  return out;
 }
 
 /// Integer planes of the charts of one axis from their continuous values `p` (mesh units): each chart
-/// plane is rounded to the nearest multiple of the tile, then, in order of p (ties: chart index),
-/// raised to at least one tile above each of its partners (polycube_plane_partners) placed before it:
-/// a polycube edge never collapses below one tile.
-inline std::vector<std::int64_t> quantize_planes(const std::vector<double>& p, const std::vector<int>& axis_of,
-                                                 const std::vector<std::vector<index_t>>& partners, int axis,
-                                                 double tile) {
+/// plane is rounded to the nearest multiple of the tile, then raised until every order constraint
+/// holds (`to` at least one tile above `from`): a polycube edge never collapses below one tile nor
+/// turns around. Bellman-Ford rounds, at most one per chart plus one; not_converged naming a chart
+/// when the constraints form a cycle (no polycube realizes the labelling's edge directions).
+inline result<std::vector<std::int64_t>> quantize_planes(const std::vector<double>& p, const std::vector<int>& axis_of,
+                                                         const std::vector<polycube_plane_order>& orders, int axis,
+                                                         double tile, index_t* bad_chart = nullptr) {
   const std::size_t nc = p.size();
-  std::vector<index_t> order;
-  for (std::size_t c = 0; c < nc; ++c)
-    if (axis_of[c] == axis) order.push_back(static_cast<index_t>(c));
-  std::stable_sort(order.begin(), order.end(), [&](index_t a, index_t b) { return p[to_size(a)] < p[to_size(b)]; });
   std::vector<std::int64_t> q(nc, 0);
-  std::vector<bool> done(nc, false);
-  for (index_t c : order) {
-    const auto cs = to_size(c);
-    std::int64_t v = std::llround(p[cs] / tile);
-    for (index_t d : partners[cs])
-      if (done[to_size(d)]) v = std::max(v, q[to_size(d)] + 1);
-    q[cs] = v;
-    done[cs] = true;
+  std::size_t n = 0;
+  for (std::size_t c = 0; c < nc; ++c)
+    if (axis_of[c] == axis) {
+      q[c] = std::llround(p[c] / tile);
+      ++n;
+    }
+  for (std::size_t round = 0; round <= n; ++round) {
+    index_t changed = -1;
+    for (const auto& o : orders)
+      if (q[to_size(o.to)] < q[to_size(o.from)] + 1) {
+        q[to_size(o.to)] = q[to_size(o.from)] + 1;
+        changed = o.to;
+      }
+    if (changed < 0) return q;
+    if (round == n) {
+      if (bad_chart) *bad_chart = changed;
+      return status::not_converged(cat("polycube: the edges along ", "XYZ"[axis], " around chart ", changed,
+                                       " form a cycle of directions: no polycube has these edges"));
+    }
   }
   return q;
 }
@@ -221,11 +317,13 @@ inline std::vector<index_t> polycube_flipped_faces(const tri_mesh& m, const std:
 
 /// Untangling after the final solve: while faces are flipped (at most `iterations` rounds), every free
 /// coordinate of the vertices within two rings of a flipped face moves to the mean of its neighbours'
-/// (Jacobi steps of a Tutte embedding, which is injective on convex charts). Chart planes never move.
+/// (Jacobi steps of a Tutte embedding, which is injective on convex charts). Chart planes never move,
+/// nor do the chart-interior vertices marked in `hold` (the cuts of polycube_chart_cuts.hpp).
 /// Returns the number of faces still flipped.
 inline index_t untangle_polycube(const tri_mesh& m, std::vector<vec3>& pos, const std::vector<index_t>& face_chart,
                                  const std::vector<std::uint8_t>& chart_label,
-                                 const std::array<const polycube_axis_classes*, 3>& cl, double t, int iterations) {
+                                 const std::array<const polycube_axis_classes*, 3>& cl, double t, int iterations,
+                                 const std::vector<std::uint8_t>* hold = nullptr) {
   const auto nv = to_size(m.num_vertices());
   std::vector<std::vector<index_t>> ring(nv);
   for (const auto& f : m.faces)
@@ -247,7 +345,7 @@ inline index_t untangle_polycube(const tri_mesh& m, std::vector<vec3>& pos, cons
     }
     std::vector<vec3> next = pos;
     for (std::size_t v = 0; v < nv; ++v) {
-      if (!mark[v]) continue;
+      if (!mark[v] || (hold && (*hold)[v])) continue;
       int free_axes = 0;
       for (int a = 0; a < 3; ++a) free_axes += is_free(v, a) ? 1 : 0;
       if (free_axes == 0) continue;

@@ -1,9 +1,10 @@
 // tessera/surface/detail/polycube_embed.hpp: the final placement of a polycube once its chart planes are
 // on the tile grid. Corners are fixed by their three planes. The vertices of each polycube edge (the
 // boundary path between two corners) are spread along it by the arc length of the base mesh's path, so
-// they stay in order between the corners. The interior vertices of every chart then solve a Tutte-style
-// system (each free coordinate the weighted mean of its neighbours', clamped positive cotangent weights
-// of the base mesh, Floater 1997 / Tutte 1963), which is injective on convex charts.
+// they stay in order between the corners. Non-convex charts are cut into rectangles
+// (polycube_chart_cuts.hpp). The interior vertices of every chart then solve a Tutte-style system (each
+// free coordinate the weighted mean of its neighbours', clamped positive cotangent weights of the base
+// mesh, Floater 1997 / Tutte 1963), which is injective inside convex pieces.
 #pragma once
 
 #include <Eigen/SparseCholesky>
@@ -18,6 +19,7 @@
 #include "../../core/config.hpp"
 #include "../../core/status.hpp"
 #include "../../core/tri_mesh.hpp"
+#include "polycube_chart_cuts.hpp"
 #include "polycube_charts.hpp"
 #include "polycube_deform.hpp"
 
@@ -30,10 +32,13 @@ inline constexpr double embed_min_weight = 1e-2;
 inline constexpr double embed_max_weight = 1e2;
 
 /// Places edge and interior vertices (see the file comment); `pos` holds the planes' coordinates on
-/// entry (from polycube_axis_solve with fixed planes) and is updated in place.
+/// entry (from polycube_axis_solve with fixed planes) and is updated in place. `cut_vertices`, when
+/// given, receives a mark per vertex on a cut (held by the untangling).
 template <class Dep>
 status embed_polycube(const tri_mesh& m, const polycube_chart_set& cs, const std::array<polycube_axis_classes, 3>& cl,
-                      std::vector<vec3>& pos) {
+                      const std::vector<polycube_edge_path>& paths,
+                      const std::vector<std::vector<std::vector<chart_loop_side>>>& loops, double t, bool cut_charts,
+                      std::vector<vec3>& pos, std::vector<std::uint8_t>* cut_vertices = nullptr) {
   using real = dependent_t<double, Dep>;
   using sparse = Eigen::SparseMatrix<real>;
   using vector = Eigen::Matrix<real, Eigen::Dynamic, 1>;
@@ -64,56 +69,37 @@ status embed_polycube(const tri_mesh& m, const polycube_chart_set& cs, const std
     }
   for (auto& l : nbr)
     for (auto& e : l) e.second = std::clamp(e.second, embed_min_weight, embed_max_weight);
-  // 1) polycube edges: walk boundary paths between corners, spread by arc length
-  std::vector<std::uint8_t> placed(nv, 0);
-  for (std::size_t c = 0; c < nv; ++c) {
-    if (cs.vertex_charts[c].size() < 3) continue;
-    for (const auto& [w0, w_] : nbr[c]) {
-      (void)w_;
-      if (cs.vertex_charts[to_size(w0)].size() != 2 || placed[to_size(w0)]) continue;
-      const auto& pair = cs.vertex_charts[to_size(w0)];
-      auto on_pair = [&](std::size_t v) {
-        const auto& vc = cs.vertex_charts[v];
-        return std::binary_search(vc.begin(), vc.end(), pair[0]) && std::binary_search(vc.begin(), vc.end(), pair[1]);
-      };
-      if (!on_pair(c)) continue;
-      std::vector<std::size_t> path{c, to_size(w0)};
-      bool closed = false;
-      for (std::size_t guard = 0; guard < nv && !closed; ++guard) {
-        const std::size_t v = path.back(), prev = path[path.size() - 2];
-        std::size_t next = nv;
-        for (const auto& e : nbr[v]) {
-          const auto u = to_size(e.first);
-          if (u == prev || !on_pair(u)) continue;
-          if (cs.vertex_charts[u].size() == 2 && placed[u]) continue;
-          // the mesh edge (v, u) must separate the two charts: u and v both on the pair suffices here
-          next = u;
-          if (cs.vertex_charts[u].size() >= 3) break;  // prefer closing at a corner
-        }
-        if (next == nv) break;
-        path.push_back(next);
-        if (cs.vertex_charts[next].size() >= 3) closed = true;
-      }
-      if (!closed) continue;
-      std::vector<double> s(path.size(), 0.0);
-      for (std::size_t k = 1; k < path.size(); ++k)
-        s[k] = s[k - 1] +
-               distance(m.position(static_cast<index_t>(path[k])), m.position(static_cast<index_t>(path[k - 1])));
-      const vec3 p0 = pos[path.front()], p1 = pos[path.back()];
-      for (std::size_t k = 1; k + 1 < path.size(); ++k) {
-        const std::size_t v = path[k];
-        for (int a = 0; a < 3; ++a)
-          if (is_free(v, a)) pos[v][a] = p0[a] + (p1[a] - p0[a]) * (s[k] / s.back());
-        placed[v] = 1;
-      }
-    }
+  // 1) polycube edges: each path spread by arc length between its corners
+  polycube_path_pins pp;
+  pp.arc.resize(paths.size());
+  pp.pins.resize(paths.size());
+  std::vector<std::uint8_t> fixed(nv, 0);
+  for (std::size_t i = 0; i < paths.size(); ++i) {
+    const auto& pv = paths[i].vertices;
+    auto& s = pp.arc[i];
+    s.assign(pv.size(), 0.0);
+    for (std::size_t k = 1; k < pv.size(); ++k) s[k] = s[k - 1] + distance(m.position(pv[k]), m.position(pv[k - 1]));
+    for (auto& x : s) x = s.back() > 0 ? x / s.back() : 0.0;
+    spread_path(paths[i], pp, i, pos, is_free);
+    for (index_t v : pv) fixed[to_size(v)] = 1;
+  }
+  // 1b) non-convex charts cut into rectangles (polycube_chart_cuts.hpp)
+  if (cut_charts) {
+    std::vector<std::vector<index_t>> ring(nv);
+    for (std::size_t v = 0; v < nv; ++v)
+      for (const auto& e : nbr[v]) ring[v].push_back(e.first);
+    cut_charts_into_rectangles(m, cs, paths, loops, ring, t, pp, pos, fixed, is_free);
+  }
+  if (cut_vertices) {
+    cut_vertices->assign(nv, 0);
+    for (std::size_t v = 0; v < nv; ++v) (*cut_vertices)[v] = fixed[v] && cs.vertex_charts[v].size() == 1 ? 1 : 0;
   }
   // 2) chart interiors: per axis, the free coordinates of interior vertices
   for (int a = 0; a < 3; ++a) {
     std::vector<int> col(nv, -1);
     int n = 0;
     for (std::size_t v = 0; v < nv; ++v)
-      if (cs.vertex_charts[v].size() == 1 && is_free(v, a)) col[v] = n++;
+      if (cs.vertex_charts[v].size() == 1 && is_free(v, a) && !fixed[v]) col[v] = n++;
     if (n == 0) continue;
     std::vector<Eigen::Triplet<real>> t;
     vector rhs = vector::Zero(n);
