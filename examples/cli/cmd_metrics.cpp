@@ -24,7 +24,7 @@ int run_format(const cli::arguments& args) {
   if (!ex) return cli::fail(args, ex.error());
   auto window = args.integer("--window", 7, 1, 255);
   if (!window) return cli::fail(args, window.error());
-  auto levels = args.integer("--levels", 2, 1, 8);
+  auto levels = args.integer("--levels", 2, 1, 6);
   if (!levels) return cli::fail(args, levels.error());
   auto step = args.integer("--step", 2, 1, 4096);
   if (!step) return cli::fail(args, step.error());
