@@ -174,6 +174,22 @@ int run_format(const cli::arguments& args, const synth_request& r) {
         .add("fill_overlap_rms", st->fill_overlap_rms)
         .add("candidates", model->candidates())
         .add("model_bytes", static_cast<long long>(model->memory_bytes()));
+    // a patch size that breaks the structure: the chosen pitch does not follow the exemplar's period
+    // (low autocorrelation at one pitch) while an analysed shape does (the brick case of issue 16)
+    line.add("pitch_alignment", model->pitch_alignment());
+    if (const auto& analysis = model->analysis()) {
+      const tessera::patch_size_measure* best = nullptr;
+      for (const auto& m : analysis->sizes)
+        if (best == nullptr || m.alignment > best->alignment) best = &m;
+      if (best != nullptr) {
+        line.add("best_alignment", best->alignment)
+            .add("best_alignment_patch", std::to_string(best->width) + "x" + std::to_string(best->height));
+        const bool breaks = best->alignment >= 0.5 && model->pitch_alignment() < best->alignment - 0.2;
+        line.add("structure_warning", breaks ? "the patch pitch does not follow the exemplar's period; try --patch " +
+                                                   std::to_string(best->width) + "x" + std::to_string(best->height)
+                                             : std::string());
+      }
+    }
     const tessera::neighborhood_energy_options eo{.window = 5, .sample_step = 4};
     if (auto e = tessera::neighborhood_energy(crop, *ex, eo, pool)) line.add("neighborhood_energy", *e);
     const auto seams = tessera::patch_seam_lines(*model, cw, ch, {r.origin.x + cx, r.origin.y + cy});

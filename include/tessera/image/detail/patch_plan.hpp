@@ -106,9 +106,10 @@ struct fill_result {
 ///  - policy.exact (tessera's default): among the union of the four sets, the patch with the smallest
 ///    **true** overlap error summed over its four neighbours. Errors the sets hold are exact; the others
 ///    are computed from the exemplar (strip_error), candidates taken in order of their lower bound (the
-///    known errors plus each missing set's k-th error, a lower bound when the sets are the exact top k),
-///    stopping when the next lower bound cannot beat the best total or after `policy.budget` candidates
-///    (ties: the smaller index);
+///    known errors plus each missing set's k-th error, a lower bound when the sets are the exact top k;
+///    ties by index), stopping when the next lower bound exceeds the best total or after
+///    `policy.budget` candidates; equal totals go to the smaller index. With exact sets and a budget of
+///    at least the union's size this is the exact minimum over the union (tests check it by brute force);
 ///  - otherwise the paper's rule: the patch appearing in the most sets; ties go to the smallest estimated
 ///    error (the lower bound above), then the smallest index.
 template <Channel T, int C>
@@ -186,9 +187,9 @@ fill_result fill_cell(const patch_model<T, C>& m, std::uint32_t west, std::uint3
   double best_total = std::numeric_limits<double>::infinity();
   for (index_t c = 0; c < nu && c < policy.budget; ++c) {
     const member& u = uni[c];
-    if (u.bound >= best_total) break;  // no later candidate can do better (bounds ascend)
+    if (u.bound > best_total) break;  // no later candidate can do better (bounds ascend)
     double total = u.known;
-    for (int s = 0; s < 4 && total < best_total; ++s) {
+    for (int s = 0; s < 4 && total <= best_total; ++s) {
       if (u.mask & (1u << s)) continue;
       // the candidate sits on side facing[s]'s opposite of owner s: east of the west owner, etc.
       total += strip_error(m.exemplar(), g, owners[s], u.patch, facing[s], best_total - total);
