@@ -32,7 +32,7 @@ struct synth_request {
   index_t width = 0, height = 0, patch_w = 0, patch_h = 0, overlap = 0;
   tessera::texture_offset origin;
   tessera::seam_mode seams = tessera::seam_mode::feather;
-  tessera::fill_fallback fallback = tessera::fill_fallback::overlap_error;
+  tessera::fill_fallback fallback = tessera::fill_fallback::most_sets;
   int candidates = 8;
   std::uint64_t seed = 1;
   int threads = 0, repeat = 1;
@@ -87,10 +87,10 @@ tessera::result<synth_request> parse(const cli::arguments& args) {
     r.seams = tessera::seam_mode::cut;
   else if (seams != "feather")
     return status::invalid_argument("--seams expects feather or cut, got '" + seams + "'");
-  const std::string fallback = args.str("--fallback", "overlap");
-  if (fallback == "sets")
-    r.fallback = tessera::fill_fallback::most_sets;
-  else if (fallback != "overlap")
+  const std::string fallback = args.str("--fallback", "sets");
+  if (fallback == "overlap")
+    r.fallback = tessera::fill_fallback::overlap_error;
+  else if (fallback != "sets")
     return status::invalid_argument("--fallback expects overlap or sets, got '" + fallback + "'");
   auto k = args.integer("--candidates", 8, 1, 64);
   if (!k) return k.error();
@@ -231,8 +231,8 @@ std::vector<cli::option_spec> synth_options() {
       {"--overlap", "V", "overlap width between patches (default: chosen by the analysis)"},
       {"--seams", "MODE", "feather (default, the paper's linear blend) or cut (minimum-error seams)"},
       {"--fallback", "RULE",
-       "cells whose four compatible sets share no patch: overlap (default, smallest true overlap error) or sets "
-       "(the paper: the patch in the most sets)"},
+       "cells whose four compatible sets share no patch: sets (default, the paper: the patch in the most sets) "
+       "or overlap (smallest true overlap error; slower)"},
       {"--candidates", "K", "size of each compatible set, 1 to 64 (default 8, the paper's)"},
       {"--window", "X,Y,W,H", "render the W x H window at (X, Y) of the infinite texture instead of --size"},
       {"--source-map", "M.png", "also write the exemplar coordinates of every pixel (16-bit RGB: red x, green y)"}};

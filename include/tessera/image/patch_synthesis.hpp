@@ -46,7 +46,8 @@ enum class seam_mode {
 /// photographs the common case: the paper's k = 8 sets rarely intersect four ways).
 enum class fill_fallback {
   overlap_error,  ///< the union's patch with the smallest true overlap error against all four neighbours
-  most_sets       ///< paper 002 §2: the patch in the most sets (ties: smallest estimated error, index)
+                  ///< (quality mode: a few times slower synthesis on stochastic exemplars)
+  most_sets       ///< paper 002 §2 (default): the patch in the most sets (ties: smallest estimated error, index)
 };
 
 /// A pixel position in the infinite texture plane.
@@ -68,7 +69,7 @@ struct patch_synthesis_options {
                                  ///< phase); -1: the phases most similar to it (detail::phase_group)
   index_t min_phase_group = 16;  ///< with phase_radius -1: at least this many patches to draw from
   /// Which patch fills a cell whose four sets share none (docs/patch_synthesis.md, "Filling").
-  fill_fallback fallback = fill_fallback::overlap_error;
+  fill_fallback fallback = fill_fallback::most_sets;
   int fallback_budget = 8;          ///< overlap_error: at most this many candidates get missing errors computed (1-256)
   tessera::progress progress = {};  ///< fraction done; return false (or raise the token) to cancel
 };
@@ -83,7 +84,8 @@ struct patch_synthesis_stats {
   index_t phase_group = 0;          ///< patches the distribution drew from
   index_t evaluated_errors = 0;     ///< overlap errors the overlap_error fallback computed from the exemplar
   /// RMS channel difference (unit range) over the four overlap strips of the filled cells whose errors
-  /// are known (all of them with the overlap_error fallback): how well the filled patches fit. The
+  /// are known (all of them with the overlap_error fallback, the intersected ones with most_sets): how
+  /// well the filled patches fit. The
   /// exemplar's own value is 0; a few hundredths hide under feathering, 0.1 and more show as seams.
   double fill_overlap_rms = 0;
 };

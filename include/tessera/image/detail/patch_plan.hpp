@@ -34,9 +34,9 @@ struct plan_counts {
 
 /// How fill_cell picks a patch when the four compatible sets have no common member.
 struct fill_policy {
-  bool exact = true;  ///< true: smallest true overlap error against all four neighbours; false: the paper's
-                      ///< "present in the most sets" rule with estimated errors
-  int budget = 8;     ///< exact: at most this many candidates get their missing errors computed
+  bool exact = false;  ///< true: smallest true overlap error against all four neighbours; false: the paper's
+                       ///< "present in the most sets" rule with estimated errors
+  int budget = 8;      ///< exact: at most this many candidates get their missing errors computed
 };
 
 /// The decisions for a window [ox, ox + w) x [oy, oy + h) of the infinite texture. Cell (i, j) holds a
@@ -103,14 +103,14 @@ struct fill_result {
 /// Fills a vacant cell from its four placed neighbours (paper 002 §2): a random member of the
 /// intersection of their compatible sets facing the cell (sorted small vectors), keyed by (seed, i, j).
 /// When the intersection is empty:
-///  - policy.exact (tessera's default): among the union of the four sets, the patch with the smallest
+///  - policy.exact (fill_fallback::overlap_error): among the union of the four sets, the patch with the smallest
 ///    **true** overlap error summed over its four neighbours. Errors the sets hold are exact; the others
 ///    are computed from the exemplar (strip_error), candidates taken in order of their lower bound (the
 ///    known errors plus each missing set's k-th error, a lower bound when the sets are the exact top k;
 ///    ties by index), stopping when the next lower bound exceeds the best total or after
 ///    `policy.budget` candidates; equal totals go to the smaller index. With exact sets and a budget of
 ///    at least the union's size this is the exact minimum over the union (tests check it by brute force);
-///  - otherwise the paper's rule: the patch appearing in the most sets; ties go to the smallest estimated
+///  - otherwise (the default) the paper's rule: the patch appearing in the most sets; ties go to the smallest estimated
 ///    error (the lower bound above), then the smallest index.
 template <Channel T, int C>
 fill_result fill_cell(const patch_model<T, C>& m, std::uint32_t west, std::uint32_t east, std::uint32_t north,
