@@ -99,14 +99,14 @@ for entry in "${photos[@]}"; do
     t0=$(now)
     gmic -v -1 "$ex" -syntexturize_matchpatch "$size,$size" -o "$g" >/dev/null 2>&1
     t1=$(now)
-    "$bin" metrics --exemplar "$ex" --image "$g" --step 4 --threads "$threads" |
+    "$bin" metrics --exemplar "$ex" --in "$g" --step 4 --threads "$threads" |
       $py -c "import json,sys; d=json.loads(sys.stdin.read()); d['time_ms']=($t1-$t0)*1e3; print(json.dumps(d))" >"$g.json"
   fi
   # tessera
   t=$out/tessera_$name.png
   "$bin" synth --exemplar "$ex" --size "${size}x$size" --out "$t" --threads "$threads" --stats "${extra[@]}" \
     >"$out/synth_$name.json"
-  "$bin" metrics --exemplar "$ex" --image "$t" --step 4 --threads "$threads" >"$out/metrics_$name.json"
+  "$bin" metrics --exemplar "$ex" --in "$t" --step 4 --threads "$threads" >"$out/metrics_$name.json"
   if [[ -n $images ]]; then
     # exemplar | tessera | G'MIC, 256 x 256 crops at full resolution
     gmic -v -1 "$ex" "$t" "$g" -crop 0,0,255,255,0 -append x -o "$images/$name.png" >/dev/null 2>&1

@@ -1,7 +1,7 @@
 // tessera metrics: quality figures of a synthesized image against its exemplar (image/metrics.hpp),
 // as one JSON line, for any image (ours or another program's): scripts/quality-patch.sh compares
 // patch synthesis with G'MIC through it.
-//   tessera metrics --exemplar E.png --image I.png [--window 7] [--levels 2] [--step 2]
+//   tessera metrics --exemplar E.png --in I.png [--window 7] [--levels 2] [--step 2]
 //                   [--min-offset 16] [--threads T]
 #include <algorithm>
 #include <string>
@@ -18,7 +18,7 @@ using tessera::index_t;
 
 template <class T, int C>
 int run_format(const cli::arguments& args) {
-  auto image = cli::load_image_source<T, C>(args, "--image");
+  auto image = cli::load_image_source<T, C>(args, "--in");
   if (!image) return cli::fail(args, image.error());
   auto ex = cli::load_image_source<T, C>(args, "--exemplar");
   if (!ex) return cli::fail(args, ex.error());
@@ -61,7 +61,7 @@ int run_format(const cli::arguments& args) {
 int run_metrics(const cli::arguments& args) {
   int code = 0;
   const tessera::status s = cli::with_image_source(
-      args, "--image", [&]<class T, int C>(tessera::format_tag<T, C>) { code = run_format<T, C>(args); });
+      args, "--in", [&]<class T, int C>(tessera::format_tag<T, C>) { code = run_format<T, C>(args); });
   if (!s) return cli::fail(args, s);
   return code;
 }
@@ -70,10 +70,11 @@ const cli::registrar reg(
     {.name = "metrics",
      .summary = "quality figures of an image against its exemplar (multi-scale neighbourhood energy, histogram, "
                 "repetition) as JSON",
-     .usage = "tessera metrics --exemplar E.png --image I.png [--window 7] [--levels 2] [--step 2] [--min-offset 16] "
+     .usage = "tessera metrics --exemplar E.png --in I.png [--window 7] [--levels 2] [--step 2] [--min-offset 16] "
               "[--threads T]",
      .options = {{"--exemplar", "E.png", "the exemplar (PNG or a procedural kind)"},
-                 {"--image", "I.png", "the image to measure (PNG); the exemplar is converted to its format"},
+                 {"--in", "I.png",
+                  "the image to measure (PNG or a procedural kind); the exemplar is converted to its format"},
                  cli::exemplar_size_option(),
                  {"--window", "N", "neighbourhood side (default 7)"},
                  {"--levels", "L", "energy at 1x, 1/2x, ... 1/2^(L-1) resolution (default 2)"},

@@ -70,4 +70,4 @@ tessera_cli_test(NAME "cli: synth --stats reports the fallback rate and the stru
   COMMAND synth --exemplar bricks --exemplar-size 64 --size 96x96 --fallback sets --candidates 4 --stats --out ${_o}/fallback.png)
 tessera_cli_test(NAME "cli: metrics of an image against its exemplar"
   REGEX "\"energy_1x\":[0-9.e-]+,\"energy_2x\":[0-9.e-]+,\"histogram_distance\":[0-9.e-]+,\"repetition\":"
-  COMMAND metrics --exemplar sand --exemplar-size 48 --image sand --window 5 --levels 2 --step 4)
+  COMMAND metrics --exemplar sand --exemplar-size 48 --in sand --window 5 --levels 2 --step 4)
