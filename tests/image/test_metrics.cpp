@@ -300,7 +300,7 @@ double brute_energy_at(const tessera::image_buffer<std::uint8_t, 3>& out,
 }
 }  // namespace
 
-TEST_CASE("multiscale_energy: every level against brute force; copies at any offset score 0", "[metrics]") {
+TEST_CASE("multiscale_energy: every level against brute force, and copies at any offset score 0", "[metrics]") {
   const auto ex = exemplar(tessera::exemplar_kind::rock, 48);
   // a crop at an odd offset: shrinking on one block grid would score it like a different texture
   const auto part = crop(ex, 7, 11, 33, 29);
