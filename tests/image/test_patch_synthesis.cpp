@@ -577,6 +577,18 @@ TEST_CASE("synthesize: the overlap_error fallback fits filled cells better than 
     }
   CHECK(sum_exact < sum_paper);
   CHECK(paper.evaluated_errors == 0);
+  // bit-identical for any thread count and window
+  tessera::thread_pool_executor pool(2);
+  tessera::image_buffer<std::uint8_t, 3> threaded(256, 256), part(100, 90);
+  REQUIRE(tessera::synthesize(m, threaded, exact_opts, pool).ok());
+  CHECK(threaded == a);
+  auto window = exact_opts;
+  window.origin = {37, 61};
+  REQUIRE(tessera::synthesize(m, part, window).ok());
+  index_t mismatches = 0;
+  for (index_t y = 0; y < 90; ++y)
+    for (index_t x = 0; x < 100; ++x) mismatches += part.read(x, y) != a.read(37 + x, 61 + y) ? 1 : 0;
+  CHECK(mismatches == 0);
   // bad options name themselves
   auto bad = tessera::synthesize(m, a, {.fallback_budget = 0});
   REQUIRE_FALSE(bad.ok());
