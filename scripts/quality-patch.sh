@@ -21,7 +21,7 @@
 #   --label L    name of this run (default "default")
 #   --threads T  threads of tessera (default 2)
 #   --only A,B   only these photographs
-# Anything after `--` goes to `tessera synth` (e.g. -- --seams cut --patch 48).
+# Anything after `--` goes to `tessera synth` (e.g. -- --fallback overlap --seams cut, the quality mode).
 # Environment: TESSERA_BIN (default build/bin/tessera), TESSERA_QUALITY_CACHE (default
 # build/quality-patch/cache: photographs and G'MIC outputs, reused between runs).
 set -euo pipefail
