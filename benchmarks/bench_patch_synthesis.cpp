@@ -6,6 +6,8 @@
 //     x_memcpy synthesis time / memcpy time of the same output buffer, measured in the same run (mean
 //              frame over median copy); x_memcpy_min: fastest frame over fastest copy, steadier when the
 //              machine is shared
+//   synthesize_overlap_fallback/...: the same with the quality fallback (fill_fallback::overlap_error)
+//     instead of the paper's most-sets default, for a same-run ratio of the two
 //   memcpy/<output side>/<format>: the baseline alone
 //   preprocess/<exemplar side>/<kind>/<threads>/<seams>: build_patch_model (size analysis included; seams:
 //     also the minimum-error seam of every compatible pair), model_bytes and model_MiB (patch_model::memory_bytes)
@@ -58,7 +60,7 @@ std::pair<double, double> memcpy_seconds(std::size_t bytes) {
 }
 
 template <class T, int C>
-void run_synthesis(benchmark::State& state) {
+void run_synthesis(benchmark::State& state, tessera::fill_fallback fallback = tessera::fill_fallback::most_sets) {
   const index_t ex_side = state.range(0), side = state.range(1);
   const int threads = static_cast<int>(state.range(3));
   const auto& model = model_for<T, C>(ex_side);
@@ -70,8 +72,8 @@ void run_synthesis(benchmark::State& state) {
   const auto t0 = std::chrono::steady_clock::now();
   for (auto _ : state) {
     const auto f0 = std::chrono::steady_clock::now();
-    auto s = threads == 1 ? tessera::synthesize(model, out, {.seed = static_cast<std::uint64_t>(frames)})
-                          : tessera::synthesize(model, out, {.seed = static_cast<std::uint64_t>(frames)}, pool);
+    const tessera::patch_synthesis_options o{.seed = static_cast<std::uint64_t>(frames), .fallback = fallback};
+    auto s = threads == 1 ? tessera::synthesize(model, out, o) : tessera::synthesize(model, out, o, pool);
     if (!s) state.SkipWithError(s.error().message().c_str());
     benchmark::DoNotOptimize(out.data());
     fastest = std::min(fastest, std::chrono::duration<double>(std::chrono::steady_clock::now() - f0).count());
@@ -95,6 +97,10 @@ void BM_synthesize(benchmark::State& state) {
     run_synthesis<std::uint8_t, 4>(state);
   else
     run_synthesis<float, 3>(state);
+}
+
+void BM_synthesize_overlap_fallback(benchmark::State& state) {
+  run_synthesis<std::uint8_t, 4>(state, tessera::fill_fallback::overlap_error);
 }
 
 void BM_memcpy(benchmark::State& state) {
@@ -142,6 +148,10 @@ void synthesis_args(benchmark::internal::Benchmark* b) {
 
 BENCHMARK(BM_memcpy)->ArgsProduct({{256, 512, 1024, 2048, 4096}, {0, 1}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_synthesize)->Apply(synthesis_args)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_synthesize_overlap_fallback)
+    ->ArgsProduct({{64, 128}, {1024}, {0}, {1, 2}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 BENCHMARK(BM_preprocess)
     ->ArgsProduct({{64, 128}, {0, 1, 2, 3, 4, 5, 6}, {1, 2}, {0, 1}})
     ->Unit(benchmark::kMillisecond)

@@ -1,6 +1,7 @@
 // tessera synth: real-time patch synthesis of large textures (paper 002; image/patch_synthesis.hpp).
 //   tessera synth --exemplar E.png --size WxH --out O.png [--seed S] [--threads T] [--patch P]
-//                 [--overlap V] [--seams feather|cut] [--window X,Y,W,H] [--source-map M.png]
+//                 [--overlap V] [--seams feather|cut] [--fallback overlap|sets] [--candidates K]
+//                 [--window X,Y,W,H] [--source-map M.png]
 //                 [--repeat N] [--stats]
 #include <algorithm>
 #include <cmath>
@@ -31,6 +32,8 @@ struct synth_request {
   index_t width = 0, height = 0, patch_w = 0, patch_h = 0, overlap = 0;
   tessera::texture_offset origin;
   tessera::seam_mode seams = tessera::seam_mode::feather;
+  tessera::fill_fallback fallback = tessera::fill_fallback::most_sets;
+  int candidates = 8;
   std::uint64_t seed = 1;
   int threads = 0, repeat = 1;
   bool stats = false;
@@ -84,6 +87,14 @@ tessera::result<synth_request> parse(const cli::arguments& args) {
     r.seams = tessera::seam_mode::cut;
   else if (seams != "feather")
     return status::invalid_argument("--seams expects feather or cut, got '" + seams + "'");
+  const std::string fallback = args.str("--fallback", "sets");
+  if (fallback == "overlap")
+    r.fallback = tessera::fill_fallback::overlap_error;
+  else if (fallback != "sets")
+    return status::invalid_argument("--fallback expects overlap or sets, got '" + fallback + "'");
+  auto k = args.integer("--candidates", 8, 1, 64);
+  if (!k) return k.error();
+  r.candidates = static_cast<int>(*k);
   r.seed = args.seed();  // --seed, --threads and --repeat were checked by main (check_common)
   r.threads = args.threads();
   r.repeat = args.repeat();
@@ -101,6 +112,7 @@ int run_format(const cli::arguments& args, const synth_request& r) {
   const tessera::patch_model_options mo{.patch_width = r.patch_w,
                                         .patch_height = r.patch_h,
                                         .overlap = r.overlap,
+                                        .candidates = r.candidates,
                                         .seams = r.seams == tessera::seam_mode::cut};
   tessera::result<tessera::patch_model<T, C>> model = status::internal_error("not built");
   const double preprocess_ms = cli::time_ms([&] { model = tessera::build_patch_model(*ex, mo, pool); });
@@ -108,7 +120,8 @@ int run_format(const cli::arguments& args, const synth_request& r) {
 
   auto out = tessera::image_buffer<T, C>::create(r.width, r.height);
   if (!out) return cli::fail(args, out.error());
-  const tessera::patch_synthesis_options so{.origin = r.origin, .seed = r.seed, .seams = r.seams};
+  const tessera::patch_synthesis_options so{
+      .origin = r.origin, .seed = r.seed, .seams = r.seams, .fallback = r.fallback};
   tessera::result<tessera::patch_synthesis_stats> st = status::internal_error("not run");
   const double synthesis_ms = cli::median_ms(r.repeat, [&] { st = tessera::synthesize(*model, *out, so, pool); });
   if (!st) return cli::fail(args, st.error());
@@ -155,7 +168,28 @@ int run_format(const cli::arguments& args, const synth_request& r) {
         .add("cells", st->cells)
         .add("filled", st->filled)
         .add("empty_intersections", st->empty_intersections)
+        .add("fallback_rate", st->filled > 0 ? static_cast<double>(st->empty_intersections) / st->filled : 0.0)
+        .add("fallback", r.fallback == tessera::fill_fallback::most_sets ? "sets" : "overlap")
+        .add("evaluated_errors", st->evaluated_errors)
+        .add("fill_overlap_rms", st->fill_overlap_rms)
+        .add("candidates", model->candidates())
         .add("model_bytes", static_cast<long long>(model->memory_bytes()));
+    // a patch size that breaks the structure: the chosen pitch does not follow the exemplar's period
+    // (low autocorrelation at one pitch) while an analysed shape does (the brick case of issue 16)
+    line.add("pitch_alignment", model->pitch_alignment());
+    if (const auto& analysis = model->analysis()) {
+      const tessera::patch_size_measure* best = nullptr;
+      for (const auto& m : analysis->sizes)
+        if (best == nullptr || m.alignment > best->alignment) best = &m;
+      if (best != nullptr) {
+        line.add("best_alignment", best->alignment)
+            .add("best_alignment_patch", std::to_string(best->width) + "x" + std::to_string(best->height));
+        const bool breaks = best->alignment >= 0.5 && model->pitch_alignment() < best->alignment - 0.2;
+        line.add("structure_warning", breaks ? "the patch pitch does not follow the exemplar's period; try --patch " +
+                                                   std::to_string(best->width) + "x" + std::to_string(best->height)
+                                             : std::string());
+      }
+    }
     const tessera::neighborhood_energy_options eo{.window = 5, .sample_step = 4};
     if (auto e = tessera::neighborhood_energy(crop, *ex, eo, pool)) line.add("neighborhood_energy", *e);
     const auto seams = tessera::patch_seam_lines(*model, cw, ch, {r.origin.x + cx, r.origin.y + cy});
@@ -196,6 +230,10 @@ std::vector<cli::option_spec> synth_options() {
       {"--patch", "P", "patch pitch P or WxH (default: chosen by the periodicity analysis, paper 002 section 2.1)"},
       {"--overlap", "V", "overlap width between patches (default: chosen by the analysis)"},
       {"--seams", "MODE", "feather (default, the paper's linear blend) or cut (minimum-error seams)"},
+      {"--fallback", "RULE",
+       "cells whose four compatible sets share no patch: sets (default, the paper: the patch in the most sets) "
+       "or overlap (smallest true overlap error; slower)"},
+      {"--candidates", "K", "size of each compatible set, 1 to 64 (default 8, the paper's)"},
       {"--window", "X,Y,W,H", "render the W x H window at (X, Y) of the infinite texture instead of --size"},
       {"--source-map", "M.png", "also write the exemplar coordinates of every pixel (16-bit RGB: red x, green y)"}};
   return o;
@@ -205,7 +243,8 @@ const cli::registrar reg(
     {.name = "synth",
      .summary = "synthesize a large texture or any window of an infinite one from an exemplar (patch synthesis)",
      .usage = "tessera synth --exemplar E.png --size WxH --out O.png [--seed S] [--threads T] [--patch P] "
-              "[--overlap V] [--seams feather|cut] [--window X,Y,W,H] [--source-map M.png] [--repeat N] [--stats]",
+              "[--overlap V] [--seams feather|cut] [--fallback overlap|sets] [--candidates K] [--window X,Y,W,H] "
+              "[--source-map M.png] [--repeat N] [--stats]",
      .options = synth_options(),
      .run = run_synth});
 

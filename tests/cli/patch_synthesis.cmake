@@ -63,3 +63,11 @@ tessera_cli_test(NAME "cli: synth with an unknown seam mode fails" CODE 1 REGEX 
   COMMAND synth --exemplar sand --size 8x8 --seams zigzag --out ${_o}/bad.png)
 tessera_cli_test(NAME "cli: synth with a bad seed fails" CODE 2 REGEX "--seed expects an integer in \\[0, 2\\^64 - 1\\], got '-3'"
   COMMAND synth --exemplar sand --size 8x8 --seed -3 --out ${_o}/bad.png)
+tessera_cli_test(NAME "cli: synth with an unknown fallback fails" CODE 1 REGEX "--fallback expects overlap or sets, got 'random'"
+  COMMAND synth --exemplar sand --size 8x8 --fallback random --out ${_o}/bad.png)
+tessera_cli_test(NAME "cli: synth --stats reports the fallback rate and the structure check"
+  REGEX "\"fallback_rate\":[0-9.e-]+.*\"fill_overlap_rms\":[0-9.e-]+.*\"pitch_alignment\":[0-9.e-]+.*\"structure_warning\":"
+  COMMAND synth --exemplar bricks --exemplar-size 64 --size 96x96 --fallback sets --candidates 4 --stats --out ${_o}/fallback.png)
+tessera_cli_test(NAME "cli: metrics of an image against its exemplar"
+  REGEX "\"energy_1x\":[0-9.e-]+,\"energy_2x\":[0-9.e-]+,\"histogram_distance\":[0-9.e-]+,\"repetition\":"
+  COMMAND metrics --exemplar sand --exemplar-size 48 --in sand --window 5 --levels 2 --step 4)

@@ -3,6 +3,8 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <string>
+#include <tuple>
 #include <vector>
 
 #include <catch2/catch.hpp>
@@ -250,4 +252,92 @@ TEST_CASE("repetition_score: flat images and bad input", "[metrics]") {
   CHECK(r.error().message().find("min_offset") != std::string::npos);
   tessera::image_view<const float, 1> empty;
   CHECK(!tessera::repetition_score(empty, 1));
+}
+
+namespace {
+// Brute-force energy at 1/f: the output shrunk by f (f x f block means from (0, 0)) against every
+// window of the exemplar shrunk by f at every block phase.
+double brute_energy_at(const tessera::image_buffer<std::uint8_t, 3>& out,
+                       const tessera::image_buffer<std::uint8_t, 3>& ex, index_t f, index_t window, index_t step) {
+  auto shrink = [f](const tessera::image_buffer<std::uint8_t, 3>& img, index_t dx, index_t dy) {
+    const index_t w = (img.width() - dx) / f, h = (img.height() - dy) / f;
+    std::vector<double> v(static_cast<std::size_t>(w * h * 3), 0.0);
+    for (index_t y = 0; y < h; ++y)
+      for (index_t x = 0; x < w; ++x)
+        for (int c = 0; c < 3; ++c) {
+          double s = 0;
+          for (index_t r = 0; r < f; ++r)
+            for (index_t q = 0; q < f; ++q) s += tessera::channel_to_unit(img.read(dx + x * f + q, dy + y * f + r)[c]);
+          v[static_cast<std::size_t>((y * w + x) * 3 + c)] = s / static_cast<double>(f * f);
+        }
+    return std::tuple{v, w, h};
+  };
+  const auto [o, ow, oh] = shrink(out, 0, 0);
+  std::vector<std::tuple<std::vector<double>, index_t, index_t>> phases;
+  for (index_t dy = 0; dy < f; ++dy)
+    for (index_t dx = 0; dx < f; ++dx) phases.push_back(shrink(ex, dx, dy));
+  double sum = 0;
+  index_t count = 0;
+  for (index_t qy = 0; qy + window <= oh; qy += step)
+    for (index_t qx = 0; qx + window <= ow; qx += step) {
+      double best = 1e300;
+      for (const auto& [e, ew, eh] : phases)
+        for (index_t y = 0; y + window <= eh; ++y)
+          for (index_t x = 0; x + window <= ew; ++x) {
+            double d = 0;
+            for (index_t r = 0; r < window; ++r)
+              for (index_t q = 0; q < window * 3; ++q) {
+                const double a = o[static_cast<std::size_t>(((qy + r) * ow + qx) * 3 + q)];
+                const double b = e[static_cast<std::size_t>(((y + r) * ew + x) * 3 + q)];
+                d += (a - b) * (a - b);
+              }
+            best = std::min(best, d);
+          }
+      sum += std::sqrt(best / static_cast<double>(window * window * 3));
+      ++count;
+    }
+  return sum / static_cast<double>(count);
+}
+}  // namespace
+
+TEST_CASE("multiscale_energy: every level against brute force, and copies at any offset score 0", "[metrics]") {
+  const auto ex = exemplar(tessera::exemplar_kind::rock, 48);
+  // a crop at an odd offset: shrinking on one block grid would score it like a different texture
+  const auto part = crop(ex, 7, 11, 33, 29);
+  const auto e = tessera::multiscale_energy(part, ex, {.window = 5, .sample_step = 2, .levels = 3}).value();
+  REQUIRE(e.size() == 3);
+  for (double v : e) CHECK(v == Approx(0).margin(1e-6));
+  // another texture: level 0 is neighborhood_energy, every level matches brute force, any executor
+  const auto other = exemplar(tessera::exemplar_kind::rock, 40, 9);
+  const tessera::multiscale_energy_options o{.window = 3, .sample_step = 2, .levels = 3};
+  const auto f = tessera::multiscale_energy(other, ex, o).value();
+  CHECK(f[0] == tessera::neighborhood_energy(other, ex, {.window = 3, .sample_step = 2}).value());
+  for (index_t l = 0; l < 3; ++l) {
+    INFO("level " << l);
+    CHECK(f[static_cast<std::size_t>(l)] == Approx(brute_energy_at(other, ex, index_t{1} << l, 3, 2)).epsilon(1e-5));
+    CHECK(f[static_cast<std::size_t>(l)] > 0.0);
+  }
+  tessera::thread_pool_executor pool(2);
+  CHECK(tessera::multiscale_energy(other, ex, o, pool).value() == f);
+  auto brute = o;
+  brute.brute_force = true;
+  const auto g = tessera::multiscale_energy(other, ex, brute).value();
+  for (std::size_t l = 0; l < 3; ++l) CHECK(g[l] == Approx(f[l]).epsilon(1e-9));
+  // noise scores far higher than a texture of the same kind at every level
+  const auto n = tessera::multiscale_energy(noise(40, 40, 3), ex, o).value();
+  for (std::size_t l = 0; l < 3; ++l) CHECK(n[l] > f[l]);
+}
+
+TEST_CASE("multiscale_energy: bad input", "[metrics]") {
+  const auto ex = exemplar(tessera::exemplar_kind::rock, 32);
+  for (int levels : {0, 7}) {
+    auto r = tessera::multiscale_energy(ex, ex, {.levels = levels});
+    REQUIRE_FALSE(r.ok());
+    CHECK(r.error().message().find("levels") != std::string::npos);
+  }
+  auto too_small = tessera::multiscale_energy(ex, ex, {.window = 7, .levels = 4});  // 7 x 8 > 32
+  REQUIRE_FALSE(too_small.ok());
+  CHECK(too_small.error().message().find("window") != std::string::npos);
+  CHECK_FALSE(tessera::multiscale_energy(ex, ex, {.sample_step = 0}).ok());
+  CHECK_FALSE(tessera::multiscale_energy(tessera::image_buffer<std::uint8_t, 3>(), ex).ok());
 }

@@ -2,6 +2,7 @@
 // by the `tessera` command's --stats and by benchmarks:
 //
 //   neighborhood_energy   how far output neighbourhoods are from the exemplar's (0: all occur in it)
+//   multiscale_energy     the same at 1x, 1/2x, 1/4x...: breaks in structure larger than a window
 //   seam_gradient_ratio   how visible given seams are, relative to the exemplar's own gradients
 //   histogram_distance    how different two images' per-channel value histograms are
 //   repetition_score      how strongly an image repeats itself (largest autocorrelation at a distance)
@@ -16,6 +17,7 @@
 #include <cstdint>
 #include <limits>
 #include <span>
+#include <type_traits>
 #include <vector>
 
 #include <Eigen/Core>
@@ -57,6 +59,87 @@ inline double squared_distance(const float* a, const float* b, index_t rows, ind
 }
 }  // namespace detail
 
+namespace detail {
+/// neighborhood_energy of a float output against the windows of several float exemplars (each window
+/// lies inside one of them); the window fits every image (checked by the callers).
+template <int C, class X>
+result<double> energy_against(const image_buffer<float, C>& out, std::span<const image_buffer<float, C>> exemplars,
+                              const neighborhood_energy_options& opts, X&& exec) {
+  const index_t w = opts.window, D = w * w * C;
+  index_t ne = 0;
+  for (const auto& ex : exemplars) ne += (ex.width() - w + 1) * (ex.height() - w + 1);
+  std::vector<float> windows(to_size(ne * D));
+  float* dst = windows.data();
+  for (const auto& ex : exemplars)
+    for (index_t y = 0; y + w <= ex.height(); ++y)
+      for (index_t x = 0; x + w <= ex.width(); ++x, dst += D) gather_window(ex, x, y, w, dst);
+  const index_t qnx = (out.width() - w) / opts.sample_step + 1, qny = (out.height() - w) / opts.sample_step + 1;
+
+  // kd-tree over PCA projections of the exemplar windows (unless brute force is cheaper or asked for)
+  const bool brute =
+      opts.brute_force || static_cast<double>(ne) * static_cast<double>(qnx * qny) * static_cast<double>(D) < 4e6;
+  // Eigen and the kd-tree through dependent_t: compiled only where neighborhood_energy is used
+  using real = dependent_t<double, std::remove_cvref_t<X>>;
+  using matrix = Eigen::Matrix<real, Eigen::Dynamic, Eigen::Dynamic>;
+  using column = Eigen::Matrix<real, Eigen::Dynamic, 1>;
+  using row = Eigen::Matrix<real, 1, Eigen::Dynamic>;
+  using knn = dependent_knn<-1, std::remove_cvref_t<X>>;
+  matrix basis;
+  knn index;
+  if (!brute) {
+    const index_t m = std::min<index_t>(ne, 512);
+    matrix samples(m, D);
+    for (index_t s = 0; s < m; ++s) {
+      const float* v = windows.data() + (s * ne / m) * D;
+      for (index_t j = 0; j < D; ++j) samples(s, j) = v[j];
+    }
+    basis = pca_basis(std::move(samples), 12);
+    const int d = static_cast<int>(basis.cols());
+    std::vector<double> proj(to_size(ne * d));
+    column v(D);
+    double scale = 0;
+    for (index_t i = 0; i < ne; ++i) {
+      for (index_t j = 0; j < D; ++j) v(j) = windows[to_size(i * D + j)];
+      Eigen::Map<row>(proj.data() + i * d, d) = v.transpose() * basis;
+      scale = std::max(scale, v.squaredNorm());
+    }
+    index = knn(std::move(proj), ne, d, scale);
+  }
+
+  std::vector<double> row_sums(to_size(qny), 0.0);
+  exec.parallel_for(0, qny, [&](index_t qy) {
+    std::vector<float> q(to_size(D));
+    std::vector<neighbor> best;
+    column qv(D);
+    double sum = 0;
+    for (index_t qx = 0; qx < qnx; ++qx) {
+      gather_window(out, qx * opts.sample_step, qy * opts.sample_step, w, q.data());
+      double nearest = 0;
+      if (brute) {
+        nearest = std::numeric_limits<double>::infinity();
+        for (index_t i = 0; i < ne; ++i)
+          nearest = std::min(nearest, squared_distance(q.data(), windows.data() + i * D, w, w * C, nearest));
+      } else {
+        for (index_t j = 0; j < D; ++j) qv(j) = q[to_size(j)];
+        const row qp = qv.transpose() * basis;
+        index.search(
+            qp.data(), 1,
+            [&](std::uint32_t i, double bound) {
+              return squared_distance(q.data(), windows.data() + i * D, w, w * C, bound);
+            },
+            best);
+        nearest = best.front().dist;
+      }
+      sum += std::sqrt(nearest / static_cast<double>(D));
+    }
+    row_sums[to_size(qy)] = sum;
+  });
+  double total = 0;
+  for (double s : row_sums) total += s;
+  return total / static_cast<double>(qnx * qny);
+}
+}  // namespace detail
+
 /// Neighbourhood energy of `output` against `exemplar`: the mean, over output windows of
 /// `window` x `window` pixels taken every `sample_step` pixels, of the smallest RMS distance (channel
 /// values in unit range) to any exemplar window. 0 means every output neighbourhood occurs verbatim
@@ -91,75 +174,85 @@ result<double> neighborhood_energy(const O& output, const E& exemplar, const nei
   auto ex = to_buffer<float, C>(exemplar, "exemplar");
   if (!out) return out.error();
   if (!ex) return ex.error();
-  const index_t D = w * w * C;
-  const index_t enx = ex->width() - w + 1, eny = ex->height() - w + 1, ne = enx * eny;
-  std::vector<float> windows(detail::to_size(ne * D));
-  for (index_t y = 0; y < eny; ++y)
-    for (index_t x = 0; x < enx; ++x) detail::gather_window(*ex, x, y, w, windows.data() + (y * enx + x) * D);
-  const index_t qnx = (out->width() - w) / opts.sample_step + 1, qny = (out->height() - w) / opts.sample_step + 1;
+  return detail::energy_against(*out, std::span<const image_buffer<float, C>>(&*ex, 1), opts, exec);
+}
 
-  // kd-tree over PCA projections of the exemplar windows (unless brute force is cheaper or asked for)
-  const bool brute =
-      opts.brute_force || static_cast<double>(ne) * static_cast<double>(qnx * qny) * static_cast<double>(D) < 4e6;
-  // Eigen and the kd-tree through dependent_t: compiled only where neighborhood_energy is used
-  using real = detail::dependent_t<double, E>;
-  using matrix = Eigen::Matrix<real, Eigen::Dynamic, Eigen::Dynamic>;
-  using column = Eigen::Matrix<real, Eigen::Dynamic, 1>;
-  using row = Eigen::Matrix<real, 1, Eigen::Dynamic>;
-  using knn = detail::dependent_knn<-1, E>;
-  matrix basis;
-  knn index;
-  if (!brute) {
-    const index_t m = std::min<index_t>(ne, 512);
-    matrix samples(m, D);
-    for (index_t s = 0; s < m; ++s) {
-      const float* v = windows.data() + (s * ne / m) * D;
-      for (index_t j = 0; j < D; ++j) samples(s, j) = v[j];
-    }
-    basis = detail::pca_basis(std::move(samples), 12);
-    const int d = static_cast<int>(basis.cols());
-    std::vector<double> proj(detail::to_size(ne * d));
-    column v(D);
-    double scale = 0;
-    for (index_t i = 0; i < ne; ++i) {
-      for (index_t j = 0; j < D; ++j) v(j) = windows[detail::to_size(i * D + j)];
-      Eigen::Map<row>(proj.data() + i * d, d) = v.transpose() * basis;
-      scale = std::max(scale, v.squaredNorm());
-    }
-    index = knn(std::move(proj), ne, d, scale);
-  }
+/// Options of multiscale_energy.
+struct multiscale_energy_options {
+  index_t window = 7;        ///< neighbourhood side at every level (>= 1, fits both images at the coarsest level)
+  index_t sample_step = 2;   ///< output windows every sample_step pixels of each level (>= 1)
+  int levels = 2;            ///< 1: full resolution only; 2: also half resolution; ... (1 to 6)
+  bool brute_force = false;  ///< compare with every exemplar window instead of the kd-tree (same result)
+};
 
-  std::vector<double> row_sums(detail::to_size(qny), 0.0);
-  exec.parallel_for(0, qny, [&](index_t qy) {
-    std::vector<float> q(detail::to_size(D));
-    std::vector<detail::neighbor> best;
-    column qv(D);
-    double sum = 0;
-    for (index_t qx = 0; qx < qnx; ++qx) {
-      detail::gather_window(*out, qx * opts.sample_step, qy * opts.sample_step, w, q.data());
-      double nearest = 0;
-      if (brute) {
-        nearest = std::numeric_limits<double>::infinity();
-        for (index_t i = 0; i < ne; ++i)
-          nearest = std::min(nearest, detail::squared_distance(q.data(), windows.data() + i * D, w, w * C, nearest));
-      } else {
-        for (index_t j = 0; j < D; ++j) qv(j) = q[detail::to_size(j)];
-        const row qp = qv.transpose() * basis;
-        index.search(
-            qp.data(), 1,
-            [&](std::uint32_t i, double bound) {
-              return detail::squared_distance(q.data(), windows.data() + i * D, w, w * C, bound);
-            },
-            best);
-        nearest = best.front().dist;
+namespace detail {
+/// The f x f block means of `img` starting at (dx, dy): (width - dx) / f x (height - dy) / f pixels
+/// (partial blocks at the right and bottom are dropped).
+template <int C>
+image_buffer<float, C> box_shrink(const image_buffer<float, C>& img, index_t f, index_t dx, index_t dy) {
+  const index_t w = (img.width() - dx) / f, h = (img.height() - dy) / f;
+  image_buffer<float, C> out(w, h);
+  const double scale = 1.0 / static_cast<double>(f * f);
+  for (index_t y = 0; y < h; ++y)
+    for (index_t x = 0; x < w; ++x) {
+      double sum[C] = {};
+      for (index_t r = 0; r < f; ++r) {
+        const float* p = img.pixel_ptr(dx + x * f, dy + y * f + r);
+        for (index_t i = 0; i < f; ++i)
+          for (int c = 0; c < C; ++c) sum[c] += static_cast<double>(p[i * C + c]);
       }
-      sum += std::sqrt(nearest / static_cast<double>(D));
+      float* o = out.pixel_ptr(x, y);
+      for (int c = 0; c < C; ++c) o[c] = static_cast<float>(sum[c] * scale);
     }
-    row_sums[detail::to_size(qy)] = sum;
-  });
-  double total = 0;
-  for (double s : row_sums) total += s;
-  return total / static_cast<double>(qnx * qny);
+  return out;
+}
+}  // namespace detail
+
+/// Multi-scale neighbourhood energy: neighborhood_energy of `output` against `exemplar` at full
+/// resolution, then at 1/2, 1/4, ... (`levels` values; element l is the energy at 1 / 2^l). At level l
+/// the output is shrunk by 2^l (means of 2^l x 2^l blocks) and compared with the windows of the
+/// exemplar shrunk the same way **at every one of the 4^l block phases**, so that a verbatim copy of the
+/// exemplar at any offset scores 0 at every level (shrinking both images on one block grid would
+/// penalize copies at odd offsets, which patch synthesis makes everywhere). Same window and sample step
+/// at every level. Synthesis that keeps every small neighbourhood plausible but breaks the structure at
+/// the scale of its patches scores well at 1x and worse at 1/2x; scripts/quality-patch.sh reports both.
+///
+/// Errors: those of neighborhood_energy (the window must fit both images shrunk by 2^(levels - 1))
+/// and invalid_argument for levels outside [1, 6]. Complexity: level l compares output windows with
+/// 4^l shrunk exemplars of 1/4^l the pixels, so every level costs about as much as the first.
+/// Runs on `exec`; the result does not depend on it. Thread safety: pure function of its inputs.
+template <Image O, Image E, Executor X = serial_executor>
+result<std::vector<double>> multiscale_energy(const O& output, const E& exemplar,
+                                              const multiscale_energy_options& opts = {}, X&& exec = {}) {
+  constexpr int C = channels_v<O>;
+  if (opts.levels < 1 || opts.levels > 6)
+    return status::invalid_argument(detail::cat("multiscale_energy: levels must be in [1, 6], got ", opts.levels));
+  const neighborhood_energy_options eo{
+      .window = opts.window, .sample_step = opts.sample_step, .brute_force = opts.brute_force};
+  auto first = neighborhood_energy(output, exemplar, eo, exec);  // validates the images and options
+  if (!first) return first.error();
+  std::vector<double> energies{*first};
+  const index_t w = opts.window, shrink = index_t{1} << (opts.levels - 1);
+  if (w * shrink > width_of(output) || w * shrink > height_of(output) || w * shrink + shrink > width_of(exemplar) ||
+      w * shrink + shrink > height_of(exemplar))
+    return status::invalid_argument(detail::cat("multiscale_energy: window ", w, " does not fit the output (",
+                                                width_of(output), " x ", height_of(output), ") and the exemplar (",
+                                                width_of(exemplar), " x ", height_of(exemplar), ") at 1/", shrink));
+  auto out = to_buffer<float, C>(output, "output");
+  auto ex = to_buffer<float, C>(exemplar, "exemplar");
+  if (!out) return out.error();
+  if (!ex) return ex.error();
+  for (int level = 1; level < opts.levels; ++level) {
+    const index_t f = index_t{1} << level;
+    std::vector<image_buffer<float, C>> phases;
+    for (index_t dy = 0; dy < f; ++dy)
+      for (index_t dx = 0; dx < f; ++dx) phases.push_back(detail::box_shrink(*ex, f, dx, dy));
+    auto energy = detail::energy_against(detail::box_shrink(*out, f, 0, 0),
+                                         std::span<const image_buffer<float, C>>(phases), eo, exec);
+    if (!energy) return energy.error();
+    energies.push_back(*energy);
+  }
+  return energies;
 }
 
 /// A straight seam in an image: `vertical` is the boundary between columns position-1 and position

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <string_view>
@@ -41,6 +42,14 @@ enum class seam_mode {
   cut       ///< minimum-error seam (the improvement paper 002 names for structured textures)
 };
 
+/// How a vacant cell is filled when the compatible sets of its four neighbours share no patch (on
+/// photographs the common case: the paper's k = 8 sets rarely intersect four ways).
+enum class fill_fallback {
+  overlap_error,  ///< the union's patch with the smallest true overlap error against all four neighbours
+                  ///< (quality mode: a few times slower synthesis on stochastic exemplars)
+  most_sets       ///< paper 002 §2 (default): the patch in the most sets (ties: smallest estimated error, index)
+};
+
 /// A pixel position in the infinite texture plane.
 struct texture_offset {
   /// Texture column.
@@ -55,10 +64,13 @@ struct patch_synthesis_options {
   std::uint64_t seed = 0;      ///< the texture: same seed, same infinite texture
   /// How overlaps join: feather (the paper's linear blend) or cut (minimum-error seams).
   seam_mode seams = seam_mode::feather;
-  index_t phase_radius = -1;        ///< distributed patches come from phases within this distance of one
-                                    ///< phase (any value >= max(patch_width, patch_height) means every
-                                    ///< phase); -1: the phases most similar to it (detail::phase_group)
-  index_t min_phase_group = 16;     ///< with phase_radius -1: at least this many patches to draw from
+  index_t phase_radius = -1;     ///< distributed patches come from phases within this distance of one
+                                 ///< phase (any value >= max(patch_width, patch_height) means every
+                                 ///< phase); -1: the phases most similar to it (detail::phase_group)
+  index_t min_phase_group = 16;  ///< with phase_radius -1: at least this many patches to draw from
+  /// Which patch fills a cell whose four sets share none (docs/patch_synthesis.md, "Filling").
+  fill_fallback fallback = fill_fallback::most_sets;
+  int fallback_budget = 8;          ///< overlap_error: at most this many candidates get missing errors computed (1-256)
   tessera::progress progress = {};  ///< fraction done; return false (or raise the token) to cancel
 };
 
@@ -70,6 +82,12 @@ struct patch_synthesis_stats {
   index_t empty_intersections = 0;  ///< filled cells whose four sets had no common patch (fallback used)
   index_t computed_seams = 0;       ///< seam cuts computed during synthesis (pairs outside the compatible sets)
   index_t phase_group = 0;          ///< patches the distribution drew from
+  index_t evaluated_errors = 0;     ///< overlap errors the overlap_error fallback computed from the exemplar
+  /// RMS channel difference (unit range) over the four overlap strips of the filled cells whose errors
+  /// are known (all of them with the overlap_error fallback, the intersected ones with most_sets): how
+  /// well the filled patches fit. The
+  /// exemplar's own value is 0; a few hundredths hide under feathering, 0.1 and more show as seams.
+  double fill_overlap_rms = 0;
 };
 
 /// Largest |texture coordinate| a window may reach.
@@ -93,6 +111,10 @@ inline status validate_window(index_t w, index_t h, const patch_synthesis_option
     return status::invalid_argument(cat(fn, ": phase_radius must be >= -1, got ", opts.phase_radius));
   if (opts.min_phase_group < 1)
     return status::invalid_argument(cat(fn, ": min_phase_group must be >= 1, got ", opts.min_phase_group));
+  if (opts.fallback_budget < 1 || opts.fallback_budget > 256)
+    return status::invalid_argument(cat(fn, ": fallback_budget must be in [1, 256], got ", opts.fallback_budget));
+  if (auto s = validate_enum(opts.fallback, {"overlap_error", "most_sets"}, cat(fn, ": options.fallback")); !s)
+    return s;
   return validate_enum(opts.seams, {"feather", "cut"}, cat(fn, ": options.seams"));
 }
 
@@ -104,11 +126,20 @@ result<patch_plan> plan_window(const patch_model<T, C>& model, index_t w, index_
   if (auto s = validate_window(w, h, opts, fn); !s) return s;
   if (opts.progress.cancelled()) return status::cancelled();
   return make_plan(model, opts.origin.x, opts.origin.y, w, h, opts.seed, opts.seams == seam_mode::cut,
-                   opts.phase_radius, opts.min_phase_group, exec);
+                   opts.phase_radius, opts.min_phase_group, exec,
+                   fill_policy{opts.fallback == fill_fallback::overlap_error, opts.fallback_budget});
 }
 
-inline patch_synthesis_stats to_stats(const plan_counts& c) {
-  return {c.cells, c.placed, c.filled, c.empty_intersections, c.computed_seams, c.phase_group};
+template <Channel T, int C>
+patch_synthesis_stats to_stats(const plan_counts& c, const patch_model<T, C>& m) {
+  // the overlap strips of one filled cell: two vertical (ph + v) x v, two horizontal (pw + v) x v
+  const double strip_values =
+      2.0 * static_cast<double>((m.patch_height() + m.patch_width() + 2 * m.overlap()) * m.overlap() * C);
+  const double unit = std::is_floating_point_v<T> ? 1.0 : static_cast<double>(std::numeric_limits<T>::max());
+  const double rms = c.fill_error_known > 0
+                         ? std::sqrt(c.fill_error / (strip_values * static_cast<double>(c.fill_error_known))) / unit
+                         : 0.0;
+  return {c.cells, c.placed, c.filled, c.empty_intersections, c.computed_seams, c.phase_group, c.evaluated, rms};
 }
 
 /// Renders a plan from exemplar `ex` into `out`, in bands of rows on `exec`, reporting progress
@@ -178,7 +209,7 @@ requires WritableImage<std::remove_cvref_t<O>> result<patch_synthesis_stats> syn
   auto plan = detail::plan_window(model, width_of(out), height_of(out), opts, "synthesize", exec);
   if (!plan) return plan.error();
   if (auto s = detail::render_window(*plan, model.exemplar(), out, opts.progress, exec); !s) return s;
-  return detail::to_stats(plan->counts);
+  return detail::to_stats(plan->counts, model);
 }
 
 /// Synthesizes an aligned map (normal, height, roughness...) with exactly the decisions synthesize()
@@ -200,7 +231,7 @@ requires WritableImage<std::remove_cvref_t<O>> result<patch_synthesis_stats> syn
   auto plan = detail::plan_window(model, width_of(out), height_of(out), opts, "synthesize_aligned", exec);
   if (!plan) return plan.error();
   if (auto s = detail::render_window(*plan, *ex, out, opts.progress, exec); !s) return s;
-  return detail::to_stats(plan->counts);
+  return detail::to_stats(plan->counts, model);
 }
 
 /// Writes, for every pixel of the window synthesize() would render with the same options, the
@@ -239,7 +270,7 @@ requires WritableImage<std::remove_cvref_t<S>> result<patch_synthesis_stats> syn
         image_traits<ST>::write(source_map, x, y, p);
       }
     });
-    return detail::to_stats(plan->counts);
+    return detail::to_stats(plan->counts, model);
   }
 }
 

@@ -13,6 +13,7 @@
 #include "../../core/random.hpp"
 #include "../patch_model.hpp"
 #include "patch_model_kernels.hpp"
+#include "patch_model_sets.hpp"
 
 TESSERA_NAMESPACE_BEGIN
 namespace detail {
@@ -26,6 +27,16 @@ constexpr index_t floor_div(index_t a, index_t b) noexcept {
 /// Counts a synthesis call reports.
 struct plan_counts {
   index_t cells = 0, placed = 0, filled = 0, empty_intersections = 0, computed_seams = 0, phase_group = 0;
+  index_t evaluated = 0;         ///< overlap errors computed by exact fallbacks (sides outside the sets)
+  double fill_error = 0;         ///< summed overlap error (SSD, channel units) of the filled cells, all four sides
+  index_t fill_error_known = 0;  ///< filled cells whose four side errors are all known (so in fill_error)
+};
+
+/// How fill_cell picks a patch when the four compatible sets have no common member.
+struct fill_policy {
+  bool exact = false;  ///< true: smallest true overlap error against all four neighbours; false: the paper's
+                       ///< "present in the most sets" rule with estimated errors
+  int budget = 8;      ///< exact: at most this many candidates get their missing errors computed
 };
 
 /// The decisions for a window [ox, ox + w) x [oy, oy + h) of the infinite texture. Cell (i, j) holds a
@@ -80,16 +91,31 @@ std::vector<std::uint32_t> phase_group(const patch_model<T, C>& m, std::uint64_t
   return group;
 }
 
-/// Fills a vacant cell from its four placed neighbours (paper §2): a random member of the intersection
-/// of their compatible sets facing the cell (sorted small vectors), keyed by (seed, i, j). When the
-/// intersection is empty, the patch appearing in the most sets (the paper's rule); ties go to the
-/// smallest estimated overlap error (the sum of its errors in the sets holding it plus, for each set
-/// not holding it, that set's k-th error, a lower bound of its error there), then the smallest index.
-/// Returns the patch and whether the intersection was empty.
+/// What fill_cell decided.
+struct fill_result {
+  std::uint32_t patch = 0;
+  bool empty = false;     ///< the four sets had no common member (a fallback chose)
+  bool known = false;     ///< `error` is the exact total overlap error against the four neighbours
+  index_t evaluated = 0;  ///< strip errors computed
+  double error = 0;       ///< total overlap error (exact when `known`, else the estimate)
+};
+
+/// Fills a vacant cell from its four placed neighbours (paper 002 §2): a random member of the
+/// intersection of their compatible sets facing the cell (sorted small vectors), keyed by (seed, i, j).
+/// When the intersection is empty:
+///  - policy.exact (fill_fallback::overlap_error): among the union of the four sets, the patch with the smallest
+///    **true** overlap error summed over its four neighbours. Errors the sets hold are exact; the others
+///    are computed from the exemplar (strip_error), candidates taken in order of their lower bound (the
+///    known errors plus each missing set's k-th error, a lower bound when the sets are the exact top k;
+///    ties by index), stopping when the next lower bound exceeds the best total or after
+///    `policy.budget` candidates; equal totals go to the smaller index. With exact sets and a budget of
+///    at least the union's size this is the exact minimum over the union (tests check it by brute force);
+///  - otherwise (the default) the paper's rule: the patch appearing in the most sets; ties go to the smallest estimated
+///    error (the lower bound above), then the smallest index.
 template <Channel T, int C>
-std::pair<std::uint32_t, bool> fill_cell(const patch_model<T, C>& m, std::uint32_t west, std::uint32_t east,
-                                         std::uint32_t north, std::uint32_t south, const counter_rng& rng, index_t i,
-                                         index_t j) {
+fill_result fill_cell(const patch_model<T, C>& m, std::uint32_t west, std::uint32_t east, std::uint32_t north,
+                      std::uint32_t south, const counter_rng& rng, index_t i, index_t j,
+                      const fill_policy& policy = {}) {
   // a 4-way merge of the sets ordered by patch index, branch-free: copies end with a sentinel
   const std::uint32_t owners[4] = {west, east, north, south};
   constexpr int facing[4] = {side_east, side_west, side_south, side_north};
@@ -108,8 +134,16 @@ std::pair<std::uint32_t, bool> fill_cell(const patch_model<T, C>& m, std::uint32
     errs[s][k] = 0;
     worst[s] = m.kth_error(owners[s], facing[s]);
   }
+  struct member {
+    double bound;  // known errors + k-th error of each set not holding it
+    double known;  // the known errors alone
+    std::uint32_t patch;
+    unsigned mask;  // bit s: set s holds it
+  };
+  member uni[4 * 64];
   std::uint32_t inter[64];
-  index_t ni = 0, head[4] = {0, 0, 0, 0};
+  double inter_error[64];
+  index_t ni = 0, nu = 0, head[4] = {0, 0, 0, 0};
   std::uint32_t best = ids[0][0];
   int best_count = 0;
   double best_error = 0;
@@ -118,22 +152,57 @@ std::pair<std::uint32_t, bool> fill_cell(const patch_model<T, C>& m, std::uint32
         std::min(std::min(ids[0][head[0]], ids[1][head[1]]), std::min(ids[2][head[2]], ids[3][head[3]]));
     if (p == none) break;
     int count = 0;
-    double error = 0;  // summed over the sets in order west, east, north, south
+    unsigned mask = 0;
+    double error = 0, known = 0;  // summed over the sets in order west, east, north, south
     for (int s = 0; s < 4; ++s) {
       const bool hit = ids[s][head[s]] == p;
-      error += static_cast<double>(hit ? errs[s][head[s]] : worst[s]);
+      const double e = static_cast<double>(hit ? errs[s][head[s]] : worst[s]);
+      error += e;
+      known += hit ? e : 0.0;
       count += hit;
+      mask |= hit ? 1u << s : 0u;
       head[s] += hit;
     }
+    uni[nu++] = {error, known, p, mask};
     inter[ni] = p;
+    inter_error[ni] = error;
     ni += count == 4;
     const bool better = count > best_count || (count == best_count && error < best_error);
     best = better ? p : best;
     best_count = better ? count : best_count;
     best_error = better ? error : best_error;
   }
-  if (ni > 0) return {inter[rng.below(static_cast<std::uint64_t>(ni), i, j)], false};
-  return {best, true};
+  if (ni > 0) {
+    const auto r = to_size(rng.below(static_cast<std::uint64_t>(ni), i, j));
+    return {inter[r], false, true, 0, inter_error[r]};
+  }
+  if (!policy.exact) return {best, true, false, 0, best_error};
+
+  // exact fallback: branch and bound over the union, by lower bound
+  std::sort(uni, uni + nu, [](const member& a, const member& b) {
+    return a.bound < b.bound || (a.bound == b.bound && a.patch < b.patch);
+  });
+  const patch_geometry g{m.patch_width(), m.patch_height(), m.overlap(), m.patches_x(), m.patches_y()};
+  fill_result out{uni[0].patch, true, false, 0, uni[0].bound};
+  double best_total = std::numeric_limits<double>::infinity();
+  for (index_t c = 0; c < nu && c < policy.budget; ++c) {
+    const member& u = uni[c];
+    if (u.bound > best_total) break;  // no later candidate can do better (bounds ascend)
+    double total = u.known;
+    for (int s = 0; s < 4 && total <= best_total; ++s) {
+      if (u.mask & (1u << s)) continue;
+      // the candidate sits on side facing[s]'s opposite of owner s: east of the west owner, etc.
+      total += strip_error(m.exemplar(), g, owners[s], u.patch, facing[s], best_total - total);
+      ++out.evaluated;
+    }
+    if (total < best_total || (total == best_total && u.patch < out.patch)) {
+      best_total = total;
+      out.patch = u.patch;
+      out.known = true;
+      out.error = total;
+    }
+  }
+  return out;
 }
 
 /// Decides every cell of the window: placed cells ((i + j) even) from the phase group, vacant cells
@@ -141,7 +210,7 @@ std::pair<std::uint32_t, bool> fill_cell(const patch_model<T, C>& m, std::uint32
 /// precomputed seam when the pair is in a compatible set, else one computed here.
 template <Channel T, int C, class Ex>
 patch_plan make_plan(const patch_model<T, C>& m, index_t ox, index_t oy, index_t w, index_t h, std::uint64_t seed,
-                     bool cut, index_t radius, index_t min_group, Ex&& exec) {
+                     bool cut, index_t radius, index_t min_group, Ex&& exec, const fill_policy& policy = {}) {
   patch_plan p;
   p.pw = m.patch_width();
   p.ph = m.patch_height();
@@ -168,7 +237,8 @@ patch_plan make_plan(const patch_model<T, C>& m, index_t ox, index_t oy, index_t
       grid[to_size(row * gx + col)] = group[to_size(place_rng.below(group.size(), p.ci0 - 1 + col, j))];
   });
   std::vector<std::uint32_t> patch(to_size(ncells));
-  std::vector<index_t> empty_count(to_size(p.ncy), 0);
+  std::vector<index_t> empty_count(to_size(p.ncy), 0), evaluated(to_size(p.ncy), 0), known(to_size(p.ncy), 0);
+  std::vector<double> fill_error(to_size(p.ncy), 0.0);
   exec.parallel_for(0, p.ncy, [&](index_t cj) {
     const index_t j = p.cj0 + cj;
     const std::uint32_t* up = grid.data() + cj * gx + 1;  // row cj - 1 of the plan, column 0 at index 0
@@ -180,9 +250,12 @@ patch_plan make_plan(const patch_model<T, C>& m, index_t ox, index_t oy, index_t
       if (((i + j) & 1) == 0) {  // distributed cell
         chosen = mid[ci];
       } else {
-        const auto [q, was_empty] = fill_cell(m, mid[ci - 1], mid[ci + 1], up[ci], down[ci], fill_rng, i, j);
-        chosen = q;
-        empty_count[to_size(cj)] += was_empty ? 1 : 0;
+        const fill_result f = fill_cell(m, mid[ci - 1], mid[ci + 1], up[ci], down[ci], fill_rng, i, j, policy);
+        chosen = f.patch;
+        empty_count[to_size(cj)] += f.empty ? 1 : 0;
+        evaluated[to_size(cj)] += f.evaluated;
+        known[to_size(cj)] += f.known ? 1 : 0;
+        fill_error[to_size(cj)] += f.known ? f.error : 0.0;
       }
       patch[to_size(p.cell(ci, cj))] = chosen;
     }
@@ -199,7 +272,12 @@ patch_plan make_plan(const patch_model<T, C>& m, index_t ox, index_t oy, index_t
   for (index_t cj = 0; cj < p.ncy; ++cj)
     for (index_t ci = 0; ci < p.ncx; ++ci)
       (((p.ci0 + ci + p.cj0 + cj) & 1) == 0 ? p.counts.placed : p.counts.filled) += 1;
-  for (index_t e : empty_count) p.counts.empty_intersections += e;
+  for (index_t r = 0; r < p.ncy; ++r) {
+    p.counts.empty_intersections += empty_count[to_size(r)];
+    p.counts.evaluated += evaluated[to_size(r)];
+    p.counts.fill_error_known += known[to_size(r)];
+    p.counts.fill_error += fill_error[to_size(r)];
+  }
   if (!cut) return p;
 
   // seams: look up the pair in the compatible sets (either direction), else compute it

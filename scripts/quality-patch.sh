@@ -1,0 +1,146 @@
+#!/usr/bin/env bash
+# Quality benchmark of patch synthesis (paper 002, issue 16) on real photographs, against G'MIC's
+# patch-matching resynthesis (`gmic IN -syntexturize_matchpatch W,H`). Run on demand, not in CI.
+#
+# The photographs are the texture set of Debian's `sweethome3d` package (photographs of stone, brick,
+# pebbles, grass, hedge, wood and plaster, 256 pixels wide; fetched with `apt-get download`, unpacked
+# into the cache, never installed). GIMP's pattern set is deliberately not used: it is kept aside to
+# check the result. Installs `gmic` with apt-get when it is missing (root only).
+#
+# For every photograph: `tessera synth` and G'MIC at the same output size, then `tessera metrics`
+# on both outputs (neighbourhood energy 7 x 7 at 1x and 1/2x, histogram distance, repetition), the
+# times (tessera: model preparation + synthesis; G'MIC: the whole command), a markdown table and a
+# side-by-side picture (exemplar | tessera | G'MIC, 256 x 256 crops at full resolution; exemplars
+# shorter than 256 are padded with black).
+#
+#   scripts/quality-patch.sh [--size N] [--out DIR] [--images DIR] [--label L] [-- extra synth args]
+#
+#   --size N     output side (default 512, as `-syntexturize_matchpatch 512,512`)
+#   --out DIR    table and JSON (default build/quality-patch/<label>)
+#   --images DIR side-by-side PNGs (default: none; docs use docs/images/patch/quality)
+#   --label L    name of this run (default "default")
+#   --threads T  threads of tessera (default 2)
+#   --only A,B   only these photographs
+# Anything after `--` goes to `tessera synth` (e.g. -- --fallback overlap --seams cut, the quality mode).
+# Environment: TESSERA_BIN (default build/bin/tessera), TESSERA_QUALITY_CACHE (default
+# build/quality-patch/cache: photographs and G'MIC outputs, reused between runs).
+set -euo pipefail
+source "$(dirname "$0")/common.sh"
+
+size=512
+label=default
+out=
+images=
+threads=2
+only=
+extra=()
+while (($#)); do
+  case $1 in
+    --size) size=$2; shift 2 ;;
+    --out) out=$2; shift 2 ;;
+    --images) images=$2; shift 2 ;;
+    --label) label=$2; shift 2 ;;
+    --threads) threads=$2; shift 2 ;;
+    --only) only=$2; shift 2 ;;
+    --) shift; extra=("$@"); break ;;
+    *) echo "quality-patch.sh: unknown argument $1" >&2; exit 2 ;;
+  esac
+done
+bin=${TESSERA_BIN:-$TESSERA_ROOT/build/bin/tessera}
+cache=${TESSERA_QUALITY_CACHE:-$TESSERA_ROOT/build/quality-patch/cache}
+out=${out:-$TESSERA_ROOT/build/quality-patch/$label}
+py=/usr/bin/python3
+[[ -x $py ]] || py=python3
+[[ -x $bin ]] || { echo "quality-patch.sh: $bin not built (cmake --build build --target tessera)" >&2; exit 1; }
+mkdir -p "$cache" "$out"
+[[ -n $images ]] && mkdir -p "$images"
+
+# --- tools and photographs ----------------------------------------------------------------------
+if ! command -v gmic >/dev/null; then
+  step "install gmic"
+  apt-get install -y gmic || { apt-get update && apt-get install -y gmic; }
+fi
+# name:file:what (photographs of the package's texture catalogue; the tiled and painted ones are left out)
+photos=(
+  stone_wall:stoneWall:"stone wall (cut blocks)"
+  stone_wall_2:stone2Wall:"stone wall (rough blocks)"
+  paving:pavingStone:"paving stones"
+  pebbles:pebbles:"pebbles"
+  marble:marbleWall:"speckled stone"
+  roughcast:roughcast:"roughcast plaster"
+  red_bricks:smallRedBricks:"brick wall"
+  hedge:boxTree:"box hedge (foliage)"
+  grass:grass:"grass"
+  wood:woodenFloor:"parquet (wood)"
+  old_wood:oldWoodenFloor:"old floor boards (wood)"
+)
+if [[ ! -f $cache/photos/stoneWall.png ]]; then
+  step "fetch the sweethome3d package (apt-get download; not installed)"
+  tmp=$(mktemp -d)
+  (cd "$tmp" && { apt-get download sweethome3d || { apt-get update && apt-get download sweethome3d; }; })
+  dpkg -x "$tmp"/sweethome3d_*.deb "$tmp/x"
+  mkdir -p "$cache/photos"
+  (cd "$cache/photos" && unzip -o -j -q "$tmp"/x/usr/share/sweethome3d/sweethome3d.jar \
+    'com/eteks/sweethome3d/io/resources/textures/*.jpg')
+  for f in "$cache"/photos/*.jpg; do gmic -v -1 "$f" -o "${f%.jpg}.png" >/dev/null 2>&1; done
+  rm -rf "$tmp"
+fi
+
+now() { date +%s.%N; }
+runs=()
+for entry in "${photos[@]}"; do
+  IFS=: read -r name file what <<<"$entry"
+  [[ -n $only && ,$only, != *,$name,* ]] && continue
+  ex=$cache/photos/$file.png
+  step "$name ($what)"
+  # G'MIC (cached: its output does not depend on our changes)
+  g=$cache/gmic_${name}_$size.png
+  if [[ ! -f $g || ! -f $g.json ]]; then
+    t0=$(now)
+    gmic -v -1 "$ex" -syntexturize_matchpatch "$size,$size" -o "$g" >/dev/null 2>&1
+    t1=$(now)
+    "$bin" metrics --exemplar "$ex" --in "$g" --step 4 --threads "$threads" |
+      $py -c "import json,sys; d=json.loads(sys.stdin.read()); d['time_ms']=($t1-$t0)*1e3; print(json.dumps(d))" >"$g.json"
+  fi
+  # tessera
+  t=$out/tessera_$name.png
+  "$bin" synth --exemplar "$ex" --size "${size}x$size" --out "$t" --threads "$threads" --stats "${extra[@]}" \
+    >"$out/synth_$name.json"
+  "$bin" metrics --exemplar "$ex" --in "$t" --step 4 --threads "$threads" >"$out/metrics_$name.json"
+  if [[ -n $images ]]; then
+    # exemplar | tessera | G'MIC, 256 x 256 crops at full resolution
+    gmic -v -1 "$ex" "$t" "$g" -crop 0,0,255,255,0 -append x -o "$images/$name.png" >/dev/null 2>&1
+  fi
+  runs+=("$name:$what")
+done
+
+step "table"
+$py - "$out" "$cache" "$size" "$label" "${runs[@]}" <<'EOF'
+import json, statistics, sys
+out, cache, size, label, runs = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4], sys.argv[5:]
+rows, agg = [], {k: [] for k in ("te1", "ge1", "te2", "ge2", "tr", "gr", "th", "gh")}
+fmt = lambda v: f"{v:.4f}"
+for run in runs:
+    name, what = run.split(":", 1)
+    s = json.load(open(f"{out}/synth_{name}.json"))
+    m = json.load(open(f"{out}/metrics_{name}.json"))
+    g = json.load(open(f"{cache}/gmic_{name}_{size}.png.json"))
+    vals = dict(te1=m["energy_1x"], ge1=g["energy_1x"], te2=m["energy_2x"], ge2=g["energy_2x"],
+                tr=m["repetition"], gr=g["repetition"], th=m["histogram_distance"], gh=g["histogram_distance"])
+    for k, v in vals.items(): agg[k].append(v)
+    win = lambda a, b: "**" + fmt(a) + "**" if a <= b else fmt(a)
+    fallback = f'{s["empty_intersections"]}/{s["filled"]}'
+    rows.append(f'| {what} | {s["exemplar_width"]}×{s["exemplar_height"]} | {s["patch"]}×{s["patch_height"]}, {s["overlap"]} '
+                f'| {fallback} | {win(vals["te1"], vals["ge1"])} / {fmt(vals["ge1"])} '
+                f'| {win(vals["te2"], vals["ge2"])} / {fmt(vals["ge2"])} | {vals["tr"]:.2f} / {vals["gr"]:.2f} '
+                f'| {vals["th"]:.3f} / {vals["gh"]:.3f} '
+                f'| {s["preprocess_ms"]:.0f} + {s["synthesis_ms"]:.1f} / {g["time_ms"]:.0f} |')
+med = {k: statistics.median(v) for k, v in agg.items()}
+lines = [f"Run `{label}`, {size}×{size} outputs, tessera / G'MIC in every cell (bold: tessera no higher).", "",
+         "| photograph | exemplar | patch, overlap | fallback | energy 1× | energy ½× | repetition | histogram | time ms (tessera model + synthesis / G'MIC) |",
+         "|---|---|---|---:|---:|---:|---:|---:|---:|"] + rows + [
+         f'| **median** | | | | {fmt(med["te1"])} / {fmt(med["ge1"])} | {fmt(med["te2"])} / {fmt(med["ge2"])} '
+         f'| {med["tr"]:.2f} / {med["gr"]:.2f} | {med["th"]:.3f} / {med["gh"]:.3f} | |']
+open(f"{out}/table.md", "w").write("\n".join(lines) + "\n")
+print("\n".join(lines))
+EOF
