@@ -41,6 +41,12 @@ any_patch_model build(const py::array& exemplar, index_t patch_width, index_t pa
   return by_type(fmt.type, [&]<class T>() { return build_model<T>(exemplar, o, threads, p); });
 }
 
+fill_fallback parse_fallback(const std::string& f) {
+  if (f == "sets") return fill_fallback::most_sets;
+  if (f == "overlap") return fill_fallback::overlap_error;
+  raise_invalid("synthesize: fallback must be \"sets\" (paper 002) or \"overlap\" (quality mode), got '" + f + "'");
+}
+
 seam_mode parse_seams(const py::object& seams, const any_patch_model& m) {
   if (seams.is_none()) return m.options.seams ? seam_mode::cut : seam_mode::feather;
   const std::string s = py::str(seams);
@@ -91,12 +97,15 @@ options or an exemplar the library refuses, with its message.)doc");
   c.def(
       "synthesize",
       [](const any_patch_model& self, index_t width, index_t height, index_t x, index_t y, std::uint64_t seed,
-         int threads, const py::object& progress, const py::object& seams, const py::object& out) {
+         int threads, const py::object& progress, const py::object& seams, const py::object& out,
+         const std::string& fallback, int fallback_budget) {
         synthesis_request r{.width = width,
                             .height = height,
                             .origin = {x, y},
                             .seed = seed,
                             .seams = parse_seams(seams, self),
+                            .fallback = parse_fallback(fallback),
+                            .fallback_budget = fallback_budget,
                             .threads = threads,
                             .out = out};
         call_progress p(progress);
@@ -104,7 +113,7 @@ options or an exemplar the library refuses, with its message.)doc");
       },
       py::arg("width"), py::arg("height"), py::arg("x") = 0, py::arg("y") = 0, py::arg("seed") = 0,
       py::arg("threads") = 0, py::arg("progress") = py::none(), py::arg("seams") = py::none(),
-      py::arg("out") = py::none(),
+      py::arg("out") = py::none(), py::arg("fallback") = "sets", py::arg("fallback_budget") = 8,
       R"doc(The width x height window at (x, y) of the unbounded texture of this model and `seed`, as an
 H x W x C array of the exemplar's dtype. Any window is a pure function of (model, seed, x, y): windows
 tile the texture seamlessly and equal `tessera synth --window x,y,w,h --seed S` of the CLI (which
@@ -116,7 +125,12 @@ for a non-positive size, tessera.SizeOverflow for a window too large to allocate
 a window beyond the texture plane of +-2^52. `out`: an array to render into instead of a new one (shape
 (height, width, C) or (height, width) for C = 1, the model's dtype, writable, packed pixels in rows; row
 padding allowed); it is returned. Reusing one buffer for many windows avoids the allocation and page
-faults of a new array, which are most of the Python-side cost of a fast synthesis.)doc");
+faults of a new array, which are most of the Python-side cost of a fast synthesis. `fallback`: how a
+vacant cell is filled when its four neighbours' compatible sets share no patch (on photographs nearly
+always): "sets" (paper 002, the default: the patch in the most sets) or "overlap" (quality mode: the
+patch of the union with the smallest true overlap error against all four neighbours, a few times
+slower), as `tessera synth --fallback`; `fallback_budget` (1-256) bounds the overlap errors computed
+per cell in that mode.)doc");
   c.def("save", &save, "The model as bytes (io/patch_model_file.hpp, format version 1); PatchModel.load reads them.");
   c.def_static("load", &load, py::arg("data"), py::arg("threads") = 0,
                R"doc(A model from the bytes of save(). Raises tessera.ParseError (a ValueError) for bytes that are

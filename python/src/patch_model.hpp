@@ -33,6 +33,8 @@ struct synthesis_request {
   texture_offset origin;
   std::uint64_t seed = 0;
   seam_mode seams = seam_mode::feather;
+  fill_fallback fallback = fill_fallback::most_sets;
+  int fallback_budget = 8;
   int threads = 0;
   /// An array to render into (H x W x C, or H x W for one channel, of the model's dtype, writable,
   /// packed pixels in rows), or None for a new array.

@@ -36,7 +36,11 @@ template <class T>
 py::array synthesize_model(const any_patch_model& model, const synthesis_request& r, call_progress& progress) {
   return std::visit(
       [&]<int C>(const std::shared_ptr<const patch_model<T, C>>& m) {
-        patch_synthesis_options so{.origin = r.origin, .seed = r.seed, .seams = r.seams};
+        patch_synthesis_options so{.origin = r.origin,
+                                   .seed = r.seed,
+                                   .seams = r.seams,
+                                   .fallback = r.fallback,
+                                   .fallback_budget = r.fallback_budget};
         so.progress = progress.sink();
         // synthesized in place into an uninitialized NumPy array (no fill, no copy)
         check(validate_image_extent(r.width, r.height, C, "synthesize"));

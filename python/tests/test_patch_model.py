@@ -98,6 +98,26 @@ def test_bit_identical_to_the_cli(tmp_path, cli):
         np.testing.assert_array_equal(mine, tessera.read_png(out))
 
 
+def test_overlap_fallback_matches_the_cli(tmp_path, cli):
+    """fallback="overlap" (quality mode) equals `tessera synth --fallback overlap`, and differs from the
+    paper's fallback (the photographs' case: vacant cells whose four sets share no patch)."""
+    ex = tessera.exemplar("rock", 96, 96, seed=4)
+    path = str(tmp_path / "ex.png")
+    tessera.write_png(path, ex)
+    out = str(tmp_path / "o.png")
+    subprocess.run([cli, "synth", "--exemplar", path, "--out", out, "--seed", "9", "--size", "150x110",
+                    "--fallback", "overlap"], check=True, capture_output=True)
+    m = tessera.PatchModel(tessera.read_png(path))
+    mine = m.synthesize(150, 110, seed=9, fallback="overlap")
+    np.testing.assert_array_equal(mine, tessera.read_png(out))
+    assert not np.array_equal(mine, m.synthesize(150, 110, seed=9))
+    np.testing.assert_array_equal(mine, m.synthesize(150, 110, seed=9, fallback="overlap", threads=1))
+    with pytest.raises(ValueError, match="fallback must be"):
+        m.synthesize(8, 8, fallback="best")
+    with pytest.raises(ValueError, match="fallback_budget"):
+        m.synthesize(8, 8, fallback="overlap", fallback_budget=0)
+
+
 def test_cli_bit_identity_16_bit_grey(tmp_path, cli):
     ex = (noise((48, 48, 1), np.uint16, seed=3) // 3 + 1000).astype(np.uint16)
     path = str(tmp_path / "ex16.png")
