@@ -6,6 +6,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <atomic>
 #include <cstdint>
 #include <exception>
 #include <memory>
@@ -13,6 +14,8 @@
 #include <string>
 #include <type_traits>
 #include <utility>
+
+#include <unistd.h>
 
 #include <tessera/core/executor.hpp>
 #include <tessera/core/format.hpp>
@@ -244,16 +247,53 @@ struct call_progress {
   std::shared_ptr<py::error_already_set> error_;
 };
 
+namespace detail_py {
+/// The pool kept between calls: starting and joining its threads cost a 1024² synthesis on 2 threads
+/// about a third of its time. Never destroyed (its threads would be joined after the interpreter is
+/// gone); a forked child, which inherits the object but not the threads, leaves it alone.
+struct kept_pool {
+  std::atomic<bool> in_use{false};  // not a mutex: a progress callable may call tessera again (nested)
+  thread_pool_executor* pool = nullptr;
+  int threads = -1;
+  pid_t pid = 0;
+};
+inline kept_pool& the_kept_pool() {
+  static auto* kept = new kept_pool;
+  return *kept;
+}
+}  // namespace detail_py
+
 /// Runs f(executor) with the GIL released on a thread_pool_executor of `threads` (0: the hardware
 /// concurrency; 1: the calling thread only, as serial_executor: such a pool starts no thread and runs
 /// every loop in order). One executor type keeps each kernel instantiated once (compile time).
-/// Returns f's result.
+/// With threads != 1 the pool is kept between calls; a call made while another uses it (from another
+/// Python thread, or from a progress callable) gets its own. Returns f's result.
 template <class F>
 decltype(auto) with_executor(int threads, F&& f) {
   if (threads < 0) raise_invalid(cat("threads must be >= 0 (0: all cores), got ", threads));
   if (threads > thread_pool_executor::max_threads)
     raise_invalid(cat("threads must be at most ", thread_pool_executor::max_threads, ", got ", threads));
   py::gil_scoped_release nogil;
+  if (threads != 1) {
+    auto& kept = detail_py::the_kept_pool();
+    if (!kept.in_use.exchange(true, std::memory_order_acquire)) {
+      struct release {
+        std::atomic<bool>& flag;
+        ~release() { flag.store(false, std::memory_order_release); }
+      } released{kept.in_use};
+      const pid_t pid = ::getpid();
+      if (kept.pool != nullptr && (kept.threads != threads || kept.pid != pid)) {
+        if (kept.pid == pid) delete kept.pool;  // in a forked child its threads do not exist: leave it
+        kept.pool = nullptr;
+      }
+      if (kept.pool == nullptr) {
+        kept.pool = new thread_pool_executor(threads);
+        kept.threads = threads;
+        kept.pid = pid;
+      }
+      return f(*kept.pool);
+    }
+  }
   thread_pool_executor pool(threads);
   return f(pool);
 }
