@@ -44,6 +44,8 @@ def parse_args(argv=None):
     p.add_argument("--patch", type=int, help="patch side (PatchModel patch_width = patch_height)")
     p.add_argument("--overlap", type=int, help="patch overlap")
     p.add_argument("--seams", choices=["feather", "cut"], default="feather", help="seam handling (cut: min-cut)")
+    p.add_argument("--chunks-per-task", type=int, default=0,
+                   help="chunks one task renders, in order (default: enough for 4 megapixels)")
     p.add_argument("--compressor", choices=["default", "none"], default="default",
                    help="Zarr compressor: Zarr's default (Blosc) or none")
     return p.parse_args(argv)
@@ -66,17 +68,34 @@ def _model(digest, model_bytes, threads):
     return m
 
 
-def render_chunk(model_bytes, digest, store, x, y, w, h, x0, y0, seed, threads):
-    """Renders the window (x0 + x, y0 + y, w, h) and writes it at [y:y+h, x:x+w] of the store's root array."""
-    import numcodecs.blosc
+def _array(store):
+    """The worker's handle on the store's root array, opened once per worker (as _model)."""
+    from dask.distributed import get_worker
     import zarr
+    try:
+        cache = get_worker().__dict__.setdefault("_tessera_arrays", {})
+    except ValueError:
+        cache = {}
+    a = cache.get(store)
+    if a is None:
+        a = cache[store] = zarr.open(store, mode="r+")
+    return a
+
+
+def render_chunks(model_bytes, digest, store, tiles, x0, y0, seed, threads):
+    """Renders each window (x0 + x, y0 + y, w, h) of `tiles` and writes it at [y:y+h, x:x+w] of the
+    store's root array, one chunk at a time (a task holds one chunk in memory)."""
+    import numcodecs.blosc
     # Blosc compresses on a thread per core by default: the tasks already run side by side, one per
     # worker thread, so compress on the task's own thread instead of competing for the same cores
     numcodecs.blosc.use_threads = False
     model = _model(digest, model_bytes, threads)
-    tile = model.synthesize(w, h, x=x0 + x, y=y0 + y, seed=seed, threads=threads)
-    zarr.open(store, mode="r+")[y:y + h, x:x + w, :] = tile
-    return w * h
+    array = _array(store)
+    pixels = 0
+    for x, y, w, h in tiles:
+        array[y:y + h, x:x + w, :] = model.synthesize(w, h, x=x0 + x, y=y0 + y, seed=seed, threads=threads)
+        pixels += w * h
+    return pixels
 
 
 # ---- driver -------------------------------------------------------------------------------------
@@ -98,6 +117,18 @@ def chunks(n, c):
             yield x, y, min(c, n - x), min(c, n - y)
 
 
+def tasks(n, c, per_task):
+    """The chunks in groups of `per_task` consecutive chunks of one chunk row (one task each)."""
+    group = []
+    for tile in chunks(n, c):
+        if group and (len(group) == per_task or tile[1] != group[0][1]):
+            yield group
+            group = []
+        group.append(tile)
+    if group:
+        yield group
+
+
 def render(args, client, model):
     """Creates the Zarr array and renders every chunk on `client`; returns (pixels, seconds)."""
     import zarr
@@ -112,17 +143,20 @@ def render(args, client, model):
               dtype=model.dtype, **kwargs)
     model_bytes = model.save()
     digest = hashlib.sha256(model_bytes).hexdigest()
+    # a task renders enough chunks to amortize Dask's per-task cost (~1 ms of scheduler, client
+    # and worker time, more than synthesizing a 512^2 chunk takes)
+    per_task = args.chunks_per_task or max(1, (4 << 20) // (c * c))
     start = time.perf_counter()
     shipped = client.scatter(model_bytes, broadcast=True)  # once to each worker
     pixels = 0
-    # a bounded number of tasks in flight: a 65536^2 render in 512^2 chunks is 16384 tasks
-    pending = chunks(n, c)
-    window = max(64, 8 * len(client.scheduler_info()["workers"]))
+    # a bounded number of tasks in flight: a 65536^2 render in 512^2 chunks is 16384 chunks
+    pending = tasks(n, c, per_task)
+    window = max(16, 4 * len(client.scheduler_info()["workers"]))
 
-    def submit(tile):
-        x, y, w, h = tile
-        return client.submit(render_chunk, shipped, digest, args.out, x, y, w, h, x0, y0, args.seed,
-                             args.threads_per_worker, key=f"tessera-chunk-{digest[:12]}-{x}-{y}", pure=False)
+    def submit(group):
+        x, y = group[0][:2]
+        return client.submit(render_chunks, shipped, digest, args.out, group, x0, y0, args.seed,
+                             args.threads_per_worker, key=f"tessera-chunks-{digest[:12]}-{x}-{y}", pure=False)
 
     ac = as_completed([submit(t) for _, t in zip(range(window), pending)])
     for fut in ac:

@@ -57,6 +57,7 @@ def test_origin_and_threads_in_process(tmp_path, rendered):
     ex, _ = rendered
     store = str(tmp_path / "o.zarr")
     run_script("--exemplar", ex, "--size", 96, "--chunk", 40, "--seed", 9, "--out", store, "--workers", 1,
-               "--no-processes", "--origin=-30,70", "--patch", "24", "--overlap", "6", "--compressor", "none")
+               "--no-processes", "--origin=-30,70", "--patch", "24", "--overlap", "6", "--compressor", "none",
+               "--chunks-per-task", 2)  # rows of 3 chunks: tasks of 2 and of 1
     model = tessera.PatchModel(tessera.read_png(ex), patch_width=24, patch_height=24, overlap=6)
     np.testing.assert_array_equal(zarr.open(store, mode="r")[:], model.synthesize(96, 96, x=-30, y=70, seed=9))

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <concepts>
 #include <condition_variable>
 #include <cstdint>
@@ -49,17 +50,29 @@ inline thread_local bool inside_parallel_for = false;
 /// workers and the calling thread; it returns when all are done. A parallel_for issued from inside a
 /// running one runs serially on its thread (no deadlock). If fn throws, the first exception is
 /// rethrown on the calling thread after the loop stops. Calls from several threads are serialized.
+///
+/// After a loop the workers poll for the next one for a short while (`spin`, default
+/// default_spin) before they sleep, as OpenMP runtimes do: back-to-back loops of a frame or of a
+/// sub-millisecond synthesis then find every worker awake on its own core instead of paying a wake-up
+/// and, on a small machine, the scheduler's choice of placing the woken worker on the caller's core.
+/// Polling yields the core to any other runnable thread. A pool with more threads than the machine
+/// has cores does not poll.
 class thread_pool_executor {
  public:
   /// Most threads a pool starts; larger requests are clamped (a typo must not start 10^9 threads).
   static constexpr int max_threads = 256;
+  /// How long idle workers poll for the next loop before sleeping.
+  static constexpr std::chrono::microseconds default_spin{2000};
 
   /// `threads` workers in total including the caller; 0 (or negative) means
   /// std::thread::hardware_concurrency(); clamped to max_threads. If the system refuses to start a
   /// thread (std::system_error), the pool runs with those it has: concurrency() tells how many.
-  explicit thread_pool_executor(int threads = 0) {
-    if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  /// `spin`: how long idle workers poll before sleeping (0: sleep at once).
+  explicit thread_pool_executor(int threads = 0, std::chrono::microseconds spin = default_spin) {
+    const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    if (threads <= 0) threads = cores;
     threads = std::min(threads, max_threads);
+    spin_ = threads <= cores ? std::max(spin, std::chrono::microseconds{0}) : std::chrono::microseconds{0};
     workers_.reserve(detail::to_size(threads - 1));
 #if TESSERA_HAS_EXCEPTIONS
     try {
@@ -112,6 +125,7 @@ class thread_pool_executor {
     }
     wake_.notify_all();
     run_chunks(j);
+    poll_until_done();
     {
       std::unique_lock<std::mutex> lock(mutex_);
       done_.wait(lock, [&] { return busy_ == 0; });
@@ -155,9 +169,32 @@ class thread_pool_executor {
     detail::inside_parallel_for = false;
   }
 
+  // Polls (yielding) until a loop newer than `seen` is posted, the pool stops or spin_ has passed.
+  void poll_for_work(std::uint64_t seen) const {
+    if (spin_.count() == 0) return;
+    const auto until = std::chrono::steady_clock::now() + spin_;
+    for (int i = 1;; ++i) {
+      if (generation_.load(std::memory_order_acquire) != seen || stop_.load(std::memory_order_acquire)) return;
+      if (i % 16 == 0 && std::chrono::steady_clock::now() >= until) return;
+      std::this_thread::yield();
+    }
+  }
+
+  // The caller's side of the same: polls until the workers have finished the loop or spin_ has passed.
+  void poll_until_done() const {
+    if (spin_.count() == 0) return;
+    const auto until = std::chrono::steady_clock::now() + spin_;
+    for (int i = 1;; ++i) {
+      if (busy_.load(std::memory_order_acquire) == 0) return;
+      if (i % 16 == 0 && std::chrono::steady_clock::now() >= until) return;
+      std::this_thread::yield();
+    }
+  }
+
   void worker_loop() {
     std::uint64_t seen = 0;
     for (;;) {
+      poll_for_work(seen);
       job* j = nullptr;
       {
         std::unique_lock<std::mutex> lock(mutex_);
@@ -181,9 +218,11 @@ class thread_pool_executor {
   std::condition_variable wake_;
   std::condition_variable done_;
   job* current_ = nullptr;
-  std::uint64_t generation_ = 0;
-  int busy_ = 0;
-  bool stop_ = false;
+  // written under mutex_; atomic so that polling workers may read them without it
+  std::atomic<std::uint64_t> generation_{0};
+  std::atomic<bool> stop_{false};
+  std::atomic<int> busy_{0};
+  std::chrono::microseconds spin_{0};
 };
 
 TESSERA_NAMESPACE_END
