@@ -1,6 +1,7 @@
 #include <tessera/core/executor.hpp>
 
 #include <atomic>
+#include <chrono>
 #include <numeric>
 #include <stdexcept>
 #include <thread>
@@ -146,4 +147,21 @@ TEST_CASE("thread pool: absurd thread counts are clamped, not obeyed", "[executo
   std::atomic<index_t> sum{0};
   huge.parallel_for(0, 1000, [&](index_t i) { sum += i; });
   REQUIRE(sum.load() == 999 * 1000 / 2);
+}
+
+TEST_CASE("thread pool: polling and sleeping workers give the same loops; a polling pool stops at once",
+          "[executor]") {
+  using std::chrono::microseconds;
+  for (microseconds spin : {microseconds{0}, microseconds{-5}, microseconds{2000}, microseconds{3600000000LL}}) {
+    // an hour of polling: the destructor must not wait for it (ctest's timeout fails a hang)
+    tessera::thread_pool_executor pool(2, spin);
+    for (int round = 0; round < 200; ++round) {
+      const index_t n = 1 + round % 37;
+      std::vector<std::atomic<int>> hits(static_cast<std::size_t>(n));
+      pool.parallel_for(0, n, [&](index_t i) { hits[static_cast<std::size_t>(i)].fetch_add(1); });
+      for (auto& h : hits) REQUIRE(h.load() == 1);
+      // now and then let the polling run out, so that the next loop wakes sleeping workers
+      if (round % 50 == 49) std::this_thread::sleep_for(std::chrono::milliseconds(3));
+    }
+  }
 }
