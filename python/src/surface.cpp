@@ -66,6 +66,16 @@ degenerate mesh, naming the problem.)doc")
           },
           "The label of every face (uint8: 0 +x, 1 -x, 2 +y, 3 -y, 4 +z, 5 -z).")
       .def_property_readonly(
+          "face_origin",
+          [](const polycube_map& p) {
+            py::array_t<std::int64_t> a(static_cast<py::ssize_t>(p.face_origin.size()));
+            auto w = a.mutable_unchecked<1>();
+            for (py::ssize_t i = 0; i < w.shape(0); ++i) w(i) = p.face_origin[static_cast<std::size_t>(i)];
+            return a;
+          },
+          "When the construction refined the input (split edges that would collapse): the input face of "
+          "every base face (int64); empty when the base mesh is the input.")
+      .def_property_readonly(
           "face_chart",
           [](const polycube_map& p) {
             py::array_t<std::int64_t> a(static_cast<py::ssize_t>(p.face_chart.size()));
