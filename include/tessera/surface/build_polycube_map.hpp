@@ -123,11 +123,13 @@ result<polycube_map> deform_polycube(tri_mesh base, const std::vector<std::array
 /// cannot bring it back), then runs again (bounded by max_relabel_rounds). With options.refine, the
 /// chords of each round's repaired labelling are split before the deformation, and also when the
 /// repair cannot free a pinned face by relabelling (detail/polycube_refine.hpp; relabelling comes
-/// first: it smooths the chart boundary). The working mesh only grows; the map's face_origin names the
+/// first: it smooths the chart boundary), or with `refine_first` before every repair (the chords of
+/// the graph cut's labels are then split instead of relabelled: another labelling, tried second). The working mesh only grows; the map's face_origin names the
 /// input face of each of its faces.
 template <Executor E>
 result<polycube_map> build_polycube_attempt(const tri_mesh& input, const face_adjacency_result& adj,
-                                            const polycube_options& options, double t, E& exec) {
+                                            const polycube_options& options, double t, E& exec,
+                                            bool refine_first = false) {
   const auto en = detail::make_polycube_energy(input, adj.neighbor, options, exec);
   auto lab = detail::alpha_expansion_labels(en, options.max_expansion_cycles);
   if (!lab) return lab.error();
@@ -141,6 +143,7 @@ result<polycube_map> build_polycube_attempt(const tri_mesh& input, const face_ad
   std::size_t stall = 0, last_folded = std::numeric_limits<std::size_t>::max();
   status last;
   for (int round = 0;; ++round) {
+    if (refine_first) refine();
     auto problem = detail::repair_polycube_labels(base, nb, data, *lab, options.max_repair_iterations);
     // a face pinned onto another chart that no relabelling frees: split the chords, then repair again
     if (problem.kind == detail::polycube_label_problem::pinned_face && options.refine) {
@@ -206,8 +209,14 @@ result<polycube_map> build_polycube_map(const M& mesh, const polycube_options& o
   if (!m) return m.error();
   tri_mesh base = detail::polycube_base_copy(*m);
   const auto adj = face_adjacency(base);
-  if (options.compactness == 0 || options.max_compactness_retries == 0)
-    return detail::build_polycube_attempt(base, adj, options, *t, exec);
+  if (options.compactness == 0 || options.max_compactness_retries == 0) {
+    auto r = detail::build_polycube_attempt(base, adj, options, *t, exec);
+    if (!r && options.refine) {
+      auto s = detail::build_polycube_attempt(base, adj, options, *t, exec, true);
+      if (s) return s;
+    }
+    return r;
+  }
   // the labelling's compactness decides most failures on scanned meshes: retry with other multiples
   result<polycube_map> first = status::internal_error("polycube: no attempt");
   const int tries =
@@ -216,6 +225,7 @@ result<polycube_map> build_polycube_map(const M& mesh, const polycube_options& o
     polycube_options o = options;
     o.compactness = options.compactness * detail::compactness_schedule[detail::to_size(k)];
     auto r = detail::build_polycube_attempt(base, adj, o, *t, exec);
+    if (!r && options.refine) r = detail::build_polycube_attempt(base, adj, o, *t, exec, true);
     if (r || k == 0) first = std::move(r);
     if (first) return first;
   }

@@ -164,7 +164,8 @@ struct polycube_options {
   /// (0 accepts any positive area).
   double min_area_ratio = 1e-4;
   /// Split chart chords (edges inside a chart with both ends on its boundary with one other chart,
-  /// which would collapse onto a polycube edge) by a new vertex: the map's base is then refined.
+  /// which would collapse onto a polycube edge) by a new vertex, and when an attempt fails, repeat it
+  /// with the chords of the graph cut's labels split before the repair: the map's base is then refined.
   bool refine = true;
 };
 
