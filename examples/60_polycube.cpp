@@ -92,9 +92,9 @@ bool run(const tri_mesh& mesh, const std::string& name, const std::string& out) 
     auto back = pj.inverse(fwd->quad, fwd->u, fwd->v);  // quad point -> base face, barycentrics, position
     const auto d = polycube_distortion(*map);           // d.area_distortion, d.angle_distortion
     // [/snippet]
-    if (!back ||
-        distance(back->position, mesh.position(mesh.faces[0][0]) * 0.2 + mesh.position(mesh.faces[0][1]) * 0.3 +
-                                     mesh.position(mesh.faces[0][2]) * 0.5) > 1e-9)
+    if (!back || distance(back->position, map->base.position(map->base.faces[0][0]) * 0.2 +
+                                              map->base.position(map->base.faces[0][1]) * 0.3 +
+                                              map->base.position(map->base.faces[0][2]) * 0.5) > 1e-9)
       ok = false;
     by_label.clear();
     for (auto l : map->labels) by_label.push_back(label_color[static_cast<int>(l)]);
@@ -107,13 +107,13 @@ bool run(const tri_mesh& mesh, const std::string& name, const std::string& out) 
          ok;
     if (first) {
       first = false;
-      ok = write_png(out + "/" + name + "_charts.png", picture(mesh, by_label, nullptr, 0)).ok() && ok;
+      ok = write_png(out + "/" + name + "_charts.png", picture(map->base, by_label, nullptr, 0)).ok() && ok;
       heat.clear();
       for (double a : d.angle) {
         const auto k = static_cast<float>(std::clamp((a - 1) / 1.5, 0.0, 1.0));
         heat.push_back({0.95f, 0.95f - 0.75f * k, 0.95f - 0.85f * k});
       }
-      ok = write_png(out + "/" + name + "_angle_distortion.png", picture(mesh, heat, nullptr, 0)).ok() && ok;
+      ok = write_png(out + "/" + name + "_angle_distortion.png", picture(map->base, heat, nullptr, 0)).ok() && ok;
     }
   }
   return ok;

@@ -1,7 +1,8 @@
 // tessera polycube --in IN --out PC.obj: the polycube map of a closed triangle mesh
 // (surface/build_polycube_map.hpp, paper 000 §4). PC.obj is the polycube-deformed mesh in the input's
-// vertex and face order (the construction never refines the base mesh, so --base-out writes the base
-// as read and `refined` is always false).
+// vertex and face order, unless the construction refined the base mesh (chords of the labelling split,
+// `refined` true in --stats): then PC.obj follows the refined base, which --base-out writes (input
+// vertices and faces first, new ones after).
 #include <charconv>
 #include <cstdio>
 #include <map>
@@ -105,7 +106,7 @@ int run(const cli::arguments& args) {
         .add("flipped_faces", 0)
         .add("area_distortion", d.area_distortion)
         .add("angle_distortion", d.angle_distortion)
-        .add("refined", false)
+        .add("refined", r->refined())
         .add("valid", true)
         .print();
   } else {
@@ -119,13 +120,13 @@ const cli::registrar reg{[] {
                  "polycube map of a closed triangle mesh, with its tile-grid quad layout (paper 000 §4)",
                  "tessera polycube --in IN.(obj|off|ply) --out PC.obj [--tile W | --tiles-across N] [options]",
                  {{"--in", "FILE", "closed, manifold, oriented triangle mesh (.obj, .off, .ply)", {"--mesh"}},
-                  {"--out", "FILE", "polycube-deformed mesh, in the input's vertex and face order"},
+                  {"--out", "FILE", "polycube-deformed mesh, in the input's order (the refined base's when refined)"},
                   {"--tile", "W", "tile size in mesh units"},
                   {"--tiles-across", "N", "tiles across the largest bounding-box extent (default 8)"},
                   {"--labels-in", "FILE", "start from these face labels (one 0..5 per line: +X -X +Y -Y +Z -Z)"},
                   {"--labels-out", "FILE", "write the face labels"},
                   {"--quads-out", "FILE", "write the quad layout as an OBJ quad mesh"},
-                  {"--base-out", "FILE", "write the base mesh PC.obj follows (the input: never refined)"},
+                  {"--base-out", "FILE", "write the base mesh PC.obj follows (the input, or its refinement)"},
                   {"--map-out", "FILE", "write the whole map (io/polycube_file.hpp)"}},
                  run};
   return c;

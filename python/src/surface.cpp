@@ -2,6 +2,7 @@
 // charts, polycube positions and quad layout as NumPy arrays), saved and loaded as a file.
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include <tessera/io/polycube_file.hpp>
 #include <tessera/surface/build_polycube_map.hpp>
@@ -12,6 +13,15 @@
 #include "mesh_arrays.hpp"
 
 namespace tessera::python {
+namespace {
+/// A copy of a vector of indices as an int64 NumPy array.
+py::array_t<std::int64_t> index_array(const std::vector<index_t>& v) {
+  py::array_t<std::int64_t> a(static_cast<py::ssize_t>(v.size()));
+  auto w = a.mutable_unchecked<1>();
+  for (py::ssize_t i = 0; i < w.shape(0); ++i) w(i) = v[static_cast<std::size_t>(i)];
+  return a;
+}
+}  // namespace
 
 void bind_surface(py::module_& m) {
   py::class_<polycube_map>(
@@ -66,13 +76,11 @@ degenerate mesh, naming the problem.)doc")
           },
           "The label of every face (uint8: 0 +x, 1 -x, 2 +y, 3 -y, 4 +z, 5 -z).")
       .def_property_readonly(
-          "face_chart",
-          [](const polycube_map& p) {
-            py::array_t<std::int64_t> a(static_cast<py::ssize_t>(p.face_chart.size()));
-            auto w = a.mutable_unchecked<1>();
-            for (py::ssize_t i = 0; i < w.shape(0); ++i) w(i) = p.face_chart[static_cast<std::size_t>(i)];
-            return a;
-          },
+          "face_origin", [](const polycube_map& p) { return index_array(p.face_origin); },
+          "When the construction refined the input (split edges that would collapse): the input face of "
+          "every base face (int64); empty when the base mesh is the input.")
+      .def_property_readonly(
+          "face_chart", [](const polycube_map& p) { return index_array(p.face_chart); },
           "The chart of every face (int64).")
       .def_property_readonly(
           "charts",

@@ -266,6 +266,9 @@ class PolycubeMap:
     @property
     def face_chart(self) -> npt.NDArray[np.int64]: ...
     @property
+    def face_origin(self) -> npt.NDArray[np.int64]:
+        """Input face of every base face when the base is a refinement of the input; else empty."""
+    @property
     def charts(self) -> list[dict]: ...
     @property
     def num_quads(self) -> int: ...

@@ -1,6 +1,7 @@
 #include <catch2/catch.hpp>
 
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include <tessera/io/polycube_file.hpp>
@@ -23,6 +24,25 @@ TEST_CASE("polycube file: save and load give the same map") {
   CHECK(back->base.positions == map->base.positions);
   CHECK(back->labels == map->labels);
   CHECK(back->layout.quads.size() == map->layout.quads.size());
+  CHECK(back->face_origin.empty());
+  // a refined base keeps the input face of every face
+  auto refined = *map;
+  for (std::size_t f = 0; f < refined.base.faces.size(); ++f)
+    refined.face_origin.push_back(static_cast<index_t>(f / 2 * 2));
+  REQUIRE(save_polycube_map(path, refined));
+  auto back2 = load_polycube_map(path);
+  REQUIRE(back2);
+  CHECK(back2->face_origin == refined.face_origin);
+  // an input face on one line only, or after its own face, is refused naming the line
+  std::string text;
+  {
+    std::ifstream in(path);
+    text.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  const auto last = text.rfind(' ');
+  const std::string cut = std::string(TESSERA_TEST_OUTPUT_DIR) + "/torus_bad.polycube";
+  std::ofstream(cut) << text.substr(0, last) << " 999999\n";
+  CHECK(load_polycube_map(cut).error().code() == status_code::parse_error);
   const std::string lp = std::string(TESSERA_TEST_OUTPUT_DIR) + "/torus.labels";
   REQUIRE(write_polycube_labels(lp, map->labels));
   auto lab = read_polycube_labels(lp);

@@ -351,3 +351,75 @@ TEST_CASE("polycube repair: two charts of one axis meeting at a vertex are named
   CHECK(bad == -1);  // with pinch_vertex given, the faces around it are relabelled, not a whole chart
   CHECK(r.error().message().find("joined through vertex " + std::to_string(centre)) != std::string::npos);
 }
+
+TEST_CASE("polycube refinement: chords are split, the mesh stays closed, input indices are kept") {
+  // a cube with 4 x 4 squares per face; on the top, the squares (2, 0), (3, 0) and (3, 1) take the +X
+  // label: the diagonal of square (2, 1), from (2, 1) to (3, 2), then joins two vertices of the
+  // boundary between the top chart and the +X chart while both its faces stay on the top: a chord
+  auto l = label_voxels(shapes::cube(), 4);
+  for (index_t f = 0; f < l.m.num_faces(); ++f) {
+    const vec3 c = (l.m.position(l.m.face_vertex(f, 0)) + l.m.position(l.m.face_vertex(f, 1)) +
+                    l.m.position(l.m.face_vertex(f, 2))) /
+                   3.0;
+    if (c.z > 0.999 && ((c.x > 0.5 && c.y < 0.25) || (c.x > 0.75 && c.y < 0.5))) l.lab[detail::to_size(f)] = 0;
+  }
+  const tri_mesh m0 = l.m;
+  tri_mesh m = l.m;
+  auto nb = l.nb;
+  auto lab = l.lab;
+  const auto lab0 = lab;
+  const auto charts0 = detail::find_polycube_charts(m, nb, lab).chart_label;
+  std::vector<std::array<double, 6>> data(lab.size(), std::array<double, 6>{1, 2, 3, 4, 5, 6});
+  std::vector<index_t> origin;
+  const index_t splits = detail::split_chart_chords(m, nb, lab, data, origin);
+  REQUIRE(splits > 0);
+  CHECK(m.num_vertices() == m0.num_vertices() + splits);
+  CHECK(m.num_faces() == m0.num_faces() + 2 * splits);
+  CHECK(std::equal(m0.positions.begin(), m0.positions.end(), m.positions.begin()));
+  CHECK(nb == face_adjacency(m).neighbor);  // the adjacency followed every split
+  CHECK(validate_polycube_input(m));        // closed, manifold, oriented, no degenerate face
+  CHECK(detail::find_polycube_charts(m, nb, lab).chart_label == charts0);  // the same charts
+  REQUIRE(origin.size() == m.faces.size());
+  std::vector<double> area(m0.faces.size(), 0.0);
+  for (index_t f = 0; f < m.num_faces(); ++f) {
+    const auto o = detail::to_size(origin[detail::to_size(f)]);
+    CHECK(lab[detail::to_size(f)] == lab0[o]);
+    area[o] += face_area(m, f);
+  }
+  for (index_t f = 0; f < m0.num_faces(); ++f) CHECK(std::abs(area[detail::to_size(f)] - face_area(m0, f)) < 1e-12);
+  // no chord is left: a second pass splits nothing
+  CHECK(detail::split_chart_chords(m, nb, lab, data, origin) == 0);
+  // the face (2, 1), (3, 1), (3, 2) had all three vertices on the +X chart; its split halves do not
+  const auto before = detail::find_label_problem(m0, l.nb, detail::find_polycube_charts(m0, l.nb, lab0));
+  CHECK(before.kind == detail::polycube_label_problem::pinned_face);
+  const auto after = detail::find_label_problem(m, nb, detail::find_polycube_charts(m, nb, lab));
+  CHECK(after.kind != detail::polycube_label_problem::pinned_face);
+}
+
+TEST_CASE("polycube verification: a degenerate map (a face squeezed to nothing) is refused, naming the chart") {
+  const auto m = shapes::voxel_surface(shapes::cube(), 2);
+  index_t centre = -1;  // the vertex at the centre of the top face
+  for (index_t v = 0; v < m.num_vertices(); ++v)
+    if (distance(m.position(v), {0.5, 0.5, 1}) < 1e-12) centre = v;
+  REQUIRE(centre >= 0);
+  auto deformed = m;
+  deformed.positions[detail::to_size(centre)] = {0.5, 0.2, 1};  // still inside: a valid polycube
+  auto ok = polycube_map_from_deformed(m, deformed, 0.5);
+  INFO(ok.error().to_string());
+  REQUIRE(ok);
+  check_polycube(*ok);
+  deformed.positions[detail::to_size(centre)] = {0.5, 1e-7, 1};  // positive areas, but almost none
+  auto r = polycube_map_from_deformed(m, deformed, 0.5);
+  REQUIRE(!r);
+  CHECK(r.error().code() == status_code::not_converged);
+  CHECK(r.error().message().find("degenerate map") != std::string::npos);
+  std::size_t top = 0;  // the chart of the top face is named
+  while (top < ok->charts.size() && ok->charts[top].label != polycube_label::pos_z) ++top;
+  CHECK(r.error().message().find("in chart " + std::to_string(top) + ",") != std::string::npos);
+  polycube_options o;
+  o.min_area_ratio = 1;
+  CHECK(build_polycube_map(m, o).error().code() == status_code::invalid_argument);
+  o.min_area_ratio = 0;  // any positive area: the automatic map of the cube is still valid
+  o.tile_size = 0.5;
+  CHECK(build_polycube_map(m, o));
+}

@@ -6,7 +6,8 @@
 //   tile <tile_size>
 //   counts <V> <F>
 //   v <x> <y> <z> <px> <py> <pz>      (V lines: base and polycube position)
-//   f <a> <b> <c> <label>             (F lines: vertex indices, label 0..5)
+//   f <a> <b> <c> <label> [<origin>]  (F lines: vertex indices, label 0..5, and for a refined base
+//                                      the input face it is part of: polycube_map::face_origin)
 //
 // Loading re-derives charts, corners, edges and the quad layout and re-verifies the polycube
 // (polycube_map_from_deformed), so a loaded map is as valid as a built one. A labels file holds one
@@ -52,6 +53,10 @@ inline status save_polycube_map(const std::string& path, const polycube_map& map
     }
     s += ' ';
     detail::append_number(s, static_cast<int>(map.labels[detail::to_size(f)]));
+    if (map.refined()) {
+      s += ' ';
+      detail::append_number(s, map.face_origin[detail::to_size(f)]);
+    }
     s += '\n';
   }
   return detail::write_file(path, s);
@@ -88,6 +93,7 @@ inline result<polycube_map> load_polycube_map(const std::string& path) {
     return detail::parse_error_at_line(path, sc.line_number(), "counts exceed what the file holds");
   tri_mesh base, deformed;
   std::vector<std::uint8_t> labels;
+  std::vector<index_t> origin;
   base.positions.reserve(detail::to_size(nv));
   deformed.positions.reserve(detail::to_size(nv));
   for (index_t v = 0; v < nv; ++v) {
@@ -110,6 +116,14 @@ inline result<polycube_map> load_polycube_map(const std::string& path) {
         return detail::parse_error_at_line(path, sc.line_number(), "expected three vertex indices");
     if (!detail::parse_int(detail::next_token(line), l) || l < 0 || l > 5)
       return detail::parse_error_at_line(path, sc.line_number(), "expected a label 0..5");
+    // the input face of a refined base: on every f line or on none, each within 0..f
+    const auto o_tok = detail::next_token(line);
+    index_t o = -1;
+    if (!o_tok.empty() && (!detail::parse_int(o_tok, o) || o < 0 || o > f))
+      return detail::parse_error_at_line(path, sc.line_number(), "expected the input face 0..f of a refined face");
+    if ((o >= 0) != (f == 0 ? o >= 0 : !origin.empty()))
+      return detail::parse_error_at_line(path, sc.line_number(), "an input face on some 'f' lines only");
+    if (o >= 0) origin.push_back(o);
     base.add_face(i[0], i[1], i[2]);
     deformed.add_face(i[0], i[1], i[2]);
     labels.push_back(static_cast<std::uint8_t>(l));
@@ -120,6 +134,7 @@ inline result<polycube_map> load_polycube_map(const std::string& path) {
     if (static_cast<int>(map->labels[f]) != labels[f])
       return status::invalid_argument(detail::cat(path, ": face ", f, " is stored with label ", int(labels[f]),
                                                   " but its polycube normal gives ", int(map->labels[f])));
+  map->face_origin = std::move(origin);
   return map;
 }
 

@@ -27,6 +27,7 @@
 #include "detail/polycube_deform.hpp"
 #include "detail/polycube_embed.hpp"
 #include "detail/polycube_labeling.hpp"
+#include "detail/polycube_refine.hpp"
 #include "polycube_map.hpp"
 
 TESSERA_NAMESPACE_BEGIN
@@ -53,7 +54,7 @@ inline tri_mesh polycube_base_copy(const tri_mesh& m) {
 /// around a vertex where two charts of one axis meet.
 template <Executor E>
 result<polycube_map> deform_polycube(tri_mesh base, const std::vector<std::array<index_t, 3>>& nb,
-                                     const std::vector<std::uint8_t>& lab, double t, int untangle_iterations, E& exec,
+                                     const std::vector<std::uint8_t>& lab, double t, const polycube_options& o, E& exec,
                                      index_t& bad_chart, std::vector<index_t>& folded) {
   bad_chart = -1;
   folded.clear();
@@ -111,33 +112,55 @@ result<polycube_map> deform_polycube(tri_mesh base, const std::vector<std::array
   std::vector<std::uint8_t> cut;
   if (auto s = embed_polycube<E>(base, cs, classes, paths, loops, t, true, pos, &cut); !s) return s;
   if (untangle_polycube(base, pos, cs.face_chart, cs.chart_label, {&classes[0], &classes[1], &classes[2]}, t,
-                        untangle_iterations, &cut) > 0)
+                        o.untangle_iterations, &cut) > 0)
     folded = polycube_flipped_faces(base, pos, cs.face_chart, cs.chart_label, t);
-  return assemble_polycube_map(std::move(base), lab, std::move(pos), t, exec);
+  // faces squeezed below min_area_ratio are handed back like folded ones
+  return assemble_polycube_map(std::move(base), lab, std::move(pos), t, o.min_area_ratio, exec,
+                               folded.empty() ? &folded : nullptr);
 }
 /// One automatic attempt at a given compactness: label, then label -> repair -> deform rounds; a
 /// failure of one chart relabels it, and its faces' old label costs more from then on (so the repair
-/// cannot bring it back), then runs again (bounded by max_relabel_rounds).
+/// cannot bring it back), then runs again (bounded by max_relabel_rounds). With options.refine, the
+/// chords of each round's repaired labelling are split before the deformation, and also when the
+/// repair cannot free a pinned face by relabelling (detail/polycube_refine.hpp; relabelling comes
+/// first: it smooths the chart boundary), or with `refine_first` before every repair (the chords of
+/// the graph cut's labels are then split instead of relabelled: another labelling, tried second). The working mesh only grows; the map's face_origin names the
+/// input face of each of its faces.
 template <Executor E>
-result<polycube_map> build_polycube_attempt(const tri_mesh& base, const face_adjacency_result& adj,
-                                            const polycube_options& options, double t, E& exec) {
-  const auto en = detail::make_polycube_energy(base, adj.neighbor, options, exec);
+result<polycube_map> build_polycube_attempt(const tri_mesh& input, const face_adjacency_result& adj,
+                                            const polycube_options& options, double t, E& exec,
+                                            bool refine_first = false) {
+  const auto en = detail::make_polycube_energy(input, adj.neighbor, options, exec);
   auto lab = detail::alpha_expansion_labels(en, options.max_expansion_cycles);
   if (!lab) return lab.error();
   auto data = en.data;
+  tri_mesh base = polycube_base_copy(input);
+  auto nb = adj.neighbor;
+  std::vector<index_t> origin;  // empty while nothing is split
+  auto refine = [&] {
+    if (options.refine) split_chart_chords(base, nb, *lab, data, origin);
+  };
   std::size_t stall = 0, last_folded = std::numeric_limits<std::size_t>::max();
   status last;
   for (int round = 0;; ++round) {
-    const auto problem = detail::repair_polycube_labels(base, adj.neighbor, data, *lab, options.max_repair_iterations);
+    if (refine_first) refine();
+    auto problem = detail::repair_polycube_labels(base, nb, data, *lab, options.max_repair_iterations);
+    // a face pinned onto another chart that no relabelling frees: split the chords, then repair again
+    if (problem.kind == detail::polycube_label_problem::pinned_face && options.refine) {
+      refine();
+      problem = detail::repair_polycube_labels(base, nb, data, *lab, options.max_repair_iterations);
+    }
     // a relabelling the repair cannot make valid ends the rounds with the previous round's failure
     if (problem.kind != detail::polycube_label_problem::none) return round == 0 ? problem.to_status() : last;
+    refine();
     index_t bad = -1;
     std::vector<index_t> folded;
-    auto r = detail::deform_polycube(base, adj.neighbor, *lab, t, options.untangle_iterations, exec, bad, folded);
+    auto r = detail::deform_polycube(base, nb, *lab, t, options, exec, bad, folded);
+    if (r) r->face_origin = origin;
     if (r || round >= options.max_relabel_rounds) return r;
     last = r.error();
     if (bad >= 0) {
-      const auto cs = detail::find_polycube_charts(base, adj.neighbor, *lab);
+      const auto cs = detail::find_polycube_charts(base, nb, *lab);
       for (std::size_t f = 0; f < data.size(); ++f)
         if (cs.face_chart[f] == bad) data[f][(*lab)[f]] += detail::relabel_tabu_cost;
       detail::relabel_chart(cs, bad, data, *lab, false);
@@ -148,10 +171,10 @@ result<polycube_map> build_polycube_attempt(const tri_mesh& base, const face_adj
       // region grows by a ring of faces per stalled round and the labels propagate into it
       stall = folded.size() < last_folded ? 0 : stall + 1;
       last_folded = folded.size();
-      const auto region = detail::grow_face_region(adj.neighbor, folded, stall);
+      const auto region = detail::grow_face_region(nb, folded, stall);
       bool changed = false;
       for (std::size_t k = 0; k <= stall; ++k)
-        changed = detail::relabel_folded_faces(adj.neighbor, region, detail::relabel_tabu_cost, data, *lab) || changed;
+        changed = detail::relabel_folded_faces(nb, region, detail::relabel_tabu_cost, data, *lab) || changed;
       if (!changed) return r;
     }
   }
@@ -159,7 +182,9 @@ result<polycube_map> build_polycube_attempt(const tri_mesh& base, const face_adj
 }  // namespace detail
 
 /// Builds the polycube map of `mesh` automatically (see the file comment). The map keeps the input's
-/// vertex and face order (no refinement: every face lies in one chart). Deterministic: the same output
+/// vertex and face order, unless options.refine split chords of the labelling (map.refined()): then
+/// the input's vertices come first in the same order, face f < F_input is part of input face f, and
+/// map.face_origin names the input face of every base face. Deterministic: the same output
 /// for every executor and thread count. Errors: invalid_argument from validate_polycube_input and
 /// polycube_tile_size; not_converged naming the chart, corner, face or edge when the repaired labelling
 /// or the deformed polycube is not valid (never a half-valid map); internal_error for a failed solve.
@@ -171,20 +196,27 @@ result<polycube_map> build_polycube_map(const M& mesh, const polycube_options& o
   if (!t) return t.error();
   if (options.max_expansion_cycles < 0 || options.max_repair_iterations < 0 || options.untangle_iterations < 0 ||
       options.max_relabel_rounds < 0 || options.max_compactness_retries < 0 || !(options.compactness >= 0) ||
-      !(options.opposite_penalty >= 1 && options.opposite_penalty <= 2))
+      !(options.opposite_penalty >= 1 && options.opposite_penalty <= 2) ||
+      !(options.min_area_ratio >= 0 && options.min_area_ratio < 1))
     return status::invalid_argument(detail::cat(
         "polycube_options: max_expansion_cycles, max_repair_iterations, untangle_iterations, "
-        "max_relabel_rounds and max_compactness_retries must be >= 0, compactness >= 0 and opposite_penalty in "
-        "[1, 2]; got ",
+        "max_relabel_rounds and max_compactness_retries must be >= 0, compactness >= 0, opposite_penalty in "
+        "[1, 2] and min_area_ratio in [0, 1); got ",
         options.max_expansion_cycles, ", ", options.max_repair_iterations, ", ", options.untangle_iterations, ", ",
         options.max_relabel_rounds, ", ", options.max_compactness_retries, ", ", options.compactness, ", ",
-        options.opposite_penalty));
+        options.opposite_penalty, ", ", options.min_area_ratio));
   auto m = to_tri_mesh(mesh);
   if (!m) return m.error();
   tri_mesh base = detail::polycube_base_copy(*m);
   const auto adj = face_adjacency(base);
-  if (options.compactness == 0 || options.max_compactness_retries == 0)
-    return detail::build_polycube_attempt(base, adj, options, *t, exec);
+  if (options.compactness == 0 || options.max_compactness_retries == 0) {
+    auto r = detail::build_polycube_attempt(base, adj, options, *t, exec);
+    if (!r && options.refine) {
+      auto s = detail::build_polycube_attempt(base, adj, options, *t, exec, true);
+      if (s) return s;
+    }
+    return r;
+  }
   // the labelling's compactness decides most failures on scanned meshes: retry with other multiples
   result<polycube_map> first = status::internal_error("polycube: no attempt");
   const int tries =
@@ -193,6 +225,7 @@ result<polycube_map> build_polycube_map(const M& mesh, const polycube_options& o
     polycube_options o = options;
     o.compactness = options.compactness * detail::compactness_schedule[detail::to_size(k)];
     auto r = detail::build_polycube_attempt(base, adj, o, *t, exec);
+    if (!r && options.refine) r = detail::build_polycube_attempt(base, adj, o, *t, exec, true);
     if (r || k == 0) first = std::move(r);
     if (first) return first;
   }
@@ -211,6 +244,9 @@ result<polycube_map> build_polycube_map_from_labels(const M& mesh, std::span<con
   if (auto s = validate_polycube_input(mesh); !s) return s;
   auto t = polycube_tile_size(mesh, options);
   if (!t) return t.error();
+  if (!(options.min_area_ratio >= 0 && options.min_area_ratio < 1))
+    return status::invalid_argument(
+        detail::cat("polycube_options::min_area_ratio must be in [0, 1), got ", options.min_area_ratio));
   if (static_cast<index_t>(labels.size()) != num_faces(mesh))
     return status::invalid_argument(
         detail::cat("polycube labels: ", labels.size(), " labels for ", num_faces(mesh), " faces"));
@@ -228,8 +264,7 @@ result<polycube_map> build_polycube_map_from_labels(const M& mesh, std::span<con
     return p.to_status();
   index_t bad = -1;
   std::vector<index_t> folded;
-  return detail::deform_polycube(std::move(base), adj.neighbor, lab, *t, options.untangle_iterations, exec, bad,
-                                 folded);
+  return detail::deform_polycube(std::move(base), adj.neighbor, lab, *t, options, exec, bad, folded);
 }
 
 /// Builds the polycube map of `mesh` from `deformed`, a copy of it (same vertex count, same faces)
@@ -271,7 +306,8 @@ result<polycube_map> polycube_map_from_deformed(const M& mesh, const D& deformed
   const auto cs = detail::find_polycube_charts(base, adj.neighbor, lab);
   if (auto p = detail::find_label_problem(base, adj.neighbor, cs); p.kind != detail::polycube_label_problem::none)
     return p.to_status();
-  return detail::assemble_polycube_map(std::move(base), lab, std::move(d->positions), tile_size, exec);
+  return detail::assemble_polycube_map(std::move(base), lab, std::move(d->positions), tile_size,
+                                       polycube_options{}.min_area_ratio, exec);
 }
 
 TESSERA_NAMESPACE_END

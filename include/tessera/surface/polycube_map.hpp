@@ -134,6 +134,11 @@ struct polycube_map {
   quad_layout layout;
   /// Side of a grid square in mesh units.
   double tile_size = 1;
+  /// When the construction refined the input (polycube_options::refine): the input face of every
+  /// base face (input vertices and faces keep their indices, new ones follow). Empty: base is the input.
+  std::vector<index_t> face_origin;
+  /// Whether the base mesh is a refinement of the input.
+  [[nodiscard]] bool refined() const noexcept { return !face_origin.empty(); }
   /// The polycube-deformed mesh: base connectivity, polycube positions.
   [[nodiscard]] tri_mesh deformed_mesh() const {
     tri_mesh m;
@@ -154,6 +159,14 @@ struct polycube_options {
   int untangle_iterations = 300;    ///< smoothing rounds that unflip faces after the final solve
   int max_relabel_rounds = 24;      ///< relabellings of a chart whose deformation fails, then a new solve
   int max_compactness_retries = 5;  ///< further attempts at other compactness multiples (x4, x3, x8, x2, x0.5)
+  /// Degeneracy bound of the verification: a face whose normalized area ratio (its share of the polycube
+  /// area over its share of the base area) is below this counts as collapsed and the map is refused
+  /// (0 accepts any positive area).
+  double min_area_ratio = 1e-4;
+  /// Split chart chords (edges inside a chart with both ends on its boundary with one other chart,
+  /// which would collapse onto a polycube edge) by a new vertex, and when an attempt fails, repeat it
+  /// with the chords of the graph cut's labels split before the repair: the map's base is then refined.
+  bool refine = true;
 };
 
 namespace detail {

@@ -1,6 +1,7 @@
 // tessera/surface/detail/polycube_assemble.hpp: from a base mesh, a labelling and polycube positions to
 // a verified polycube_map: charts and their integer planes, every face flat in its chart plane and
-// positively oriented there (no flipped face), corners on the tile grid, polycube edges of at least one
+// positively oriented there (no flipped face) and not squeezed below min_area_ratio of its share of
+// the area (no degenerate map), corners on the tile grid, polycube edges of at least one
 // tile, no self-intersection of the polycube surface, and a closed quad layout. Any failure is a status
 // naming the face, chart, corner or edge; a map is returned only when everything holds.
 #pragma once
@@ -30,9 +31,14 @@ namespace detail {
 /// A vertex farther than this fraction of tile_size from its chart's plane makes the chart not flat.
 inline constexpr double chart_flatness_fraction = 1e-7;
 
+/// Verifies and assembles the map (see the file comment). `min_area_ratio` is the degeneracy bound: a
+/// face whose normalized area ratio r = (its chart-plane area / the polycube's area) / (its base area /
+/// the base's area) is below it counts as collapsed, and the map is refused naming the chart; those
+/// faces are written to `collapsed` when given (for the relabel rounds).
 template <Executor E>
 result<polycube_map> assemble_polycube_map(tri_mesh base, const std::vector<std::uint8_t>& lab,
-                                           std::vector<vec3> positions, double t, E& exec) {
+                                           std::vector<vec3> positions, double t, double min_area_ratio, E& exec,
+                                           std::vector<index_t>* collapsed = nullptr) {
   const auto adj = face_adjacency(base);
   const auto cs = find_polycube_charts(base, adj.neighbor, lab);
   const index_t nf = base.num_faces(), nv = base.num_vertices();
@@ -50,6 +56,7 @@ result<polycube_map> assemble_polycube_map(tri_mesh base, const std::vector<std:
   }
   // flatness, then orientation (in parallel; first offender by smallest face)
   std::vector<std::int8_t> bad(to_size(nf), 0);
+  std::vector<double> area_base(to_size(nf)), area_chart(to_size(nf));
   exec.parallel_for(0, nf, [&](index_t f) {
     const auto& ch = pm.charts[to_size(cs.face_chart[to_size(f)])];
     const int a = label_axis(ch.label);
@@ -60,8 +67,12 @@ result<polycube_map> assemble_polycube_map(tri_mesh base, const std::vector<std:
       if (!(std::abs(p[a] - static_cast<double>(ch.plane) * t) <= tol)) bad[to_size(f)] = 1;
       q[to_size(k)] = {p[ax[0]], p[ax[1]]};
     }
-    if (bad[to_size(f)] == 0 && !(cross(q[1] - q[0], q[2] - q[0]) > min_chart_area_fraction * t * t))
-      bad[to_size(f)] = 2;
+    const double a2 = cross(q[1] - q[0], q[2] - q[0]);
+    if (bad[to_size(f)] == 0 && !(a2 > min_chart_area_fraction * t * t)) bad[to_size(f)] = 2;
+    const auto& fv = base.faces[to_size(f)];
+    area_base[to_size(f)] =
+        norm(cross(base.position(fv[1]) - base.position(fv[0]), base.position(fv[2]) - base.position(fv[0])));
+    area_chart[to_size(f)] = a2;
   });
   index_t flipped = 0, first_flip = -1;
   for (index_t f = 0; f < nf; ++f) {
@@ -76,6 +87,31 @@ result<polycube_map> assemble_polycube_map(tri_mesh base, const std::vector<std:
     return status::not_converged(cat("polycube: ", flipped,
                                      " faces are flipped or collapsed in their chart plane (first: face ", first_flip,
                                      " in chart ", cs.face_chart[to_size(first_flip)], ")"));
+  // degeneracy: faces squeezed far below their share of the area (summed serially: deterministic)
+  {
+    double tb = 0, tp = 0;
+    for (index_t f = 0; f < nf; ++f) {
+      tb += area_base[to_size(f)];
+      tp += area_chart[to_size(f)];
+    }
+    index_t n_small = 0, worst = -1;
+    double worst_r = 0;
+    for (index_t f = 0; f < nf; ++f) {
+      const double r = (area_chart[to_size(f)] / tp) / (area_base[to_size(f)] / tb);
+      if (!(r >= min_area_ratio)) {
+        ++n_small;
+        if (collapsed) collapsed->push_back(f);
+        if (worst < 0 || r < worst_r) {
+          worst = f;
+          worst_r = r;
+        }
+      }
+    }
+    if (n_small > 0)
+      return status::not_converged(cat("polycube: degenerate map: ", n_small, " faces keep less than min_area_ratio = ",
+                                       min_area_ratio, " of their share of the area (worst: face ", worst, " in chart ",
+                                       cs.face_chart[to_size(worst)], ", ratio ", worst_r, ")"));
+  }
   // corners on the grid
   std::map<grid_point, index_t> corner_at;
   for (index_t v = 0; v < nv; ++v) {
