@@ -49,6 +49,9 @@ struct mesh_quilt_params {
   std::uint64_t stream = 0;  // distinguishes tiles of one set
   bool constrained = false;
   merge_rules rules = merge_rules::tessera;
+  bool merge_whole = false;
+  int cell_retries = 1;
+  bool nudge_inside = true;
 };
 
 // A class template (`Deferred` is always void) only so that its merge step, and the Eigen sparse
@@ -69,6 +72,7 @@ class basic_quilt_engine {
     cols_ = std::max<index_t>(1, static_cast<index_t>(std::ceil(domain.width() / cell_ - cell_rounding)));
     rows_ = std::max<index_t>(1, static_cast<index_t>(std::ceil(domain.height() / cell_ - cell_rounding)));
     occ_.assign(to_size(cols_ * rows_), 0);
+    retries_.assign(occ_.size(), 0);
     const vec3 ext = ex.bounds().extent();
     margin_ = 0.25 * ex.element_diameter();
     const double room = std::min(ext.x, ext.y) - 2 * margin_;
@@ -111,6 +115,15 @@ class basic_quilt_engine {
       for (index_t j = j0; j < j1; ++j)
         for (index_t i = i0; i < i1; ++i) occ_[to_size(j * cols_ + i)] = 1;
       occ_[to_size(seed)] = 1;
+      // a cell whose element was dropped goes back to the seed search (at most cell_retries times):
+      // the next patch there draws another translation instead of leaving a hole
+      for (index_t c : dropped_cells_)
+        if (c >= 0 && occ_[to_size(c)] && retries_[to_size(c)] < p_.cell_retries && !covered(c)) {
+          occ_[to_size(c)] = 0;
+          ++retries_[to_size(c)];
+          ++stats_.cells_retried;
+        }
+      dropped_cells_.clear();
       ++stats_.patches;
     }
     prog.report(1.0, "mesh quilting");
@@ -245,6 +258,15 @@ class basic_quilt_engine {
     const auto j = static_cast<index_t>(std::floor((p.y - domain_.y0) / cell_));
     if (i < 0 || j < 0 || i >= cols_ || j >= rows_) return -1;
     return j * cols_ + i;
+  }
+  // True when some alive element's XY box holds the cell's centre (something stands there).
+  [[nodiscard]] bool covered(index_t c) const {
+    const vec3 p{domain_.x0 + (double(c % cols_) + 0.5) * cell_, domain_.y0 + (double(c / cols_) + 0.5) * cell_, 0};
+    for (std::size_t i = 0; i < elems_.size(); ++i)
+      if (alive_[i] && elems_[i].box.min.x <= p.x && elems_[i].box.max.x >= p.x && elems_[i].box.min.y <= p.y &&
+          elems_[i].box.max.y >= p.y)
+        return true;
+    return false;
   }
   [[nodiscard]] bool occupied(vec3 p) const {
     const index_t c = cell_of(p);
@@ -394,6 +416,10 @@ class basic_quilt_engine {
         for (const vec3& q : cin.mesh.positions) reaches_new = reaches_new || in_new(q);
         if (!mine.empty()) {
           if (!reaches_new) continue;
+          if (!p_.merge_whole && !ex_.is_long(e)) {  // a whole element stands there already
+            ++stats_.elements_skipped;
+            continue;
+          }
           texture_element cur = std::move(cin);
           std::vector<std::size_t> consumed;
           for (const auto& pr : mine) {
@@ -423,11 +449,27 @@ class basic_quilt_engine {
         const vec3 c = cin.box.center();
         if (!in_new({c.x, c.y, 0})) continue;
         bool ok = true;
-        if (p_.constrained)
+        if (p_.constrained) {
+          // an element reaching a little across a tile side is moved back inside by as much (at most
+          // nudge_diameters element diameters) rather than dropped: the bands along tile borders
+          // would otherwise stay emptier than the inside, since nothing may cross a tile side there
+          const double m = 2 * inside_margin_fraction * cell_;
+          const double dx =
+              std::max(0.0, domain_.x0 + m - cin.box.min.x) - std::max(0.0, cin.box.max.x - domain_.x1 + m);
+          const double dy =
+              std::max(0.0, domain_.y0 + m - cin.box.min.y) - std::max(0.0, cin.box.max.y - domain_.y1 + m);
+          if (p_.nudge_inside && (dx != 0 || dy != 0) &&
+              std::max(std::abs(dx), std::abs(dy)) <= nudge_diameters * ex_.element_diameter()) {
+            for (vec3& q : cin.mesh.positions) q += vec3{dx, dy, 0};
+            cin.update_box();
+            ++stats_.elements_nudged;
+          }
           for (const vec3& q : cin.mesh.positions)
             ok = ok && strictly_inside(domain_, q, inside_margin_fraction * cell_);
+        }
         if (!ok || intersects_alive(cin, {})) {
           ++stats_.elements_dropped;
+          if (!ex_.is_long(e)) dropped_cells_.push_back(cell_of({c.x, c.y, 0}));
           continue;
         }
         push(std::move(cin));
@@ -448,6 +490,9 @@ class basic_quilt_engine {
   /// Long elements (threads) are clipped this fraction of a cell inside the domain, so that their
   /// caps lie strictly inside it.
   static constexpr double long_clip_inset_cells = 1e-6;
+  /// Constrained quilting moves an element that reaches at most this many element diameters across a
+  /// tile side back inside (then checks it like any other).
+  static constexpr double nudge_diameters = 0.35;
 
   const quilt_exemplar& ex_;
   xy_rect domain_;
@@ -457,6 +502,8 @@ class basic_quilt_engine {
   index_t cols_ = 1, rows_ = 1;
   int k_ = 2;
   std::vector<unsigned char> occ_;
+  std::vector<unsigned char> retries_;  // times each cell went back to the seed search
+  std::vector<index_t> dropped_cells_;  // cells of the elements the current patch dropped
   std::vector<texture_element> elems_;
   std::vector<unsigned char> alive_;
   std::vector<std::optional<triangle_bvh>> bvh_;
