@@ -276,8 +276,9 @@ static void BM_baseline_mesh_quilt_merge_all(benchmark::State& state) {
   const double side = double(state.range(0));
   thread_pool_executor pool(2);
   for (auto _ : state)
-    benchmark::DoNotOptimize(
-        mesh_quilt(prepared_rings(), side, side, {.merge_whole = true, .cell_retries = 0, .seed = 1}, pool));
+    benchmark::DoNotOptimize(mesh_quilt(prepared_rings(), side, side,
+                                        {.merge_whole = true, .cell_retries = 0, .occupancy_aware = false, .seed = 1},
+                                        pool));
   state.counters["area/s"] = benchmark::Counter(side * side * double(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_baseline_mesh_quilt_merge_all)->Arg(12)->Unit(benchmark::kMillisecond)->Iterations(1);
@@ -334,6 +335,7 @@ static void BM_baseline_geometric_wang_tile_set_16_merge_all(benchmark::State& s
   o.quilt.merge_whole = true;
   o.quilt.cell_retries = 0;
   o.quilt.nudge_inside = false;
+  o.quilt.occupancy_aware = false;
   o.deep_free_elements = false;
   for (auto _ : state) benchmark::DoNotOptimize(build_geometric_wang_tiles(prepared_rings(), o, pool));
   state.counters["tiles/s"] = benchmark::Counter(16.0 * double(state.iterations()), benchmark::Counter::kIsRate);

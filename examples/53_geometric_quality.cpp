@@ -5,7 +5,7 @@
 //   example_53_geometric_quality [OUT_DIR] [KIND|all] [before]   KIND: rings (default), chain_mail,
 //                                                                 beads, stones, pebbles, weave
 // `before` runs the earlier rules (every corresponding pair merged, no cell retried, nothing moved
-// back inside a tile, free strip elements only wholly inside the strip), for the before/after table and its same-run speed ratio.
+// back inside a tile, eq. 4 alone, free strip elements only wholly inside the strip), for the before/after table and its same-run speed ratio.
 #include <chrono>
 #include <cstdio>
 #include <string>

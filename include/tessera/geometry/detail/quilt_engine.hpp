@@ -52,6 +52,7 @@ struct mesh_quilt_params {
   bool merge_whole = false;
   int cell_retries = 1;
   bool nudge_inside = true;
+  bool occupancy_aware = false;
 };
 
 // A class template (`Deferred` is always void) only so that its merge step, and the Eigen sparse
@@ -193,11 +194,14 @@ class basic_quilt_engine {
     // Two stages: every fourth sample ranks all candidates, then the best few are scored with all
     // samples (eq. 4). Candidates run in parallel; the shared running minimum only cuts off sums
     // that are already above the final threshold, so the result does not depend on the schedule.
+    // with the occupancy term, candidates within (1 + occupancy_tolerance_factor x tolerance) of the
+    // best are scored exactly, so that the choice among them does not depend on the schedule
+    const double tol = p_.tolerance * (p_.occupancy_aware ? occupancy_tolerance_factor : 1.0);
     auto search = [&](const std::vector<std::size_t>& which, std::size_t stride, std::vector<double>& costs) {
       std::atomic<double> best{std::numeric_limits<double>::infinity()};
       pfor_(static_cast<index_t>(which.size()), [&](index_t i) {
         const std::size_t c = which[to_size(i)];
-        const double v = cost(cands[c], best.load(std::memory_order_relaxed) * (1 + p_.tolerance), stride);
+        const double v = cost(cands[c], best.load(std::memory_order_relaxed) * (1 + tol), stride);
         costs[c] = v;
         double cur = best.load(std::memory_order_relaxed);
         while (v < cur && !best.compare_exchange_weak(cur, v, std::memory_order_relaxed)) {}
@@ -222,6 +226,21 @@ class basic_quilt_engine {
     std::vector<std::size_t> good;
     for (std::size_t c : all)
       if (costs[c] <= best * (1 + p_.tolerance)) good.push_back(c);
+    if (p_.occupancy_aware) {
+      // occupancy term: among the translations within (1 + tol) of the best, those that would drop
+      // the fewest exemplar elements (colliding with what stands, or across a tile side)
+      std::vector<std::size_t> wide;
+      std::vector<index_t> drops;
+      for (std::size_t c : all)
+        if (costs[c] <= best * (1 + tol)) {
+          wide.push_back(c);
+          drops.push_back(count_drops(cands[c], w));
+        }
+      const index_t fewest = *std::min_element(drops.begin(), drops.end());
+      good.clear();
+      for (std::size_t i = 0; i < wide.size(); ++i)
+        if (drops[i] == fewest) good.push_back(wide[i]);
+    }
     vec3 t = cands[good[to_size(rng.below(good.size(), 2, patch))]];
     if (p_.icp) {
       std::vector<vec3> pts;
@@ -259,6 +278,44 @@ class basic_quilt_engine {
     if (i < 0 || j < 0 || i >= cols_ || j >= rows_) return -1;
     return j * cols_ + i;
   }
+  // The occupancy term of the translation search: how many exemplar elements (not long) whose
+  // centre the translation `t` puts in the new region of window `w` would be dropped, judged on
+  // XY boxes: one whose box overlaps a standing element's box (shrunk by a tenth of an element
+  // diameter) without being its duplicate (centres within a quarter diameter: skipped, not dropped),
+  // or, constrained, one reaching across a tile side by more than the nudge.
+  [[nodiscard]] index_t count_drops(vec3 t, const xy_rect& w) const {
+    const double d = ex_.element_diameter(), shrink = 0.1 * d, dup = 0.25 * d;
+    index_t n = 0;
+    for (index_t e = 0; e < ex_.num_elements(); ++e) {
+      if (ex_.is_long(e)) continue;
+      aabb b = ex_.elements()[to_size(e)].box;
+      b.min += t;
+      b.max += t;
+      const vec3 c = b.center();
+      if (!w.contains({c.x, c.y, 0}) || occupied({c.x, c.y, 0})) continue;
+      if (p_.constrained) {
+        const double over =
+            std::max({domain_.x0 - b.min.x, domain_.y0 - b.min.y, b.max.x - domain_.x1, b.max.y - domain_.y1});
+        if (over > (p_.nudge_inside ? nudge_diameters * d : 0.0)) {
+          ++n;
+          continue;
+        }
+      }
+      for (std::size_t i = 0; i < elems_.size(); ++i) {
+        if (!alive_[i]) continue;
+        const aabb& x = elems_[i].box;
+        const vec3 xc = x.center();
+        if (std::hypot(xc.x - c.x, xc.y - c.y) < dup) break;  // a duplicate: skipped
+        if (x.min.x + shrink < b.max.x - shrink && x.max.x - shrink > b.min.x + shrink &&
+            x.min.y + shrink < b.max.y - shrink && x.max.y - shrink > b.min.y + shrink) {
+          ++n;
+          break;
+        }
+      }
+    }
+    return n;
+  }
+
   // True when some alive element's XY box holds the cell's centre (something stands there).
   [[nodiscard]] bool covered(index_t c) const {
     const vec3 p{domain_.x0 + (double(c % cols_) + 0.5) * cell_, domain_.y0 + (double(c / cols_) + 0.5) * cell_, 0};
@@ -493,6 +550,8 @@ class basic_quilt_engine {
   /// Constrained quilting moves an element that reaches at most this many element diameters across a
   /// tile side back inside (then checks it like any other).
   static constexpr double nudge_diameters = 0.35;
+  /// The occupancy term chooses among translations within (1 + this x tolerance) of the best eq. 4.
+  static constexpr double occupancy_tolerance_factor = 3.0;
 
   const quilt_exemplar& ex_;
   xy_rect domain_;
