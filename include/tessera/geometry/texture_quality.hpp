@@ -61,6 +61,7 @@ struct texture_quality {
   /// exemplar's nearest-neighbour median, so a lattice's phase does not count) in border bands, in
   /// corner squares and inside tiles; covered fractions likewise.
   double band_density = 0, corner_density = 0, interior_density = 0;
+  /// Covered fractions (unsmoothed) in border bands, corner squares and inside tiles.
   double band_coverage = 0, corner_coverage = 0, interior_coverage = 0;
   double nn_median = 0;               ///< median nearest-neighbour distance of centres in the window
   double nn_outside = 0;              ///< fraction of those distances outside the reference spread
@@ -69,7 +70,9 @@ struct texture_quality {
 
 /// A texture against its exemplar: both figure sets and the differences the goals are stated in.
 struct texture_quality_comparison {
+  /// The exemplar's figures (over its XY bounds, no tile grid) and the output's.
   texture_quality exemplar, output;
+  /// What the exemplar set as the reference.
   texture_quality_reference reference;
   double density_ratio = 0;      ///< output / exemplar density
   double coverage_ratio = 0;     ///< output / exemplar covered fraction
