@@ -270,6 +270,19 @@ static void BM_mesh_quilt_per_area(benchmark::State& state) {
 }
 BENCHMARK(BM_mesh_quilt_per_area)->Arg(12)->Unit(benchmark::kMillisecond)->Iterations(1);
 
+// same-run baseline of the quality fixes (issue 17): the earlier rules, every corresponding pair
+// merged and no dropped element's cell retried
+static void BM_baseline_mesh_quilt_merge_all(benchmark::State& state) {
+  const double side = double(state.range(0));
+  thread_pool_executor pool(2);
+  for (auto _ : state)
+    benchmark::DoNotOptimize(mesh_quilt(prepared_rings(), side, side,
+                                        {.merge_whole = true, .cell_retries = 0, .occupancy_aware = false, .seed = 1},
+                                        pool));
+  state.counters["area/s"] = benchmark::Counter(side * side * double(state.iterations()), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_baseline_mesh_quilt_merge_all)->Arg(12)->Unit(benchmark::kMillisecond)->Iterations(1);
+
 namespace {
 // Tile sets of the ring exemplar: arg 0 = tile 6.4 (about 5.7k triangles a tile), arg 1 = tile 4.0
 // (the smallest the default edge height allows, about 2.2k triangles a tile: the size of the paper's
@@ -311,6 +324,23 @@ static void BM_geometric_wang_tile_set_16(benchmark::State& state) {
   state.counters["tiles/s"] = benchmark::Counter(16.0 * double(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_geometric_wang_tile_set_16)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+// same-run baseline of the quality fixes (issue 17): the earlier rules (every corresponding pair
+// merged, no cell retried, nothing moved back inside a tile, free strip elements only wholly inside
+// the strip)
+static void BM_baseline_geometric_wang_tile_set_16_merge_all(benchmark::State& state) {
+  thread_pool_executor pool(2);
+  geometric_wang_options o;
+  o.tile_size = 6.4;
+  o.quilt.merge_whole = true;
+  o.quilt.cell_retries = 0;
+  o.quilt.nudge_inside = false;
+  o.quilt.occupancy_aware = false;
+  o.deep_free_elements = false;
+  for (auto _ : state) benchmark::DoNotOptimize(build_geometric_wang_tiles(prepared_rings(), o, pool));
+  state.counters["tiles/s"] = benchmark::Counter(16.0 * double(state.iterations()), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_baseline_geometric_wang_tile_set_16_merge_all)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 // the goal: 64 x 64 tiles welded into one mesh in under 1 s (returned as a tri_mesh: allocation and
 // the vectors' zero fill included)

@@ -13,6 +13,7 @@
 #include <tessera/tiling/scanline_coloring.hpp>
 
 #include "cli.hpp"
+#include "quality_stats.hpp"
 
 namespace {
 
@@ -55,8 +56,20 @@ int build(const cli::arguments& args) {
       sum.elements += rep->elements;
     }
     const auto mismatch = tile_set_border_mismatch(*set);
-    cli::json_line()
-        .add("build_ms", ms)
+    // likeness: a sample plane of 6 x 6 tiles (hash colouring of --seed) against the exemplar
+    const auto edges = tile_set_edges::create(set->horizontal_colors, set->vertical_colors, set->edges);
+    if (!edges) return cli::fail(args, edges.error());
+    const auto hash = hash_coloring::for_set(*edges, args.seed());
+    if (!hash) return cli::fail(args, hash.error());
+    const auto window = hash->window(0, 0, 6, 6);
+    if (!window) return cli::fail(args, window.error());
+    const auto sample = tile_geometric_plane(*set, *window, 6, 6, pool);
+    if (!sample) return cli::fail(args, sample.error());
+    const double w = set->tile_size;
+    const auto quality = compare_texture_quality(*ex_mesh, *sample, {0, 0, 6 * w, 6 * w}, {.tile_size = w});
+    if (!quality) return cli::fail(args, quality.error());
+    cli::json_line line;
+    line.add("build_ms", ms)
         .add("tiles", static_cast<index_t>(set->tiles.size()))
         .add("ms_per_tile", ms / double(set->tiles.size()))
         .add("tile_size", set->tile_size)
@@ -80,8 +93,9 @@ int build(const cli::arguments& args) {
         .add("nonmanifold_edges", sum.nonmanifold_edges)
         .add("intersecting_pairs", sum.intersecting_pairs)
         .add("corner_crossings", tile_set_corner_crossings(*set))
-        .add("border_mismatch", mismatch ? *mismatch : index_t{-1})
-        .print();
+        .add("border_mismatch", mismatch ? *mismatch : index_t{-1});
+    cli::add_quality(line, *quality, true);
+    line.print();
   } else {
     std::printf("wrote %zu tiles to %s\n", set->tiles.size(), dir->c_str());
   }
@@ -134,8 +148,8 @@ int tile(const cli::arguments& args) {
     const auto rep = check_geometric_texture(*plane, {0, 0, double(cols) * w, double(rows) * w});
     if (!rep) return cli::fail(args, rep.error());
     const auto mismatch = tile_set_border_mismatch(*set);
-    cli::json_line()
-        .add("tiling_ms", ms)
+    cli::json_line line;
+    line.add("tiling_ms", ms)
         .add("tiles", cols * rows)
         .add("vertices", plane->num_vertices())
         .add("faces", plane->num_faces())
@@ -144,8 +158,16 @@ int tile(const cli::arguments& args) {
         .add("nonmanifold_edges", rep->nonmanifold_edges)
         .add("intersecting_pairs", rep->intersecting_pairs)
         .add("corner_crossings", tile_set_corner_crossings(*set))
-        .add("border_mismatch", mismatch ? *mismatch : index_t{-1})
-        .print();
+        .add("border_mismatch", mismatch ? *mismatch : index_t{-1});
+    if (args.has("--exemplar")) {  // likeness against the exemplar the set was built from
+      auto ex_mesh = read_mesh(args.str("--exemplar"));
+      if (!ex_mesh) return cli::fail(args, ex_mesh.error());
+      const auto quality =
+          compare_texture_quality(*ex_mesh, *plane, {0, 0, double(cols) * w, double(rows) * w}, {.tile_size = w});
+      if (!quality) return cli::fail(args, quality.error());
+      cli::add_quality(line, *quality, true);
+    }
+    line.print();
   } else {
     std::printf("wrote %s (%lld x %lld tiles, %lld vertices)\n", out->c_str(), static_cast<long long>(cols),
                 static_cast<long long>(rows), static_cast<long long>(plane->num_vertices()));
@@ -176,6 +198,7 @@ const cli::registrar reg_tile{[] {
        {"--grid", "COLSxROWS", "number of tiles, at most 4096 a side and 2^20 in all"},
        {"--coloring", "KIND", "hash (default; O(1) per cell), scanline (Cohen) or periodic edge colouring"},
        {"--period", "N", "period in tiles of --coloring periodic (default 4)"},
+       {"--exemplar", "FILE", "with --stats: the exemplar the set was built from, for the likeness figures"},
        {"--out", "FILE", "output mesh"}},
       tile};
   return c;

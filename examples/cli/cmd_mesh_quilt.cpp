@@ -7,6 +7,7 @@
 #include <tessera/io/mesh_file.hpp>
 
 #include "cli.hpp"
+#include "quality_stats.hpp"
 
 namespace {
 
@@ -35,8 +36,10 @@ int run(const cli::arguments& args) {
   if (args.stats()) {
     const auto rep = check_geometric_texture(r->mesh);
     if (!rep) return cli::fail(args, rep.error());
-    cli::json_line()
-        .add("quilt_ms", ms)
+    const auto quality = compare_texture_quality(*ex_mesh, r->mesh, {0, 0, size->first, size->second});
+    if (!quality) return cli::fail(args, quality.error());
+    cli::json_line line;
+    line.add("quilt_ms", ms)
         .add("vertices", r->mesh.num_vertices())
         .add("faces", r->mesh.num_faces())
         .add("elements", rep->elements)
@@ -55,8 +58,9 @@ int run(const cli::arguments& args) {
         .add("icp_discarded", r->stats.icp_discarded)
         .add("open_edges_inside", rep->open_edges_inside)
         .add("nonmanifold_edges", rep->nonmanifold_edges)
-        .add("intersecting_pairs", rep->intersecting_pairs)
-        .print();
+        .add("intersecting_pairs", rep->intersecting_pairs);
+    cli::add_quality(line, *quality, false);
+    line.print();
   } else {
     std::printf("wrote %s (%lld vertices, %zu elements)\n", out->c_str(),
                 static_cast<long long>(r->mesh.num_vertices()), r->elements.size());

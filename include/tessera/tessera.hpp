@@ -97,4 +97,5 @@
 #include "geometry/mesh_quilt.hpp"
 #include "geometry/mesh_quilt_types.hpp"
 #include "geometry/quilt_exemplar.hpp"
+#include "geometry/texture_quality.hpp"
 #include "geometry/tile_geometric_plane.hpp"

@@ -8,6 +8,7 @@
 #include <tessera/geometry/mesh_exemplars.hpp>
 #include <tessera/geometry/mesh_quilt.hpp>
 #include <tessera/geometry/quilt_exemplar.hpp>
+#include <tessera/geometry/texture_quality.hpp>
 #include <tessera/geometry/tile_geometric_plane.hpp>
 #include <tessera/io/geometric_tiles.hpp>
 #include <tessera/tiling/hash_coloring.hpp>
@@ -34,6 +35,12 @@ TEST_CASE("docs: geometry.md quilting and geometric Wang tiles", "[.][docs-slow]
   auto q = tessera::mesh_quilt(*ex, 16.0, 12.0, {.seed = 7}, pool);  // q->mesh, q->elements, q->stats
   // [/snippet]
   REQUIRE(q);
+  // [snippet:geometry_quality]
+  auto quality = tessera::compare_texture_quality(*stones, q->mesh, {0, 0, 16, 12});  // exemplar, output, domain
+  // quality->density_ratio, coverage_ratio, partial_excess, empty_cell_excess, nn_outside_excess;
+  // with {.tile_size = w} as the options, band_ratio and corner_ratio of a tiled plane
+  // [/snippet]
+  REQUIRE(quality);
   auto hash = tessera::hash_coloring::create(2, 2, /*seed=*/3);
   REQUIRE(hash);
   auto window = hash->window(0, 0, 8, 6);

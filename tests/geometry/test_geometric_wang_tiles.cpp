@@ -46,8 +46,7 @@ TEST_CASE("geometric Wang tiles: complete set, identical borders, continuous til
   INFO("interior merges " << set.stats.merges_succeeded << " / " << set.stats.merges_attempted << "; frame merges "
                           << set.frame_merged << " merged, " << set.frame_dropped << " dropped of "
                           << set.frame_merges_attempted << " merge_pair calls");
-  REQUIRE(set.stats.merges_succeeded > 0);
-  REQUIRE(set.stats.elements_merged > 0);
+  REQUIRE(set.stats.elements_skipped > 0);  // exemplar rings where a ring (or a border half) already stands
   REQUIRE(set.frame_merged <= set.frame_merges_attempted);
   // no element crosses a tile corner: none touches two adjacent sides, and every border vertex keeps
   // the corner margin (0.15 x the element size by default) from both ends of its side

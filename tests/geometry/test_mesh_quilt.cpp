@@ -180,7 +180,7 @@ TEST_CASE("the normal term of eq. 1 (lambda) changes the chosen translation", "[
 
 TEST_CASE("mesh quilting merges elements, and most merges succeed", "[mesh_quilt]") {
   const auto& ex = small_rings();
-  const auto r = mesh_quilt(ex, 8, 6, {.seed = 2});
+  const auto r = mesh_quilt(ex, 8, 6, {.merge_whole = true, .seed = 2});  // the paper's merging of every pair
   REQUIRE(r.ok());
   const auto& s = r->stats;
   REQUIRE(s.merges_attempted > 0);
@@ -194,4 +194,10 @@ TEST_CASE("mesh quilting merges elements, and most merges succeed", "[mesh_quilt
   INFO("merges " << s.merges_succeeded << " / " << s.merges_attempted << ", elements merged " << s.elements_merged
                  << ", dropped " << s.elements_dropped);
   REQUIRE(2 * s.merges_succeeded >= s.merges_attempted);
+  REQUIRE(s.elements_skipped == 0);
+  // by default a whole element standing where an exemplar element corresponds is kept as it is
+  const auto d = mesh_quilt(ex, 8, 6, {.seed = 2});
+  REQUIRE(d.ok());
+  REQUIRE(d->stats.elements_skipped > 0);
+  REQUIRE(d->stats.merges_attempted == 0);  // rings are not long: nothing to continue
 }

@@ -39,6 +39,11 @@ struct geometric_wang_options {
   /// When the exemplar cannot hold a strip (smaller than w_T + ...), quilt a larger texture first and
   /// cut the strips from it (§3.1). When false, such exemplars are rejected.
   bool quilt_larger_source = true;
+  /// Free strip elements (on one side of the edge line) are kept when they start inside the strip,
+  /// even where they reach past it into the tile (true, default), or only when they lie wholly inside
+  /// one half of the strip (false: the earlier rule, which kept next to none and left a band along
+  /// every tile border that the interior synthesis cannot fill without crossing the border).
+  bool deep_free_elements = true;
   mesh_quilt_options quilt = {};  ///< interior synthesis (and the larger source); its seed seeds everything
   /// Progress callback and cancellation token.
   tessera::progress progress = {};
@@ -121,7 +126,8 @@ result<wang_strip_plan> plan_wang_strips(const quilt_exemplar& exemplar, const g
   plan.sp = {.tile_size = o.tile_size,
              .half_height = 0.5 * he,
              .corner_margin = margin,
-             .snap = detail::clip_snap_fraction * o.tile_size};
+             .snap = detail::clip_snap_fraction * o.tile_size,
+             .deep_free_elements = o.deep_free_elements};
   const double need = o.tile_size + 2 * cell;
   status picked = status::invalid_argument("geometric wang tiles: exemplar smaller than a tile");
   if (ext.x >= need && ext.y >= need)
@@ -190,7 +196,8 @@ result<geometric_tile_set> build_geometric_wang_tiles(const quilt_exemplar& exem
     exec.parallel_for(first, last, [&](index_t t) {
       const wang_edges e = complete_tile_edges(t, o.horizontal_colors, o.vertical_colors);
       set.edges[detail::to_size(t)] = e;
-      auto fr = detail::build_frame(plan->hs, plan->vs, e, o.tile_size, plan->sp.half_height, exemplar.cell_size());
+      auto fr = detail::build_frame(plan->hs, plan->vs, e, o.tile_size, plan->sp.half_height, exemplar.cell_size(),
+                                    o.quilt.merge_whole);
       frames[detail::to_size(t)] = {fr.merges_attempted, fr.merged, fr.dropped};
       mesh_quilt_options qo = o.quilt;
       qo.progress = {};

@@ -36,6 +36,24 @@ struct mesh_quilt_options {
   bool merge = true;                         ///< merge corresponding elements (§3.3.6); false drops overlapping ones
   int smooth_rings = 2;                      ///< vertex rings relaxed around each merge seam
   merge_rules rules = merge_rules::tessera;  ///< SOURCE/SINK rules of the element cuts (§3.3.6; see merge_rules)
+  /// Merge an exemplar element that is not long with its corresponding output element, as the paper
+  /// does. false (default): the exemplar element is left out, since the output element already
+  /// stands there whole (or as a tile border half, whole across the border); merging two copies of
+  /// one closed element only deforms it (docs/geometry.md, quality table). Long elements (threads)
+  /// are merged either way: that is how a clipped thread continues.
+  bool merge_whole = false;
+  /// How many times a cell whose element was dropped (it hit another element or a tile side) is
+  /// handed back to the seed search, to be tried with another translation (0 = never).
+  int cell_retries = 1;
+  /// Constrained quilting (tiles): move an element that reaches a little (at most 0.35 element
+  /// diameters) across a tile side back inside instead of dropping it (false: drop it, as before).
+  bool nudge_inside = true;
+  /// Occupancy term of the translation search (§3.3.3): among the translations within three times
+  /// `tolerance` of the best eq. 4 cost, take those that would drop the fewest exemplar elements
+  /// (colliding with what stands, or across a tile side). Off by default: measured, it helped the
+  /// stone and pebble tiles (covered area 0.82 -> 0.87 of the exemplar's) but hurt the ring and
+  /// chain-mail quilts (0.94 -> 0.88, 1.00 -> 0.91) and took longer (docs/geometry.md).
+  bool occupancy_aware = false;
   /// Seed of the patch choices.
   std::uint64_t seed = 0;
   /// Progress callback and cancellation token.
@@ -67,6 +85,8 @@ inline status check_quilt_options(const mesh_quilt_options& o) {
         detail::cat("mesh_quilt: correspondence_distance must be >= 0, got ", o.correspondence_distance));
   if (!(o.deform_weight > 0) || !std::isfinite(o.deform_weight))
     return status::invalid_argument(detail::cat("mesh_quilt: deform_weight must be > 0, got ", o.deform_weight));
+  if (o.cell_retries < 0 || o.cell_retries > 16)
+    return status::invalid_argument(detail::cat("mesh_quilt: cell_retries must be in [0, 16], got ", o.cell_retries));
   if (o.smooth_rings < 0)
     return status::invalid_argument(detail::cat("mesh_quilt: smooth_rings must be >= 0, got ", o.smooth_rings));
   return validate_enum(o.rules, {"tessera", "paper"}, "mesh_quilt: options.rules");
@@ -94,7 +114,11 @@ inline mesh_quilt_params to_params(const mesh_quilt_options& o, bool constrained
           .seed = o.seed,
           .stream = stream,
           .constrained = constrained,
-          .rules = o.rules};
+          .rules = o.rules,
+          .merge_whole = o.merge_whole,
+          .cell_retries = o.cell_retries,
+          .nudge_inside = o.nudge_inside,
+          .occupancy_aware = o.occupancy_aware};
 }
 }  // namespace detail
 

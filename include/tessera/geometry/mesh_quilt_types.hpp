@@ -36,6 +36,14 @@ struct mesh_quilt_stats {
   /// leaving the tile, open or non-manifold edges).
   index_t merge_fail_correspondence = 0, merge_fail_deform = 0, merge_fail_cut = 0, merge_fail_loops = 0,
           merge_fail_check = 0;
+  /// Exemplar elements left out because a whole output element already stands where they
+  /// correspond (merging two copies of one closed element only deforms it; see merge_whole).
+  index_t elements_skipped = 0;
+  /// Cells handed back to the seed search because the element whose centre lay there was dropped
+  /// (a later patch retries them with another translation instead of leaving a hole).
+  index_t cells_retried = 0;
+  /// Constrained quilting: elements reaching a little across a tile side, moved back inside.
+  index_t elements_nudged = 0;
   /// Adds every counter of `o`.
   mesh_quilt_stats& operator+=(const mesh_quilt_stats& o) {
     patches += o.patches;
@@ -51,6 +59,9 @@ struct mesh_quilt_stats {
     merge_fail_cut += o.merge_fail_cut;
     merge_fail_loops += o.merge_fail_loops;
     merge_fail_check += o.merge_fail_check;
+    elements_skipped += o.elements_skipped;
+    cells_retried += o.cells_retried;
+    elements_nudged += o.elements_nudged;
     return *this;
   }
 };

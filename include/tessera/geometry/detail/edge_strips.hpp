@@ -41,10 +41,11 @@ inline constexpr double strip_window_slack = 1e-12;
 inline constexpr double strip_clearance_fraction = 1e-7;
 
 struct strip_params {
-  double tile_size = 0;      ///< w_T
-  double half_height = 0;    ///< h_E / 2
-  double corner_margin = 0;  ///< crossing elements stay this far from the strip's ends
-  double snap = 0;           ///< vertices this close to the line are moved onto it
+  double tile_size = 0;            ///< w_T
+  double half_height = 0;          ///< h_E / 2
+  double corner_margin = 0;        ///< crossing elements stay this far from the strip's ends
+  double snap = 0;                 ///< vertices this close to the line are moved onto it
+  bool deep_free_elements = true;  ///< free elements may reach past the strip into the tile
 };
 
 struct strip_candidate {
@@ -108,7 +109,10 @@ bool extract_strip(const quilt_exemplar& src, bool horizontal, const strip_param
     }
     const bool crossing = x.min[b] < c.across0 && x.max[b] > c.across0;
     if (!crossing) {
-      // a free element: kept when it lies inside one half, clear of the tile's sides
+      // a free element: kept when it lies on one side of the line, clear of the tile's sides, and
+      // starts inside the strip (it may reach past the strip's inner edge into the tile: the frame
+      // then keeps the exemplar's own arrangement along the border, which the interior synthesis,
+      // unable to place anything across a tile side, could not rebuild there)
       const double lo = x.min[b] - c.across0, hi = x.max[b] - c.across0;
       const bool inside_a = x.min[a] - c.along0 > eps && x.max[a] - c.along0 < w - eps;
       if (!inside_a) continue;
@@ -116,9 +120,10 @@ bool extract_strip(const quilt_exemplar& src, bool horizontal, const strip_param
       f.mesh = std::move(m);
       f.fixed.assign(f.mesh.positions.size(), 0);
       f.update_box();
-      if (lo > eps && hi <= hh)
+      const bool deep = sp.deep_free_elements;
+      if (lo > eps && (deep ? lo < hh : hi <= hh))
         out.positive.push_back(std::move(f));
-      else if (hi < -eps && lo >= -hh)
+      else if (hi < -eps && (deep ? hi > -hh : lo >= -hh))
         out.negative.push_back(std::move(f));
       continue;
     }

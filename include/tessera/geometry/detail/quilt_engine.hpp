@@ -49,6 +49,10 @@ struct mesh_quilt_params {
   std::uint64_t stream = 0;  // distinguishes tiles of one set
   bool constrained = false;
   merge_rules rules = merge_rules::tessera;
+  bool merge_whole = false;
+  int cell_retries = 1;
+  bool nudge_inside = true;
+  bool occupancy_aware = false;
 };
 
 // A class template (`Deferred` is always void) only so that its merge step, and the Eigen sparse
@@ -69,6 +73,7 @@ class basic_quilt_engine {
     cols_ = std::max<index_t>(1, static_cast<index_t>(std::ceil(domain.width() / cell_ - cell_rounding)));
     rows_ = std::max<index_t>(1, static_cast<index_t>(std::ceil(domain.height() / cell_ - cell_rounding)));
     occ_.assign(to_size(cols_ * rows_), 0);
+    retries_.assign(occ_.size(), 0);
     const vec3 ext = ex.bounds().extent();
     margin_ = 0.25 * ex.element_diameter();
     const double room = std::min(ext.x, ext.y) - 2 * margin_;
@@ -111,6 +116,15 @@ class basic_quilt_engine {
       for (index_t j = j0; j < j1; ++j)
         for (index_t i = i0; i < i1; ++i) occ_[to_size(j * cols_ + i)] = 1;
       occ_[to_size(seed)] = 1;
+      // a cell whose element was dropped goes back to the seed search (at most cell_retries times):
+      // the next patch there draws another translation instead of leaving a hole
+      for (index_t c : dropped_cells_)
+        if (c >= 0 && occ_[to_size(c)] && retries_[to_size(c)] < p_.cell_retries && !covered(c)) {
+          occ_[to_size(c)] = 0;
+          ++retries_[to_size(c)];
+          ++stats_.cells_retried;
+        }
+      dropped_cells_.clear();
       ++stats_.patches;
     }
     prog.report(1.0, "mesh quilting");
@@ -180,11 +194,14 @@ class basic_quilt_engine {
     // Two stages: every fourth sample ranks all candidates, then the best few are scored with all
     // samples (eq. 4). Candidates run in parallel; the shared running minimum only cuts off sums
     // that are already above the final threshold, so the result does not depend on the schedule.
+    // with the occupancy term, candidates within (1 + occupancy_tolerance_factor x tolerance) of the
+    // best are scored exactly, so that the choice among them does not depend on the schedule
+    const double tol = p_.tolerance * (p_.occupancy_aware ? occupancy_tolerance_factor : 1.0);
     auto search = [&](const std::vector<std::size_t>& which, std::size_t stride, std::vector<double>& costs) {
       std::atomic<double> best{std::numeric_limits<double>::infinity()};
       pfor_(static_cast<index_t>(which.size()), [&](index_t i) {
         const std::size_t c = which[to_size(i)];
-        const double v = cost(cands[c], best.load(std::memory_order_relaxed) * (1 + p_.tolerance), stride);
+        const double v = cost(cands[c], best.load(std::memory_order_relaxed) * (1 + tol), stride);
         costs[c] = v;
         double cur = best.load(std::memory_order_relaxed);
         while (v < cur && !best.compare_exchange_weak(cur, v, std::memory_order_relaxed)) {}
@@ -209,6 +226,21 @@ class basic_quilt_engine {
     std::vector<std::size_t> good;
     for (std::size_t c : all)
       if (costs[c] <= best * (1 + p_.tolerance)) good.push_back(c);
+    if (p_.occupancy_aware) {
+      // occupancy term: among the translations within (1 + tol) of the best, those that would drop
+      // the fewest exemplar elements (colliding with what stands, or across a tile side)
+      std::vector<std::size_t> wide;
+      std::vector<index_t> drops;
+      for (std::size_t c : all)
+        if (costs[c] <= best * (1 + tol)) {
+          wide.push_back(c);
+          drops.push_back(count_drops(cands[c], w));
+        }
+      const index_t fewest = *std::min_element(drops.begin(), drops.end());
+      good.clear();
+      for (std::size_t i = 0; i < wide.size(); ++i)
+        if (drops[i] == fewest) good.push_back(wide[i]);
+    }
     vec3 t = cands[good[to_size(rng.below(good.size(), 2, patch))]];
     if (p_.icp) {
       std::vector<vec3> pts;
@@ -245,6 +277,53 @@ class basic_quilt_engine {
     const auto j = static_cast<index_t>(std::floor((p.y - domain_.y0) / cell_));
     if (i < 0 || j < 0 || i >= cols_ || j >= rows_) return -1;
     return j * cols_ + i;
+  }
+  // The occupancy term of the translation search: how many exemplar elements (not long) whose
+  // centre the translation `t` puts in the new region of window `w` would be dropped, judged on
+  // XY boxes: one whose box overlaps a standing element's box (shrunk by a tenth of an element
+  // diameter) without being its duplicate (centres within a quarter diameter: skipped, not dropped),
+  // or, constrained, one reaching across a tile side by more than the nudge.
+  [[nodiscard]] index_t count_drops(vec3 t, const xy_rect& w) const {
+    const double d = ex_.element_diameter(), shrink = 0.1 * d, dup = 0.25 * d;
+    index_t n = 0;
+    for (index_t e = 0; e < ex_.num_elements(); ++e) {
+      if (ex_.is_long(e)) continue;
+      aabb b = ex_.elements()[to_size(e)].box;
+      b.min += t;
+      b.max += t;
+      const vec3 c = b.center();
+      if (!w.contains({c.x, c.y, 0}) || occupied({c.x, c.y, 0})) continue;
+      if (p_.constrained) {
+        const double over =
+            std::max({domain_.x0 - b.min.x, domain_.y0 - b.min.y, b.max.x - domain_.x1, b.max.y - domain_.y1});
+        if (over > (p_.nudge_inside ? nudge_diameters * d : 0.0)) {
+          ++n;
+          continue;
+        }
+      }
+      for (std::size_t i = 0; i < elems_.size(); ++i) {
+        if (!alive_[i]) continue;
+        const aabb& x = elems_[i].box;
+        const vec3 xc = x.center();
+        if (std::hypot(xc.x - c.x, xc.y - c.y) < dup) break;  // a duplicate: skipped
+        if (x.min.x + shrink < b.max.x - shrink && x.max.x - shrink > b.min.x + shrink &&
+            x.min.y + shrink < b.max.y - shrink && x.max.y - shrink > b.min.y + shrink) {
+          ++n;
+          break;
+        }
+      }
+    }
+    return n;
+  }
+
+  // True when some alive element's XY box holds the cell's centre (something stands there).
+  [[nodiscard]] bool covered(index_t c) const {
+    const vec3 p{domain_.x0 + (double(c % cols_) + 0.5) * cell_, domain_.y0 + (double(c / cols_) + 0.5) * cell_, 0};
+    for (std::size_t i = 0; i < elems_.size(); ++i)
+      if (alive_[i] && elems_[i].box.min.x <= p.x && elems_[i].box.max.x >= p.x && elems_[i].box.min.y <= p.y &&
+          elems_[i].box.max.y >= p.y)
+        return true;
+    return false;
   }
   [[nodiscard]] bool occupied(vec3 p) const {
     const index_t c = cell_of(p);
@@ -394,6 +473,10 @@ class basic_quilt_engine {
         for (const vec3& q : cin.mesh.positions) reaches_new = reaches_new || in_new(q);
         if (!mine.empty()) {
           if (!reaches_new) continue;
+          if (!p_.merge_whole && !ex_.is_long(e)) {  // a whole element stands there already
+            ++stats_.elements_skipped;
+            continue;
+          }
           texture_element cur = std::move(cin);
           std::vector<std::size_t> consumed;
           for (const auto& pr : mine) {
@@ -423,11 +506,27 @@ class basic_quilt_engine {
         const vec3 c = cin.box.center();
         if (!in_new({c.x, c.y, 0})) continue;
         bool ok = true;
-        if (p_.constrained)
+        if (p_.constrained) {
+          // an element reaching a little across a tile side is moved back inside by as much (at most
+          // nudge_diameters element diameters) rather than dropped: the bands along tile borders
+          // would otherwise stay emptier than the inside, since nothing may cross a tile side there
+          const double m = 2 * inside_margin_fraction * cell_;
+          const double dx =
+              std::max(0.0, domain_.x0 + m - cin.box.min.x) - std::max(0.0, cin.box.max.x - domain_.x1 + m);
+          const double dy =
+              std::max(0.0, domain_.y0 + m - cin.box.min.y) - std::max(0.0, cin.box.max.y - domain_.y1 + m);
+          if (p_.nudge_inside && (dx != 0 || dy != 0) &&
+              std::max(std::abs(dx), std::abs(dy)) <= nudge_diameters * ex_.element_diameter()) {
+            for (vec3& q : cin.mesh.positions) q += vec3{dx, dy, 0};
+            cin.update_box();
+            ++stats_.elements_nudged;
+          }
           for (const vec3& q : cin.mesh.positions)
             ok = ok && strictly_inside(domain_, q, inside_margin_fraction * cell_);
+        }
         if (!ok || intersects_alive(cin, {})) {
           ++stats_.elements_dropped;
+          if (!ex_.is_long(e)) dropped_cells_.push_back(cell_of({c.x, c.y, 0}));
           continue;
         }
         push(std::move(cin));
@@ -448,6 +547,11 @@ class basic_quilt_engine {
   /// Long elements (threads) are clipped this fraction of a cell inside the domain, so that their
   /// caps lie strictly inside it.
   static constexpr double long_clip_inset_cells = 1e-6;
+  /// Constrained quilting moves an element that reaches at most this many element diameters across a
+  /// tile side back inside (then checks it like any other).
+  static constexpr double nudge_diameters = 0.35;
+  /// The occupancy term chooses among translations within (1 + this x tolerance) of the best eq. 4.
+  static constexpr double occupancy_tolerance_factor = 3.0;
 
   const quilt_exemplar& ex_;
   xy_rect domain_;
@@ -457,6 +561,8 @@ class basic_quilt_engine {
   index_t cols_ = 1, rows_ = 1;
   int k_ = 2;
   std::vector<unsigned char> occ_;
+  std::vector<unsigned char> retries_;  // times each cell went back to the seed search
+  std::vector<index_t> dropped_cells_;  // cells of the elements the current patch dropped
   std::vector<texture_element> elems_;
   std::vector<unsigned char> alive_;
   std::vector<std::optional<triangle_bvh>> bvh_;

@@ -41,7 +41,7 @@ struct tile_frame_result {
 // horizontal one at all four corners.
 template <class Deferred = void>  // compiled only where tiles are built (see merge_pair)
 tile_frame_result build_frame(const std::vector<edge_strip>& hs, const std::vector<edge_strip>& vs, const wang_edges& e,
-                              double w, double hh, double cell) {
+                              double w, double hh, double cell, bool merge_free = true) {
   tile_frame_result r;
   struct part {
     std::vector<texture_element> elems;
@@ -82,6 +82,10 @@ tile_frame_result build_frame(const std::vector<edge_strip>& hs, const std::vect
       if (hits.empty()) {
         out.push_back(el);
         owner.push_back(i);
+        continue;
+      }
+      if (!merge_free) {  // a whole element already stands there (see mesh_quilt_options::merge_whole)
+        ++r.dropped;
         continue;
       }
       // merge with every element it hits, the frame element as C_T (its window is the old region)
