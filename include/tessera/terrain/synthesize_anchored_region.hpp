@@ -249,6 +249,7 @@ struct anchored_scratch {
   std::vector<std::int32_t> order, deferred, local, patch;
   std::vector<std::array<std::int32_t, 3>> corners, faces, neighbors;
   std::vector<detail::plane_triangle> shapes;
+  std::vector<detail::plane_triangle_inverse> inverses;
   anchored_vertex_table table;
 };
 inline anchored_scratch& anchored_thread_scratch() {
@@ -304,6 +305,8 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
   auto& ln = scr.neighbors;     // per i: neighbours' indices in the region (-1: none or another region)
   auto& lshape = scr.shapes;    // per i: plane triangle
   auto& lpatch = scr.patch;     // per i: placement (-1 unplaced, -2 waiting)
+  auto& linverse = scr.inverses;
+  const double tpu = plan.texels_per_unit, max_stretch = opts.max_stretch;
   queue.clear();
   table.reset(nfaces / 2 + 64);  // about one entry per vertex: half as many vertices as faces
   if (local.size() < detail::to_size(nf)) local.assign(detail::to_size(nf), -1);
@@ -311,6 +314,7 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
   lf.resize(nfaces);
   ln.resize(nfaces);
   lshape.resize(nfaces);
+  linverse.resize(nfaces);
   lpatch.assign(nfaces, -1);
   for (std::size_t i = 0; i < nfaces; ++i) local[detail::to_size(begin[i])] = static_cast<std::int32_t>(i);
   for (std::size_t i = 0; i < nfaces; ++i) {
@@ -322,10 +326,10 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
     }
     const auto& v = lf[i];
     lshape[i] = detail::to_plane_triangle(mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]));
+    linverse[i] = detail::invert_plane_triangle(lshape[i], tpu);
   }
   for (std::size_t i = 0; i < nfaces; ++i) local[detail::to_size(begin[i])] = -1;
   std::int32_t patches = 0;
-  const double tpu = plan.texels_per_unit, max_stretch = opts.max_stretch;
   const std::int32_t seed_face = plan.seed[detail::to_size(region)];
   std::size_t next_start = 0;
   auto fits = [&](const detail::tri_uv& t) {
@@ -353,7 +357,7 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
     const auto& nb = ln[li];
     const auto& fv = lf[li];
     const detail::plane_triangle& shape = lshape[li];
-    const detail::plane_triangle_inverse inverse = detail::invert_plane_triangle(shape, tpu);
+    const detail::plane_triangle_inverse& inverse = linverse[li];
     int placed = 0, oldest = -1;
     std::int32_t best_patch = -1, oldest_patch = std::numeric_limits<std::int32_t>::max();
     detail::tri_uv best_uv{};
@@ -468,23 +472,15 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
       detail::grow_by_stack(queue, deferred, place_face);
   }
   // placements and seams: a side is continuous when the neighbour is of this region and of the
-  // same placement (then both shared corners are the same table entries: the same coordinates, bit
-  // for bit)
+  // same placement (every corner of a face in placement p is the table's entry (vertex, p), so both
+  // shared corners have the same coordinates, bit for bit)
   for (std::size_t i = 0; i < nfaces; ++i) {
     const auto fi = detail::to_size(begin[i]);
     atlas.patch[fi] = lpatch[i];
     std::uint8_t bits = 0;
     for (std::size_t k = 0; k < 3; ++k) {
       const std::int32_t n = ln[i][k];
-      bool same = n >= 0 && lpatch[detail::to_size(n)] == lpatch[i];
-      if (same) {
-        const auto& cn = corners[detail::to_size(n)];
-        for (std::size_t e = 0; e < 2 && same; ++e) {
-          const std::size_t c = (k + e) % 3;
-          same = cn[corner_of(n, lf[i][c])] == corners[i][c];
-        }
-      }
-      if (!same) bits = static_cast<std::uint8_t>(bits | 1u << k);
+      if (n < 0 || lpatch[detail::to_size(n)] != lpatch[i]) bits = static_cast<std::uint8_t>(bits | 1u << k);
     }
     atlas.seam[fi] = bits;
   }
