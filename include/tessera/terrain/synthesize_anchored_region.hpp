@@ -141,33 +141,45 @@ inline tri_uv anchored_face_coords(const terrain_mesh& mesh, const anchored_fram
   return t;
 }
 
-/// The corners of face f placed across its side k (corners k, k + 1) from texture coordinates
-/// ta, tb of those two corners (kept as they are): the third corner where
-/// the face, turned about that side into the texture plane, puts it (counter-clockwise kept). `p`
-/// is the face in its own plane (to_plane_triangle of its corners 0, 1, 2). With `exact` the two
-/// side corners are instead rebuilt from the side's midpoint and direction so that the whole face
-/// is congruent (a new placement next to a neighbour whose side is slightly stretched). False for a
-/// degenerate side.
-inline bool anchored_unfold(const plane_triangle& p, int k, vec2 ta, vec2 tb, double tpu, bool exact,
+/// A face's sides in its own plane, for unfolding: side k runs from corner k to corner k + 1, and
+/// the third corner C = A + a e + b perp(e) with e = B - A (a, b in units of the side), len2 = |e|^2.
+struct unfold_sides {
+  std::array<double, 3> a{}, b{}, len2{};
+};
+inline unfold_sides to_unfold_sides(const plane_triangle& p) noexcept {
+  const vec2 P[3] = {{0, 0}, {p.l1, 0}, {p.x2, p.y2}};
+  unfold_sides u;
+  for (std::size_t k = 0; k < 3; ++k) {
+    const vec2 A = P[k], B = P[(k + 1) % 3], C = P[(k + 2) % 3];
+    const vec2 e = B - A, w = C - A;
+    u.len2[k] = e.x * e.x + e.y * e.y;
+    u.a[k] = (w.x * e.x + w.y * e.y) / u.len2[k];
+    u.b[k] = (e.x * w.y - e.y * w.x) / u.len2[k];
+  }
+  return u;
+}
+
+/// The corners of a face placed across its side k (corners k, k + 1) from texture coordinates
+/// ta, tb of those two corners (kept as they are): the third corner where the face, turned about
+/// that side into the texture plane, puts it (counter-clockwise kept), i.e. the side's
+/// (a, b) placement scaled to the side's true length about the texture side's midpoint. `u` is the
+/// face's to_unfold_sides. With `exact` the two side corners are instead rebuilt from the side's
+/// midpoint and direction so that the whole face is congruent (a new placement next to a neighbour
+/// whose side is slightly stretched). False for a degenerate side.
+inline bool anchored_unfold(const unfold_sides& u, int k, vec2 ta, vec2 tb, double tpu, bool exact,
                             std::array<vec2, 3>& out) noexcept {
-  // side k from A to B, C the third corner, in the face's own plane
-  const vec2 A = k == 0 ? vec2{0, 0} : k == 1 ? vec2{p.l1, 0} : vec2{p.x2, p.y2};
-  const vec2 B = k == 0 ? vec2{p.l1, 0} : k == 1 ? vec2{p.x2, p.y2} : vec2{0, 0};
-  const vec2 C = k == 0 ? vec2{p.x2, p.y2} : k == 1 ? vec2{0, 0} : vec2{p.l1, 0};
-  const vec2 e = B - A, w = C - A, d = tb - ta;
-  const double len2 = e.x * e.x + e.y * e.y, tlen2 = d.x * d.x + d.y * d.y;
+  const auto ks = to_size(k);
+  const vec2 d = tb - ta;
+  const double len2 = u.len2[ks], tlen2 = d.x * d.x + d.y * d.y;
   if (!(len2 > 0) || !(tlen2 > 0)) return false;
-  // C = A + a e + b perp(e) (a, b in units of the side), placed the same way on the texture side
-  // scaled to its true length about its midpoint: c = mid + (a - 1/2) |e| tpu u + b |e| tpu n
-  const double a = (w.x * e.x + w.y * e.y) / len2, b = (e.x * w.y - e.y * w.x) / len2;
   const double f = std::sqrt(len2 / tlen2) * tpu;  // |e| tpu / |d|
   const vec2 n{-d.y, d.x}, mid = (ta + tb) * 0.5;
-  const vec2 c = mid + d * ((a - 0.5) * f) + n * (b * f);
+  const vec2 c = mid + d * ((u.a[ks] - 0.5) * f) + n * (u.b[ks] * f);
   if (exact) {
     ta = mid - d * (0.5 * f);
     tb = mid + d * (0.5 * f);
   }
-  out[to_size(k)] = ta;
+  out[ks] = ta;
   out[to_size((k + 1) % 3)] = tb;
   out[to_size((k + 2) % 3)] = c;
   return true;
@@ -248,7 +260,7 @@ class anchored_vertex_table {
 struct anchored_scratch {
   std::vector<std::int32_t> order, deferred, local, patch;
   std::vector<std::array<std::int32_t, 3>> corners, faces, neighbors;
-  std::vector<detail::plane_triangle> shapes;
+  std::vector<detail::unfold_sides> sides;
   std::vector<detail::plane_triangle_inverse> inverses;
   anchored_vertex_table table;
 };
@@ -303,7 +315,7 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
   auto& corners = scr.corners;  // per i: table entries of its corners
   auto& lf = scr.faces;         // per i: vertex ids
   auto& ln = scr.neighbors;     // per i: neighbours' indices in the region (-1: none or another region)
-  auto& lshape = scr.shapes;    // per i: plane triangle
+  auto& lsides = scr.sides;     // per i: its sides for unfolding
   auto& lpatch = scr.patch;     // per i: placement (-1 unplaced, -2 waiting)
   auto& linverse = scr.inverses;
   const double tpu = plan.texels_per_unit, max_stretch = opts.max_stretch;
@@ -313,7 +325,7 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
   corners.resize(nfaces);
   lf.resize(nfaces);
   ln.resize(nfaces);
-  lshape.resize(nfaces);
+  lsides.resize(nfaces);
   linverse.resize(nfaces);
   lpatch.assign(nfaces, -1);
   for (std::size_t i = 0; i < nfaces; ++i) local[detail::to_size(begin[i])] = static_cast<std::int32_t>(i);
@@ -325,8 +337,10 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
       ln[i][k] = n >= 0 && n < nf ? local[detail::to_size(n)] : -1;
     }
     const auto& v = lf[i];
-    lshape[i] = detail::to_plane_triangle(mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]));
-    linverse[i] = detail::invert_plane_triangle(lshape[i], tpu);
+    const detail::plane_triangle shape =
+        detail::to_plane_triangle(mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]));
+    lsides[i] = detail::to_unfold_sides(shape);
+    linverse[i] = detail::invert_plane_triangle(shape, tpu);
   }
   for (std::size_t i = 0; i < nfaces; ++i) local[detail::to_size(begin[i])] = -1;
   std::int32_t patches = 0;
@@ -356,7 +370,7 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
     const auto f = begin[li];
     const auto& nb = ln[li];
     const auto& fv = lf[li];
-    const detail::plane_triangle& shape = lshape[li];
+    const detail::unfold_sides& shape = lsides[li];
     const detail::plane_triangle_inverse& inverse = linverse[li];
     int placed = 0, oldest = -1;
     std::int32_t best_patch = -1, oldest_patch = std::numeric_limits<std::int32_t>::max();
