@@ -75,8 +75,9 @@ TEST_CASE("synthesize_anchored_region: congruent, oriented, inside the exemplar,
       REQUIRE(((atlas.seam[fi] >> k) & 1) == ((atlas.seam[static_cast<std::size_t>(n)] >> side_of(n, f)) & 1));
     }
   }
-  // congruent unfolding on curved ground closes some loops beyond max_stretch: seams (94 % here)
-  REQUIRE(static_cast<double>(same) / static_cast<double>(shared) > 0.9);
+  // congruent unfolding on curved ground closes some loops beyond max_stretch: seams; the default
+  // max_stretch keeps the issue's 95 % continuity goal
+  REQUIRE(static_cast<double>(same) / static_cast<double>(shared) > 0.95);
 }
 
 namespace {

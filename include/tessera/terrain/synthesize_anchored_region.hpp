@@ -13,7 +13,7 @@
 //            On curved ground unfolding does not close up round a vertex (the angle defect, Gauss):
 //            when the third corner already has a coordinate in the placement, the face takes it and
 //            is then not quite congruent; it joins only if its stretch (texture_stretch.hpp) stays
-//            at most max_stretch (default 1.05), else it is a seam (another neighbour's placement,
+//            at most max_stretch (default 1.55), else it is a seam (another neighbour's placement,
 //            or a new placement)
 //   order    the paper's growth over face adjacency inside the region, from the region's seed
 //            face: each face taken up is placed and adds its unplaced neighbours of the same region
