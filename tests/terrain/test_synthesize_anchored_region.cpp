@@ -76,7 +76,7 @@ TEST_CASE("synthesize_anchored_region: congruent, oriented, inside the exemplar,
     }
   }
   // congruent unfolding on curved ground closes some loops beyond max_stretch: seams; the default
-  // max_stretch keeps the issue's 95 % continuity goal
+  // max_stretch keeps the issue's 95 % continuity goal (99.2 % here; 94 % with max_stretch 1.05)
   REQUIRE(static_cast<double>(same) / static_cast<double>(shared) > 0.95);
 }
 
