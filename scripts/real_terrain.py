@@ -88,6 +88,10 @@ def stats(path):
         "frame_ms_median": ms[len(ms) // 2],
         "frame_ms_max": ms[-1],
     }
+    if "stretch_max" in rows[0]:  # ground-anchored frames: the texture stretch of the faces in view
+        out["stretch_median_max"] = max(r["stretch_median"] for r in rows)
+        out["stretch_p95_max"] = max(r["stretch_p95"] for r in rows)
+        out["stretch_max"] = max(r["stretch_max"] for r in rows)
     print(json.dumps(out))
 
 

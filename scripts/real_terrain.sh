@@ -4,7 +4,8 @@
 # 344 x 403 samples; the data is not committed), turns it into a z-up OBJ in metres (275 772
 # faces), writes a 40-camera fly-over moving 1 % of the view distance per frame, and runs
 # `tessera terrain --anchor ground` and `--anchor screen` over it with --stats, then prints the
-# summaries (stability, continuity, level jump, frame time) and the texture stretch of frame 0.
+# summaries (stability, continuity, level jump, frame time, texture stretch) and, as an independent
+# check from the TSUV file alone, the anisotropy of frame 0's uv maps.
 #   scripts/real_terrain.sh [BUILD_DIR (default build)] [OUT_DIR (default BUILD_DIR/real_terrain)]
 # Needs apt-get (run `apt-get update` once first), Debian's /usr/bin/python3 with numpy, and a
 # built `tessera` (target tessera_cli).
@@ -30,5 +31,5 @@ for anchor in ground screen; do
   printf '%s: ' "$anchor"
   "$py" "$here/real_terrain.py" stats "$out/$anchor.jsonl"
 done
-printf 'stretch (ground, frame 0): '
+printf 'anisotropy s1 / s2 of the uv map (ground, frame 0, from the TSUV file alone; stretch_* above is the full measure): '
 "$py" "$here/real_terrain.py" stretch "$out/jacksboro.obj" "$out/ground/frame_0000.tsuv"

@@ -24,6 +24,7 @@
 #include <tessera/terrain/export_session_uvs.hpp>
 #include <tessera/terrain/render_anchored_frame.hpp>
 #include <tessera/terrain/terrain_session.hpp>
+#include <tessera/terrain/texture_stretch.hpp>
 
 #include <cstring>
 #include <filesystem>
@@ -219,6 +220,7 @@ int run_terrain_frames(const cli::arguments& args) {
     index_t visible = 0, resynthesized = 0;
     double continuous = 1;
     int jump = 0;
+    tessera::stretch_summary stretch;  // ground-anchored frames: the stretch of the faces in view
     const double ms = cli::time_ms([&] {
       if (anchor == "ground") {
         error = session->update(*mesh, cams[i], pool);
@@ -238,6 +240,18 @@ int run_terrain_frames(const cli::arguments& args) {
       if (!st.warning.ok()) std::fprintf(stderr, "tessera terrain: warning: %s\n", st.warning.message().c_str());
       visible = st.visible, resynthesized = st.resynthesized, continuous = st.continuous_fraction;
       jump = st.max_level_jump;
+      if (args.stats()) {
+        // the stretch (texture_stretch.hpp) of every face in view, in level-0 texels
+        std::vector<double> values;
+        for (const std::int32_t f : session->projection().visible) {
+          const auto fi = static_cast<std::size_t>(f);
+          const double scale = session->level_scale(session->level()[fi]);
+          std::array<float, 6> t = session->corner_uv()[fi];
+          for (float& c : t) c = static_cast<float>(c / scale);
+          values.push_back(tessera::face_stretch(*mesh, f, t, session->regions().texels_per_unit));
+        }
+        stretch = tessera::summarize_stretch(values);
+      }
       uv = tessera::export_session_uvs(*session);
       error = tessera::render_anchored_frame(*mesh, *session, *pyramid, frame, {.feather = *feather}, pool);
     } else {
@@ -257,16 +271,19 @@ int run_terrain_frames(const cli::arguments& args) {
       if (auto s = tessera::write_png(base.string() + ".png", frame); !s) return fail(s);
       if (auto s = tessera::write_terrain_uv_file(base.string() + ".tsuv", *uv); !s) return fail(s);
     }
-    if (args.stats())
-      cli::json_line()
-          .add("frame", static_cast<index_t>(i))
+    if (args.stats()) {
+      cli::json_line line;
+      line.add("frame", static_cast<index_t>(i))
           .add("frame_ms", ms)
           .add("visible", visible)
           .add("resynthesized", resynthesized)
           .add("stable_faces", i == 0 ? 0.0 : stable_fraction(prev, *uv))
           .add("continuous_edges", continuous)
-          .add("max_level_jump", jump)
-          .print();
+          .add("max_level_jump", jump);
+      if (anchor == "ground")
+        line.add("stretch_median", stretch.median).add("stretch_p95", stretch.p95).add("stretch_max", stretch.max);
+      line.print();
+    }
     prev = std::move(*uv);
   }
   if (args.has("--out"))
@@ -446,7 +463,8 @@ std::vector<cli::option_spec> terrain_options() {
       {"--frames-out", "DIR",
        "write DIR/frame_0000.png and DIR/frame_0000.tsuv per camera; with --anchor, --path or --frames-out, "
        "--stats prints one line per frame: frame, frame_ms, visible, resynthesized, stable_faces, "
-       "continuous_edges, max_level_jump"},
+       "continuous_edges, max_level_jump (ground: also stretch_median, stretch_p95, stretch_max of the faces in "
+       "view, 1 = congruent)"},
   };
   return o;
 }

@@ -83,6 +83,7 @@
 #include "terrain/synthesize_triangles.hpp"
 #include "terrain/terrain_camera.hpp"
 #include "terrain/terrain_session.hpp"
+#include "terrain/texture_stretch.hpp"
 
 // geometric textures (paper 000 §2-3); tile-set files are in io/geometric_tiles.hpp
 #include "geometry/bvh.hpp"

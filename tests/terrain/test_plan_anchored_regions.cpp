@@ -69,6 +69,8 @@ TEST_CASE("plan_anchored_regions: bad options and meshes are refused with a reas
   REQUIRE(msg(8, 8, {.texels_per_unit = NAN}).find("texels_per_unit") != std::string::npos);
   REQUIRE(msg(8, 8, {.region_size = 0.01}).find("region_size") != std::string::npos);
   REQUIRE(msg(8, 8, {.margin = -1}).find("margin") != std::string::npos);
+  REQUIRE(msg(8, 8, {.max_stretch = 0.99}).find("max_stretch") != std::string::npos);
+  REQUIRE(msg(8, 8, {.max_stretch = NAN}).find("max_stretch") != std::string::npos);
   mesh.faces[3][1] = 100000;
   REQUIRE(msg(8, 8, {}).find("face 3") != std::string::npos);
   const tessera::terrain_mesh empty;

@@ -62,6 +62,8 @@ TEST_CASE("terrain_session: a camera moving 1 % of the view distance per frame k
     REQUIRE(st.visible > 1000);
     REQUIRE(st.warning.ok());
     REQUIRE(st.max_level_jump <= 1);
+    // the issue's continuity goal, met by the default max_stretch (docs/terrain.md, "Slope
+    // stretch"): 96.6 % here, 92 % with max_stretch 1.05
     REQUIRE(st.continuous_fraction >= 0.95);
     const snapshot cur = take(s);
     if (i == 0) {

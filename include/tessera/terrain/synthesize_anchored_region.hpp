@@ -1,31 +1,39 @@
 // tessera/terrain/synthesize_anchored_region.hpp: ground-anchored triangle synthesis of one
-// world-anchored region (plan_anchored_regions.hpp): paper 003's stack-ordered growth (§2.3),
+// world-anchored region (plan_anchored_regions.hpp): paper 003's face-to-neighbour growth (§2.3),
 // moved from the screen to the ground so that the result is a pure function of (mesh, exemplar
 // size, options, face).
 //
-//   placement a plane frame in the world (origin, unit axes u, v in the plane, normal n) plus a
-//            texture offset: a vertex P of a face in the placement gets exemplar coordinates
-//            ((P - origin).u, (P - origin).v) * texels_per_unit + offset. Within a plane region this
-//            IS the unfolding of the faces across their neighbours, congruent; faces tilted
-//            against the plane by an angle a are stretched by at most 1 / cos a across the tilt,
-//            and a face joins a placement only while a <= max_tilt (default 40 degrees: 31 %).
-//            Exact unfolding cannot stay continuous on a curved surface (the faces round a vertex
-//            do not close up: Gauss), so the stretch is bounded instead; the coordinates of a
-//            vertex are one formula per placement, so two faces of a placement agree bit for bit
-//   order    a stack over face adjacency inside the region, from the region's seed face; each
-//            popped face is placed and pushes its unplaced neighbours of the same region in side
-//            order; when the stack and the waiting list are empty, the smallest unplaced face id of
-//            the region starts the next connected part. Nothing here depends on a camera
+//   congruent the paper copies each triangle congruently into the exemplar (on the screen a
+//            translation). On the ground a face is UNFOLDED across the side it shares with a placed
+//            neighbour: the shared corners keep the neighbour's coordinates (copied, bit for bit),
+//            the third corner is put where the face, turned about the shared side into the texture
+//            plane, puts it: a congruent copy of the face in its own plane, whatever its slope
+//   placement the faces grown from one start; a vertex has ONE coordinate per placement (a small
+//            table per region), so faces of a placement agree bit for bit on their shared corners.
+//            On curved ground unfolding does not close up round a vertex (the angle defect, Gauss):
+//            when the third corner already has a coordinate in the placement, the face takes it and
+//            is then not quite congruent; it joins only if its stretch (texture_stretch.hpp) stays
+//            at most max_stretch (default 1.55), else it is a seam (another neighbour's placement,
+//            or a new placement)
+//   order    the paper's growth over face adjacency inside the region, from the region's seed
+//            face: each face taken up is placed and adds its unplaced neighbours of the same region
+//            in side order; when none are left (and the waiting list is empty), the smallest
+//            unplaced face id of the region starts the next connected part. By default the faces
+//            are taken up oldest first (a queue, breadth_first): the region grows in rings, and a
+//            loop of faces closes next to where it opened, with a small unfolding mismatch; the
+//            paper's stack (newest first) snakes away and closes loops far from where they opened,
+//            where the mismatch has grown with the curvature in between (more faces fail
+//            max_stretch: more seams). Nothing here depends on a camera
 //   first    the seed face: its own plane (u along world axis_a projected into it, v = n x u) and
 //            a random offset (keyed by the face id) that puts it inside the exemplar
-//   next     the placement of a placed neighbour, if the face is tilted at most max_tilt against
-//            it and its coordinates stay inside the exemplar; of several, the oldest placement
+//   next     the placement of a placed neighbour, if the face's coordinates there stay inside the
+//            exemplar and within max_stretch; of several, the oldest placement
 //   wait     as synthesize_triangles: when none fits, the face waits once (defer_restarts)
-//   restart  otherwise a new placement in the face's own plane, its offset chosen so that the
-//            oldest placed neighbour's shared edge keeps its coordinates at its midpoint (a seam
-//            that only shears), then shifted back into the exemplar (a random shift keyed by the
-//            face id; an axis along which it fits is kept, keep_fitting_axis); sides between
-//            placements are seams the renderer blends
+//   restart  otherwise a new placement: the face unfolded congruently from its oldest placed
+//            neighbour, then shifted back into the exemplar (a random shift keyed by the face id;
+//            an axis along which it fits is kept, keep_fitting_axis), so the seam is a translation
+//            along one axis (none at all where the face only failed max_stretch); sides between
+//            placements (and between regions) are seams the renderer blends
 //
 // Coordinates are exemplar pixels at level 0 measured from the exemplar's centre; a face at
 // pyramid level l uses uv * scale(l), the same picture pre-filtered by the level.
@@ -34,7 +42,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <numbers>
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -46,6 +53,7 @@
 #include "detail/stack_growth.hpp"
 #include "plan_anchored_regions.hpp"
 #include "prepare_terrain_mesh.hpp"
+#include "texture_stretch.hpp"
 
 TESSERA_NAMESPACE_BEGIN
 
@@ -133,28 +141,132 @@ inline tri_uv anchored_face_coords(const terrain_mesh& mesh, const anchored_fram
   return t;
 }
 
-/// anchored_face_coords for face f next to face n (across f's side k) already in placement fr with
-/// corners `uv_n`: the two shared corners are copied from n (the same formula gave them), the
-/// third is computed.
-inline tri_uv anchored_face_coords_across(const terrain_mesh& mesh, const anchored_frame& fr, std::int32_t f, int k,
-                                          std::int32_t n, const tri_uv& uv_n, double tpu) {
-  const auto& fv = mesh.faces[to_size(f)];
-  const auto& nv = mesh.faces[to_size(n)];
-  tri_uv t;
-  for (std::size_t c = 0; c < 3; ++c) {
-    const std::int32_t v = fv[c];
-    std::size_t j = 3;
-    if (c != (to_size(k) + 2) % 3) j = nv[0] == v ? 0 : nv[1] == v ? 1 : nv[2] == v ? 2 : 3;
-    if (j < 3) {
-      t[2 * c] = uv_n[2 * j];
-      t[2 * c + 1] = uv_n[2 * j + 1];
-    } else {
-      const vec2 q = anchored_coord(fr, mesh.position(v), tpu);
-      t[2 * c] = static_cast<float>(q.x);
-      t[2 * c + 1] = static_cast<float>(q.y);
+/// A face's sides in its own plane, for unfolding: side k runs from corner k to corner k + 1, and
+/// the third corner C = A + a e + b perp(e) with e = B - A (a, b in units of the side), len2 = |e|^2.
+struct unfold_sides {
+  std::array<double, 3> a{}, b{}, len2{};
+};
+inline unfold_sides to_unfold_sides(const plane_triangle& p) noexcept {
+  const vec2 P[3] = {{0, 0}, {p.l1, 0}, {p.x2, p.y2}};
+  unfold_sides u;
+  for (std::size_t k = 0; k < 3; ++k) {
+    const vec2 A = P[k], B = P[(k + 1) % 3], C = P[(k + 2) % 3];
+    const vec2 e = B - A, w = C - A;
+    u.len2[k] = e.x * e.x + e.y * e.y;
+    u.a[k] = (w.x * e.x + w.y * e.y) / u.len2[k];
+    u.b[k] = (e.x * w.y - e.y * w.x) / u.len2[k];
+  }
+  return u;
+}
+
+/// The corners of a face placed across its side k (corners k, k + 1) from texture coordinates
+/// ta, tb of those two corners (kept as they are): the third corner where the face, turned about
+/// that side into the texture plane, puts it (counter-clockwise kept), i.e. the side's
+/// (a, b) placement scaled to the side's true length about the texture side's midpoint. `u` is the
+/// face's to_unfold_sides. With `exact` the two side corners are instead rebuilt from the side's
+/// midpoint and direction so that the whole face is congruent (a new placement next to a neighbour
+/// whose side is slightly stretched). False for a degenerate side.
+inline bool anchored_unfold(const unfold_sides& u, int k, vec2 ta, vec2 tb, double tpu, bool exact,
+                            std::array<vec2, 3>& out) noexcept {
+  const auto ks = to_size(k);
+  const vec2 d = tb - ta;
+  const double len2 = u.len2[ks], tlen2 = d.x * d.x + d.y * d.y;
+  if (!(len2 > 0) || !(tlen2 > 0)) return false;
+  const double f = std::sqrt(len2 / tlen2) * tpu;  // |e| tpu / |d|
+  const vec2 n{-d.y, d.x}, mid = (ta + tb) * 0.5;
+  const vec2 c = mid + d * ((u.a[ks] - 0.5) * f) + n * (u.b[ks] * f);
+  if (exact) {
+    ta = mid - d * (0.5 * f);
+    tb = mid + d * (0.5 * f);
+  }
+  out[ks] = ta;
+  out[to_size((k + 1) % 3)] = tb;
+  out[to_size((k + 2) % 3)] = c;
+  return true;
+}
+
+/// The coordinate of each vertex in each placement of the region being grown: an open-addressing
+/// table of keys (vertex, placement) to entry numbers, the coordinates (double) stored densely by
+/// entry number; kept per thread between calls (cleared key by key).
+class anchored_vertex_table {
+ public:
+  static constexpr std::uint64_t empty = ~std::uint64_t{0};
+  static std::uint64_t key(std::int32_t vertex, std::int32_t placement) noexcept {
+    return static_cast<std::uint64_t>(static_cast<std::uint32_t>(vertex)) << 32 | static_cast<std::uint32_t>(placement);
+  }
+  /// Empties the table, sized for about `expected` entries.
+  void reset(std::size_t expected) {
+    for (const std::size_t i : used_) keys_[i] = empty;
+    used_.clear();
+    coords_.clear();
+    std::size_t n = 64;
+    while (n < 2 * expected) n *= 2;
+    if (n > keys_.size()) resize(n);
+  }
+  /// The entry of k, or -1.
+  [[nodiscard]] std::int32_t find(std::uint64_t k) const noexcept {
+    const std::size_t mask = keys_.size() - 1;
+    for (std::size_t i = hash(k) & mask;; i = (i + 1) & mask) {
+      if (keys_[i] == k) return entry_[i];
+      if (keys_[i] == empty) return -1;
     }
   }
-  return t;
+  /// Inserts k (not yet present) with coordinate c; returns its entry.
+  std::int32_t insert(std::uint64_t k, vec2 c) {
+    if (2 * (used_.size() + 1) > keys_.size()) resize(2 * keys_.size());
+    const auto e = static_cast<std::int32_t>(coords_.size());
+    coords_.push_back(c);
+    place(k, e);
+    return e;
+  }
+  /// The coordinate of entry e.
+  [[nodiscard]] const vec2& coord(std::int32_t e) const noexcept { return coords_[to_size(e)]; }
+
+ private:
+  static std::size_t hash(std::uint64_t k) noexcept {
+    k ^= k >> 29;  // a multiply-xorshift mix: vertex ids and placements both reach the low bits
+    k *= 0xBF58476D1CE4E5B9ull;
+    return static_cast<std::size_t>(k ^ (k >> 32));
+  }
+  void place(std::uint64_t k, std::int32_t e) {
+    const std::size_t mask = keys_.size() - 1;
+    std::size_t i = hash(k) & mask;
+    while (keys_[i] != empty) i = (i + 1) & mask;
+    keys_[i] = k;
+    entry_[i] = e;
+    used_.push_back(i);
+  }
+  void resize(std::size_t n) {
+    std::vector<std::pair<std::uint64_t, std::int32_t>> old;
+    old.reserve(used_.size());
+    for (const std::size_t i : used_) old.emplace_back(keys_[i], entry_[i]);
+    keys_.assign(n, empty);
+    entry_.assign(n, -1);
+    used_.clear();
+    for (const auto& [k, e] : old) place(k, e);
+  }
+  std::vector<std::uint64_t> keys_ = std::vector<std::uint64_t>(64, empty);
+  std::vector<std::int32_t> entry_ = std::vector<std::int32_t>(64, -1);
+  std::vector<std::size_t> used_;
+  std::vector<vec2> coords_;
+};
+
+/// What growing a region needs besides the atlas, kept per thread between calls (regions grow in
+/// parallel; allocating it per region would cost more than growing a small one): the order's
+/// stack or queue and waiting list, the vertex table, and per face of the region its index in the
+/// region (`local`, -1 outside; sized to the mesh, reset entry by entry), and per face of the region
+/// its vertices, neighbours (as indices in the region), plane triangle, placement and the table
+/// entries of its corners (their coordinates in its placement).
+struct anchored_scratch {
+  std::vector<std::int32_t> order, deferred, local, patch;
+  std::vector<std::array<std::int32_t, 3>> corners, faces, neighbors;
+  std::vector<detail::unfold_sides> sides;
+  std::vector<detail::plane_triangle_inverse> inverses;
+  anchored_vertex_table table;
+};
+inline anchored_scratch& anchored_thread_scratch() {
+  thread_local anchored_scratch s;
+  return s;
 }
 
 inline bool anchored_fits_axis(const tri_uv& t, int axis, double half) noexcept {
@@ -190,143 +302,199 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
   const counter_rng rng(opts.seed, stream_id("terrain.synthesize_anchored_region"));
   const double hw = 0.5 * static_cast<double>(exemplar_width) - opts.margin,
                hh = 0.5 * static_cast<double>(exemplar_height) - opts.margin;
-  const auto r32 = static_cast<std::int32_t>(region);
   const std::int32_t* begin = plan.faces.data() + plan.first[detail::to_size(region)];
   const std::int32_t* end = plan.faces.data() + plan.first[detail::to_size(region) + 1];
-  auto& patch = atlas.patch;
-  auto mine = [&](std::int32_t n) { return n >= 0 && n < nf && plan.region[detail::to_size(n)] == r32; };
-  std::vector<std::int32_t> stack, deferred;
-  std::int32_t patches = 0;
-  std::vector<detail::anchored_frame> frames;  // placements of this region
-  const double tpu = plan.texels_per_unit, cos_tilt = std::cos(opts.max_tilt_degrees * std::numbers::pi / 180);
-  const double cos2_tilt = cos_tilt * cos_tilt;
-  // the region's mean plane (area-weighted normal): new placements lie in it unless the face is
-  // tilted against it by more than max_tilt (then in the face's own plane)
-  vec3 mean{};
-  for (const std::int32_t* f = begin; f != end; ++f) {
-    const auto& fv = mesh.faces[detail::to_size(*f)];
-    mean += cross(mesh.position(fv[1]) - mesh.position(fv[0]), mesh.position(fv[2]) - mesh.position(fv[0]));
+  const auto nfaces = detail::to_size(end - begin);
+  // the region's faces gathered into dense arrays by their index i in the region (faces ascend):
+  // the growth then reads a few hundred kilobytes in cache instead of the mesh's arrays at random
+  detail::anchored_scratch& scr = detail::anchored_thread_scratch();
+  auto& queue = scr.order;
+  auto& deferred = scr.deferred;
+  auto& table = scr.table;
+  auto& local = scr.local;
+  auto& corners = scr.corners;  // per i: table entries of its corners
+  auto& lf = scr.faces;         // per i: vertex ids
+  auto& ln = scr.neighbors;     // per i: neighbours' indices in the region (-1: none or another region)
+  auto& lsides = scr.sides;     // per i: its sides for unfolding
+  auto& lpatch = scr.patch;     // per i: placement (-1 unplaced, -2 waiting)
+  auto& linverse = scr.inverses;
+  const double tpu = plan.texels_per_unit, max_stretch = opts.max_stretch;
+  queue.clear();
+  table.reset(nfaces / 2 + 64);  // about one entry per vertex: half as many vertices as faces
+  if (local.size() < detail::to_size(nf)) local.assign(detail::to_size(nf), -1);
+  corners.resize(nfaces);
+  lf.resize(nfaces);
+  ln.resize(nfaces);
+  lsides.resize(nfaces);
+  linverse.resize(nfaces);
+  lpatch.assign(nfaces, -1);
+  for (std::size_t i = 0; i < nfaces; ++i) local[detail::to_size(begin[i])] = static_cast<std::int32_t>(i);
+  for (std::size_t i = 0; i < nfaces; ++i) {
+    const auto f = detail::to_size(begin[i]);
+    lf[i] = mesh.faces[f];
+    for (std::size_t k = 0; k < 3; ++k) {
+      const std::int32_t n = mesh.neighbors[f][k];
+      ln[i][k] = n >= 0 && n < nf ? local[detail::to_size(n)] : -1;
+    }
+    const auto& v = lf[i];
+    const detail::plane_triangle shape =
+        detail::to_plane_triangle(mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]));
+    lsides[i] = detail::to_unfold_sides(shape);
+    linverse[i] = detail::invert_plane_triangle(shape, tpu);
   }
-  mean = normalized(mean);
-  auto new_frame = [&](std::int32_t f) {
-    detail::anchored_frame fr = detail::anchored_face_frame(mesh, plan, f);
-    if (norm(mean) > 0.5 && dot(fr.n, mean) >= cos_tilt) fr = detail::anchored_plane_frame(plan, mean, fr.origin);
-    return fr;
-  };
+  for (std::size_t i = 0; i < nfaces; ++i) local[detail::to_size(begin[i])] = -1;
+  std::int32_t patches = 0;
   const std::int32_t seed_face = plan.seed[detail::to_size(region)];
-  const std::int32_t* next_start = begin;
-  // §2.3 step (2) on the ground for the popped face f: continue a placed neighbour's placement, wait,
-  // or place anew
-  auto place_face = [&](std::int32_t f, bool forced) {
-    const auto fi = detail::to_size(f);
-    if (patch[fi] >= 0) return true;
-    const auto& nb = mesh.neighbors[fi];
+  std::size_t next_start = 0;
+  auto fits = [&](const detail::tri_uv& t) {
+    return detail::anchored_fits_axis(t, 0, hw) && detail::anchored_fits_axis(t, 1, hh);
+  };
+  // the placement's coordinates are kept in double; a face's corners are their rounding to float
+  // (so faces sharing a corner in a placement agree bit for bit)
+  auto to_uv = [](const std::array<vec2, 3>& c3) {
+    detail::tri_uv t;
+    for (std::size_t c = 0; c < 3; ++c)
+      t[2 * c] = static_cast<float>(c3[c].x), t[2 * c + 1] = static_cast<float>(c3[c].y);
+    return t;
+  };
+  // the corner of neighbour n (a region index) holding vertex v (n shares a side with the face)
+  auto corner_of = [&](std::int32_t n, std::int32_t v) {
+    const auto& nv = lf[detail::to_size(n)];
+    return nv[0] == v ? std::size_t{0} : nv[1] == v ? std::size_t{1} : std::size_t{2};
+  };
+  // §2.3 step (2) on the ground for face i of the region taken up: continue a placed neighbour's
+  // placement, wait, or place anew
+  auto place_face = [&](std::int32_t i, bool forced) {
+    const auto li = detail::to_size(i);
+    if (lpatch[li] >= 0) return true;
+    const auto f = begin[li];
+    const auto& nb = ln[li];
+    const auto& fv = lf[li];
+    const detail::unfold_sides& shape = lsides[li];
+    const detail::plane_triangle_inverse& inverse = linverse[li];
     int placed = 0, oldest = -1;
     std::int32_t best_patch = -1, oldest_patch = std::numeric_limits<std::int32_t>::max();
-    const auto& fv3 = mesh.faces[fi];
-    // tilt test without a square root: n . m >= cos |n| for the face's (unnormalized) normal n
-    const vec3 normal =
-        cross(mesh.position(fv3[1]) - mesh.position(fv3[0]), mesh.position(fv3[2]) - mesh.position(fv3[0]));
-    const double len2 = dot(normal, normal);
-    auto tilted_within = [&](const vec3& m) {
-      const double d = dot(normal, m);
-      return len2 > 0 && d >= 0 && d * d >= cos2_tilt * len2;
-    };
     detail::tri_uv best_uv{};
+    std::array<vec2, 3> best_c3;
+    std::array<std::int32_t, 3> best_entries{};  // of the corners k, k + 1, k + 2 of side best_side
+    int best_side = 0;
     for (int k = 0; k < 3; ++k) {
       const std::int32_t n = nb[detail::to_size(k)];
-      if (!mine(n) || patch[detail::to_size(n)] < 0) continue;
+      if (n < 0 || lpatch[detail::to_size(n)] < 0) continue;
       ++placed;
-      const std::int32_t p = patch[detail::to_size(n)];
+      const std::int32_t p = lpatch[detail::to_size(n)];
       if (p < oldest_patch) {
         oldest_patch = p;
         oldest = k;
       }
       if (best_patch >= 0 && p >= best_patch) continue;
-      const auto& fr = frames[detail::to_size(p)];
-      if (!tilted_within(fr.n)) continue;
-      const detail::tri_uv t =
-          detail::anchored_face_coords_across(mesh, fr, f, k, n, atlas.uv[detail::to_size(n)], tpu);
-      if (detail::anchored_fits_axis(t, 0, hw) && detail::anchored_fits_axis(t, 1, hh)) {
-        best_patch = p;
-        best_uv = t;
-      }
+      // unfolded across side k from n (n's corners are the placement's coordinates of the shared
+      // vertices); the third corner takes the placement's coordinate if it has one
+      const auto& cn = corners[detail::to_size(n)];
+      const std::int32_t va = fv[detail::to_size(k)], vb = fv[detail::to_size((k + 1) % 3)],
+                         vc = fv[detail::to_size((k + 2) % 3)];
+      const std::int32_t ea = cn[corner_of(n, va)], eb = cn[corner_of(n, vb)];
+      std::array<vec2, 3> c3;
+      if (!detail::anchored_unfold(shape, k, table.coord(ea), table.coord(eb), tpu, false, c3)) continue;
+      const std::size_t kc = detail::to_size((k + 2) % 3);
+      const std::int32_t known = table.find(detail::anchored_vertex_table::key(vc, p));
+      if (known >= 0) c3[kc] = table.coord(known);
+      const detail::tri_uv t = to_uv(c3);
+      if (!fits(t)) continue;
+      if (!detail::plane_triangle_within(inverse, t, max_stretch)) continue;
+      best_patch = p;
+      best_uv = t;
+      best_c3 = c3;
+      best_entries = {ea, eb, known};
+      best_side = k;
     }
     if (best_patch >= 0) {
-      atlas.uv[fi] = best_uv;
-      patch[fi] = best_patch;
+      atlas.uv[detail::to_size(f)] = best_uv;
+      lpatch[li] = best_patch;
+      // the one corner the placement did not hold yet (the other two came from the neighbour)
+      const std::size_t kc = detail::to_size((best_side + 2) % 3);
+      if (best_entries[2] < 0)
+        best_entries[2] = table.insert(detail::anchored_vertex_table::key(fv[kc], best_patch), best_c3[kc]);
+      auto& ce = corners[li];
+      for (std::size_t j = 0; j < 3; ++j) ce[(detail::to_size(best_side) + j) % 3] = best_entries[j];
     } else if (opts.defer_restarts && placed > 0 && !forced) {
-      if (patch[fi] == -1) {
-        patch[fi] = -2;
-        deferred.push_back(f);
+      if (lpatch[li] == -1) {
+        lpatch[li] = -2;
+        deferred.push_back(i);
         ++st.deferred;
       }
       return true;
     } else {
-      // a new placement in the face's own plane; next to a placed neighbour, the midpoint of the
-      // shared edge keeps its coordinates (the seam only shears), then shifted into the exemplar
-      detail::anchored_frame fr = new_frame(f);
+      // a new placement: the face congruent, unfolded from its oldest placed neighbour (or, with
+      // none, in its own plane's world-anchored frame), then shifted into the exemplar
       const double half[2] = {hw, hh};
       bool keep[2] = {false, false};
+      std::array<vec2, 3> c3;
+      bool have = false;
       if (oldest >= 0) {
-        const auto& fv = mesh.faces[fi];
-        const vec3 mid =
-            (mesh.position(fv[detail::to_size(oldest)]) + mesh.position(fv[detail::to_size((oldest + 1) % 3)])) * 0.5;
-        const vec2 want = detail::anchored_coord(frames[detail::to_size(oldest_patch)], mid, tpu);
-        const vec2 got = detail::anchored_coord(fr, mid, tpu);
-        fr.du = want.x - got.x;
-        fr.dv = want.y - got.y;
-        const detail::tri_uv t = detail::anchored_face_coords(mesh, fr, f, tpu);
-        for (int axis = 0; axis < 2; ++axis)
-          keep[axis] = opts.keep_fitting_axis && detail::anchored_fits_axis(t, axis, half[axis]);
+        const std::int32_t n = nb[detail::to_size(oldest)];
+        const auto& cn = corners[detail::to_size(n)];
+        have = detail::anchored_unfold(shape, oldest, table.coord(cn[corner_of(n, fv[detail::to_size(oldest)])]),
+                                       table.coord(cn[corner_of(n, fv[detail::to_size((oldest + 1) % 3)])]), tpu, true,
+                                       c3);
+        if (have)
+          for (int axis = 0; axis < 2; ++axis)
+            keep[axis] = opts.keep_fitting_axis && detail::anchored_fits_axis(to_uv(c3), axis, half[axis]);
+      }
+      if (!have) {
+        const detail::anchored_frame own = detail::anchored_face_frame(mesh, plan, f);
+        for (std::size_t c = 0; c < 3; ++c) c3[c] = detail::anchored_coord(own, mesh.position(fv[c]), tpu);
       }
       bool big = false;
       for (int axis = 0; axis < 2; ++axis) {
         if (keep[axis]) continue;
-        const detail::tri_uv t = detail::anchored_face_coords(mesh, fr, f, tpu);
         double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-        for (std::size_t k = 0; k < 3; ++k) {
-          lo = std::min(lo, static_cast<double>(t[2 * k + detail::to_size(axis)]));
-          hi = std::max(hi, static_cast<double>(t[2 * k + detail::to_size(axis)]));
-        }
+        for (std::size_t c = 0; c < 3; ++c) lo = std::min(lo, c3[c][axis]), hi = std::max(hi, c3[c][axis]);
         const double a = -half[axis] - lo, b = half[axis] - hi;  // feasible shifts [a, b]
         if (b < a) big = true;
         const double shift = b < a ? 0.5 * (a + b) : a + rng.uniform(f, axis) * (b - a);
-        (axis == 0 ? fr.du : fr.dv) += shift;
+        for (std::size_t c = 0; c < 3; ++c) c3[c][axis] += shift;
       }
-      frames.push_back(fr);
-      atlas.uv[fi] = detail::anchored_face_coords(mesh, fr, f, tpu);
-      patch[fi] = patches++;
+      auto& ce = corners[li];
+      for (std::size_t c = 0; c < 3; ++c)
+        ce[c] = table.insert(detail::anchored_vertex_table::key(fv[c], patches), c3[c]);
+      atlas.uv[detail::to_size(f)] = to_uv(c3);
+      lpatch[li] = patches++;
       st.restarts += oldest >= 0 ? 1 : 0;
       st.oversized += big ? 1 : 0;
     }
     ++st.faces;
     for (int k = 0; k < 3; ++k) {
       const std::int32_t n = nb[detail::to_size(k)];
-      if (mine(n) && patch[detail::to_size(n)] < 0) stack.push_back(n);
+      if (n >= 0 && lpatch[detail::to_size(n)] < 0) queue.push_back(n);
     }
     return true;
   };
   while (true) {
     std::int32_t start = -1;
     if (patches == 0 && seed_face >= 0) {
-      start = seed_face;
+      start = static_cast<std::int32_t>(std::lower_bound(begin, end, seed_face) - begin);
     } else {
-      while (next_start != end && patch[detail::to_size(*next_start)] >= 0) ++next_start;
-      if (next_start == end) break;
-      start = *next_start;
+      while (next_start < nfaces && lpatch[next_start] >= 0) ++next_start;
+      if (next_start == nfaces) break;
+      start = static_cast<std::int32_t>(next_start);
     }
-    stack.push_back(start);
-    detail::grow_by_stack(stack, deferred, place_face);
+    queue.push_back(start);
+    if (opts.breadth_first)
+      detail::grow_by_queue(queue, deferred, place_face);
+    else
+      detail::grow_by_stack(queue, deferred, place_face);
   }
-  // seams: a side is continuous when the neighbour is of this region and placement (then both
-  // corners of the side have the same coordinates, one formula per placement)
-  for (const std::int32_t* f = begin; f != end; ++f) {
-    const auto fi = detail::to_size(*f);
+  // placements and seams: a side is continuous when the neighbour is of this region and of the
+  // same placement (every corner of a face in placement p is the table's entry (vertex, p), so both
+  // shared corners have the same coordinates, bit for bit)
+  for (std::size_t i = 0; i < nfaces; ++i) {
+    const auto fi = detail::to_size(begin[i]);
+    atlas.patch[fi] = lpatch[i];
     std::uint8_t bits = 0;
     for (std::size_t k = 0; k < 3; ++k) {
-      const std::int32_t n = mesh.neighbors[fi][k];
-      if (!mine(n) || patch[detail::to_size(n)] != patch[fi]) bits = static_cast<std::uint8_t>(bits | 1u << k);
+      const std::int32_t n = ln[i][k];
+      if (n < 0 || lpatch[detail::to_size(n)] != lpatch[i]) bits = static_cast<std::uint8_t>(bits | 1u << k);
     }
     atlas.seam[fi] = bits;
   }

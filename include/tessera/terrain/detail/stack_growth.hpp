@@ -37,5 +37,24 @@ bool grow_by_stack(std::vector<std::int32_t>& stack, std::vector<std::int32_t>& 
   return true;
 }
 
+/// grow_by_stack with a queue instead of the stack: faces are taken up oldest first, so the part
+/// grows breadth first, in rings round its start (the ground-anchored mode's default: its
+/// unfolding closes each loop next to where it opened, see synthesize_anchored_region.hpp).
+/// `queue` is emptied on return.
+template <class Visit>
+bool grow_by_queue(std::vector<std::int32_t>& queue, std::vector<std::int32_t>& deferred, Visit&& visit) {
+  deferred.clear();
+  std::size_t head = 0, next_deferred = 0;
+  bool ok = true;
+  while (ok && (head < queue.size() || next_deferred < deferred.size())) {
+    if (head < queue.size())
+      ok = visit(queue[head++], false);
+    else
+      ok = visit(deferred[next_deferred++], true);
+  }
+  queue.clear();
+  return ok;
+}
+
 }  // namespace detail
 TESSERA_NAMESPACE_END
