@@ -149,7 +149,7 @@ TEST_CASE("thread pool: absurd thread counts are clamped, not obeyed", "[executo
   REQUIRE(sum.load() == 999 * 1000 / 2);
 }
 
-TEST_CASE("thread pool: polling and sleeping workers give the same loops; a polling pool stops at once",
+TEST_CASE("thread pool: polling and sleeping workers give the same loops, and a polling pool stops at once",
           "[executor]") {
   using std::chrono::microseconds;
   for (microseconds spin : {microseconds{0}, microseconds{-5}, microseconds{2000}, microseconds{3600000000LL}}) {
