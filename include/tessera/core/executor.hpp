@@ -125,7 +125,7 @@ class thread_pool_executor {
     }
     wake_.notify_all();
     run_chunks(j);
-    poll_until_done();
+    poll([&] { return busy_.load(std::memory_order_acquire) == 0; });
     {
       std::unique_lock<std::mutex> lock(mutex_);
       done_.wait(lock, [&] { return busy_ == 0; });
@@ -169,23 +169,13 @@ class thread_pool_executor {
     detail::inside_parallel_for = false;
   }
 
-  // Polls (yielding) until a loop newer than `seen` is posted, the pool stops or spin_ has passed.
-  void poll_for_work(std::uint64_t seen) const {
+  // Polls (yielding the core) until done() holds or spin_ has passed; the condition-variable wait
+  // that follows is then free when it already holds.
+  template <class Done>
+  void poll(Done done) const {
     if (spin_.count() == 0) return;
     const auto until = std::chrono::steady_clock::now() + spin_;
-    for (int i = 1;; ++i) {
-      if (generation_.load(std::memory_order_acquire) != seen || stop_.load(std::memory_order_acquire)) return;
-      if (i % 16 == 0 && std::chrono::steady_clock::now() >= until) return;
-      std::this_thread::yield();
-    }
-  }
-
-  // The caller's side of the same: polls until the workers have finished the loop or spin_ has passed.
-  void poll_until_done() const {
-    if (spin_.count() == 0) return;
-    const auto until = std::chrono::steady_clock::now() + spin_;
-    for (int i = 1;; ++i) {
-      if (busy_.load(std::memory_order_acquire) == 0) return;
+    for (int i = 1; !done(); ++i) {
       if (i % 16 == 0 && std::chrono::steady_clock::now() >= until) return;
       std::this_thread::yield();
     }
@@ -194,7 +184,8 @@ class thread_pool_executor {
   void worker_loop() {
     std::uint64_t seen = 0;
     for (;;) {
-      poll_for_work(seen);
+      poll(
+          [&] { return generation_.load(std::memory_order_acquire) != seen || stop_.load(std::memory_order_acquire); });
       job* j = nullptr;
       {
         std::unique_lock<std::mutex> lock(mutex_);
