@@ -8,6 +8,9 @@
 #include <utility>
 
 #include <catch2/catch.hpp>
+#include "../support/test_support.hpp"
+
+using tessera_test::mentions;
 
 using tessera::index_t;
 using tessera::status_code;
@@ -20,7 +23,6 @@ struct sized {
   index_t height() const { return h; }
   std::array<float, 3> read(index_t, index_t) const { return {}; }
 };
-bool mentions(const tessera::status& s, const std::string& text) { return s.message().find(text) != std::string::npos; }
 }  // namespace
 
 TEST_CASE("image_checks: valid extents pass", "[image_checks]") {

@@ -7,6 +7,9 @@
 #include <utility>
 
 #include <catch2/catch.hpp>
+#include "../support/test_support.hpp"
+
+using tessera_test::mentions;
 
 using tessera::index_t;
 using tessera::status_code;
@@ -32,7 +35,6 @@ struct procedural {
     return static_cast<int>((horizontal ? (r * 7 + c * 3) : (r * 5 + c * 11)) % (horizontal ? 3 : 2));
   }
 };
-bool mentions(const tessera::status& s, const std::string& t) { return s.message().find(t) != std::string::npos; }
 }  // namespace
 
 static_assert(tessera::TileColoring<stored_tile_coloring>);

@@ -8,6 +8,9 @@
 #include <vector>
 
 #include <catch2/catch.hpp>
+#include "../support/test_support.hpp"
+
+using tessera_test::mentions;
 
 using tessera::index_t;
 using tessera::status_code;
@@ -23,7 +26,6 @@ tri_mesh tetrahedron() {
   m.faces = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
   return m;
 }
-bool mentions(const tessera::status& s, const std::string& t) { return s.message().find(t) != std::string::npos; }
 }  // namespace
 
 static_assert(tessera::Mesh<tri_mesh> && tessera::UVMesh<tri_mesh>);

@@ -5,15 +5,11 @@
 #include <catch2/catch.hpp>
 
 #include <tessera/core/random.hpp>
+#include "../support/test_support.hpp"
+
+using tessera_test::hue_distance;
 
 using namespace tessera;
-
-namespace {
-double hue_distance(double a, double b) {
-  const double d = std::fmod(std::abs(a - b), 360.0);
-  return std::min(d, 360.0 - d);
-}
-}  // namespace
 
 TEST_CASE("HLS conversions: known colours and round trips", "[hls]") {
   const auto red = rgb_to_hls(1, 0, 0);

@@ -13,6 +13,9 @@
 #include <tessera/fabric/source_image.hpp>
 
 #include "fabric_test_support.hpp"
+#include "../support/test_support.hpp"
+
+using tessera_test::hue_distance;
 
 using namespace tessera;
 using fabric_test::random_image;
@@ -115,11 +118,6 @@ std::vector<double> lightness_of(const image_buffer<float, 3>& img) {
       l.push_back(hls_lightness(p[0], p[1], p[2]));
     }
   return l;
-}
-
-double hue_distance(double a, double b) {
-  const double d = std::fmod(std::abs(a - b), 360.0);
-  return std::min(d, 360.0 - d);
 }
 
 // A cat-mapped fabric with some colour: the typical input of the perturbation.

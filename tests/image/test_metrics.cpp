@@ -10,38 +10,21 @@
 #include <catch2/catch.hpp>
 #include <tessera/core/random.hpp>
 #include <tessera/image/exemplars.hpp>
+#include "../support/test_support.hpp"
+
+using tessera_test::crop;
+using tessera_test::exemplar;
+using tessera_test::user_image;
 
 using tessera::index_t;
 
 namespace {
-
-// A member-style user image: 16-bit RGB kept in a vector of arrays.
-struct user_image {
-  index_t w = 0, h = 0;
-  std::vector<std::array<std::uint16_t, 3>> px;
-  index_t width() const { return w; }
-  index_t height() const { return h; }
-  std::array<std::uint16_t, 3> read(index_t x, index_t y) const { return px[static_cast<std::size_t>(y * w + x)]; }
-};
-
-template <class T = std::uint8_t, int C = 3>
-tessera::image_buffer<T, C> exemplar(tessera::exemplar_kind kind, index_t size, std::uint64_t seed = 1) {
-  return tessera::make_exemplar<T, C>(kind, {.width = size, .height = size, .seed = seed}).value();
-}
 
 tessera::image_buffer<std::uint8_t, 3> noise(index_t w, index_t h, std::uint64_t seed) {
   tessera::image_buffer<std::uint8_t, 3> img(w, h);
   const tessera::counter_rng rng(seed);
   for (index_t i = 0; i < w * h * 3; ++i) img.data()[i] = static_cast<std::uint8_t>(rng.below(256, i));
   return img;
-}
-
-template <class T, int C>
-tessera::image_buffer<T, C> crop(const tessera::image_buffer<T, C>& src, index_t x0, index_t y0, index_t w, index_t h) {
-  tessera::image_buffer<T, C> out(w, h);
-  for (index_t y = 0; y < h; ++y)
-    for (index_t x = 0; x < w; ++x) out.write(x, y, src.read(x0 + x, y0 + y));
-  return out;
 }
 
 // Pearson correlation of the image with itself shifted by (dx, dy), all channels pooled.

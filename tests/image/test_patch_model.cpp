@@ -8,24 +8,14 @@
 
 #include <catch2/catch.hpp>
 #include <tessera/image/exemplars.hpp>
+#include "../support/test_support.hpp"
+
+using tessera_test::exemplar;
+using tessera_test::user_image;
 
 using tessera::index_t;
 
 namespace {
-
-// A member-style user image: 16-bit RGB in a vector of arrays.
-struct user_image {
-  index_t w = 0, h = 0;
-  std::vector<std::array<std::uint16_t, 3>> px;
-  index_t width() const { return w; }
-  index_t height() const { return h; }
-  std::array<std::uint16_t, 3> read(index_t x, index_t y) const { return px[static_cast<std::size_t>(y * w + x)]; }
-};
-
-template <class T = std::uint8_t, int C = 3>
-tessera::image_buffer<T, C> exemplar(tessera::exemplar_kind kind, index_t size, std::uint64_t seed = 1) {
-  return tessera::make_exemplar<T, C>(kind, {.width = size, .height = size, .seed = seed}).value();
-}
 
 constexpr int all_sides[4] = {tessera::side_north, tessera::side_east, tessera::side_south, tessera::side_west};
 

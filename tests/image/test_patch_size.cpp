@@ -12,15 +12,11 @@
 #include <catch2/catch.hpp>
 #include <tessera/core/random.hpp>
 #include <tessera/image/exemplars.hpp>
+#include "../support/test_support.hpp"
+
+using tessera_test::exemplar;
 
 using tessera::index_t;
-
-namespace {
-template <class T = std::uint8_t, int C = 3>
-tessera::image_buffer<T, C> exemplar(tessera::exemplar_kind kind, index_t size, std::uint64_t seed = 1) {
-  return tessera::make_exemplar<T, C>(kind, {.width = size, .height = size, .seed = seed}).value();
-}
-}  // namespace
 
 TEST_CASE("analyze_patch_size: candidates span a quarter to a half of the exemplar", "[patch_size]") {
   const auto ex = exemplar(tessera::exemplar_kind::rock, 64);

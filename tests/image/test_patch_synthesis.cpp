@@ -13,37 +13,16 @@
 #include <catch2/catch.hpp>
 #include <tessera/core/random.hpp>
 #include <tessera/image/exemplars.hpp>
+#include "../support/test_support.hpp"
+
+using tessera_test::crop;
+using tessera_test::exemplar;
+using tessera_test::user_image;
 
 using tessera::index_t;
 using tessera::seam_mode;
 
 namespace {
-
-// A member-style writable user image of 16-bit RGB.
-struct user_image {
-  index_t w = 0, h = 0;
-  std::vector<std::array<std::uint16_t, 3>> px;
-  user_image(index_t w_, index_t h_) : w(w_), h(h_), px(static_cast<std::size_t>(w_ * h_)) {}
-  index_t width() const { return w; }
-  index_t height() const { return h; }
-  std::array<std::uint16_t, 3> read(index_t x, index_t y) const { return px[static_cast<std::size_t>(y * w + x)]; }
-  void write(index_t x, index_t y, const std::array<std::uint16_t, 3>& p) {
-    px[static_cast<std::size_t>(y * w + x)] = p;
-  }
-};
-
-template <class T = std::uint8_t, int C = 3>
-tessera::image_buffer<T, C> exemplar(tessera::exemplar_kind kind, index_t size, std::uint64_t seed = 1) {
-  return tessera::make_exemplar<T, C>(kind, {.width = size, .height = size, .seed = seed}).value();
-}
-
-template <class T, int C>
-tessera::image_buffer<T, C> crop(const tessera::image_buffer<T, C>& src, index_t x0, index_t y0, index_t w, index_t h) {
-  tessera::image_buffer<T, C> out(w, h);
-  for (index_t y = 0; y < h; ++y)
-    for (index_t x = 0; x < w; ++x) out.write(x, y, src.read(x0 + x, y0 + y));
-  return out;
-}
 
 // A small model shared by several tests (built once).
 const tessera::patch_model<std::uint8_t, 3>& bricks_model() {
@@ -237,7 +216,7 @@ TEST_CASE("synthesize: generic outputs through image_traits", "[patch_synthesis]
   const tessera::patch_synthesis_options o{.origin = {3, 3}, .seed = 6};
   tessera::image_buffer<std::uint8_t, 3> direct(33, 29);
   REQUIRE(tessera::synthesize(m, direct, o).ok());
-  user_image user(33, 29);
+  user_image user{33, 29, std::vector<std::array<std::uint16_t, 3>>(33 * 29)};
   tessera::thread_pool_executor pool(2);
   REQUIRE(tessera::synthesize(m, user, o, pool).ok());
   std::vector<std::uint8_t> raw(33 * 29 * 4, 7);

@@ -15,7 +15,7 @@ using tessera::index_t;
 using tessera::tile_manifest;
 
 namespace {
-std::string scratch(const std::string& name) {
+std::string manifest_scratch(const std::string& name) {
   const auto dir = std::filesystem::path(TESSERA_TEST_OUTPUT_DIR) / "tiling" / name;
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
@@ -37,7 +37,7 @@ tile_manifest sample() {
 }  // namespace
 
 TEST_CASE("tile manifest: write then read round-trips, extra fields kept", "[tiling]") {
-  const auto dir = scratch("roundtrip");
+  const auto dir = manifest_scratch("roundtrip");
   const tile_manifest m = sample();
   REQUIRE(tessera::write_tile_manifest(dir, m).ok());
   for (const auto& t : m.tiles) touch(dir, t.file);
@@ -106,7 +106,7 @@ TEST_CASE("tile manifest: malformed and inconsistent files name the file", "[til
 }
 
 TEST_CASE("tile manifest: missing directory, manifest and tile files", "[tiling]") {
-  const auto dir = scratch("missing");
+  const auto dir = manifest_scratch("missing");
   auto none = tessera::read_tile_manifest(dir);
   REQUIRE(none.error().code() == tessera::status_code::io_error);
   REQUIRE_THAT(none.error().message(), Catch::Contains("tiles.json"));
@@ -172,7 +172,7 @@ TEST_CASE("tile manifest: tile files never leave the directory", "[tiling][bad_i
     REQUIRE_THAT(s.message(),
                  Catch::StartsWith("t.json: tile 1: file") && Catch::Contains("inside the tile directory"));
     // never written, never read: the JSON form of the same name is refused by the parser too
-    const auto dir = scratch("hostile");
+    const auto dir = manifest_scratch("hostile");
     REQUIRE_FALSE(tessera::write_tile_manifest(dir, m).ok());
     REQUIRE_FALSE(std::filesystem::exists(tessera::tile_manifest_path(dir)));
     std::string text = tessera::format_tile_manifest(m);
@@ -193,7 +193,7 @@ TEST_CASE("tile manifest: tile files never leave the directory", "[tiling][bad_i
 }
 
 TEST_CASE("tile directories: image and geometric sets refuse manifests pointing outside", "[tiling][bad_input]") {
-  const auto root = scratch("escape");
+  const auto root = manifest_scratch("escape");
   const auto dir = (std::filesystem::path(root) / "set").string();
   std::filesystem::create_directories(dir);
   // real files outside the directory: a manifest naming them must not read them
@@ -223,7 +223,7 @@ TEST_CASE("tile directories: image and geometric sets refuse manifests pointing 
 
 TEST_CASE("tile directories: an empty tile file is written and refused cleanly", "[tiling][bad_input]") {
   // found by the tile_dir fuzz target under UBSan: writing an empty view passed its null pointer to fwrite
-  const auto dir = scratch("empty_tile");
+  const auto dir = manifest_scratch("empty_tile");
   REQUIRE(tessera::detail::write_file(dir + "/tile_0.png", std::string_view{}).ok());
   REQUIRE(std::filesystem::file_size(dir + "/tile_0.png") == 0);
   REQUIRE(

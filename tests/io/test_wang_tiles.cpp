@@ -12,7 +12,7 @@
 using tessera::index_t;
 
 namespace {
-std::string scratch(const std::string& name) {
+std::string wang_scratch(const std::string& name) {
   const auto dir = std::filesystem::path(TESSERA_TEST_OUTPUT_DIR) / "wang_io" / name;
   std::filesystem::remove_all(dir);
   return dir.string();
@@ -23,7 +23,7 @@ TEST_CASE("wang tile io: save then load is bit-exact", "[wang]") {
   const auto ex = quilt_test::exemplar<std::uint8_t, 4>(tessera::exemplar_kind::dots, 40);
   auto set = tessera::build_wang_tiles(ex, {.tile_size = 16, .horizontal_colors = 2, .vertical_colors = 1});
   REQUIRE(set.ok());
-  const auto dir = scratch("roundtrip");
+  const auto dir = wang_scratch("roundtrip");
   REQUIRE(tessera::save_wang_tiles(dir, *set, {{"exemplar_seed", 1}}).ok());
   REQUIRE(std::filesystem::exists(std::filesystem::path(dir) / "tile_3.png"));
   auto back = tessera::load_wang_tiles<std::uint8_t, 4>(dir);
@@ -45,7 +45,7 @@ TEST_CASE("wang tile io: save then load is bit-exact", "[wang]") {
 TEST_CASE("wang tile io: missing and mismatched files are named", "[wang]") {
   const auto ex = quilt_test::exemplar(tessera::exemplar_kind::sand, 32);
   auto set = tessera::build_wang_tiles(ex, {.tile_size = 8, .horizontal_colors = 1, .vertical_colors = 2});
-  const auto dir = scratch("broken");
+  const auto dir = wang_scratch("broken");
   REQUIRE(tessera::save_wang_tiles(dir, *set).ok());
   // a tile of the wrong size
   REQUIRE(tessera::write_png((std::filesystem::path(dir) / "tile_1.png").string(),
@@ -63,7 +63,7 @@ TEST_CASE("wang tile io: missing and mismatched files are named", "[wang]") {
   REQUIRE(missing.error().code() == tessera::status_code::io_error);
   REQUIRE_THAT(missing.error().message(), Catch::Contains("tile_2.png"));
   // no directory at all
-  REQUIRE(tessera::load_wang_tiles<std::uint8_t, 3>(scratch("nothing")).error().code() ==
+  REQUIRE(tessera::load_wang_tiles<std::uint8_t, 3>(wang_scratch("nothing")).error().code() ==
           tessera::status_code::io_error);
   // a malformed manifest
   std::ofstream(std::filesystem::path(dir) / "tiles.json") << "{\"tile_size\": 8,";

@@ -21,6 +21,9 @@
 #include <tessera/terrain/build_exemplar_pyramid.hpp>
 #include <tessera/tiling/complete_tile_set.hpp>
 #include <tessera/tiling/hash_coloring.hpp>
+#include "../support/test_support.hpp"
+
+using tessera_test::mentions;
 
 using tessera::index_t;
 
@@ -30,8 +33,6 @@ template <class T, int C>
 tessera::image_buffer<T, C> flat(index_t w, index_t h, tessera::pixel<T, C> p) {
   return tessera::image_buffer<T, C>(w, h, p);
 }
-
-bool mentions(const tessera::status& s, const std::string& text) { return s.message().find(text) != std::string::npos; }
 
 // Builds a patch model of a flat exemplar and checks that synthesis reproduces the flat colour.
 template <class T, int C>
