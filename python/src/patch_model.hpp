@@ -39,6 +39,8 @@ struct synthesis_request {
   /// An array to render into (H x W x C, or H x W for one channel, of the model's dtype, writable,
   /// packed pixels in rows), or None for a new array.
   py::object out = py::none();
+  /// A dict to fill with the synthesis statistics and `synthesis_ms` (the C++ call alone), or None.
+  py::object stats = py::none();
 };
 
 /// Builds a model from an exemplar array of channel type T (GIL released while building).

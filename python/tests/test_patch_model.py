@@ -141,6 +141,18 @@ def test_synthesize_into_out(model):
     assert np.array_equal(wide[:, :48], fresh) and not wide[:, 48:].any()
 
 
+def test_synthesize_stats(model):
+    """stats=: filled with the figures of `tessera synth --stats` and the C++ call's time."""
+    st = {}
+    img = model.synthesize(96, 80, 3, 4, seed=2, stats=st)
+    assert np.array_equal(img, model.synthesize(96, 80, 3, 4, seed=2))  # stats change nothing
+    assert st["cells"] > 0 and st["placed"] + st["filled"] <= st["cells"]
+    assert 0 <= st["empty_intersections"] <= st["filled"]
+    assert st["synthesis_ms"] > 0 and st["fill_overlap_rms"] >= 0
+    with pytest.raises(TypeError, match="dict"):
+        model.synthesize(8, 8, stats=[])
+
+
 def test_synthesize_out_refused(model):
     with pytest.raises(TypeError, match="dtype"):
         model.synthesize(8, 8, out=np.zeros((8, 8, 3), dtype=np.float32))
