@@ -87,12 +87,14 @@ int main(int argc, char** argv) {
   if (!exemplar) return std::fprintf(stderr, "%s\n", exemplar.error().to_string().c_str()), 1;
   const auto prepared = prepare_quilt_exemplar(*exemplar);
   if (!prepared) return std::fprintf(stderr, "%s\n", prepared.error().to_string().c_str()), 1;
+  // [snippet:polycube_tiles_build]
   geometric_wang_options o;
-  o.axis_colors = {colors, colors, colors};
+  o.axis_colors = {colors, colors, colors};  // nX, nY, nZ: 2 (nX²nY² + nX²nZ² + nY²nZ²) tiles, 96 for 2
   o.tile_size = 6.4;
   o.quilt.seed = 3;
   thread_pool_executor pool;
-  const auto set = build_geometric_wang_tiles(*prepared, o, pool);
+  const auto set = build_geometric_wang_tiles(*prepared, o, pool);  // set->faces[i]: the face of tile i
+  // [/snippet]
   if (!set) return std::fprintf(stderr, "%s\n", set.error().to_string().c_str()), 1;
   const auto mismatches = tile_set_border_mismatch(*set);
   if (!mismatches) return std::fprintf(stderr, "%s\n", mismatches.error().to_string().c_str()), 1;
@@ -118,7 +120,10 @@ int main(int argc, char** argv) {
     po.tile_size = 1.0 / 3;
     const auto map = build_polycube_map(voxel_surface(shapes[k], 3), po);
     if (!map) return std::fprintf(stderr, "%s\n", map.error().to_string().c_str()), 1;
-    const auto tiling = tile_polycube(*map, *set, 7, pool);
+    // [snippet:polycube_tiles_assign]
+    const auto tiling = tile_polycube(*map, *set, 7, pool);  // colour the grid edges (seed 7), match tiles
+    // tiling->quads[q]: .tile, .face, .to_quad(p): tile-local p -> quad-local (u, v, h)
+    // [/snippet]
     if (!tiling) return std::fprintf(stderr, "%s\n", tiling.error().to_string().c_str()), 1;
     const tri_mesh covered = place_flat(*map, *set, *tiling);
     const std::string png = dir + "/axis_tiles_" + names[k] + "_" + kind + ".png";

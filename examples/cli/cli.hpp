@@ -242,8 +242,7 @@ class arguments {
     if (!has(name)) return std::vector<int>{2, 2};
     const std::string s = str(name);
     std::vector<double> v;
-    const std::string expected =
-        "two integers NH,NV or three NX,NY,NZ in [1, " + std::to_string(max_colors) + "]";
+    const std::string expected = "two integers NH,NV or three NX,NY,NZ in [1, " + std::to_string(max_colors) + "]";
     if (!split_numbers(s, ',', v) || (v.size() != 2 && v.size() != 3)) return bad(name, s, expected);
     std::vector<int> out;
     for (double c : v) {

@@ -56,7 +56,8 @@ bool has_concave(const polycube_map& m) {
   for (const auto& g : m.layout.edges) {
     const auto& a = m.layout.quads[static_cast<std::size_t>(g.quads[0])];
     const auto& b = m.layout.quads[static_cast<std::size_t>(g.quads[1])];
-    const auto la = m.charts[static_cast<std::size_t>(a.chart)].label, lb = m.charts[static_cast<std::size_t>(b.chart)].label;
+    const auto la = m.charts[static_cast<std::size_t>(a.chart)].label,
+               lb = m.charts[static_cast<std::size_t>(b.chart)].label;
     if (la == lb) continue;
     // b's interior direction from the edge, against a's normal: above a's plane means concave
     vec3 ca, cb;
@@ -125,7 +126,8 @@ TEST_CASE("polycube tiling: each quad gets the tile of its face whose edges matc
       const auto label = map.charts[static_cast<std::size_t>(map.layout.quads[q].chart)].label;
       REQUIRE(p.face == label);
       REQUIRE(set.faces[static_cast<std::size_t>(p.tile)] == static_cast<int>(label));
-      for (int s = 0; s < 4; ++s) REQUIRE(set.edges[static_cast<std::size_t>(p.tile)][s] == coloring.edge_color(static_cast<index_t>(q), s));
+      for (int s = 0; s < 4; ++s)
+        REQUIRE(set.edges[static_cast<std::size_t>(p.tile)][s] == coloring.edge_color(static_cast<index_t>(q), s));
       // the tile's square lands on the quad's unit square, corner for corner, height along the normal
       REQUIRE(p.to_quad({0, 0, 0}) == vec3{0, 0, 0});
       REQUIRE(p.to_quad({set.tile_size, set.tile_size, 0}) == vec3{1, 1, 0});
@@ -150,7 +152,8 @@ TEST_CASE("polycube tiling: each quad gets the tile of its face whose edges matc
         const auto& p = tiling->quads[qi];
         const auto border = *tile_border_vertices(set.tiles[static_cast<std::size_t>(p.tile)], set.tile_size);
         for (index_t v : border.side[static_cast<std::size_t>(quad_tile_side(k))]) {
-          const vec3 uvh = p.to_quad(set.tiles[static_cast<std::size_t>(p.tile)].positions[static_cast<std::size_t>(v)]);
+          const vec3 uvh =
+              p.to_quad(set.tiles[static_cast<std::size_t>(p.tile)].positions[static_cast<std::size_t>(v)]);
           // on the quad's side k: the other coordinate is 0 or 1
           REQUIRE(uvh[1 - along] == (k >= 2 ? (along == 0 ? 1.0 : 0.0) : (along == 0 ? 0.0 : 1.0)));
           sides[i].insert({uvh[along], uvh.z});

@@ -121,8 +121,8 @@ result<wang_strip_plan> plan_wang_strips(const quilt_exemplar& exemplar, const g
   const index_t n =
       three ? axis_tile_count(o.axis_colors) : complete_tile_count(o.horizontal_colors, o.vertical_colors);
   if (n > (index_t{1} << 26))
-    return status::size_overflow(detail::cat("geometric wang tiles: the colours make ", n,
-                                             " tiles, more than tessera builds (2^26)"));
+    return status::size_overflow(
+        detail::cat("geometric wang tiles: the colours make ", n, " tiles, more than tessera builds (2^26)"));
   if (!(o.tile_size > 0) || !std::isfinite(o.tile_size))
     return status::invalid_argument(detail::cat("geometric wang tiles: tile_size must be > 0, got ", o.tile_size));
   if (exemplar.num_elements() == 0)
@@ -243,8 +243,8 @@ result<geometric_tile_set> build_geometric_wang_tiles(const quilt_exemplar& exem
       const auto& vs = three ? plan->axis.vertical[detail::to_size(ax[1])] : plan->vs;
       set.edges[detail::to_size(t)] = e;
       if (three) set.faces[detail::to_size(t)] = at.face;
-      auto fr = detail::build_frame(hs, vs, e, o.tile_size, plan->sp.half_height, exemplar.cell_size(),
-                                    o.quilt.merge_whole);
+      auto fr =
+          detail::build_frame(hs, vs, e, o.tile_size, plan->sp.half_height, exemplar.cell_size(), o.quilt.merge_whole);
       frames[detail::to_size(t)] = {fr.merges_attempted, fr.merged, fr.dropped};
       mesh_quilt_options qo = o.quilt;
       qo.progress = {};
@@ -290,7 +290,8 @@ inline result<geometric_tile_set> face_tile_set(const geometric_tile_set& set, i
   if (!set.three_axis()) return status::invalid_argument("face_tile_set: the tile set is planar, not three-axis");
   if (face < 0 || face >= cube_faces)
     return status::out_of_range(detail::cat("face_tile_set: face ", face, " is outside [0, 6)"));
-  if (auto s = validate_axis_color_counts(set.axis_colors); !s) return status(s.code(), detail::cat("face_tile_set: ", s.message()));
+  if (auto s = validate_axis_color_counts(set.axis_colors); !s)
+    return status(s.code(), detail::cat("face_tile_set: ", s.message()));
   const index_t first = axis_face_first_tile(face, set.axis_colors), n = axis_face_tile_count(face, set.axis_colors);
   if (set.tiles.size() != set.edges.size() || set.faces.size() != set.tiles.size() ||
       static_cast<index_t>(set.tiles.size()) != axis_tile_count(set.axis_colors))

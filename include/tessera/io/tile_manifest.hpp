@@ -161,7 +161,8 @@ inline status validate_tile_manifest(const tile_manifest& m, std::string_view na
       return bad("tile index ", t.index, " is outside [0, ", m.tiles.size(), ") (indices must be 0..n-1)");
     if (seen[detail::to_size(t.index)]++) return bad("tile index ", t.index, " appears twice");
     if (three) {
-      if (auto s = validate_axis_tile({t.face, t.edges}, m.axis_colors); !s) return bad("tile ", t.index, ": ", s.message());
+      if (auto s = validate_axis_tile({t.face, t.edges}, m.axis_colors); !s)
+        return bad("tile ", t.index, ": ", s.message());
     } else if (t.face != -1) {
       return bad("tile ", t.index, ": a planar set's tiles have no face");
     } else if (auto s = validate_wang_edges(t.edges, m.horizontal_colors, m.vertical_colors); !s) {
@@ -289,8 +290,9 @@ inline std::string format_tile_manifest(const tile_manifest& m) {
   std::string out = "{\n";
   const bool three = m.axis_colors != axis_color_counts{0, 0, 0};
   if (three)
-    out += detail::cat("  \"version\": 2,\n  \"tile_size\": ", detail::json_number(m.tile_size), ",\n  \"axis_colors\": [",
-                       m.axis_colors[0], ", ", m.axis_colors[1], ", ", m.axis_colors[2], "],\n");
+    out +=
+        detail::cat("  \"version\": 2,\n  \"tile_size\": ", detail::json_number(m.tile_size), ",\n  \"axis_colors\": [",
+                    m.axis_colors[0], ", ", m.axis_colors[1], ", ", m.axis_colors[2], "],\n");
   else
     out += detail::cat("  \"tile_size\": ", detail::json_number(m.tile_size),
                        ",\n  \"horizontal_colors\": ", m.horizontal_colors,

@@ -81,7 +81,8 @@ inline status check_layout_for_tiling(const polycube_map& map) {
         return status::invalid_argument(
             cat("polycube tiling: quad ", q, " side ", k, " names grid edge ", e, ", outside [0, ", ne, ")"));
       const auto& g = L.edges[to_size(e)];
-      if (g.axis != ax[to_size(k % 2)] || (g.quads[0] != static_cast<index_t>(q) && g.quads[1] != static_cast<index_t>(q)))
+      if (g.axis != ax[to_size(k % 2)] ||
+          (g.quads[0] != static_cast<index_t>(q) && g.quads[1] != static_cast<index_t>(q)))
         return status::invalid_argument(cat("polycube tiling: quad ", q, " side ", k, " and grid edge ", e,
                                             " disagree (axis or quads): the layout does not belong to this map"));
     }
@@ -109,8 +110,8 @@ result<polycube_coloring> color_polycube_edges(const polycube_map& map, const ax
   const counter_rng rng(seed, stream_id("surface.polycube.edge_colors"));
   exec.parallel_for(0, static_cast<index_t>(L.edges.size()), [&](index_t e) {
     const grid_edge& g = L.edges[detail::to_size(e)];
-    out.edge_colors[detail::to_size(e)] = static_cast<int>(
-        rng.below(static_cast<std::uint64_t>(colors[detail::to_size(g.axis)]), g.axis, g.origin[0], g.origin[1], g.origin[2]));
+    out.edge_colors[detail::to_size(e)] = static_cast<int>(rng.below(
+        static_cast<std::uint64_t>(colors[detail::to_size(g.axis)]), g.axis, g.origin[0], g.origin[1], g.origin[2]));
   });
   out.quad_colors.resize(L.quads.size());
   for (std::size_t q = 0; q < L.quads.size(); ++q)
@@ -209,9 +210,9 @@ result<polycube_tiling> assign_polycube_tiles(const polycube_map& map, const geo
       const auto& g = L.edges[detail::to_size(L.quads[q].edges[detail::to_size(k)])];
       const int c = static_cast<int>(coloring.edge_color(static_cast<index_t>(q), quad_tile_side(k)));
       if (c < 0 || c >= n[detail::to_size(g.axis)])
-        return status::out_of_range(detail::cat("assign_polycube_tiles: quad ", q, " ",
-                                                side_name(quad_tile_side(k)), " side (along ", "XYZ"[g.axis],
-                                                ") has colour ", c, ", outside [0, ", n[detail::to_size(g.axis)], ")"));
+        return status::out_of_range(detail::cat("assign_polycube_tiles: quad ", q, " ", side_name(quad_tile_side(k)),
+                                                " side (along ", "XYZ"[g.axis], ") has colour ", c, ", outside [0, ",
+                                                n[detail::to_size(g.axis)], ")"));
       int& e = edge_color[detail::to_size(L.quads[q].edges[detail::to_size(k)])];
       if (e >= 0 && e != c)
         return status::invalid_argument(detail::cat("assign_polycube_tiles: the two quads of grid edge ",
@@ -233,10 +234,9 @@ result<polycube_tiling> assign_polycube_tiles(const polycube_map& map, const geo
                   coloring.edge_color(static_cast<index_t>(q), side_west)};
     const index_t t = lookup[detail::to_size(axis_tile_index(want, n))];
     if (t < 0)
-      return status::invalid_argument(detail::cat("assign_polycube_tiles: quad ", q, " (face ",
-                                                  cube_face_name(want.face), ") needs edges [", want.edges.north, ", ",
-                                                  want.edges.east, ", ", want.edges.south, ", ", want.edges.west,
-                                                  "], which no tile of the set has"));
+      return status::invalid_argument(detail::cat(
+          "assign_polycube_tiles: quad ", q, " (face ", cube_face_name(want.face), ") needs edges [", want.edges.north,
+          ", ", want.edges.east, ", ", want.edges.south, ", ", want.edges.west, "], which no tile of the set has"));
     auto& p = out.quads[q];
     p.tile = t;
     p.face = face;

@@ -102,8 +102,8 @@ inline status validate_axis_tile(const axis_tile& t, const axis_color_counts& n)
   for (int side = 0; side < 4; ++side) {
     const int axis = cube_face_side_axis(t.face, side), count = n[static_cast<std::size_t>(axis)];
     if (t.edges[side] < 0 || t.edges[side] >= count)
-      return status::out_of_range(detail::cat("three-axis tile of face ", cube_face_name(t.face), ": ",
-                                              side_name(side), " colour ", t.edges[side], " is outside [0, ", count,
+      return status::out_of_range(detail::cat("three-axis tile of face ", cube_face_name(t.face), ": ", side_name(side),
+                                              " colour ", t.edges[side], " is outside [0, ", count,
                                               ") (the side runs along ", "XYZ"[axis], ")"));
   }
   return {};

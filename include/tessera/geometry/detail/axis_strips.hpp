@@ -76,17 +76,18 @@ status choose_axis_strips(const quilt_exemplar& src, const axis_color_counts& n,
         const edge_strip turned = quarter_turn(s);
         for (int b = 0; b < a; ++b)
           for (std::size_t k = 0; k < out.horizontal[to_size(b)].size(); ++k)
-            if (!strips_fit(s, out.vertical[to_size(b)][k], sp) || !strips_fit(out.horizontal[to_size(b)][k], turned, sp))
+            if (!strips_fit(s, out.vertical[to_size(b)][k], sp) ||
+                !strips_fit(out.horizontal[to_size(b)][k], turned, sp))
               return false;
         return true;
       };
       edge_strip s;
       if (!pick_strip(src, true, static_cast<std::uint64_t>(a), c, cands, mine, sp, rng, fits, s))
-        return status::invalid_argument(detail::cat(
-            "geometric wang tiles: no edge strip of width ", sp.tile_size, " and height ", 2 * sp.half_height,
-            " for colour ", c, " of the edges parallel to ", "XYZ"[a],
-            " avoids the tile corners and fits the strips of the other axes there (", cands.size(),
-            " candidate windows); try another tile_size, edge_height or corner_margin, or fewer colours"));
+        return status::invalid_argument(
+            detail::cat("geometric wang tiles: no edge strip of width ", sp.tile_size, " and height ",
+                        2 * sp.half_height, " for colour ", c, " of the edges parallel to ", "XYZ"[a],
+                        " avoids the tile corners and fits the strips of the other axes there (", cands.size(),
+                        " candidate windows); try another tile_size, edge_height or corner_margin, or fewer colours"));
       out.vertical[to_size(a)].push_back(quarter_turn(s));
       out.horizontal[to_size(a)].push_back(std::move(s));
       mine.push_back(&out.horizontal[to_size(a)].back());

@@ -185,7 +185,8 @@ status choose_strips(const quilt_exemplar& src, int horizontal_colors, int verti
   vs.reserve(static_cast<std::size_t>(vertical_colors));
   for (int c = 0; c < horizontal_colors; ++c) {
     edge_strip s;
-    if (!pick_strip(src, true, 1, c, hc, mine, sp, rng, [](const edge_strip&) { return true; }, s))
+    if (!pick_strip(
+            src, true, 1, c, hc, mine, sp, rng, [](const edge_strip&) { return true; }, s))
       return status::invalid_argument(
           detail::cat("geometric wang tiles: no horizontal edge strip of width ", sp.tile_size, " and height ",
                       2 * sp.half_height, " avoids elements crossing the tile corners (", hc.size(),
