@@ -19,37 +19,36 @@
 
 namespace {
 using tessera::vec3;
-// The outer surface of unit voxels, every unit face cut into s x s squares (two triangles each).
+// The outer surface of unit voxels, every unit face cut into s x s squares (two triangles each), each
+// face's squares counter-clockwise seen from outside (the face frames of tiling/axis_tile_set.hpp).
 tessera::tri_mesh voxel_surface(const std::set<std::array<int, 3>>& vox, int s) {
   tessera::tri_mesh m;
   std::map<std::array<int, 3>, tessera::index_t> id;
-  auto vert = [&](std::array<int, 3> g) {
-    auto [it, fresh] = id.emplace(g, m.num_vertices());
+  const auto vertex = [&](std::array<int, 3> g) {
+    const auto [it, fresh] = id.emplace(g, m.num_vertices());
     if (fresh) m.add_vertex({double(g[0]) / s, double(g[1]) / s, double(g[2]) / s});
     return it->second;
   };
   for (const auto& v : vox)
-    for (int a = 0; a < 3; ++a)
-      for (int sign = -1; sign <= 1; sign += 2) {
-        auto n = v;
-        n[a] += sign;
-        if (vox.count(n)) continue;
-        const int u = sign > 0 ? (a + 1) % 3 : (a + 2) % 3, w = sign > 0 ? (a + 2) % 3 : (a + 1) % 3;
-        for (int i = 0; i < s; ++i)
-          for (int j = 0; j < s; ++j) {
-            std::array<tessera::index_t, 4> q;
-            const int du[4] = {0, 1, 1, 0}, dw[4] = {0, 0, 1, 1};
-            for (int k = 0; k < 4; ++k) {
-              std::array<int, 3> g{v[0] * s, v[1] * s, v[2] * s};
-              if (sign > 0) g[a] += s;
-              g[u] += i + du[k];
-              g[w] += j + dw[k];
-              q[k] = vert(g);
-            }
-            m.add_face(q[0], q[1], q[2]);
-            m.add_face(q[0], q[2], q[3]);
-          }
+    for (int f = 0; f < tessera::cube_faces; ++f) {
+      const int a = f / 2, outward = f % 2 == 0 ? 1 : 0;
+      auto beyond = v;
+      beyond[a] += 2 * outward - 1;
+      if (vox.count(beyond)) continue;  // an inner face
+      const auto ax = tessera::cube_face_axes(f);
+      for (int c = 0; c < s * s; ++c) {
+        std::array<tessera::index_t, 4> q;
+        for (int k = 0; k < 4; ++k) {
+          std::array<int, 3> g{v[0] * s, v[1] * s, v[2] * s};
+          g[a] += outward * s;
+          g[ax[0]] += c % s + (k == 1 || k == 2 ? 1 : 0);
+          g[ax[1]] += c / s + (k >= 2 ? 1 : 0);
+          q[k] = vertex(g);
+        }
+        m.add_face(q[0], q[1], q[2]);
+        m.add_face(q[0], q[2], q[3]);
       }
+    }
   return m;
 }
 
@@ -127,9 +126,8 @@ int main(int argc, char** argv) {
     if (!tiling) return std::fprintf(stderr, "%s\n", tiling.error().to_string().c_str()), 1;
     const tri_mesh covered = place_flat(*map, *set, *tiling);
     const std::string png = dir + "/axis_tiles_" + names[k] + "_" + kind + ".png";
-    if (auto s = write_mesh_preview(png, covered,
-                                    {.width = 800, .height = 700, .azimuth_degrees = -35, .elevation_degrees = 30},
-                                    pool);
+    if (auto s = write_mesh_preview(
+            png, covered, {.width = 800, .height = 700, .azimuth_degrees = -35, .elevation_degrees = 30}, pool);
         !s)
       return std::fprintf(stderr, "%s\n", s.to_string().c_str()), 1;
     std::printf("%s: %zu quads, %lld different tiles -> %s\n", names[k], tiling->quads.size(),
