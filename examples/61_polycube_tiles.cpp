@@ -1,8 +1,8 @@
 // Example 61: three-axis geometric Wang tiles on polycube surfaces (paper 000 §3.1, §4-5): the complete
 // set for two colours per axis (96 tiles) laid out one row per cube face, then the polycubes of a cube
 // and of an L-shaped block (convex and concave edges) coloured and tiled, each tile placed flat on its
-// quad (no shell map: across a polycube edge the two halves of an element stand at 90 degrees, joined
-// only on the edge line).
+// quad over the polycube surface (no shell map: across a polycube edge the two halves of an element
+// stand at 90 degrees, joined only on the edge line).
 //   example_61_polycube_tiles [OUT_DIR] [rings|stones] [NX,NY,NZ colours: 2 (default) or 1]
 #include <array>
 #include <cstdio>
@@ -13,6 +13,7 @@
 
 #include <tessera/geometry/geometric_wang_tiles.hpp>
 #include <tessera/geometry/mesh_exemplars.hpp>
+#include <tessera/geometry/tile_geometric_plane.hpp>
 #include <tessera/io/mesh_preview.hpp>
 #include <tessera/surface/build_polycube_map.hpp>
 #include <tessera/surface/polycube_tiling.hpp>
@@ -109,7 +110,9 @@ int main(int argc, char** argv) {
     layout.append(set->tiles[i], vec3{col * (w + gap), (5 - row) * (w + gap), 0});
   }
   const std::string set_png = dir + "/axis_tileset_" + kind + ".png";
-  if (auto s = write_mesh_preview(set_png, layout, {.width = 1600, .height = 640, .elevation_degrees = 80}, pool); !s)
+  if (auto s = write_mesh_preview(set_png, layout,
+                                  {.width = 1600, .height = 640, .azimuth_degrees = 0, .elevation_degrees = 90}, pool);
+      !s)
     return std::fprintf(stderr, "%s\n", s.to_string().c_str()), 1;
   // a cube (convex edges only) and an L-shaped block (concave edges too), 3 tiles a unit
   const std::set<std::array<int, 3>> shapes[2] = {{{0, 0, 0}}, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}};
@@ -124,7 +127,8 @@ int main(int argc, char** argv) {
     // tiling->quads[q]: .tile, .face, .to_quad(p): tile-local p -> quad-local (u, v, h)
     // [/snippet]
     if (!tiling) return std::fprintf(stderr, "%s\n", tiling.error().to_string().c_str()), 1;
-    const tri_mesh covered = place_flat(*map, *set, *tiling);
+    tri_mesh covered = place_flat(*map, *set, *tiling);
+    covered.append(quad_layout_mesh(*map));  // the polycube surface under the tiles
     const std::string png = dir + "/axis_tiles_" + names[k] + "_" + kind + ".png";
     if (auto s = write_mesh_preview(
             png, covered, {.width = 800, .height = 700, .azimuth_degrees = -35, .elevation_degrees = 30}, pool);

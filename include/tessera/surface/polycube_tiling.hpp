@@ -24,14 +24,6 @@
 
 TESSERA_NAMESPACE_BEGIN
 
-// A three-axis tile's face frame is its quads' frame (tiling/axis_tile_set.hpp = quad_layout.hpp).
-static_assert(cube_face_axes(0) == detail::quad_plane_axes(polycube_label::pos_x) &&
-              cube_face_axes(1) == detail::quad_plane_axes(polycube_label::neg_x) &&
-              cube_face_axes(2) == detail::quad_plane_axes(polycube_label::pos_y) &&
-              cube_face_axes(3) == detail::quad_plane_axes(polycube_label::neg_y) &&
-              cube_face_axes(4) == detail::quad_plane_axes(polycube_label::pos_z) &&
-              cube_face_axes(5) == detail::quad_plane_axes(polycube_label::neg_z));
-
 /// The TileColoring side (0 north, 1 east, 2 south, 3 west, in the quad's (u, v) frame, north = +v) of
 /// quad side k (polycube_quad: side k joins corner k to k + 1): 0 -> south, 1 -> east, 2 -> north,
 /// 3 -> west. Its own inverse.
@@ -62,6 +54,13 @@ struct polycube_coloring {
 };
 
 namespace detail {
+// A three-axis tile's face frame is its quads' frame (tiling/axis_tile_set.hpp = quad_layout.hpp).
+static_assert(cube_face_axes(0) == quad_plane_axes(polycube_label::pos_x) &&
+              cube_face_axes(1) == quad_plane_axes(polycube_label::neg_x) &&
+              cube_face_axes(2) == quad_plane_axes(polycube_label::pos_y) &&
+              cube_face_axes(3) == quad_plane_axes(polycube_label::neg_y) &&
+              cube_face_axes(4) == quad_plane_axes(polycube_label::pos_z) &&
+              cube_face_axes(5) == quad_plane_axes(polycube_label::neg_z));
 /// Checks what the tiling reads of a quad layout: quads on existing charts, side k of each quad naming
 /// an existing grid edge that runs along the face's first (k even) or second (k odd) in-plane axis and
 /// lists the quad among its two.
