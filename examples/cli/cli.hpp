@@ -236,6 +236,21 @@ class arguments {
       if (!(c >= 1 && c <= max_colors) || c != std::floor(c)) return bad(name, s, expected);
     return std::pair{static_cast<int>(v[0]), static_cast<int>(v[1])};
   }
+  /// Edge colour counts "NH,NV" of a planar set or "NX,NY,NZ" of a three-axis set (geo-wang build):
+  /// two or three integers in [1, max_colors]; {2, 2} when absent.
+  [[nodiscard]] tessera::result<std::vector<int>> color_counts(std::string_view name, int max_colors) const {
+    if (!has(name)) return std::vector<int>{2, 2};
+    const std::string s = str(name);
+    std::vector<double> v;
+    const std::string expected = "two integers NH,NV or three NX,NY,NZ in [1, " + std::to_string(max_colors) + "]";
+    if (!split_numbers(s, ',', v) || (v.size() != 2 && v.size() != 3)) return bad(name, s, expected);
+    std::vector<int> out;
+    for (double c : v) {
+      if (!(c >= 1 && c <= max_colors) || c != std::floor(c)) return bad(name, s, expected);
+      out.push_back(static_cast<int>(c));
+    }
+    return out;
+  }
   /// One of `choices` (the first is the default when the option is absent).
   [[nodiscard]] tessera::result<std::string> choice(std::string_view name,
                                                     const std::vector<std::string>& choices) const {

@@ -1,5 +1,6 @@
-// tessera geo-wang build / geo-wang tile: planar geometric-texture Wang tiles (paper 000 §3):
-// build a complete tile set from an exemplar mesh, and tile a plane from a tile set directory.
+// tessera geo-wang build / geo-wang tile: geometric-texture Wang tiles (paper 000 §3): build a complete
+// planar set (--colors NH,NV) or three-axis set for polycube surfaces (--colors NX,NY,NZ, §3.1 and §5)
+// from an exemplar mesh, and tile a plane from a tile set directory (one face's tiles of a three-axis set).
 #include <cmath>
 #include <string>
 
@@ -24,7 +25,7 @@ int build(const cli::arguments& args) {
   if (!in) return cli::fail(args, in.error());
   if (!dir) return cli::fail(args, dir.error());
   if (!args.has("--tile")) return cli::fail(args, cli::arguments::missing("--tile"));
-  auto colors = args.color_pair("--colors", max_wang_colors);
+  auto colors = args.color_counts("--colors", max_wang_colors);
   auto tile = args.number("--tile", 0, 0, 1e6);
   auto edge = args.number("--edge-height", 0, 0, 1e6);
   if (!colors) return cli::fail(args, colors.error());
@@ -35,8 +36,12 @@ int build(const cli::arguments& args) {
   auto ex = prepare_quilt_exemplar(*ex_mesh);
   if (!ex) return cli::fail(args, ex.error());
   geometric_wang_options o;
-  o.horizontal_colors = colors->first;
-  o.vertical_colors = colors->second;
+  if (colors->size() == 3) {
+    o.axis_colors = {(*colors)[0], (*colors)[1], (*colors)[2]};
+  } else {
+    o.horizontal_colors = (*colors)[0];
+    o.vertical_colors = (*colors)[1];
+  }
   o.tile_size = *tile;
   o.edge_height = *edge;
   o.quilt.seed = args.seed();
@@ -56,14 +61,17 @@ int build(const cli::arguments& args) {
       sum.elements += rep->elements;
     }
     const auto mismatch = tile_set_border_mismatch(*set);
-    // likeness: a sample plane of 6 x 6 tiles (hash colouring of --seed) against the exemplar
-    const auto edges = tile_set_edges::create(set->horizontal_colors, set->vertical_colors, set->edges);
+    // likeness: a sample plane of 6 x 6 tiles (hash colouring of --seed) against the exemplar; for a
+    // three-axis set, of its +Z tiles
+    auto planar = set->three_axis() ? face_tile_set(*set, 4) : result<geometric_tile_set>(*set);
+    if (!planar) return cli::fail(args, planar.error());
+    const auto edges = tile_set_edges::create(planar->horizontal_colors, planar->vertical_colors, planar->edges);
     if (!edges) return cli::fail(args, edges.error());
     const auto hash = hash_coloring::for_set(*edges, args.seed());
     if (!hash) return cli::fail(args, hash.error());
     const auto window = hash->window(0, 0, 6, 6);
     if (!window) return cli::fail(args, window.error());
-    const auto sample = tile_geometric_plane(*set, *window, 6, 6, pool);
+    const auto sample = tile_geometric_plane(*planar, *window, 6, 6, pool);
     if (!sample) return cli::fail(args, sample.error());
     const double w = set->tile_size;
     const auto quality = compare_texture_quality(*ex_mesh, *sample, {0, 0, 6 * w, 6 * w}, {.tile_size = w});
@@ -71,6 +79,7 @@ int build(const cli::arguments& args) {
     cli::json_line line;
     line.add("build_ms", ms)
         .add("tiles", static_cast<index_t>(set->tiles.size()))
+        .add("three_axis", set->three_axis())
         .add("ms_per_tile", ms / double(set->tiles.size()))
         .add("tile_size", set->tile_size)
         .add("edge_height", set->edge_height)
@@ -117,8 +126,16 @@ int tile(const cli::arguments& args) {
   if (!kind) return cli::fail(args, kind.error());
   auto period = args.integer("--period", 4, 1, 8192);
   if (!period) return cli::fail(args, period.error());
+  auto face = args.choice("--face", {"+Z", "-Z", "+X", "-X", "+Y", "-Y"});
+  if (!face) return cli::fail(args, face.error());
   auto set = load_geometric_tile_set(*dir);
   if (!set) return cli::fail(args, set.error());
+  if (set->three_axis()) {  // a plane of the tiles of one face
+    int f = 0;
+    while (cube_face_name(f) != *face) ++f;
+    set = face_tile_set(*set, f);
+    if (!set) return cli::fail(args, set.error());
+  }
   auto edges = tile_set_edges::create(set->horizontal_colors, set->vertical_colors, set->edges);
   if (!edges) return cli::fail(args, edges.error());
   stored_tile_coloring coloring;
@@ -177,11 +194,13 @@ int tile(const cli::arguments& args) {
 
 const cli::registrar reg_build{[] {
   cli::command c{"geo-wang build",
-                 "build a complete set of planar geometric-texture Wang tiles from an exemplar mesh",
-                 "tessera geo-wang build --exemplar E.obj --tile W --out DIR [--colors NH,NV] [options]",
+                 "build a complete set of geometric-texture Wang tiles (planar or three-axis) from an exemplar mesh",
+                 "tessera geo-wang build --exemplar E.obj --tile W --out DIR [--colors NH,NV | NX,NY,NZ] [options]",
                  {{"--exemplar", "FILE", "exemplar mesh of closed elements"},
-                  {"--colors", "NH,NV",
-                   "colours of horizontal (north/south) and vertical (east/west) edges, 1 to 4096 (default 2,2)"},
+                  {"--colors", "NH,NV|NX,NY,NZ",
+                   "two counts: a planar set, colours of horizontal (north/south) and vertical (east/west) "
+                   "edges; three: a three-axis set for polycube surfaces (2(nX^2nY^2+nX^2nZ^2+nY^2nZ^2) tiles), "
+                   "colours of edges along X, Y, Z; 1 to 4096 each (default 2,2)"},
                   {"--tile", "W", "tile size in exemplar units"},
                   {"--edge-height", "H", "edge strip height h_E (default 1.5 x element size)"},
                   {"--out", "DIR", "output directory: tile_<index>.obj and tiles.json"}},
@@ -198,6 +217,7 @@ const cli::registrar reg_tile{[] {
        {"--grid", "COLSxROWS", "number of tiles, at most 4096 a side and 2^20 in all"},
        {"--coloring", "KIND", "hash (default; O(1) per cell), scanline (Cohen) or periodic edge colouring"},
        {"--period", "N", "period in tiles of --coloring periodic (default 4)"},
+       {"--face", "F", "three-axis sets: tile the plane with the tiles of face +Z (default), -Z, +X, -X, +Y or -Y"},
        {"--exemplar", "FILE", "with --stats: the exemplar the set was built from, for the likeness figures"},
        {"--out", "FILE", "output mesh"}},
       tile};

@@ -40,6 +40,7 @@
 #include "image/wang_tiles.hpp"
 
 // tile colourings and tile sets
+#include "tiling/axis_tile_set.hpp"
 #include "tiling/complete_tile_set.hpp"
 #include "tiling/hash_coloring.hpp"
 #include "tiling/periodic_coloring.hpp"
@@ -65,6 +66,7 @@
 #include "surface/polycube_distortion.hpp"
 #include "surface/polycube_map.hpp"
 #include "surface/polycube_projection.hpp"
+#include "surface/polycube_tiling.hpp"
 #include "surface/quad_layout.hpp"
 
 // terrain (paper 003)

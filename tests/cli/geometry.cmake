@@ -34,11 +34,26 @@ tessera_cli_test(NAME "cli: render without stats" REGEX "wrote .*plane_oblique\\
                  COMMAND render ${_geo}/plane.obj --out ${_geo}/plane_oblique.png --image-size 120x90)
 set_tests_properties("cli: render without stats" PROPERTIES FIXTURES_REQUIRED geo_plane)
 
+# three-axis sets (paper 000 §3.1, §5): six tiles for one colour per axis, borders identical per axis
+# and colour; a plane of the tiles of one face
+tessera_cli_test(NAME "cli: geo-wang build three-axis"
+                 REGEX "\"tiles\":6,\"three_axis\":true,.*${_clean},\"corner_crossings\":0,\"border_mismatch\":0"
+                 COMMAND geo-wang build --exemplar ${_geo}/rings.obj --colors 1,1,1 --tile 4.8 --out ${_geo}/tiles3 --stats)
+set_tests_properties("cli: geo-wang build three-axis" PROPERTIES FIXTURES_REQUIRED geo_rings FIXTURES_SETUP geo_tiles3)
+tessera_cli_test(NAME "cli: geo-wang tile one face of a three-axis set"
+                 REGEX "\"tiling_ms\":.*\"tiles\":6,.*${_clean},\"corner_crossings\":0,\"border_mismatch\":0"
+                 COMMAND geo-wang tile --tiles ${_geo}/tiles3 --face -X --grid 3x2 --out ${_geo}/plane3.obj --stats)
+set_tests_properties("cli: geo-wang tile one face of a three-axis set" PROPERTIES FIXTURES_REQUIRED geo_tiles3)
+tessera_cli_test(NAME "cli: geo-wang build rejects four colour counts" CODE 1
+                 REGEX "--colors expects two integers NH,NV or three NX,NY,NZ in \\[1, 4096\\], got '2,2,2,2'"
+                 COMMAND geo-wang build --exemplar ${_geo}/rings.obj --colors 2,2,2,2 --tile 4.8 --out ${_geo}/bad)
+set_tests_properties("cli: geo-wang build rejects four colour counts" PROPERTIES FIXTURES_REQUIRED geo_rings)
+
 # bad input: exit code 1 and the message naming the parameter and the value
-tessera_cli_test(NAME "cli: geo-wang build rejects zero colours" CODE 1 REGEX "--colors expects two integers NH,NV in \\[1, 4096\\], got '0,2'"
+tessera_cli_test(NAME "cli: geo-wang build rejects zero colours" CODE 1 REGEX "--colors expects two integers NH,NV or three NX,NY,NZ in \\[1, 4096\\], got '0,2'"
                  COMMAND geo-wang build --exemplar ${_geo}/rings.obj --colors 0,2 --tile 4.8 --out ${_geo}/bad)
 set_tests_properties("cli: geo-wang build rejects zero colours" PROPERTIES FIXTURES_REQUIRED geo_rings)
-tessera_cli_test(NAME "cli: geo-wang build rejects a huge colour count" CODE 1 REGEX "--colors expects two integers NH,NV in \\[1, 4096\\], got '1e300,2'"
+tessera_cli_test(NAME "cli: geo-wang build rejects a huge colour count" CODE 1 REGEX "--colors expects two integers NH,NV or three NX,NY,NZ in \\[1, 4096\\], got '1e300,2'"
                  COMMAND geo-wang build --exemplar ${_geo}/rings.obj --colors 1e300,2 --tile 4.8 --out ${_geo}/bad)
 tessera_cli_test(NAME "cli: geo-wang build rejects a negative tile" CODE 1 REGEX "--tile expects a number in \\[0, 1e\\+06\\], got '-3'"
                  COMMAND geo-wang build --exemplar ${_geo}/rings.obj --colors 1,1 --tile -3 --out ${_geo}/bad)

@@ -6,6 +6,8 @@
 
 #include <catch2/catch.hpp>
 
+#include "tile_set_checks.hpp"
+
 #include <array>
 #include <map>
 #include <set>
@@ -60,14 +62,7 @@ TEST_CASE("geometric Wang tiles: complete set, identical borders, continuous til
     }
   }
   // every tile: inside its square, closed except on the border, manifold, no intersections
-  for (const auto& tile : set.tiles) {
-    const auto rep = check_geometric_texture(tile, {0, 0, set.tile_size, set.tile_size});
-    REQUIRE(rep.ok());
-    REQUIRE(rep->open_edges_inside == 0);
-    REQUIRE(rep->nonmanifold_edges == 0);
-    REQUIRE(rep->intersecting_pairs == 0);
-    REQUIRE(tile_border_vertices(tile, set.tile_size).ok());  // nothing on a corner, nothing outside
-  }
+  require_valid_tiles(set);
   // the border of a colour is the same set of cut vertices on both sides:
   // tile 0 north colour c vs any tile with south colour c: same (x, z) points, north at y = w
   for (std::size_t a = 0; a < set.tiles.size(); ++a)

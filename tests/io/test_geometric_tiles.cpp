@@ -1,6 +1,7 @@
 #include <tessera/io/geometric_tiles.hpp>
 
 #include <tessera/geometry/mesh_exemplars.hpp>
+#include <tessera/tiling/axis_tile_set.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -114,4 +115,83 @@ TEST_CASE("loading rejects a tile with geometry outside the tile", "[tile_files]
   for (vec3& p : set.tiles[0].positions) p.x += 2;
   REQUIRE(save_geometric_tile_set(dir, set).ok());
   REQUIRE(load_geometric_tile_set(dir).error().message().find("outside the tile") != std::string::npos);
+}
+
+namespace {
+// a complete three-axis set for one colour per axis: six tiles, one per cube face, a torus in each
+geometric_tile_set tiny_three_axis_set() {
+  geometric_tile_set s;
+  s.tile_size = 2.5;
+  s.axis_colors = {1, 1, 1};
+  for (int f = 0; f < 6; ++f) {
+    const axis_tile at = axis_tile_at(f, s.axis_colors);
+    tri_mesh t;
+    detail::add_torus(t, {1.25, 1.25, 0.2 + 0.01 * f}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, 0.5, 0.1, 10, 5);
+    s.tiles.push_back(t);
+    s.edges.push_back(at.edges);
+    s.faces.push_back(at.face);
+  }
+  return s;
+}
+std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+void write_text(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
+}  // namespace
+
+TEST_CASE("three-axis tile sets save and load exactly (manifest version 2)", "[tile_files]") {
+  const std::string dir = std::string(TESSERA_TEST_OUTPUT_DIR) + "/geometric_tiles_three_axis";
+  std::filesystem::remove_all(dir);
+  const auto set = tiny_three_axis_set();
+  REQUIRE(save_geometric_tile_set(dir, set).ok());
+  const std::string text = read_text(dir + "/tiles.json");
+  REQUIRE(text.find("\"version\": 2") != std::string::npos);
+  REQUIRE(text.find("\"axis_colors\": [1, 1, 1]") != std::string::npos);
+  REQUIRE(text.find("\"face\": 5") != std::string::npos);
+  REQUIRE(text.find("horizontal_colors") == std::string::npos);
+  const auto back = load_geometric_tile_set(dir);
+  REQUIRE(back.ok());
+  REQUIRE(back->three_axis());
+  REQUIRE(back->axis_colors == set.axis_colors);
+  REQUIRE(back->faces == set.faces);
+  REQUIRE(back->edges == set.edges);
+  REQUIRE(back->tiles == set.tiles);
+  // planar sets keep the version-1 layout older readers know
+  const std::string planar = std::string(TESSERA_TEST_OUTPUT_DIR) + "/geometric_tiles_planar_v1";
+  std::filesystem::remove_all(planar);
+  REQUIRE(save_geometric_tile_set(planar, tiny_set()).ok());
+  REQUIRE(read_text(planar + "/tiles.json").find("version") == std::string::npos);
+  REQUIRE_FALSE(load_geometric_tile_set(planar)->three_axis());
+}
+
+TEST_CASE("three-axis manifests of another version, or with bad faces, fail clearly", "[tile_files]") {
+  const std::string dir = std::string(TESSERA_TEST_OUTPUT_DIR) + "/geometric_tiles_three_axis_bad";
+  std::filesystem::remove_all(dir);
+  REQUIRE(save_geometric_tile_set(dir, tiny_three_axis_set()).ok());
+  const std::string good = read_text(dir + "/tiles.json");
+  auto with = [&](const std::string& from, const std::string& to) {
+    std::string t = good;
+    t.replace(t.find(from), from.size(), to);
+    write_text(dir + "/tiles.json", t);
+    return load_geometric_tile_set(dir);
+  };
+  auto newer = with("\"version\": 2", "\"version\": 3");
+  REQUIRE_FALSE(newer.ok());
+  REQUIRE(newer.error().message().find("version 3") != std::string::npos);
+  REQUIRE(with("\"version\": 2", "\"version\": 1").error().message().find("needs \"version\": 2") != std::string::npos);
+  REQUIRE(with("\"face\": 5", "\"face\": 6").error().message().find("\"face\" must be in [0, 6)") != std::string::npos);
+  REQUIRE(with(", \"face\": 5", "").error().message().find("missing \"face\"") != std::string::npos);
+  REQUIRE(with("\"axis_colors\": [1, 1, 1]", "\"axis_colors\": [1, 0, 1]").error().message().find("axis_colors") !=
+          std::string::npos);
+  // a colour beyond its axis' range: the +Z tile's south side runs along X, which has one colour
+  REQUIRE(with("[0, 0, 0, 0], \"face\": 4", "[0, 0, 1, 0], \"face\": 4").error().message().find("along X") !=
+          std::string::npos);
+  // an image manifest cannot be three-axis
+  tile_manifest m;
+  m.kind = tile_set_kind::image;
+  m.tile_size = 8;
+  m.axis_colors = {1, 1, 1};
+  m.tiles.push_back({0, "tile_0.png", {}, {}, 0});
+  REQUIRE(validate_tile_manifest(m).message().find("geometric tiles only") != std::string::npos);
 }

@@ -97,13 +97,17 @@ inline index_t tile_set_corner_crossings(const geometric_tile_set& set) {
 }
 
 /// Counts (tile, side) pairs whose border geometry differs from the reference of its colour (the
-/// north side of the first tile with that north colour, or the west side of the first with that west
-/// colour): same number of vertices, positions within `tolerance` along the side and in height, and
-/// the same edges along the side. 0 means any valid tiling is continuous. Errors: those of
-/// tile_border_vertices, a set whose sizes disagree.
+/// first side, in tile and side order, carrying that colour of that class: horizontal or vertical in a
+/// planar set, the axis X, Y or Z the side runs along in a three-axis set, geometric_tile_set::
+/// side_class): same number of vertices, positions within `tolerance` along the side (along +x or +y
+/// of the tile, which is +axis in a three-axis set) and in height, and the same edges along the side.
+/// 0 means any valid tiling is continuous, in the plane and, three-axis, around polycube edges.
+/// Errors: those of tile_border_vertices, a set whose sizes disagree.
 inline result<index_t> tile_set_border_mismatch(const geometric_tile_set& set, double tolerance = 1e-6) {
-  if (set.tiles.size() != set.edges.size())
-    return status::invalid_argument("tile set: tiles and edges differ in count");
+  if (set.tiles.size() != set.edges.size() || (set.three_axis() && set.faces.size() != set.tiles.size()))
+    return status::invalid_argument("tile set: tiles, edges and faces differ in count");
+  for (const int f : set.faces)
+    if (f < 0 || f >= cube_faces) return status::out_of_range(detail::cat("tile set: face ", f, " outside [0, 6)"));
   const double w = set.tile_size;
   struct border {
     std::vector<vec3> pts;  // (along, height, 0) relative to the side line
@@ -134,7 +138,7 @@ inline result<index_t> tile_set_border_mismatch(const geometric_tile_set& set, d
       if (norm(x.pts[i] - y.pts[i]) > tolerance) return false;
     return true;
   };
-  std::map<int, border> ref_h, ref_v;
+  std::map<int, border> refs[3];  // per colour class
   index_t mismatches = 0;
   for (std::size_t t = 0; t < set.tiles.size(); ++t) {
     auto l = tile_border_vertices(set.tiles[t], w);
@@ -142,11 +146,11 @@ inline result<index_t> tile_set_border_mismatch(const geometric_tile_set& set, d
     const wang_edges& e = set.edges[t];
     for (int s = 0; s < 4; ++s) {
       const border b = border_of(set.tiles[t], *l, s);
-      auto& refs = is_horizontal_side(s) ? ref_h : ref_v;
-      const int color = s == side_north ? e.north : s == side_east ? e.east : s == side_south ? e.south : e.west;
-      auto it = refs.find(color);
-      if (it == refs.end())
-        refs.emplace(color, b);
+      auto& ref = refs[set.side_class(static_cast<index_t>(t), s)];
+      const int color = e[s];
+      auto it = ref.find(color);
+      if (it == ref.end())
+        ref.emplace(color, b);
       else
         mismatches += same(it->second, b) ? 0 : 1;
     }
@@ -320,6 +324,10 @@ inline status validate_geometric_plane_size(const geometric_tile_set& set, index
 template <TileColoring C>
 result<geometric_plane_layout> plan_geometric_plane(const geometric_tile_set& set, const C& coloring, index_t cols,
                                                     index_t rows) {
+  if (set.three_axis())
+    return status::invalid_argument(
+        "tile_geometric_plane: a three-axis tile set covers polycube quads (surface/polycube_tiling.hpp); tile a "
+        "plane with the planar set of one of its faces, face_tile_set(set, face)");
   if (auto s = validate_geometric_plane_size(set, cols, rows); !s) return s;
   if (auto s = check_grid_coloring(coloring, cols, rows); !s) return s;
   if (coloring.num_colors(side_north) != set.horizontal_colors || coloring.num_colors(side_east) != set.vertical_colors)

@@ -10,6 +10,11 @@
 //     ]
 //   }
 //
+// Three-axis geometric sets (paper 000 §3.1, polycube surfaces) write "version": 2, "axis_colors":
+// [nX, nY, nZ] instead of the two colour counts, and a "face" (0..5: +X, -X, +Y, -Y, +Z, -Z) per tile,
+// whose edges are then in that face's frame (tiling/axis_tile_set.hpp). A file without "version" is
+// version 1 (planar); a version above 2 is refused, naming it.
+//
 // "tile_size" is the side of a tile: a whole number of pixels for image tiles, any positive number
 // (world units, written shortest round-trip) for geometric tiles. Geometric manifests of older
 // versions wrote a rounded integer "tile_size" and the exact size as "tile_world_size", which then
@@ -31,6 +36,7 @@
 #include "../core/config.hpp"
 #include "../core/status.hpp"
 #include "detail/json.hpp"
+#include "../tiling/axis_tile_set.hpp"
 #include "../tiling/complete_tile_set.hpp"
 #include "../tiling/tile_set_edges.hpp"
 #include "detail/file.hpp"
@@ -53,6 +59,8 @@ struct tile_manifest_entry {
   wang_edges edges = {};  ///< [north, east, south, west]
   /// Further numbers of the tile.
   std::vector<manifest_field> extra = {};
+  /// Three-axis sets: the cube face (0..5); -1 in planar sets.
+  int face = -1;
   friend bool operator==(const tile_manifest_entry&, const tile_manifest_entry&) = default;
 };
 
@@ -71,6 +79,8 @@ struct tile_manifest {
   int horizontal_colors = 0;
   /// nv, colours of east/west edges.
   int vertical_colors = 0;
+  /// Three-axis geometric sets: {nX, nY, nZ} (and nh = nv = 0); {0, 0, 0} for planar sets.
+  axis_color_counts axis_colors = {0, 0, 0};
   std::vector<tile_manifest_entry> tiles;  ///< sorted by index after reading
   /// Further numbers of the set.
   std::vector<manifest_field> extra = {};
@@ -133,23 +143,35 @@ inline status validate_tile_manifest(const tile_manifest& m, std::string_view na
   if (!(m.tile_size > 0) || !std::isfinite(m.tile_size)) return bad("tile_size must be positive, got ", m.tile_size);
   if (m.kind == tile_set_kind::image && (m.tile_size != std::floor(m.tile_size) || m.tile_size > 9.0e15))
     return bad("tile_size of image tiles must be a whole number of pixels, got ", m.tile_size);
-  if (auto s = validate_color_counts(m.horizontal_colors, m.vertical_colors); !s) return bad(s.message());
+  const bool three = m.axis_colors != axis_color_counts{0, 0, 0};
+  if (three && m.kind == tile_set_kind::image) return bad("three-axis manifests hold geometric tiles only");
+  if (three) {
+    if (auto s = validate_axis_color_counts(m.axis_colors); !s) return bad(s.message());
+  } else if (auto s = validate_color_counts(m.horizontal_colors, m.vertical_colors); !s) {
+    return bad(s.message());
+  }
   if (m.tiles.empty()) return bad("\"tiles\" is empty");
   std::string field;
   if (const char* p = detail::manifest_fields_problem(
-          m.extra, {"tile_size", "horizontal_colors", "vertical_colors", "tiles"}, field))
+          m.extra, {"tile_size", "horizontal_colors", "vertical_colors", "tiles", "version", "axis_colors"}, field))
     return bad("extra field \"", field, "\" ", p);
   std::vector<char> seen(m.tiles.size(), 0);
   for (const auto& t : m.tiles) {
     if (t.index < 0 || t.index >= static_cast<index_t>(m.tiles.size()))
       return bad("tile index ", t.index, " is outside [0, ", m.tiles.size(), ") (indices must be 0..n-1)");
     if (seen[detail::to_size(t.index)]++) return bad("tile index ", t.index, " appears twice");
-    if (auto s = validate_wang_edges(t.edges, m.horizontal_colors, m.vertical_colors); !s)
+    if (three) {
+      if (auto s = validate_axis_tile({t.face, t.edges}, m.axis_colors); !s)
+        return bad("tile ", t.index, ": ", s.message());
+    } else if (t.face != -1) {
+      return bad("tile ", t.index, ": a planar set's tiles have no face");
+    } else if (auto s = validate_wang_edges(t.edges, m.horizontal_colors, m.vertical_colors); !s) {
       return bad("tile ", t.index, ": ", s.message());
+    }
     if (const char* p = detail::tile_file_problem(t.file))
       return bad("tile ", t.index, ": file ", detail::json_quote(t.file), " ", p,
                  " (it must be a relative name inside the tile directory)");
-    if (const char* p = detail::manifest_fields_problem(t.extra, {"index", "file", "edges"}, field))
+    if (const char* p = detail::manifest_fields_problem(t.extra, {"index", "file", "edges", "face"}, field))
       return bad("tile ", t.index, ": extra field \"", field, "\" ", p);
   }
   return {};
@@ -198,16 +220,35 @@ inline result<tile_manifest> parse_tile_manifest(std::string_view text, std::str
     const detail::json_value* world = json->find("tile_world_size");  // older versions' exact size
     if (world != nullptr && world->is_number()) m.tile_size = world->number;
   }
-  index_t nh = 0, nv = 0;
-  if (auto s = integer(*json, "horizontal_colors", nh, ""); !s) return s;
-  if (auto s = integer(*json, "vertical_colors", nv, ""); !s) return s;
-  if (nh < 1 || nh > max_wang_colors || nv < 1 || nv > max_wang_colors)
-    return bad("colour counts must be in [1, ", max_wang_colors, "], got ", nh, " x ", nv);
-  m.horizontal_colors = static_cast<int>(nh);
-  m.vertical_colors = static_cast<int>(nv);
+  index_t version = 1;
+  if (json->find("version") != nullptr) {
+    if (auto s = integer(*json, "version", version, ""); !s) return s;
+    if (version < 1 || version > 2)
+      return bad("version ", version, " is not one this tessera reads (1 or 2; a newer tessera wrote it?)");
+  }
+  const detail::json_value* axes = json->find("axis_colors");
+  if (axes != nullptr) {  // a three-axis set
+    if (version < 2) return bad("\"axis_colors\" needs \"version\": 2");
+    if (!axes->is_array() || axes->array.size() != 3)
+      return bad("\"axis_colors\" must be an array of three colour counts [nX, nY, nZ]");
+    for (std::size_t a = 0; a < 3; ++a) {
+      const detail::json_value& v = axes->array[a];
+      if (!v.is_number() || v.number != std::floor(v.number) || v.number < 1 || v.number > max_wang_colors)
+        return bad("\"axis_colors\" must hold three integers in [1, ", max_wang_colors, "]");
+      m.axis_colors[a] = static_cast<int>(v.number);
+    }
+  } else {
+    index_t nh = 0, nv = 0;
+    if (auto s = integer(*json, "horizontal_colors", nh, ""); !s) return s;
+    if (auto s = integer(*json, "vertical_colors", nv, ""); !s) return s;
+    if (nh < 1 || nh > max_wang_colors || nv < 1 || nv > max_wang_colors)
+      return bad("colour counts must be in [1, ", max_wang_colors, "], got ", nh, " x ", nv);
+    m.horizontal_colors = static_cast<int>(nh);
+    m.vertical_colors = static_cast<int>(nv);
+  }
   m.extra = kind == tile_set_kind::image
-                ? extras(*json, {"tile_size", "horizontal_colors", "vertical_colors"})
-                : extras(*json, {"tile_size", "horizontal_colors", "vertical_colors", "tile_world_size"});
+                ? extras(*json, {"tile_size", "horizontal_colors", "vertical_colors", "version"})
+                : extras(*json, {"tile_size", "horizontal_colors", "vertical_colors", "tile_world_size", "version"});
   const detail::json_value* tiles = json->find("tiles");
   if (tiles == nullptr || !tiles->is_array()) return bad("missing \"tiles\" array");
   for (std::size_t i = 0; i < tiles->array.size(); ++i) {
@@ -230,7 +271,13 @@ inline result<tile_manifest> parse_tile_manifest(std::string_view text, std::str
       c[k] = static_cast<int>(v.number);
     }
     e.edges = {c[0], c[1], c[2], c[3]};
-    e.extra = extras(t, {"index", "edges"});
+    if (axes != nullptr) {
+      index_t face = -1;
+      if (auto s = integer(t, "face", face, where); !s) return s;
+      if (face < 0 || face >= cube_faces) return bad(where, "\"face\" must be in [0, 6), got ", face);
+      e.face = static_cast<int>(face);
+    }
+    e.extra = extras(t, {"index", "edges", "face"});
     m.tiles.push_back(std::move(e));
   }
   if (auto s = validate_tile_manifest(m, name); !s) return s;
@@ -241,9 +288,15 @@ inline result<tile_manifest> parse_tile_manifest(std::string_view text, std::str
 /// The manifest as JSON text, one tile per line (what write_tile_manifest stores).
 inline std::string format_tile_manifest(const tile_manifest& m) {
   std::string out = "{\n";
-  out += detail::cat("  \"tile_size\": ", detail::json_number(m.tile_size),
-                     ",\n  \"horizontal_colors\": ", m.horizontal_colors,
-                     ",\n  \"vertical_colors\": ", m.vertical_colors, ",\n");
+  const bool three = m.axis_colors != axis_color_counts{0, 0, 0};
+  if (three)
+    out +=
+        detail::cat("  \"version\": 2,\n  \"tile_size\": ", detail::json_number(m.tile_size), ",\n  \"axis_colors\": [",
+                    m.axis_colors[0], ", ", m.axis_colors[1], ", ", m.axis_colors[2], "],\n");
+  else
+    out += detail::cat("  \"tile_size\": ", detail::json_number(m.tile_size),
+                       ",\n  \"horizontal_colors\": ", m.horizontal_colors,
+                       ",\n  \"vertical_colors\": ", m.vertical_colors, ",\n");
   for (const auto& f : m.extra)
     out += detail::cat("  ", detail::json_quote(f.name), ": ", detail::json_number(f.value), ",\n");
   out += "  \"tiles\": [\n";
@@ -251,6 +304,7 @@ inline std::string format_tile_manifest(const tile_manifest& m) {
     const auto& t = m.tiles[i];
     out += detail::cat("    {\"index\": ", t.index, ", \"file\": ", detail::json_quote(t.file), ", \"edges\": [",
                        t.edges.north, ", ", t.edges.east, ", ", t.edges.south, ", ", t.edges.west, "]");
+    if (three) out += detail::cat(", \"face\": ", t.face);
     for (const auto& f : t.extra)
       out += detail::cat(", ", detail::json_quote(f.name), ": ", detail::json_number(f.value));
     out += i + 1 < m.tiles.size() ? "},\n" : "}\n";
@@ -262,6 +316,8 @@ inline std::string format_tile_manifest(const tile_manifest& m) {
 /// The tile set described by a manifest (tile i has the edges of the entry with index i).
 inline result<tile_set_edges> manifest_tile_set(const tile_manifest& m) {
   if (auto s = validate_tile_manifest(m); !s) return s;
+  if (m.axis_colors != axis_color_counts{0, 0, 0})
+    return status::invalid_argument("tiles.json: a three-axis set has no single horizontal x vertical tile set");
   std::vector<wang_edges> edges(m.tiles.size());
   for (const auto& t : m.tiles) edges[detail::to_size(t.index)] = t.edges;
   return tile_set_edges::create(m.horizontal_colors, m.vertical_colors, std::move(edges));

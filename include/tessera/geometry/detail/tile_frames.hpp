@@ -125,71 +125,90 @@ tile_frame_result build_frame(const std::vector<edge_strip>& hs, const std::vect
   return r;
 }
 
+/// True when the border elements of horizontal strip `h` and vertical strip `v` collide at none of a
+/// tile's four corners (each strip's halves placed on both of its sides).
+template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
+bool strips_fit(const edge_strip& h, const edge_strip& v, const strip_params& sp) {
+  for (int corner = 0; corner < 4; ++corner) {
+    const bool north = corner >= 2, east = corner % 2 == 1;
+    if (border_elements_collide(place_half(h, !north, north ? side_north : side_south, north ? sp.tile_size : 0.0),
+                                place_half(v, !east, east ? side_east : side_west, east ? sp.tile_size : 0.0)))
+      return false;
+  }
+  return true;
+}
+
+/// Picks the strip of colour `color` among `cands` (windows of orientation `horizontal`): windows with
+/// many crossing elements first (continuity across the edge), random among those (draw keyed by
+/// (`key`, color, window)), away from the windows of the strips in `mine` while half the windows
+/// remain, and accepted by `fits` (the corner test against strips already chosen). At most 400
+/// windows are cut. False when none fits.
+template <class Fits>
+bool pick_strip(const quilt_exemplar& src, bool horizontal, std::uint64_t key, int color,
+                const std::vector<strip_candidate>& cands, const std::vector<const edge_strip*>& mine,
+                const strip_params& sp, const counter_rng& rng, Fits&& fits, edge_strip& out) {
+  std::vector<std::size_t> order(cands.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::vector<double> rank(cands.size());
+  for (std::size_t i = 0; i < cands.size(); ++i) rank[i] = -double(cands[i].crossing) - rng.uniform(key, color, i);
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t x, std::size_t y) { return rank[x] < rank[y] || (rank[x] == rank[y] && x < y); });
+  const int a = horizontal ? 0 : 1, b = horizontal ? 1 : 0;
+  int tries = 0;
+  for (std::size_t i : order) {
+    const strip_candidate& c = cands[i];
+    bool far = true;
+    for (const edge_strip* s : mine)
+      far = far && (std::abs(s->origin[a] - c.along0) > 0.5 * sp.tile_size ||
+                    std::abs(s->origin[b] - c.across0) > sp.half_height);
+    if (!far && tries < static_cast<int>(order.size()) / 2) continue;
+    if (++tries > 400) break;
+    edge_strip s;
+    if (!extract_strip(src, horizontal, sp, c, s)) continue;
+    if (!fits(s)) continue;
+    out = std::move(s);
+    return true;
+  }
+  return false;
+}
+
+/// The strips of a planar set (§3.1): nh horizontal strips, then nv vertical strips that fit every
+/// horizontal one at all four tile corners (strips_fit).
 template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
 status choose_strips(const quilt_exemplar& src, int horizontal_colors, int vertical_colors, const strip_params& sp,
                      std::uint64_t seed, std::vector<edge_strip>& hs, std::vector<edge_strip>& vs) {
   const double step = 0.5 * src.cell_size();
   const counter_rng rng(seed, stream_id("geometry.wang.strips"));
-  auto pick = [&](bool horizontal, int color, std::vector<strip_candidate>& cands,
-                  const std::vector<edge_strip>& against, edge_strip& out) -> bool {
-    // prefer windows with many crossing elements (continuity across the edge), random among those,
-    // away from windows used by other colours
-    std::vector<std::size_t> order(cands.size());
-    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-    std::vector<double> key(cands.size());
-    for (std::size_t i = 0; i < cands.size(); ++i)
-      key[i] = -double(cands[i].crossing) - rng.uniform(horizontal ? 1 : 2, color, i);
-    std::sort(order.begin(), order.end(),
-              [&](std::size_t x, std::size_t y) { return key[x] < key[y] || (key[x] == key[y] && x < y); });
-    const std::vector<edge_strip>& mine = horizontal ? hs : vs;
-    int tries = 0;
-    for (std::size_t i : order) {
-      const strip_candidate& c = cands[i];
-      bool far = true;
-      for (const edge_strip& s : mine) {
-        const int a = horizontal ? 0 : 1, b = horizontal ? 1 : 0;
-        far = far && (std::abs(s.origin[a] - c.along0) > 0.5 * sp.tile_size ||
-                      std::abs(s.origin[b] - c.across0) > sp.half_height);
-      }
-      if (!far && tries < static_cast<int>(order.size()) / 2) continue;
-      if (++tries > 400) break;
-      edge_strip s;
-      if (!extract_strip(src, horizontal, sp, c, s)) continue;
-      // vertical strips must not collide with any horizontal strip at any of the four corners
-      bool ok = true;
-      for (const edge_strip& h : against) {
-        for (int corner = 0; corner < 4 && ok; ++corner) {
-          const bool north = corner >= 2, east = corner % 2 == 1;
-          ok = !border_elements_collide(
-              place_half(h, !north, north ? side_north : side_south, north ? sp.tile_size : 0.0),
-              place_half(s, !east, east ? side_east : side_west, east ? sp.tile_size : 0.0));
-        }
-        if (!ok) break;
-      }
-      if (!ok) continue;
-      out = std::move(s);
-      return true;
-    }
-    return false;
-  };
-  auto hc = strip_candidates(src, true, sp, step), vc = strip_candidates(src, false, sp, step);
+  const auto hc = strip_candidates(src, true, sp, step), vc = strip_candidates(src, false, sp, step);
+  std::vector<const edge_strip*> mine;
+  hs.reserve(static_cast<std::size_t>(horizontal_colors));
+  vs.reserve(static_cast<std::size_t>(vertical_colors));
   for (int c = 0; c < horizontal_colors; ++c) {
     edge_strip s;
-    if (!pick(true, c, hc, {}, s))
+    if (!pick_strip(
+            src, true, 1, c, hc, mine, sp, rng, [](const edge_strip&) { return true; }, s))
       return status::invalid_argument(
           detail::cat("geometric wang tiles: no horizontal edge strip of width ", sp.tile_size, " and height ",
                       2 * sp.half_height, " avoids elements crossing the tile corners (", hc.size(),
                       " candidate windows); try another tile_size, edge_height or corner_margin"));
     hs.push_back(std::move(s));
+    mine.push_back(&hs.back());
   }
+  mine.clear();
   for (int c = 0; c < vertical_colors; ++c) {
     edge_strip s;
-    if (!pick(false, c, vc, hs, s))
+    const auto fits = [&](const edge_strip& v) {
+      for (const edge_strip& h : hs)
+        if (!strips_fit(h, v, sp)) return false;
+      return true;
+    };
+    if (!pick_strip(src, false, 2, c, vc, mine, sp, rng, fits, s))
       return status::invalid_argument(
           detail::cat("geometric wang tiles: no vertical edge strip of width ", sp.tile_size, " and height ",
                       2 * sp.half_height, " fits every horizontal strip at the tile corners (", vc.size(),
                       " candidate windows); try another tile_size, edge_height or corner_margin"));
     vs.push_back(std::move(s));
+    mine.push_back(&vs.back());
   }
   return {};
 }
