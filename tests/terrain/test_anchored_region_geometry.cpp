@@ -70,7 +70,7 @@ TEST_CASE("make_anchored_geometry: region numbering, neighbours and shapes equal
   REQUIRE(std::memcmp(again.faces.data(), geo.faces.data(), geo.faces.size() * sizeof(geo.faces[0])) == 0);
 }
 
-TEST_CASE("anchored_within equals the stretch measure's bound; anchored_unfold places a congruent copy",
+TEST_CASE("anchored_within equals the stretch measure's bound, anchored_unfold places a congruent copy",
           "[terrain][anchored][stretch]") {
   const tessera::counter_rng rng(11, 0);
   index_t within = 0, outside = 0;

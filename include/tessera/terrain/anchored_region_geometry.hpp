@@ -52,8 +52,8 @@ struct anchored_face_geometry {
 /// The geometry of every region of a plan: faces in the plan's order (plan.faces), so region r's
 /// are faces[plan.first[r] .. plan.first[r + 1]).
 struct anchored_geometry {
-  std::vector<anchored_face_geometry> faces;
-  std::vector<std::int32_t> vertex_count;  ///< per region: its vertices
+  std::vector<anchored_face_geometry> faces;  ///< per face, in the plan's order
+  std::vector<std::int32_t> vertex_count;     ///< per region: its vertices
   /// Bytes held.
   [[nodiscard]] std::size_t memory_bytes() const noexcept {
     return sizeof(anchored_face_geometry) * faces.capacity() + 4 * vertex_count.capacity();
