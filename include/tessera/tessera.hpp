@@ -70,6 +70,7 @@
 #include "surface/quad_layout.hpp"
 
 // terrain (paper 003)
+#include "terrain/anchored_region_geometry.hpp"
 #include "terrain/assign_scale_field.hpp"
 #include "terrain/build_exemplar_pyramid.hpp"
 #include "terrain/export_corner_uvs.hpp"

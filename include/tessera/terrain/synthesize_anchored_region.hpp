@@ -51,6 +51,7 @@
 #include "../core/status.hpp"
 #include "../core/vec.hpp"
 #include "detail/stack_growth.hpp"
+#include "anchored_region_geometry.hpp"
 #include "plan_anchored_regions.hpp"
 #include "prepare_terrain_mesh.hpp"
 #include "texture_stretch.hpp"
@@ -141,128 +142,54 @@ inline tri_uv anchored_face_coords(const terrain_mesh& mesh, const anchored_fram
   return t;
 }
 
-/// A face's sides in its own plane, for unfolding: side k runs from corner k to corner k + 1, and
-/// the third corner C = A + a e + b perp(e) with e = B - A (a, b in units of the side), len2 = |e|^2.
-struct unfold_sides {
-  std::array<double, 3> a{}, b{}, len2{};
-};
-inline unfold_sides to_unfold_sides(const plane_triangle& p) noexcept {
-  const vec2 P[3] = {{0, 0}, {p.l1, 0}, {p.x2, p.y2}};
-  unfold_sides u;
-  for (std::size_t k = 0; k < 3; ++k) {
-    const vec2 A = P[k], B = P[(k + 1) % 3], C = P[(k + 2) % 3];
-    const vec2 e = B - A, w = C - A;
-    u.len2[k] = e.x * e.x + e.y * e.y;
-    u.a[k] = (w.x * e.x + w.y * e.y) / u.len2[k];
-    u.b[k] = (e.x * w.y - e.y * w.x) / u.len2[k];
-  }
-  return u;
-}
-
-/// The corners of a face placed across its side k (corners k, k + 1) from texture coordinates
-/// ta, tb of those two corners (kept as they are): the third corner where the face, turned about
-/// that side into the texture plane, puts it (counter-clockwise kept), i.e. the side's
-/// (a, b) placement scaled to the side's true length about the texture side's midpoint. `u` is the
-/// face's to_unfold_sides. With `exact` the two side corners are instead rebuilt from the side's
-/// midpoint and direction so that the whole face is congruent (a new placement next to a neighbour
-/// whose side is slightly stretched). False for a degenerate side.
-inline bool anchored_unfold(const unfold_sides& u, int k, vec2 ta, vec2 tb, double tpu, bool exact,
-                            std::array<vec2, 3>& out) noexcept {
-  const auto ks = to_size(k);
-  const vec2 d = tb - ta;
-  const double len2 = u.len2[ks], tlen2 = d.x * d.x + d.y * d.y;
-  if (!(len2 > 0) || !(tlen2 > 0)) return false;
-  const double f = std::sqrt(len2 / tlen2) * tpu;  // |e| tpu / |d|
-  const vec2 n{-d.y, d.x}, mid = (ta + tb) * 0.5;
-  const vec2 c = mid + d * ((u.a[ks] - 0.5) * f) + n * (u.b[ks] * f);
-  if (exact) {
-    ta = mid - d * (0.5 * f);
-    tb = mid + d * (0.5 * f);
-  }
-  out[ks] = ta;
-  out[to_size((k + 1) % 3)] = tb;
-  out[to_size((k + 2) % 3)] = c;
-  return true;
-}
-
-/// The coordinate of each vertex in each placement of the region being grown: an open-addressing
-/// table of keys (vertex, placement) to entry numbers, the coordinates (double) stored densely by
-/// entry number; kept per thread between calls (cleared key by key).
+/// The coordinate of each vertex in each placement of the region being grown. Vertices are
+/// numbered in the region (anchored_face_geometry::vertices); a vertex has a short list of entries
+/// (placement, coordinate), usually one (more where it lies on a seam between placements), linked
+/// from `head`. Entries are numbered in insertion order, their coordinates (double) stored densely.
+/// Kept per thread between calls.
 class anchored_vertex_table {
  public:
-  static constexpr std::uint64_t empty = ~std::uint64_t{0};
-  static std::uint64_t key(std::int32_t vertex, std::int32_t placement) noexcept {
-    return static_cast<std::uint64_t>(static_cast<std::uint32_t>(vertex)) << 32 | static_cast<std::uint32_t>(placement);
-  }
-  /// Empties the table, sized for about `expected` entries.
-  void reset(std::size_t expected) {
-    for (const std::size_t i : used_) keys_[i] = empty;
-    used_.clear();
+  /// Empties the table for `vertices` region vertices.
+  void reset(std::size_t vertices) {
+    head_.assign(vertices, -1);
     coords_.clear();
-    std::size_t n = 64;
-    while (n < 2 * expected) n *= 2;
-    if (n > keys_.size()) resize(n);
+    patch_.clear();
+    next_.clear();
   }
-  /// The entry of k, or -1.
-  [[nodiscard]] std::int32_t find(std::uint64_t k) const noexcept {
-    const std::size_t mask = keys_.size() - 1;
-    for (std::size_t i = hash(k) & mask;; i = (i + 1) & mask) {
-      if (keys_[i] == k) return entry_[i];
-      if (keys_[i] == empty) return -1;
-    }
+  /// The entry of region vertex v in placement p, or -1.
+  [[nodiscard]] std::int32_t find(std::int32_t v, std::int32_t p) const noexcept {
+    for (std::int32_t e = head_[to_size(v)]; e >= 0; e = next_[to_size(e)])
+      if (patch_[to_size(e)] == p) return e;
+    return -1;
   }
-  /// Inserts k (not yet present) with coordinate c; returns its entry.
-  std::int32_t insert(std::uint64_t k, vec2 c) {
-    if (2 * (used_.size() + 1) > keys_.size()) resize(2 * keys_.size());
+  /// Inserts (v, p) (not yet present) with coordinate c; returns its entry.
+  std::int32_t insert(std::int32_t v, std::int32_t p, vec2 c) {
     const auto e = static_cast<std::int32_t>(coords_.size());
     coords_.push_back(c);
-    place(k, e);
+    patch_.push_back(p);
+    next_.push_back(head_[to_size(v)]);
+    head_[to_size(v)] = e;
     return e;
   }
   /// The coordinate of entry e.
   [[nodiscard]] const vec2& coord(std::int32_t e) const noexcept { return coords_[to_size(e)]; }
 
  private:
-  static std::size_t hash(std::uint64_t k) noexcept {
-    k ^= k >> 29;  // a multiply-xorshift mix: vertex ids and placements both reach the low bits
-    k *= 0xBF58476D1CE4E5B9ull;
-    return static_cast<std::size_t>(k ^ (k >> 32));
-  }
-  void place(std::uint64_t k, std::int32_t e) {
-    const std::size_t mask = keys_.size() - 1;
-    std::size_t i = hash(k) & mask;
-    while (keys_[i] != empty) i = (i + 1) & mask;
-    keys_[i] = k;
-    entry_[i] = e;
-    used_.push_back(i);
-  }
-  void resize(std::size_t n) {
-    std::vector<std::pair<std::uint64_t, std::int32_t>> old;
-    old.reserve(used_.size());
-    for (const std::size_t i : used_) old.emplace_back(keys_[i], entry_[i]);
-    keys_.assign(n, empty);
-    entry_.assign(n, -1);
-    used_.clear();
-    for (const auto& [k, e] : old) place(k, e);
-  }
-  std::vector<std::uint64_t> keys_ = std::vector<std::uint64_t>(64, empty);
-  std::vector<std::int32_t> entry_ = std::vector<std::int32_t>(64, -1);
-  std::vector<std::size_t> used_;
+  std::vector<std::int32_t> head_, patch_, next_;
   std::vector<vec2> coords_;
 };
 
 /// What growing a region needs besides the atlas, kept per thread between calls (regions grow in
 /// parallel; allocating it per region would cost more than growing a small one): the order's
-/// stack or queue and waiting list, the vertex table, and per face of the region its index in the
-/// region (`local`, -1 outside; sized to the mesh, reset entry by entry), and per face of the region
-/// its vertices, neighbours (as indices in the region), plane triangle, placement and the table
-/// entries of its corners (their coordinates in its placement).
+/// queue (or stack) and waiting list, the vertex table, the region's geometry when the caller has
+/// none gathered, and per face of the region its placement and the table entries of its corners
+/// (their coordinates in its placement).
 struct anchored_scratch {
-  std::vector<std::int32_t> order, deferred, local, patch;
-  std::vector<std::array<std::int32_t, 3>> corners, faces, neighbors;
-  std::vector<detail::unfold_sides> sides;
-  std::vector<detail::plane_triangle_inverse> inverses;
+  std::vector<std::int32_t> order, deferred, patch;
+  std::vector<std::array<std::int32_t, 3>> corners;
+  std::vector<anchored_face_geometry> geometry;
   anchored_vertex_table table;
+  unsigned char touched = 0;  ///< keeps the reading of the geometry before the growth
 };
 inline anchored_scratch& anchored_thread_scratch() {
   thread_local anchored_scratch s;
@@ -279,12 +206,14 @@ inline bool anchored_fits_axis(const tri_uv& t, int axis, double half) noexcept 
 /// Grows region `region` of `plan` (see the file comment) into `atlas` (reset with
 /// reset_anchored_atlas for this plan and mesh); does nothing if it is grown already. Only the
 /// region's own faces are read and written, so distinct regions may be grown in parallel.
-/// Errors: region out of range, an atlas of another plan or mesh (invalid_argument). O(faces of
-/// the region). The result is a pure function of (mesh, plan, exemplar size, opts, region).
+/// `geometry`: the plan's make_anchored_geometry, or null to gather the region's (the same result).
+/// Errors: region out of range, an atlas or geometry of another plan or mesh (invalid_argument).
+/// O(faces of the region). The result is a pure function of (mesh, plan, exemplar size, opts, region).
 inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchored_regions& plan, index_t region,
                                          index_t exemplar_width, index_t exemplar_height,
                                          const anchored_synthesis_options& opts, anchored_atlas& atlas,
-                                         anchored_region_stats* stats = nullptr) {
+                                         anchored_region_stats* stats = nullptr,
+                                         const anchored_geometry* geometry = nullptr) {
   const index_t nf = mesh.num_faces();
   if (region < 0 || region >= plan.num_regions())
     return status::invalid_argument(detail::cat("region ", region, " is not one of the plan's ", plan.num_regions()));
@@ -294,6 +223,11 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
     return status::invalid_argument(detail::cat("synthesize_anchored_region: the atlas (", atlas.uv.size(),
                                                 " faces) and plan (", plan.region.size(),
                                                 " faces) must belong to the mesh (", nf, " faces)"));
+  if (geometry && (geometry->faces.size() != plan.faces.size() ||
+                   geometry->vertex_count.size() != detail::to_size(plan.num_regions())))
+    return status::invalid_argument(detail::cat(
+        "synthesize_anchored_region: the geometry (", geometry->faces.size(), " faces, ", geometry->vertex_count.size(),
+        " regions) must belong to the plan (", plan.faces.size(), " faces, ", plan.num_regions(), " regions)"));
   anchored_region_stats st;
   if (atlas.region_done[detail::to_size(region)]) {
     if (stats) *stats = st;
@@ -305,44 +239,40 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
   const std::int32_t* begin = plan.faces.data() + plan.first[detail::to_size(region)];
   const std::int32_t* end = plan.faces.data() + plan.first[detail::to_size(region) + 1];
   const auto nfaces = detail::to_size(end - begin);
-  // the region's faces gathered into dense arrays by their index i in the region (faces ascend):
-  // the growth then reads a few hundred kilobytes in cache instead of the mesh's arrays at random
   detail::anchored_scratch& scr = detail::anchored_thread_scratch();
+  // the region's faces as dense arrays by their index i in the region (faces ascend): the growth
+  // reads a few hundred kilobytes in cache instead of the mesh's arrays at random
+  const anchored_face_geometry* geo = nullptr;
+  std::size_t nvertices = 0;
+  if (geometry) {
+    geo = geometry->faces.data() + plan.first[detail::to_size(region)];
+    nvertices = detail::to_size(geometry->vertex_count[detail::to_size(region)]);
+    // read in order once: the growth below visits the faces in breadth-first order, at random
+    // within the region, which would otherwise wait for memory face by face
+    const auto* words = reinterpret_cast<const unsigned char*>(geo);
+    unsigned char touch = 0;
+    for (std::size_t b = 0; b < nfaces * sizeof(anchored_face_geometry); b += 64) touch |= words[b];
+    scr.touched = touch;
+  } else {
+    detail::anchored_gather_scratch& gs = detail::anchored_thread_gather_scratch();
+    gs.fit(nf, mesh.num_vertices());
+    scr.geometry.resize(nfaces);
+    detail::gather_anchored_region(mesh, plan, region, scr.geometry.data(), gs.local, gs.vlocal, gs.vertices);
+    geo = scr.geometry.data();
+    nvertices = gs.vertices.size();
+  }
+  // the same for the faces' coordinates, written in that order (the region's faces ascend)
+  for (std::size_t i = 0; i < nfaces; i += 2) __builtin_prefetch(atlas.uv.data() + begin[i], 1);
   auto& queue = scr.order;
   auto& deferred = scr.deferred;
   auto& table = scr.table;
-  auto& local = scr.local;
   auto& corners = scr.corners;  // per i: table entries of its corners
-  auto& lf = scr.faces;         // per i: vertex ids
-  auto& ln = scr.neighbors;     // per i: neighbours' indices in the region (-1: none or another region)
-  auto& lsides = scr.sides;     // per i: its sides for unfolding
   auto& lpatch = scr.patch;     // per i: placement (-1 unplaced, -2 waiting)
-  auto& linverse = scr.inverses;
   const double tpu = plan.texels_per_unit, max_stretch = opts.max_stretch;
   queue.clear();
-  table.reset(nfaces / 2 + 64);  // about one entry per vertex: half as many vertices as faces
-  if (local.size() < detail::to_size(nf)) local.assign(detail::to_size(nf), -1);
+  table.reset(nvertices);
   corners.resize(nfaces);
-  lf.resize(nfaces);
-  ln.resize(nfaces);
-  lsides.resize(nfaces);
-  linverse.resize(nfaces);
   lpatch.assign(nfaces, -1);
-  for (std::size_t i = 0; i < nfaces; ++i) local[detail::to_size(begin[i])] = static_cast<std::int32_t>(i);
-  for (std::size_t i = 0; i < nfaces; ++i) {
-    const auto f = detail::to_size(begin[i]);
-    lf[i] = mesh.faces[f];
-    for (std::size_t k = 0; k < 3; ++k) {
-      const std::int32_t n = mesh.neighbors[f][k];
-      ln[i][k] = n >= 0 && n < nf ? local[detail::to_size(n)] : -1;
-    }
-    const auto& v = lf[i];
-    const detail::plane_triangle shape =
-        detail::to_plane_triangle(mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2]));
-    lsides[i] = detail::to_unfold_sides(shape);
-    linverse[i] = detail::invert_plane_triangle(shape, tpu);
-  }
-  for (std::size_t i = 0; i < nfaces; ++i) local[detail::to_size(begin[i])] = -1;
   std::int32_t patches = 0;
   const std::int32_t seed_face = plan.seed[detail::to_size(region)];
   std::size_t next_start = 0;
@@ -359,7 +289,7 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
   };
   // the corner of neighbour n (a region index) holding vertex v (n shares a side with the face)
   auto corner_of = [&](std::int32_t n, std::int32_t v) {
-    const auto& nv = lf[detail::to_size(n)];
+    const auto& nv = geo[detail::to_size(n)].vertices;
     return nv[0] == v ? std::size_t{0} : nv[1] == v ? std::size_t{1} : std::size_t{2};
   };
   // §2.3 step (2) on the ground for face i of the region taken up: continue a placed neighbour's
@@ -368,10 +298,9 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
     const auto li = detail::to_size(i);
     if (lpatch[li] >= 0) return true;
     const auto f = begin[li];
-    const auto& nb = ln[li];
-    const auto& fv = lf[li];
-    const detail::unfold_sides& shape = lsides[li];
-    const detail::plane_triangle_inverse& inverse = linverse[li];
+    const anchored_face_geometry& shape = geo[li];
+    const auto& nb = shape.neighbors;
+    const auto& fv = shape.vertices;
     int placed = 0, oldest = -1;
     std::int32_t best_patch = -1, oldest_patch = std::numeric_limits<std::int32_t>::max();
     detail::tri_uv best_uv{};
@@ -397,11 +326,11 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
       std::array<vec2, 3> c3;
       if (!detail::anchored_unfold(shape, k, table.coord(ea), table.coord(eb), tpu, false, c3)) continue;
       const std::size_t kc = detail::to_size((k + 2) % 3);
-      const std::int32_t known = table.find(detail::anchored_vertex_table::key(vc, p));
+      const std::int32_t known = table.find(vc, p);
       if (known >= 0) c3[kc] = table.coord(known);
       const detail::tri_uv t = to_uv(c3);
       if (!fits(t)) continue;
-      if (!detail::plane_triangle_within(inverse, t, max_stretch)) continue;
+      if (!detail::anchored_within(shape, t, max_stretch)) continue;
       best_patch = p;
       best_uv = t;
       best_c3 = c3;
@@ -413,8 +342,7 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
       lpatch[li] = best_patch;
       // the one corner the placement did not hold yet (the other two came from the neighbour)
       const std::size_t kc = detail::to_size((best_side + 2) % 3);
-      if (best_entries[2] < 0)
-        best_entries[2] = table.insert(detail::anchored_vertex_table::key(fv[kc], best_patch), best_c3[kc]);
+      if (best_entries[2] < 0) best_entries[2] = table.insert(fv[kc], best_patch, best_c3[kc]);
       auto& ce = corners[li];
       for (std::size_t j = 0; j < 3; ++j) ce[(detail::to_size(best_side) + j) % 3] = best_entries[j];
     } else if (opts.defer_restarts && placed > 0 && !forced) {
@@ -443,7 +371,8 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
       }
       if (!have) {
         const detail::anchored_frame own = detail::anchored_face_frame(mesh, plan, f);
-        for (std::size_t c = 0; c < 3; ++c) c3[c] = detail::anchored_coord(own, mesh.position(fv[c]), tpu);
+        for (std::size_t c = 0; c < 3; ++c)
+          c3[c] = detail::anchored_coord(own, mesh.position(mesh.faces[detail::to_size(f)][c]), tpu);
       }
       bool big = false;
       for (int axis = 0; axis < 2; ++axis) {
@@ -456,8 +385,7 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
         for (std::size_t c = 0; c < 3; ++c) c3[c][axis] += shift;
       }
       auto& ce = corners[li];
-      for (std::size_t c = 0; c < 3; ++c)
-        ce[c] = table.insert(detail::anchored_vertex_table::key(fv[c], patches), c3[c]);
+      for (std::size_t c = 0; c < 3; ++c) ce[c] = table.insert(fv[c], patches, c3[c]);
       atlas.uv[detail::to_size(f)] = to_uv(c3);
       lpatch[li] = patches++;
       st.restarts += oldest >= 0 ? 1 : 0;
@@ -493,7 +421,7 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
     atlas.patch[fi] = lpatch[i];
     std::uint8_t bits = 0;
     for (std::size_t k = 0; k < 3; ++k) {
-      const std::int32_t n = ln[i][k];
+      const std::int32_t n = geo[i].neighbors[k];
       if (n < 0 || lpatch[detail::to_size(n)] != lpatch[i]) bits = static_cast<std::uint8_t>(bits | 1u << k);
     }
     atlas.seam[fi] = bits;

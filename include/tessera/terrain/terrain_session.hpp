@@ -45,6 +45,7 @@
 #include "../core/random.hpp"
 #include "../core/status.hpp"
 #include "../core/vec.hpp"
+#include "anchored_region_geometry.hpp"
 #include "plan_anchored_regions.hpp"
 #include "prepare_terrain_mesh.hpp"
 #include "project_mesh.hpp"
@@ -154,11 +155,11 @@ class terrain_session {
   /// Bytes held by the session (per-face state, regions, atlas and the projection).
   [[nodiscard]] std::size_t memory_bytes() const noexcept {
     auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
-    return plan_.memory_bytes() + atlas_.memory_bytes() + blocks_.memory_bytes() + bytes(uv_) + bytes(level_) +
-           bytes(blend_from_) + bytes(vpos_) + bytes(blend_left_) + bytes(dirty_) + bytes(proj_.state) +
-           bytes(proj_.visible) + bytes(bframe_) + bytes(bchanged_) + bytes(bview_) + bytes(work_) + bytes(grow_) +
-           bytes(bstats_) + bytes(rgrown_) + bytes(start2_) + bytes(lo2_) + bytes(hi2_) + bytes(lo_) + bytes(hi_) +
-           bytes(scales_);
+    return plan_.memory_bytes() + geometry_.memory_bytes() + atlas_.memory_bytes() + blocks_.memory_bytes() +
+           bytes(uv_) + bytes(level_) + bytes(blend_from_) + bytes(vpos_) + bytes(blend_left_) + bytes(dirty_) +
+           bytes(proj_.state) + bytes(proj_.visible) + bytes(bframe_) + bytes(bchanged_) + bytes(bview_) +
+           bytes(work_) + bytes(grow_) + bytes(bstats_) + bytes(rgrown_) + bytes(start2_) + bytes(lo2_) + bytes(hi2_) +
+           bytes(lo_) + bytes(hi_) + bytes(scales_);
   }
 
  private:
@@ -175,6 +176,7 @@ class terrain_session {
   index_t frame_ = -1;
   bool rebuild_visible_ = true;  ///< the visible list must be rebuilt from the states (first frame, after an error)
   anchored_regions plan_;
+  anchored_geometry geometry_;  ///< the regions' faces as their growth reads them
   anchored_atlas atlas_;
   detail::session_blocks blocks_;
   screen_projection proj_;
@@ -273,6 +275,9 @@ inline result<terrain_session> make_terrain_session(const terrain_mesh& mesh, in
     s.hi_.push_back(std::sqrt(s.hi2_.back()));
   }
   s.plan_ = std::move(*plan);
+  auto geometry = make_anchored_geometry(mesh, s.plan_);
+  if (!geometry) return geometry.error();
+  s.geometry_ = std::move(*geometry);
   reset_anchored_atlas(s.plan_, s.nf_, s.atlas_);
   s.blocks_ = detail::make_session_blocks(mesh, s.plan_);
   const auto nf = detail::to_size(s.nf_), nb = detail::to_size(s.blocks_.num_blocks());
@@ -476,7 +481,7 @@ status update_terrain_session(terrain_session& s, const terrain_mesh& mesh, cons
   exec.parallel_for(0, static_cast<index_t>(s.grow_.size()), [&](index_t i) {
     const std::int32_t r = s.grow_[detail::to_size(i)];
     (void)synthesize_anchored_region(mesh, s.plan_, r, s.ew_, s.eh_, s.opts_.synthesis, s.atlas_,
-                                     &s.rgrown_[detail::to_size(i)]);
+                                     &s.rgrown_[detail::to_size(i)], &s.geometry_);
     for (auto b = bl.region_first[detail::to_size(r)]; b < bl.region_first[detail::to_size(r) + 1]; ++b)
       if (s.bchanged_[detail::to_size(b)] & 1) write_uv(detail::to_size(b));
   });

@@ -59,36 +59,6 @@ inline double plane_triangle_stretch(const plane_triangle& p, const std::array<f
   const double s1 = 0.5 * (hi + lo), s2 = 0.5 * (hi - lo);
   return s2 > 0 ? std::max(s1, 1 / s2) : inf;
 }
-/// The inverse of a plane triangle's edge matrix s [[l1, x2], [0, y2]] (s = texels_per_unit), for
-/// tests of many texture placements of one face: J = T P^-1.
-struct plane_triangle_inverse {
-  double i11 = 0, i12 = 0, i22 = 0;
-  bool ok = false;  ///< false for a degenerate triangle or density
-};
-inline plane_triangle_inverse invert_plane_triangle(const plane_triangle& p, double texels_per_unit) noexcept {
-  if (!(p.l1 > 0) || !(p.y2 > 0) || !(texels_per_unit > 0)) return {};
-  const double a = 1 / (texels_per_unit * p.l1), d = 1 / (texels_per_unit * p.y2);
-  return {a, -p.x2 * a * d * texels_per_unit, d, true};
-}
-/// Whether the stretch of texture corners `uv` on the triangle with inverse `inv` is at most
-/// max_stretch (>= 1), without a square root: s1 <= m and s2 >= 1 / m for the singular values
-/// s1 >= s2 of J, i.e. both roots of x^2 - |J|_F^2 x + det^2 (the squared singular values) in
-/// [1 / m^2, m^2].
-inline bool plane_triangle_within(const plane_triangle_inverse& inv, const std::array<float, 6>& uv,
-                                  double max_stretch) noexcept {
-  if (!inv.ok) return false;
-  const double u1 = static_cast<double>(uv[2]) - uv[0], v1 = static_cast<double>(uv[3]) - uv[1];
-  const double u2 = static_cast<double>(uv[4]) - uv[0], v2 = static_cast<double>(uv[5]) - uv[1];
-  const double j11 = u1 * inv.i11, j12 = u1 * inv.i12 + u2 * inv.i22, j21 = v1 * inv.i11,
-               j22 = v1 * inv.i12 + v2 * inv.i22;
-  const double det = j11 * j22 - j12 * j21;
-  if (!(det > 0)) return false;
-  const double q = j11 * j11 + j12 * j12 + j21 * j21 + j22 * j22, d2 = det * det;
-  const double hi = max_stretch * max_stretch, lo = 1 / hi;
-  // a monic quadratic with real roots has both in [lo, hi] iff its vertex q / 2 lies in [lo, hi]
-  // and it is >= 0 at both ends
-  return q <= 2 * hi && q >= 2 * lo && hi * hi - q * hi + d2 >= 0 && lo * lo - q * lo + d2 >= 0;
-}
 }  // namespace detail
 
 /// The stretch (see the file comment) of texture corners `uv` (u0 v0 u1 v1 u2 v2, texels) on the
