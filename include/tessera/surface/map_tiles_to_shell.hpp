@@ -35,6 +35,12 @@
 
 TESSERA_NAMESPACE_BEGIN
 
+namespace detail {
+/// In tile units: how far from the polycube surface the inverse projection looks first (texture
+/// points lie on it up to rounding).
+inline constexpr double shell_projection_radius = 1e-6;
+}  // namespace detail
+
 /// Options of map_tiles_to_shell. Lengths are in tile units (multiples of polycube_map::tile_size).
 struct shell_map_options {
   /// Largest distance of a mapped edge's midpoint from the straight chord between its mapped ends.
@@ -102,19 +108,39 @@ requires std::is_invocable_r_v<const tri_mesh*, const Tiles&, index_t> result<sh
   res.dropped_faces = tex.dropped_faces;
   res.quads = tex.quads;
   // P⁻¹ then the shell map, one texture point at a time
-  auto map_point = [&](const detail::shell_texture_point& tp) {
+  auto map_in_face = [&](index_t face, vec3 bary, double h) {
     detail::shell_mapped_point m;
-    const base_surface_point b = pj.inverse(tp.p);
-    m.face = b.face;
-    if (b.face < 0) return m;
-    m.x = detail::shell_position_in_tet(sh, b.face, b.bary, std::clamp(tp.h / H, 0.0, 1.0), m.tet);
+    m.face = face;
+    m.bary = bary;
+    m.x = detail::shell_position_in_tet(sh, face, bary, std::clamp(h / H, 0.0, 1.0), m.tet);
     return m;
+  };
+  // texture points lie on the polycube surface: a small search radius prunes the BVH walk
+  const double radius = detail::shell_projection_radius * T;
+  auto map_point = [&](const detail::shell_texture_point& tp, index_t hint_a, index_t hint_b) {
+    // a midpoint usually lies in the polycube triangle of one of its edge's ends: try those first
+    for (const index_t f : {hint_a, hint_b}) {
+      if (f < 0) continue;
+      const auto& fv = map.base.faces[detail::to_size(f)];
+      const vec3 q0 = map.polycube[detail::to_size(fv[0])], q1 = map.polycube[detail::to_size(fv[1])],
+                 q2 = map.polycube[detail::to_size(fv[2])];
+      const vec3 n = cross(q1 - q0, q2 - q0);
+      const double nn = dot(n, n);
+      if (!(nn > 0) || std::abs(dot(tp.p - q0, n)) > radius * std::sqrt(nn)) continue;
+      const vec3 b{dot(cross(q1 - tp.p, q2 - tp.p), n) / nn, dot(cross(q2 - tp.p, q0 - tp.p), n) / nn,
+                   dot(cross(q0 - tp.p, q1 - tp.p), n) / nn};
+      if (b.x >= 0 && b.y >= 0 && b.z >= 0) return map_in_face(f, b / (b.x + b.y + b.z), tp.h);
+    }
+    const base_surface_point b = pj.inverse(tp.p, radius);
+    if (b.face < 0) return detail::shell_mapped_point{};
+    return map_in_face(b.face, b.bary, tp.h);
   };
   std::vector<detail::shell_mapped_point> mapped(tex.points.size());
   exec.parallel_for(0, static_cast<index_t>(tex.points.size()),
-                    [&](index_t i) { mapped[detail::to_size(i)] = map_point(tex.points[detail::to_size(i)]); });
+                    [&](index_t i) { mapped[detail::to_size(i)] = map_point(tex.points[detail::to_size(i)], -1, -1); });
   detail::shell_refine_limits lim{o.chordal_tolerance * T, o.min_edge * T, o.max_split_rounds};
-  res.split_edges = detail::refine_shell_mesh(tex.points, mapped, tex.faces, map.base.faces, lim, map_point, exec);
+  res.split_edges =
+      detail::refine_shell_mesh(tex.points, mapped, tex.faces, map.base.faces, lim, map_point, map_in_face, exec);
   if (tex.points.size() >= (std::size_t{1} << 31))
     return status::size_overflow("map_tiles_to_shell: more than 2^31 output vertices");
   // keep the vertices that faces use, in vertex order
