@@ -26,8 +26,10 @@ const double pi = 3.14159265358979323846;
 // gives the quad-local (u, v) of a point at that angle and distance from the ring's centre; the tube's
 // cross-section is a circle of radius r in the plane and rh in height around height hc.
 template <class Place>
-void add_ring(tri_mesh& m, double t0, double t1, bool closed, double R, double r, double hc, double rh, Place place) {
-  const int nt = closed ? 24 : 12, np = 8, cols = closed ? nt : nt + 1;
+void add_ring(tri_mesh& m, double t0, double t1, bool closed, double R, double r, double hc, double rh, Place place,
+              int nt = 24, int np = 8) {
+  if (!closed) nt /= 2;
+  const int cols = closed ? nt : nt + 1;
   const index_t base = m.num_vertices();
   for (int i = 0; i < cols; ++i)
     for (int j = 0; j < np; ++j) {
@@ -151,28 +153,19 @@ tri_mesh sphere(int n) {
   return m;
 }
 
-tri_mesh torus(double R, double r, int nu, int nv) {
-  tri_mesh m;
-  for (int i = 0; i < nu; ++i)
-    for (int j = 0; j < nv; ++j) {
-      const double u = 2 * pi * i / nu, v = 2 * pi * j / nv;
-      m.add_vertex({(R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u), r * std::sin(v)});
-    }
-  for (int i = 0; i < nu; ++i)
-    for (int j = 0; j < nv; ++j) {
-      const auto at = [&](int a, int b) { return static_cast<index_t>((a % nu) * nv + b % nv); };
-      m.add_face(at(i, j), at(i + 1, j), at(i + 1, j + 1));
-      m.add_face(at(i, j), at(i + 1, j + 1), at(i, j + 1));
-    }
-  return m;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
   const std::string out = argc > 1 ? argv[1] : ".";
   bool ok = run(sphere(24), 8, false, "shell_sphere_rings", out);
-  ok = run(torus(2, 0.8, 96, 32), 10, true, "shell_torus_rings_across", out) && ok;
+  tri_mesh torus;  // a ring swept in 3D is a torus: radii 2 and 0.8, 96 x 32 vertices
+  add_ring(
+      torus, 0, 2 * pi, true, 2, 0.8, 0, 0.8,
+      [](double a, double rho, bool) {
+        return std::array<double, 2>{rho * std::cos(a), rho * std::sin(a)};
+      },
+      96, 32);
+  ok = run(torus, 10, true, "shell_torus_rings_across", out) && ok;
   std::printf("wrote %s/shell_*.obj and .png\n", out.c_str());
   return ok ? 0 : 1;
 }
