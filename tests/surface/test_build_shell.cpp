@@ -38,7 +38,7 @@ TEST_CASE("shell: the sorted prism split is shared by neighbouring prisms and co
     }
 }
 
-TEST_CASE("shell: a sphere's shell needs no repair; the shell map is exact at the corners") {
+TEST_CASE("shell: a sphere's shell needs no repair, the shell map is exact at the corners") {
   const auto m = shapes::sphere(8);
   auto s = build_shell(m, 0.3);
   REQUIRE(s);

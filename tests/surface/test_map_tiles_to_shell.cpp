@@ -127,7 +127,7 @@ TEST_CASE("shell mapping: rings inside a quad, across a quad border and across a
   }
 }
 
-TEST_CASE("shell mapping: a plate over every quad welds into one closed offset surface; long edges are split") {
+TEST_CASE("shell mapping: a plate over every quad welds into one closed offset surface, long edges are split") {
   const auto f = make(shapes::torus(2, 0.7, 48, 16), 6);
   const polycube_projector pj(f.map);
   tri_mesh plate;
