@@ -144,11 +144,12 @@ tri_mesh sphere(int n) {
         g[static_cast<std::size_t>(w)] = j;
         return vert(g);
       };
-      for (int i = 0; i < n; ++i)
-        for (int j = 0; j < n; ++j) {
-          m.add_face(at(i, j), at(i + 1, j), at(i + 1, j + 1));
-          m.add_face(at(i, j), at(i + 1, j + 1), at(i, j + 1));
-        }
+      for (int c = 0; c < n * n; ++c) {  // square (i, j) = (c / n, c % n) as two triangles
+        const std::array<index_t, 4> q{at(c / n, c % n), at(c / n + 1, c % n), at(c / n + 1, c % n + 1),
+                                       at(c / n, c % n + 1)};
+        m.add_face(q[0], q[1], q[2]);
+        m.add_face(q[0], q[2], q[3]);
+      }
     }
   return m;
 }

@@ -178,6 +178,11 @@ index_t refine_shell_mesh(std::vector<shell_texture_point>& points, std::vector<
     const auto &ma = mapped[a], &mb = mapped[b];
     return ma.face == mb.face ? map_in_face(ma.face, 0.5 * (ma.bary + mb.bary), m.h) : map_point(m, ma.face, mb.face);
   };
+  auto prepare = [&](std::size_t n, char fill) {  // per-edge scratch of one batch
+    split.assign(n, fill);
+    mid.resize(n);
+    mid_mapped.resize(n);
+  };
   auto add_points = [&](const std::vector<std::pair<std::uint64_t, index_t>>& edges) {
     for (std::size_t i = 0; i < edges.size(); ++i) {
       index_t id = kept;
@@ -195,9 +200,7 @@ index_t refine_shell_mesh(std::vector<shell_texture_point>& points, std::vector<
   for (int round = 0; round < lim.max_rounds && !active.empty(); ++round) {
     // 1. decide the edges not seen before (in parallel; a function of the edge's two vertices)
     std::sort(fresh.begin(), fresh.end());
-    split.assign(fresh.size(), 0);
-    mid.resize(fresh.size());
-    mid_mapped.resize(fresh.size());
+    prepare(fresh.size(), 0);
     exec.parallel_for(0, static_cast<index_t>(fresh.size()), [&](index_t i) {
       const std::uint64_t key = fresh[to_size(i)].first;
       const auto [a, b] = ends(key);
@@ -242,9 +245,7 @@ index_t refine_shell_mesh(std::vector<shell_texture_point>& points, std::vector<
         if (u >= 0 && u != t) work.push_back(u);
     }
     std::sort(closure.begin(), closure.end());
-    split.assign(closure.size(), 1);
-    mid.resize(closure.size());
-    mid_mapped.resize(closure.size());
+    prepare(closure.size(), 1);
     exec.parallel_for(0, static_cast<index_t>(closure.size()), [&](index_t i) {
       const std::uint64_t key = closure[to_size(i)].first;
       mid[to_size(i)] = midpoint(key);
