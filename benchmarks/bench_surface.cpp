@@ -1,9 +1,10 @@
 // Benchmarks of the surface family (paper 000 §4): automatic polycube construction against mesh size
 // (tori of 2k to 80k faces, 8 tiles across, 1 and 2 threads), the projection round trip, and the
 // distortion figures. Same-run baseline: face adjacency of the same mesh (one sort of its 3F sides),
-// so the construction reads as a multiple of the cheapest whole-mesh pass.
+// so the construction reads as a multiple of the cheapest whole-mesh pass. Shell mapping: see below.
 #include <benchmark/benchmark.h>
 
+#include <array>
 #include <cmath>
 #include <map>
 #include <vector>
@@ -11,6 +12,8 @@
 #include <tessera/core/executor.hpp>
 #include <tessera/core/mesh_topology.hpp>
 #include <tessera/surface/build_polycube_map.hpp>
+#include <tessera/surface/build_shell.hpp>
+#include <tessera/surface/map_tiles_to_shell.hpp>
 #include <tessera/surface/polycube_distortion.hpp>
 #include <tessera/surface/polycube_projection.hpp>
 
@@ -88,6 +91,101 @@ void BM_distortion(benchmark::State& st) {
   for (auto _ : st) benchmark::DoNotOptimize(polycube_distortion(map));
 }
 BENCHMARK(BM_distortion)->Unit(benchmark::kMillisecond);
+
+// Shell mapping (paper 000 §4, Table 2: 322 tiles on a 7.5k-vertex bunny in 7.9-25.4 s): a ring tile
+// (192 vertices, 384 faces) on each of the 384 quads of a 7352-vertex sphere's polycube map (12 tiles
+// across), H = 0.2 tile. Same-run baseline: the inverse projection P⁻¹ alone of the same tile vertices.
+struct shell_case {
+  polycube_map map;
+  shell sh;
+  tri_mesh ring;
+};
+const shell_case& shell_bench_case() {
+  static const shell_case c = [] {
+    tri_mesh m;  // unit sphere: a cube with 35 x 35 squares per face, projected outwards
+    std::map<std::array<int, 3>, index_t> id;
+    const int n = 35;
+    auto vert = [&](std::array<int, 3> g) {
+      auto [it, fresh] = id.emplace(g, m.num_vertices());
+      if (fresh) m.add_vertex(normalized(vec3{g[0] * 1.0 / n - 0.5, g[1] * 1.0 / n - 0.5, g[2] * 1.0 / n - 0.5}));
+      return it->second;
+    };
+    for (int a = 0; a < 3; ++a)
+      for (int sign = -1; sign <= 1; sign += 2) {
+        const int u = sign > 0 ? (a + 1) % 3 : (a + 2) % 3, w = sign > 0 ? (a + 2) % 3 : (a + 1) % 3;
+        for (int i = 0; i < n; ++i)
+          for (int j = 0; j < n; ++j) {
+            std::array<index_t, 4> q{};
+            const int du[4] = {0, 1, 1, 0}, dw[4] = {0, 0, 1, 1};
+            for (int k = 0; k < 4; ++k) {
+              std::array<int, 3> g{};
+              g[static_cast<std::size_t>(a)] = sign > 0 ? n : 0;
+              g[static_cast<std::size_t>(u)] = i + du[k];
+              g[static_cast<std::size_t>(w)] = j + dw[k];
+              q[static_cast<std::size_t>(k)] = vert(g);
+            }
+            m.add_face(q[0], q[1], q[2]);
+            m.add_face(q[0], q[2], q[3]);
+          }
+      }
+    shell_case c;
+    c.map = *build_polycube_map(m, polycube_options{0, 12});
+    const double T = c.map.tile_size;
+    c.sh = *build_shell(c.map.base, 0.2 * T);
+    const int nt = 24, np = 8;  // ring: radius 0.3 tile, tube 0.1 tile, heights 0.02-0.18 tile
+    const double pi = 3.14159265358979323846;
+    for (int i = 0; i < nt; ++i)
+      for (int j = 0; j < np; ++j) {
+        const double t = 2 * pi * i / nt, p = 2 * pi * j / np;
+        c.ring.add_vertex({0.5 + (0.3 + 0.1 * std::cos(p)) * std::cos(t), 0.5 + (0.3 + 0.1 * std::cos(p)) * std::sin(t),
+                           (0.1 + 0.08 * std::sin(p)) * T});
+      }
+    auto at = [&](int i, int j) { return static_cast<index_t>(((i + nt) % nt) * np + (j + np) % np); };
+    for (int i = 0; i < nt; ++i)
+      for (int j = 0; j < np; ++j) {
+        c.ring.add_face(at(i, j), at(i + 1, j), at(i + 1, j + 1));
+        c.ring.add_face(at(i, j), at(i + 1, j + 1), at(i, j + 1));
+      }
+    return c;
+  }();
+  return c;
+}
+
+void BM_shell_inverse_baseline(benchmark::State& st) {
+  const auto& c = shell_bench_case();
+  const polycube_projector pj(c.map);
+  const auto nq = static_cast<index_t>(c.map.layout.quads.size());
+  for (auto _ : st)
+    for (index_t q = 0; q < nq; ++q)
+      for (const vec3& p : c.ring.positions) benchmark::DoNotOptimize(pj.inverse(q, p.x, p.y));
+  st.counters["quads"] = static_cast<double>(nq);
+  st.counters["points"] = static_cast<double>(nq * c.ring.num_vertices());
+}
+BENCHMARK(BM_shell_inverse_baseline)->Unit(benchmark::kMillisecond);
+
+void BM_map_tiles_to_shell(benchmark::State& st) {
+  const auto& c = shell_bench_case();
+  const polycube_projector pj(c.map);
+  thread_pool_executor pool(static_cast<int>(st.range(0)));
+  index_t faces = 0, splits = 0;
+  for (auto _ : st) {
+    auto r = map_tiles_to_shell(
+        c.map, pj, c.sh, [&](index_t) { return &c.ring; }, {}, pool);
+    faces = r->element_faces;
+    splits = r->split_edges;
+  }
+  st.counters["base_vertices"] = static_cast<double>(c.map.base.num_vertices());
+  st.counters["quads"] = static_cast<double>(c.map.layout.quads.size());
+  st.counters["faces"] = static_cast<double>(faces);
+  st.counters["splits"] = static_cast<double>(splits);
+}
+BENCHMARK(BM_map_tiles_to_shell)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
+
+void BM_build_shell(benchmark::State& st) {
+  const auto& c = shell_bench_case();
+  for (auto _ : st) benchmark::DoNotOptimize(build_shell(c.map.base, 0.2 * c.map.tile_size));
+}
+BENCHMARK(BM_build_shell)->Unit(benchmark::kMillisecond);
 }  // namespace
 
 BENCHMARK_MAIN();

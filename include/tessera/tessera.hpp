@@ -61,8 +61,10 @@
 #include "render/triangle_rasterizer.hpp"
 #include "render/render_mesh_preview.hpp"
 
-// surface (paper 000 §4: polycube maps)
+// surface (paper 000 §4: polycube maps, shell mapping)
 #include "surface/build_polycube_map.hpp"
+#include "surface/build_shell.hpp"
+#include "surface/map_tiles_to_shell.hpp"
 #include "surface/polycube_distortion.hpp"
 #include "surface/polycube_map.hpp"
 #include "surface/polycube_projection.hpp"

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "../core/config.hpp"
 #include "../core/status.hpp"
@@ -78,8 +79,14 @@ class polycube_projector {
   }
 
   /// P⁻¹ of any point near the polycube surface (the closest point of the deformed mesh is used).
-  [[nodiscard]] base_surface_point inverse(vec3 polycube_position) const {
-    const auto hit = bvh_.closest_point(polycube_position);
+  /// `search_radius`: where the point is known to lie within this distance of the polycube surface
+  /// (e.g. on it), the search prunes everything farther (much faster); when nothing lies that close,
+  /// the whole mesh is searched.
+  [[nodiscard]] base_surface_point inverse(vec3 polycube_position,
+                                           double search_radius = std::numeric_limits<double>::infinity()) const {
+    auto hit = bvh_.closest_point(polycube_position, search_radius * search_radius);
+    if (hit.face < 0 && search_radius < std::numeric_limits<double>::infinity())
+      hit = bvh_.closest_point(polycube_position);
     base_surface_point out;
     if (hit.face < 0) return out;
     out.face = hit.face;
