@@ -273,8 +273,8 @@ TEST_CASE("geometric tiles on a surface: bad input returns a clear status", "[ma
   // an open base, an inside-out base
   tri_mesh open = c.mesh;
   open.faces.pop_back();
-  fails(map_geometric_tiles(open, c.map, set), status_code::invalid_argument, "base mesh");
-  fails(map_geometric_tiles(open, polycube_options{}, set), status_code::invalid_argument, "base mesh");
+  fails(map_geometric_tiles(open, c.map, set), status_code::invalid_argument, "not closed");
+  fails(map_geometric_tiles(open, polycube_options{}, set), status_code::invalid_argument, "not closed");
   tri_mesh flipped = c.mesh;
   for (auto& f : flipped.faces) std::swap(f[1], f[2]);
   fails(map_geometric_tiles(flipped, c.map, set), status_code::invalid_argument, "inside out");
