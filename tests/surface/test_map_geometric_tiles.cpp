@@ -17,27 +17,12 @@
 #include <string>
 #include <vector>
 
+#include "ring_tile_set.hpp"
 #include "shapes.hpp"
 
 using namespace tessera;
 
 namespace {
-// 96 tiles (two colours per axis) of small rings; elements cross the tile edges
-const geometric_tile_set& gm_ring_set() {
-  static const geometric_tile_set set = [] {
-    auto ex = prepare_quilt_exemplar(
-        *make_ring_exemplar({.size = 8, .spacing = 2.0, .ring_segments = 12, .tube_segments = 5, .seed = 3}));
-    geometric_wang_options o;
-    o.axis_colors = {2, 2, 2};
-    o.tile_size = 4.0;
-    o.quilt.seed = 11;
-    thread_pool_executor pool(2);
-    auto r = build_geometric_wang_tiles(*ex, o, pool);
-    REQUIRE(r.ok());
-    return std::move(*r);
-  }();
-  return set;
-}
 
 struct gm_case {
   const char* name;
@@ -148,7 +133,7 @@ TEST_CASE("geometric tiles on a surface: closed elements stay closed across quad
     INFO(c.name);
     map_geometric_tiles_options o;
     o.seed = 5;
-    auto r = map_geometric_tiles(c.mesh, c.map, gm_ring_set(), o, pool);
+    auto r = map_geometric_tiles(c.mesh, c.map, ring_tile_set(), o, pool);
     INFO((r ? std::string() : r.error().to_string()));
     REQUIRE(r);
     CHECK(r->quads == static_cast<index_t>(c.map.layout.quads.size()));
@@ -156,8 +141,8 @@ TEST_CASE("geometric tiles on a surface: closed elements stay closed across quad
     CHECK(r->welded_vertices > 0);
     CHECK(r->mesh.num_vertices() == r->element_vertices);  // no base appended
     // H keeps the tiles' proportions: (z1 - z0) / w_T tiles
-    const auto [z0, z1] = detail::tile_set_height_range(gm_ring_set());
-    CHECK(r->height == Approx((z1 - z0) / gm_ring_set().tile_size * c.map.tile_size).epsilon(1e-12));
+    const auto [z0, z1] = detail::tile_set_height_range(ring_tile_set());
+    CHECK(r->height == Approx((z1 - z0) / ring_tile_set().tile_size * c.map.tile_size).epsilon(1e-12));
     const auto rep = gm_check_elements(c, *r);
     // elements cut by tile borders came back whole: in the plane and around polycube edges
     CHECK(rep.crossing_quad_borders > 0);
@@ -180,7 +165,7 @@ TEST_CASE("geometric tiles on a surface: height, base mesh and colouring options
   map_geometric_tiles_options o;
   o.height = 0.1 * c.map.tile_size;
   o.with_base = true;
-  auto r = map_geometric_tiles(c.mesh, c.map, gm_ring_set(), o, pool);
+  auto r = map_geometric_tiles(c.mesh, c.map, ring_tile_set(), o, pool);
   REQUIRE(r);
   CHECK(r->height == o.height);
   CHECK(r->mesh.num_faces() == r->element_faces + c.map.base.num_faces());
@@ -192,15 +177,15 @@ TEST_CASE("geometric tiles on a surface: height, base mesh and colouring options
   CHECK(highest <= o.height * (1 + 1e-6));
   CHECK(highest >= 0.8 * o.height);
   // any TileColoring: the seeded colouring passed explicitly gives the same output
-  auto coloring = color_polycube_edges(c.map, gm_ring_set().axis_colors, o.seed);
+  auto coloring = color_polycube_edges(c.map, ring_tile_set().axis_colors, o.seed);
   REQUIRE(coloring);
-  auto same = map_geometric_tiles(c.mesh, c.map, gm_ring_set(), *coloring, o, pool);
+  auto same = map_geometric_tiles(c.mesh, c.map, ring_tile_set(), *coloring, o, pool);
   REQUIRE(same);
   CHECK(same->mesh.positions == r->mesh.positions);
   CHECK(same->mesh.faces == r->mesh.faces);
   // another seed, other tiles
   o.seed = 99;
-  auto other = map_geometric_tiles(c.mesh, c.map, gm_ring_set(), o, pool);
+  auto other = map_geometric_tiles(c.mesh, c.map, ring_tile_set(), o, pool);
   REQUIRE(other);
   bool differs = false;
   for (std::size_t q = 0; q < other->tiling.quads.size(); ++q)
@@ -210,8 +195,8 @@ TEST_CASE("geometric tiles on a surface: height, base mesh and colouring options
   polycube_options po;
   po.tiles_across = 6;
   o.seed = 0;
-  auto built = map_geometric_tiles(c.mesh, po, gm_ring_set(), o, pool);
-  auto given = map_geometric_tiles(c.mesh, c.map, gm_ring_set(), o, pool);
+  auto built = map_geometric_tiles(c.mesh, po, ring_tile_set(), o, pool);
+  auto given = map_geometric_tiles(c.mesh, c.map, ring_tile_set(), o, pool);
   REQUIRE(built);
   REQUIRE(given);
   CHECK(built->mesh.positions == given->mesh.positions);
@@ -223,9 +208,9 @@ TEST_CASE("geometric tiles on a surface: same seed, same output on 1 and 2 threa
     map_geometric_tiles_options o;
     o.seed = 17;
     o.with_base = true;
-    auto one = map_geometric_tiles(c.mesh, c.map, gm_ring_set(), o, serial_executor{});
+    auto one = map_geometric_tiles(c.mesh, c.map, ring_tile_set(), o, serial_executor{});
     thread_pool_executor pool(2);
-    auto two = map_geometric_tiles(c.mesh, c.map, gm_ring_set(), o, pool);
+    auto two = map_geometric_tiles(c.mesh, c.map, ring_tile_set(), o, pool);
     REQUIRE(one);
     REQUIRE(two);
     CHECK(one->mesh.positions == two->mesh.positions);  // bit for bit
@@ -236,7 +221,7 @@ TEST_CASE("geometric tiles on a surface: same seed, same output on 1 and 2 threa
 
 TEST_CASE("geometric tiles on a surface: bad input returns a clear status", "[map_geometric_tiles]") {
   const auto& c = gm_cases()[0];  // sphere
-  const auto& set = gm_ring_set();
+  const auto& set = ring_tile_set();
   auto fails = [](const auto& r, status_code code, const std::string& text) {
     REQUIRE(!r);
     INFO(r.error().to_string());
