@@ -314,7 +314,7 @@ int map(const cli::arguments& args) {
     const triangle_bvh base(pc->base);
     std::vector<double> dist(elements.positions.size());
     pool.parallel_for(0, elements.num_vertices(), [&](index_t v) {
-      dist[detail::to_size(v)] = std::sqrt(base.closest_point(elements.position(v)).squared_distance);
+      dist[static_cast<std::size_t>(v)] = std::sqrt(base.closest_point(elements.position(v)).squared_distance);
     });
     const double worst = dist.empty() ? 0.0 : *std::max_element(dist.begin(), dist.end());
     cli::json_line()
