@@ -1,14 +1,22 @@
-// tessera geo-wang build / geo-wang tile: geometric-texture Wang tiles (paper 000 §3): build a complete
-// planar set (--colors NH,NV) or three-axis set for polycube surfaces (--colors NX,NY,NZ, §3.1 and §5)
-// from an exemplar mesh, and tile a plane from a tile set directory (one face's tiles of a three-axis set).
+// tessera geo-wang build / geo-wang tile / geo-wang map: geometric-texture Wang tiles (paper 000 §3-4):
+// build a complete planar set (--colors NH,NV) or three-axis set for polycube surfaces (--colors
+// NX,NY,NZ, §3.1 and §5) from an exemplar mesh, tile a plane from a tile set directory (one face's tiles
+// of a three-axis set), and cover a closed mesh with a three-axis set through its polycube map and a
+// shell map (§4, surface/map_geometric_tiles.hpp).
+#include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
+#include <tessera/core/mesh_topology.hpp>
+#include <tessera/geometry/bvh.hpp>
 #include <tessera/geometry/check_geometric_texture.hpp>
 #include <tessera/io/geometric_tiles.hpp>
 #include <tessera/geometry/geometric_wang_tiles.hpp>
 #include <tessera/geometry/tile_geometric_plane.hpp>
 #include <tessera/io/mesh_file.hpp>
+#include <tessera/io/polycube_file.hpp>
+#include <tessera/surface/map_geometric_tiles.hpp>
 #include <tessera/tiling/hash_coloring.hpp>
 #include <tessera/tiling/periodic_coloring.hpp>
 #include <tessera/tiling/scanline_coloring.hpp>
@@ -192,6 +200,148 @@ int tile(const cli::arguments& args) {
   return 0;
 }
 
+/// The coarsest grid a polycube-deformed mesh's chart planes lie on: the greatest common divisor (to a
+/// relative 1e-7) of the plane coordinates of its axis-aligned faces, from `deformed` alone.
+tessera::result<double> polycube_grid(const tessera::tri_mesh& deformed) {
+  using namespace tessera;
+  const aabb box = bounding_box(deformed);
+  const double extent = std::max({box.extent().x, box.extent().y, box.extent().z}), tol = 1e-7 * extent;
+  if (!(extent > 0)) return status::invalid_argument("--polycube: the polycube mesh is empty or flat");
+  double g = 0;
+  auto gcd = [tol](double a, double b) {
+    a = std::abs(a), b = std::abs(b);
+    if (a < b) std::swap(a, b);
+    while (b > tol) {
+      double r = std::fmod(a, b);
+      if (r > b - tol) r = 0;
+      a = b;
+      b = r;
+    }
+    return a;
+  };
+  for (const auto& f : deformed.faces) {
+    const vec3 n =
+        cross(deformed.position(f[1]) - deformed.position(f[0]), deformed.position(f[2]) - deformed.position(f[0]));
+    const vec3 a{std::abs(n.x), std::abs(n.y), std::abs(n.z)};
+    const int axis = a.x >= a.y && a.x >= a.z ? 0 : a.y >= a.z ? 1 : 2;
+    const double plane = deformed.position(f[0])[axis];
+    if (std::abs(plane) > tol) g = g > 0 ? gcd(g, plane) : std::abs(plane);
+  }
+  if (!(g > 4 * tol))
+    return status::invalid_argument("--polycube: cannot find the tile grid of the polycube mesh; give --tile W");
+  return g;
+}
+
+int map(const cli::arguments& args) {
+  using namespace tessera;
+  if (args.has("--boolean"))
+    return cli::fail(
+        args, status::unsupported("--boolean: Boolean union and difference with the base mesh are not built yet; write "
+                                  "the elements with --with-base and combine them in a mesh tool"));
+  auto dir = args.required("--tiles");
+  auto in = args.required("--mesh");
+  auto out = args.required("--out");
+  if (!dir) return cli::fail(args, dir.error());
+  if (!in) return cli::fail(args, in.error());
+  if (!out) return cli::fail(args, out.error());
+  auto tile = args.number("--tile", 0, 0, 1e12);
+  auto across = args.integer("--tiles-across", 8, 1, 100000);
+  auto height = args.number("--height", 0, 0, 1e12);
+  if (!tile) return cli::fail(args, tile.error());
+  if (!across) return cli::fail(args, across.error());
+  if (!height) return cli::fail(args, height.error());
+  if (args.has("--tile") && !(*tile > 0))
+    return cli::fail(args, status::invalid_argument("--tile expects a number > 0, got '" + args.str("--tile") + "'"));
+  if (args.has("--height") && !(*height > 0))
+    return cli::fail(args,
+                     status::invalid_argument("--height expects a number > 0, got '" + args.str("--height") + "'"));
+  if (args.has("--tile") && args.has("--tiles-across"))
+    return cli::fail(args, status::invalid_argument("give --tile or --tiles-across, not both"));
+  if (args.has("--polycube") && args.has("--tiles-across"))
+    return cli::fail(args, status::invalid_argument("give --polycube or --tiles-across, not both"));
+  auto set = load_geometric_tile_set(*dir);
+  if (!set) return cli::fail(args, set.error());
+  if (!set->three_axis())
+    return cli::fail(args,
+                     status::invalid_argument(
+                         "--tiles: " + *dir +
+                         " holds a planar set; a surface needs a three-axis set (geo-wang build --colors NX,NY,NZ)"));
+  auto mesh = read_mesh(*in);
+  if (!mesh) return cli::fail(args, mesh.error());
+  thread_pool_executor pool(args.threads());
+  // the polycube map: a saved map (.polycube), a polycube-deformed copy of the mesh, or built here
+  result<polycube_map> pc = status::internal_error("not run");
+  const double pc_ms = cli::median_ms(1, [&] {
+    if (!args.has("--polycube")) {
+      polycube_options po;
+      po.tile_size = *tile;
+      po.tiles_across = static_cast<index_t>(*across);
+      pc = build_polycube_map(*mesh, po, pool);
+      return;
+    }
+    const std::string path = args.str("--polycube");
+    if (path.size() > 9 && path.substr(path.size() - 9) == ".polycube") {
+      pc = load_polycube_map(path);
+      if (pc && args.has("--tile") && std::abs(pc->tile_size - *tile) > 1e-12 * *tile)
+        pc = status::invalid_argument("--tile " + args.str("--tile") + " differs from the tile size of " + path);
+      return;
+    }
+    auto deformed = read_mesh(path);
+    if (!deformed) {
+      pc = deformed.error();
+      return;
+    }
+    auto w = args.has("--tile") ? result<double>(*tile) : polycube_grid(*deformed);
+    if (!w) {
+      pc = w.error();
+      return;
+    }
+    pc = polycube_map_from_deformed(*mesh, *deformed, *w, pool);
+  });
+  if (!pc) return cli::fail(args, pc.error());
+  map_geometric_tiles_options o;
+  o.height = *height;
+  o.seed = args.seed();
+  o.with_base = args.has("--with-base");
+  result<map_geometric_tiles_result> r = status::internal_error("not run");
+  const double ms = cli::median_ms(args.repeat(), [&] { r = map_geometric_tiles(*mesh, *pc, *set, o, pool); });
+  if (!r) return cli::fail(args, r.error());
+  if (auto s = write_mesh(*out, r->mesh); !s) return cli::fail(args, s);
+  if (args.stats()) {
+    tri_mesh elements;
+    elements.positions.assign(r->mesh.positions.begin(), r->mesh.positions.begin() + r->element_vertices);
+    elements.faces.assign(r->mesh.faces.begin(), r->mesh.faces.begin() + r->element_faces);
+    const triangle_bvh base(pc->base);
+    std::vector<double> dist(elements.positions.size());
+    pool.parallel_for(0, elements.num_vertices(), [&](index_t v) {
+      dist[static_cast<std::size_t>(v)] = std::sqrt(base.closest_point(elements.position(v)).squared_distance);
+    });
+    const double worst = dist.empty() ? 0.0 : *std::max_element(dist.begin(), dist.end());
+    cli::json_line()
+        .add("map_ms", ms)
+        .add("height", r->height)
+        .add("quads", static_cast<index_t>(pc->layout.quads.size()))
+        .add("tiles_used", r->tiling.tiles_used)
+        .add("vertices", r->mesh.num_vertices())
+        .add("faces", r->mesh.num_faces())
+        .add("elements", connected_components(elements).count)
+        .add("open_edges", static_cast<index_t>(boundary_edges(elements).size()))
+        .add("shell_repairs", r->shell_repairs)
+        .add("max_offset", worst / r->height)
+        .add("polycube_ms", pc_ms)
+        .add("tile", r->tile_size)
+        .add("refined", pc->refined())
+        .add("welded_vertices", r->welded_vertices)
+        .add("split_edges", r->split_edges)
+        .print();
+  } else {
+    std::printf("wrote %s (%zu quads, %lld tiles used, %lld element faces, H = %g)\n", out->c_str(),
+                pc->layout.quads.size(), static_cast<long long>(r->tiling.tiles_used),
+                static_cast<long long>(r->element_faces), r->height);
+  }
+  return 0;
+}
+
 const cli::registrar reg_build{[] {
   cli::command c{"geo-wang build",
                  "build a complete set of geometric-texture Wang tiles (planar or three-axis) from an exemplar mesh",
@@ -221,6 +371,27 @@ const cli::registrar reg_tile{[] {
        {"--exemplar", "FILE", "with --stats: the exemplar the set was built from, for the likeness figures"},
        {"--out", "FILE", "output mesh"}},
       tile};
+  return c;
+}()};
+
+const cli::registrar reg_map{[] {
+  cli::command c{
+      "geo-wang map",
+      "cover a closed mesh with a three-axis geometric Wang tile set (polycube map + shell map, paper 000 §4)",
+      "tessera geo-wang map --tiles SET --mesh BASE --out OUT.obj [--polycube PC.obj | --tile W] [--height H] "
+      "[--with-base] [--seed S] [--threads T] [--stats]",
+      {{"--tiles", "DIR", "three-axis tile set directory (geo-wang build --colors NX,NY,NZ)"},
+       {"--mesh", "FILE", "closed, manifold, outward-oriented base mesh (.obj, .off, .ply)"},
+       {"--out", "FILE", "output mesh: the texture elements (then the base with --with-base)"},
+       {"--polycube", "FILE",
+        "use this polycube: a map file (.polycube, tessera polycube --map-out) or the polycube-deformed mesh "
+        "(tessera polycube --out; its grid from --tile W, else the coarsest grid its planes lie on)"},
+       {"--tile", "W", "quad size in base-mesh units (builds the polycube map; default: 8 tiles across)"},
+       {"--tiles-across", "N", "build the polycube map with N tiles across the largest extent (default 8)"},
+       {"--height", "H", "shell height in base-mesh units (default: the tiles' own proportions)"},
+       {"--with-base", "", "append the base mesh to the output"},
+       {"--boolean", "union|difference", "not built yet: refused with a message"}},
+      map};
   return c;
 }()};
 

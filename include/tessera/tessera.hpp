@@ -64,6 +64,7 @@
 // surface (paper 000 §4: polycube maps, shell mapping)
 #include "surface/build_polycube_map.hpp"
 #include "surface/build_shell.hpp"
+#include "surface/map_geometric_tiles.hpp"
 #include "surface/map_tiles_to_shell.hpp"
 #include "surface/polycube_distortion.hpp"
 #include "surface/polycube_map.hpp"

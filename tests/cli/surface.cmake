@@ -29,3 +29,31 @@ tessera_cli_test(NAME "cli: polycube tile and tiles-across" CODE 1 REGEX "not bo
                  COMMAND polycube --mesh ${_pcdata}/torus.obj --out ${_pc}/never.obj --tile 1 --tiles-across 3)
 tessera_cli_test(NAME "cli: polycube missing mesh" CODE 1 REGEX "missing required option --in"
                  COMMAND polycube --out ${_pc}/never.obj)
+
+# geo-wang map (paper 000 §4): the one-colour three-axis ring set of geometry.cmake on the torus, through
+# a polycube built here or read back (the deformed mesh of "cli: polycube torus", its grid inferred);
+# closed elements (no open edge), every vertex within the shell (max_offset <= 1); bad input.
+set(_map_stats "\"map_ms\":[0-9.e+-]+,\"height\":[0-9.e+-]+,\"quads\":[1-9][0-9]*,\"tiles_used\":[1-9][0-9]*,\"vertices\":[1-9][0-9]*,\"faces\":[1-9][0-9]*,\"elements\":[1-9][0-9]*,\"open_edges\":0,\"shell_repairs\":[0-9]+,\"max_offset\":(0\\.[0-9e+-]+|1),")
+tessera_cli_test(NAME "cli: geo-wang map torus" REGEX "${_map_stats}.*\"refined\":false"
+                 COMMAND geo-wang map --tiles ${TESSERA_CLI_OUT}/geometry/tiles3 --mesh ${_pcdata}/torus.obj
+                         --out ${_pc}/torus_rings.obj --tiles-across 6 --seed 3 --threads 2 --stats)
+set_tests_properties("cli: geo-wang map torus" PROPERTIES FIXTURES_REQUIRED geo_tiles3)
+tessera_cli_test(NAME "cli: geo-wang map with a polycube" REGEX "${_map_stats}"
+                 COMMAND geo-wang map --tiles ${TESSERA_CLI_OUT}/geometry/tiles3 --mesh ${_pcdata}/torus.obj
+                         --polycube ${_pc}/torus_pc.obj --height 0.05 --with-base --out ${_pc}/torus_rings_pc.obj --stats)
+set_tests_properties("cli: geo-wang map with a polycube" PROPERTIES FIXTURES_REQUIRED "geo_tiles3;pc_torus")
+set_tests_properties("cli: polycube torus" PROPERTIES FIXTURES_SETUP pc_torus)
+tessera_cli_test(NAME "cli: geo-wang map boolean" CODE 1 REGEX "Boolean union and difference .* not built yet"
+                 COMMAND geo-wang map --tiles ${TESSERA_CLI_OUT}/geometry/tiles3 --mesh ${_pcdata}/torus.obj
+                         --out ${_pc}/never.obj --boolean union)
+tessera_cli_test(NAME "cli: geo-wang map planar set" CODE 1 REGEX "planar set"
+                 COMMAND geo-wang map --tiles ${TESSERA_CLI_OUT}/geometry/tiles --mesh ${_pcdata}/torus.obj
+                         --out ${_pc}/never.obj)
+set_tests_properties("cli: geo-wang map planar set" PROPERTIES FIXTURES_REQUIRED geo_tiles)
+tessera_cli_test(NAME "cli: geo-wang map open mesh" CODE 1 REGEX "not closed"
+                 COMMAND geo-wang map --tiles ${TESSERA_CLI_OUT}/geometry/tiles3 --mesh ${_pcdata}/open_cube.obj
+                         --out ${_pc}/never.obj)
+set_tests_properties("cli: geo-wang map open mesh" PROPERTIES FIXTURES_REQUIRED geo_tiles3)
+tessera_cli_test(NAME "cli: geo-wang map bad height" CODE 1 REGEX "--height expects"
+                 COMMAND geo-wang map --tiles ${TESSERA_CLI_OUT}/geometry/tiles3 --mesh ${_pcdata}/torus.obj
+                         --out ${_pc}/never.obj --height -1)

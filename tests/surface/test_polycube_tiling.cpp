@@ -13,26 +13,12 @@
 #include <set>
 #include <vector>
 
+#include "ring_tile_set.hpp"
 #include "shapes.hpp"
 
 using namespace tessera;
 
 namespace {
-const geometric_tile_set& ring_set() {  // 96 tiles, two colours per axis
-  static const geometric_tile_set set = [] {
-    auto ex = prepare_quilt_exemplar(
-        *make_ring_exemplar({.size = 8, .spacing = 2.0, .ring_segments = 12, .tube_segments = 5, .seed = 3}));
-    geometric_wang_options o;
-    o.axis_colors = {2, 2, 2};
-    o.tile_size = 4.0;
-    o.quilt.seed = 11;
-    thread_pool_executor pool(2);
-    auto r = build_geometric_wang_tiles(*ex, o, pool);
-    REQUIRE(r.ok());
-    return std::move(*r);
-  }();
-  return set;
-}
 struct named_map {
   const char* name;
   polycube_map map;
@@ -110,7 +96,7 @@ TEST_CASE("polycube colouring: every edge draws from its axis, keyed by the edge
 
 TEST_CASE("polycube tiling: each quad gets the tile of its face whose edges match, borders meet exactly",
           "[polycube_tiling]") {
-  const auto& set = ring_set();
+  const auto& set = ring_tile_set();
   bool concave_seen = false;
   for (const auto& [name, map] : maps()) {
     INFO(name);
@@ -168,7 +154,7 @@ TEST_CASE("polycube tiling: each quad gets the tile of its face whose edges matc
 }
 
 TEST_CASE("polycube tiling: any TileColoring over the quads may be passed", "[polycube_tiling]") {
-  const auto& set = ring_set();
+  const auto& set = ring_tile_set();
   const auto& map = maps()[0].map;
   const auto own = *color_polycube_edges(map, set.axis_colors, 9);
   const stored_tile_coloring stored = store_coloring(own);
@@ -184,7 +170,7 @@ TEST_CASE("polycube tiling: any TileColoring over the quads may be passed", "[po
 }
 
 TEST_CASE("polycube tiling: bad input returns a clear status", "[polycube_tiling]") {
-  const auto& set = ring_set();
+  const auto& set = ring_tile_set();
   const auto& map = maps()[0].map;
   const auto good = *color_polycube_edges(map, set.axis_colors, 1);
   // colour counts

@@ -52,6 +52,10 @@ struct shell_map_options {
   double min_edge = 1.0 / 1024;
   /// Most split rounds (each at most halves the longest edge).
   int max_split_rounds = 10;
+  /// The splitting may multiply the tiles' face count by at most this (or reach 2^20 faces, whichever
+  /// is more); a shell too high for the tiles' detail (long edges bent around a small base) is refused
+  /// rather than split without end.
+  double max_split_growth = 32;
   /// Append the base mesh after the elements.
   bool with_base = false;
 };
@@ -78,7 +82,9 @@ struct shell_map_result {
 /// `exec`, all choices are functions of the points). Output vertices lie within H of the base surface
 /// (the shell map moves a point at most t · H off its base triangle). Errors (invalid_argument): a
 /// shell built over another mesh than map.base, bad options, an invalid tile mesh or a tile vertex
-/// outside [0, 1]² x [0, H] (naming the quad and vertex); size_overflow beyond 2^31 vertices.
+/// outside [0, 1]² x [0, H] (naming the quad and vertex), a shell too high for the tiles' detail (the
+/// splitting would multiply the faces by more than max_split_growth); size_overflow beyond 2^31
+/// vertices.
 /// O(tile vertices · log F) plus the splits.
 template <class Tiles, Executor E = serial_executor>
 requires std::is_invocable_r_v<const tri_mesh*, const Tiles&, index_t> result<shell_map_result> map_tiles_to_shell(
@@ -91,10 +97,10 @@ requires std::is_invocable_r_v<const tri_mesh*, const Tiles&, index_t> result<sh
                                                 map.base.num_vertices(), " vertices, ", map.base.num_faces(), ")"));
   if (!(o.chordal_tolerance > 0) || !(o.weld_tolerance >= 0 && o.weld_tolerance < 0.01) || !(o.min_edge > 0) ||
       !std::isfinite(o.chordal_tolerance) || !std::isfinite(o.min_edge) || o.max_split_rounds < 0 ||
-      o.max_split_rounds > 30)
+      o.max_split_rounds > 30 || !(o.max_split_growth >= 1) || !(o.max_split_growth <= 1e6))
     return status::invalid_argument(
         "shell_map_options: need chordal_tolerance > 0, 0 <= weld_tolerance < 0.01, min_edge > 0, "
-        "0 <= max_split_rounds <= 30");
+        "0 <= max_split_rounds <= 30, 1 <= max_split_growth <= 1e6");
   if (!(sh.height > 0) || sh.heights.size() != sh.base.positions.size() ||
       sh.directions.size() != sh.base.positions.size())
     return status::invalid_argument("map_tiles_to_shell: the shell is empty or inconsistent (use build_shell)");
@@ -138,9 +144,17 @@ requires std::is_invocable_r_v<const tri_mesh*, const Tiles&, index_t> result<sh
   std::vector<detail::shell_mapped_point> mapped(tex.points.size());
   exec.parallel_for(0, static_cast<index_t>(tex.points.size()),
                     [&](index_t i) { mapped[detail::to_size(i)] = map_point(tex.points[detail::to_size(i)], -1, -1); });
-  detail::shell_refine_limits lim{o.chordal_tolerance * T, o.min_edge * T, o.max_split_rounds};
+  const double budget = std::max(o.max_split_growth * static_cast<double>(tex.faces.size()), double(1 << 20));
+  detail::shell_refine_limits lim{o.chordal_tolerance * T, o.min_edge * T, o.max_split_rounds,
+                                  static_cast<std::size_t>(std::min(budget, 1e12))};
+  const std::size_t input_faces = tex.faces.size();
   res.split_edges =
       detail::refine_shell_mesh(tex.points, mapped, tex.faces, map.base.faces, lim, map_point, map_in_face, exec);
+  if (res.split_edges < 0)
+    return status::invalid_argument(detail::cat(
+        "map_tiles_to_shell: following the shell within the chordal tolerance would split the tiles' ", input_faces,
+        " faces into more than ", lim.max_triangles, " (max_split_growth): the shell height H = ", H,
+        " is too large for the tiles' detail; lower H or raise chordal_tolerance"));
   if (tex.points.size() >= (std::size_t{1} << 31))
     return status::size_overflow("map_tiles_to_shell: more than 2^31 output vertices");
   // keep the vertices that faces use, in vertex order

@@ -39,6 +39,8 @@ struct shell_refine_limits {
   double chordal_tolerance = 0;  ///< largest distance of a mapped edge midpoint from the chord
   double min_edge = 0;           ///< edges shorter than this in texture space are kept
   int max_rounds = 0;            ///< most split rounds
+  /// Most triangles (live and replaced) the refinement may make; beyond it refine_shell_mesh stops.
+  std::size_t max_triangles = std::size_t{1} << 26;
 };
 
 /// What the refinement knows of an edge: its state (undecided, kept, marked, or its midpoint vertex
@@ -104,7 +106,8 @@ inline bool faces_share_vertex(const std::array<index_t, 3>& a, const std::array
 /// `map_point(texture point, face a, face b)` returns the shell_mapped_point of a texture point (the
 /// faces of the edge's ends as hints), `map_in_face(face, bary, h)` that of a point of a known face.
 /// Each round looks only at the triangles made in the previous one and at those a longest-edge
-/// closure reaches. Returns the number of edges split. Deterministic for any executor.
+/// closure reaches. Returns the number of edges split, or -1 (faces unspecified) when a round would
+/// make more than lim.max_triangles triangles. Deterministic for any executor.
 template <class MapPoint, class MapInFace, Executor E>
 index_t refine_shell_mesh(std::vector<shell_texture_point>& points, std::vector<shell_mapped_point>& mapped,
                           std::vector<std::array<index_t, 3>>& faces,
@@ -255,6 +258,7 @@ index_t refine_shell_mesh(std::vector<shell_texture_point>& points, std::vector<
     // 3. bisect the longest side, then the other split sides of the two halves (in triangle order)
     std::sort(splitting.begin(), splitting.end());
     splitting.erase(std::unique(splitting.begin(), splitting.end()), splitting.end());
+    if (tris.size() + 4 * splitting.size() > lim.max_triangles) return -1;  // at most 4 halves each
     active.clear();
     for (const index_t t : splitting) {
       const triangle x = tris[to_size(t)];
