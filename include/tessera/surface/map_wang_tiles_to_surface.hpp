@@ -104,7 +104,7 @@ struct wang_split_edge {
 };
 /// Coordinates within this many grid units of an integer are moved onto it: vertices (and edge
 /// crossings) a rounding error away from a grid line would otherwise leave pieces too thin to orient.
-inline constexpr double wang_grid_snap = 1e-9;
+inline constexpr double wang_grid_snap = 1e-6;
 inline double snap_to_grid(double g) noexcept {
   const double r = std::round(g);
   return std::abs(g - r) < wang_grid_snap ? r : g;
