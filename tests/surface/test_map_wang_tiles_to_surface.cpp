@@ -183,6 +183,7 @@ TEST_CASE("image Wang tiles on surfaces: closed split, seam-free bilinear sample
     CHECK(rep.cross_quad > 0);
     CHECK(rep.cross_chart > 0);
     CHECK(rep.worst < 1e-6);
+    CHECK(wst_image_set().exact_mip_levels() == 2);
     // every quad carries faces
     std::vector<char> has(map.layout.quads.size(), 0);
     for (index_t q : r->face_quad) has[static_cast<std::size_t>(q)] = 1;

@@ -147,7 +147,8 @@ image_buffer<T, C> turned_strip(const image_buffer<T, C>& s) {
 ///
 /// - options: as for build_wang_tiles (tile size, mip levels, quilting sizes, tolerance, seed,
 ///   progress); horizontal_colors and vertical_colors are not read, `tiles` must be empty (the set is
-///   always complete).
+///   always complete). mip_levels = 0 with border = 0 means 2 here (1 for odd tile sizes): a 4 x 4
+///   corner sample, since a larger symmetric one shows as a pinwheel at every tile corner.
 /// - exec: strips and tiles in parallel; the output is bit-identical for any executor.
 /// Errors: colour counts outside [1, 4096] (naming the axis); a non-empty options.tiles; and every
 /// error of build_wang_tiles about sizes, the exemplar, tolerance, cancellation and set size.
@@ -167,11 +168,15 @@ template <Image E, Executor X = serial_executor>
   if (!options.tiles.empty())
     return status::invalid_argument(
         "build_axis_wang_tiles: options.tiles must be empty (a three-axis set is always complete)");
-  auto sizes = detail::resolve_wang_sizes(options, width_of(exemplar), height_of(exemplar));
+  // The quarter-turn-symmetric corner sample is a visible pinwheel when large: unless told otherwise,
+  // keep it 4 x 4 (2 exact mip levels; bilinear sampling at level 0 needs a border of 1 only).
+  wang_tile_options o = options;
+  if (o.mip_levels == 0 && o.border == 0) o.mip_levels = o.tile_size % 2 == 0 ? 2 : 1;
+  auto sizes = detail::resolve_wang_sizes(o, width_of(exemplar), height_of(exemplar));
   if (!sizes) return sizes.error();
   const index_t count = axis_tile_count(colors);
   if (auto s = detail::validate_tile_set_extent(count, sizes->tile, sizeof(T) * C); !s) return s;
-  auto ctx = detail::prepare_wang_build(exemplar, options, count);
+  auto ctx = detail::prepare_wang_build(exemplar, o, count);
   if (!ctx) return ctx.error();
   const index_t ts = ctx->sizes.tile;
   std::array<wang_tile_set<T, C>, 6> faces;
