@@ -33,8 +33,8 @@ tri_mesh torus(double big, double small, int nu, int nv) {
   for (int i = 0; i < nu; ++i)
     for (int j = 0; j < nv; ++j) {
       const double u = 2 * std::numbers::pi * i / nu, v = 2 * std::numbers::pi * j / nv;
-      m.add_vertex({(big + small * std::cos(v)) * std::cos(u), (big + small * std::cos(v)) * std::sin(u),
-                    small * std::sin(v)});
+      m.add_vertex(
+          {(big + small * std::cos(v)) * std::cos(u), (big + small * std::cos(v)) * std::sin(u), small * std::sin(v)});
     }
   auto id = [&](int i, int j) { return static_cast<index_t>((i % nu) * nv + (j % nv)); };
   for (int i = 0; i < nu; ++i)

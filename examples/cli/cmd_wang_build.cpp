@@ -139,7 +139,8 @@ int run_build(const cli::arguments& args) {
 const cli::registrar build_command({
     .name = "wang build",
     .summary = "build a Wang tile set from an exemplar (tiles, tiles.json, atlas.png)",
-    .usage = "tessera wang build --exemplar E.png --colors NH,NV|NX,NY,NZ --tile T --out DIR [--subset] [--mip-levels L]",
+    .usage =
+        "tessera wang build --exemplar E.png --colors NH,NV|NX,NY,NZ --tile T --out DIR [--subset] [--mip-levels L]",
     .options = {{
         {"--exemplar", "E.png", "exemplar PNG or procedural kind (grass, sand, rock, bricks, cells, weave, dots)"},
         cli::exemplar_size_option(),

@@ -31,9 +31,9 @@ int run_map(const cli::arguments& args) {
   auto tile = args.number("--tile", 0, 0);
   if (!tile) return cli::fail(args, tile.error());
   if (!args.has("--tile") || !(*tile > 0))
-    return cli::fail(args, status::invalid_argument(
-                               "--tile W (the quad size in mesh units, > 0) is required, also with --polycube "
-                               "(the tile size the polycube was built with)"));
+    return cli::fail(
+        args, status::invalid_argument("--tile W (the quad size in mesh units, > 0) is required, also with --polycube "
+                                       "(the tile size the polycube was built with)"));
   auto set = load_axis_wang_tiles<std::uint8_t, 3>(*tiles);
   if (!set) return cli::fail(args, set.error());
   auto atlas = build_axis_wang_atlas(*set);

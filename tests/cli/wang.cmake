@@ -76,13 +76,13 @@ tessera_cli_test(NAME "cli: wang build for 4 mip levels"
 tessera_cli_test(NAME "cli: wang build help lists its options" REGEX "--colors NH,NV.*--mip-levels L" COMMAND wang build --help)
 _wang_fail("wang build with tiles larger than the exemplar" "tile_size 64 is larger than the 48 x 48 exemplar"
            wang build --exemplar sand --exemplar-size 48 --tile 64 --out ${_o}/bad)
-_wang_fail("wang build with zero colours" "--colors expects two integers NH,NV in \\[1, 4096\\], got '0,2'"
+_wang_fail("wang build with zero colours" "--colors expects two integers NH,NV or three NX,NY,NZ in \\[1, 4096\\], got '0,2'"
            wang build --exemplar sand --exemplar-size 48 --colors 0,2 --tile 16 --out ${_o}/bad)
-_wang_fail("wang build with 1e10 colours" "--colors expects two integers NH,NV in \\[1, 4096\\], got '1e10,2'"
+_wang_fail("wang build with 1e10 colours" "--colors expects two integers NH,NV or three NX,NY,NZ in \\[1, 4096\\], got '1e10,2'"
            wang build --exemplar sand --exemplar-size 48 --colors 1e10,2 --tile 16 --out ${_o}/bad)
-_wang_fail("wang build with fractional colours" "--colors expects two integers NH,NV in \\[1, 4096\\], got '2.5,2'"
+_wang_fail("wang build with fractional colours" "--colors expects two integers NH,NV or three NX,NY,NZ in \\[1, 4096\\], got '2.5,2'"
            wang build --exemplar sand --exemplar-size 48 --colors 2.5,2 --tile 16 --out ${_o}/bad)
-_wang_fail("wang build with one number for --colors" "--colors expects two integers NH,NV in \\[1, 4096\\], got '3'"
+_wang_fail("wang build with one number for --colors" "--colors expects two integers NH,NV or three NX,NY,NZ in \\[1, 4096\\], got '3'"
            wang build --exemplar sand --colors 3 --tile 16 --out ${_o}/bad)
 _wang_fail("wang build with 64 x 64 colours" "size_overflow: wang tile set: 16777216 tiles of 16 x 16 pixels"
            wang build --exemplar sand --exemplar-size 48 --colors 64,64 --tile 16 --out ${_o}/bad)

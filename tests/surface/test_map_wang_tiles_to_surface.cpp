@@ -18,7 +18,7 @@
 #include <map>
 #include <vector>
 
-#include "shapes.hpp"
+#include "tiling_maps.hpp"
 
 using namespace tessera;
 
@@ -40,24 +40,6 @@ const axis_wang_atlas<std::uint8_t, 3>& wst_image_atlas() {
   static const axis_wang_atlas<std::uint8_t, 3> a = *build_axis_wang_atlas(wst_image_set());
   return a;
 }
-struct wst_named_map {
-  const char* name;
-  polycube_map map;
-};
-const std::vector<wst_named_map>& wst_maps() {  // convex edges only (sphere), concave ones (L-shape, torus)
-  static const std::vector<wst_named_map> all = [] {
-    std::vector<wst_named_map> out;
-    polycube_options o;
-    o.tiles_across = 6;
-    out.push_back({"sphere", *build_polycube_map(shapes::sphere(8), o)});
-    out.push_back({"torus", *build_polycube_map(shapes::torus(2, 0.7, 48, 16), o)});
-    polycube_options v;
-    v.tile_size = 0.5;
-    out.push_back({"L-shape", *build_polycube_map(shapes::voxel_surface(shapes::l_shape(), 2), v)});
-    return out;
-  }();
-  return all;
-}
 // bilinear sample of the atlas at normalized (u, v), v upwards, texel centres at half integers
 std::array<double, 3> wst_bilinear(const wst_rgb8& img, vec2 uv) {
   const double x = uv.x * static_cast<double>(img.width()) - 0.5;
@@ -75,11 +57,11 @@ std::array<double, 3> wst_bilinear(const wst_rgb8& img, vec2 uv) {
   return r;
 }
 struct wst_seam_report {
-  double worst = 0;        // largest difference of a bilinear sample across a shared edge (0..255)
-  index_t edges = 0;       // shared edges checked
-  index_t cross_quad = 0;  // of which between two quads
-  index_t cross_chart = 0; // of which between two charts (polycube edges)
-  index_t open = 0;        // edges not shared by exactly two faces
+  double worst = 0;         // largest difference of a bilinear sample across a shared edge (0..255)
+  index_t edges = 0;        // shared edges checked
+  index_t cross_quad = 0;   // of which between two quads
+  index_t cross_chart = 0;  // of which between two charts (polycube edges)
+  index_t open = 0;         // edges not shared by exactly two faces
 };
 wst_seam_report wst_seams(const wang_surface_mesh& r, const polycube_map& map, const wst_rgb8& atlas) {
   std::map<std::pair<index_t, index_t>, std::vector<std::pair<index_t, int>>> by_edge;
@@ -162,7 +144,7 @@ TEST_CASE("three-axis image set: complete, sides depend on axis and colour only,
 
 TEST_CASE("image Wang tiles on surfaces: closed split, seam-free bilinear samples at every shared edge") {
   const auto& atlas = wst_image_atlas();
-  for (const auto& [name, map] : wst_maps()) {
+  for (const auto& [name, map] : tiling_maps::maps()) {
     INFO(name);
     auto tiling = tile_polycube(map, wst_image_set(), 5);
     REQUIRE(tiling.ok());
@@ -192,7 +174,7 @@ TEST_CASE("image Wang tiles on surfaces: closed split, seam-free bilinear sample
 }
 
 TEST_CASE("image Wang tiles on surfaces: the same result on 1 and 2 threads") {
-  const auto& map = wst_maps()[1].map;
+  const auto& map = tiling_maps::maps()[1].map;
   auto tiling = tile_polycube(map, wst_image_set(), 3);
   REQUIRE(tiling.ok());
   auto a = map_wang_tiles_to_surface(map.base, map, *tiling, wst_image_atlas());
@@ -216,7 +198,7 @@ TEST_CASE("image Wang tiles on surfaces: the same result on 1 and 2 threads") {
 }
 
 TEST_CASE("image Wang tiles on surfaces: bad input") {
-  const auto& map = wst_maps()[0].map;
+  const auto& map = tiling_maps::maps()[0].map;
   auto tiling = tile_polycube(map, wst_image_set(), 5);
   REQUIRE(tiling.ok());
   const auto& atlas = wst_image_atlas();
@@ -228,7 +210,7 @@ TEST_CASE("image Wang tiles on surfaces: bad input") {
     CHECK(r.error().message().find("not closed") != std::string::npos);
   }
   SECTION("polycube of another mesh") {
-    auto r = map_wang_tiles_to_surface(wst_maps()[1].map.base, map, *tiling, atlas);
+    auto r = map_wang_tiles_to_surface(tiling_maps::maps()[1].map.base, map, *tiling, atlas);
     REQUIRE_FALSE(r.ok());
     CHECK(r.error().message().find("another mesh") != std::string::npos);
     tri_mesh moved = map.base;
@@ -238,7 +220,7 @@ TEST_CASE("image Wang tiles on surfaces: bad input") {
     CHECK(r2.error().message().find("vertex 3") != std::string::npos);
   }
   SECTION("a tiling of another polycube") {
-    auto other = tile_polycube(wst_maps()[1].map, wst_image_set(), 5);
+    auto other = tile_polycube(tiling_maps::maps()[1].map, wst_image_set(), 5);
     auto r = map_wang_tiles_to_surface(map.base, map, *other, atlas);
     REQUIRE_FALSE(r.ok());
     CHECK(r.error().message().find("another polycube") != std::string::npos);
@@ -263,8 +245,7 @@ TEST_CASE("image Wang tiles on surfaces: bad input") {
   SECTION("bad set options") {
     auto ex = make_exemplar<std::uint8_t, 3>(exemplar_kind::cells, {.width = 64, .height = 64});
     CHECK_FALSE(build_axis_wang_tiles(*ex, {0, 2, 2}, {.tile_size = 16}).ok());
-    CHECK(build_axis_wang_tiles(*ex, {2, 2, 5000}, {.tile_size = 16}).error().message().find("Z") !=
-          std::string::npos);
+    CHECK(build_axis_wang_tiles(*ex, {2, 2, 5000}, {.tile_size = 16}).error().message().find("Z") != std::string::npos);
     CHECK_FALSE(build_axis_wang_tiles(*ex, {2, 2, 2}, {.tile_size = 128}).ok());
     wang_tile_options o;
     o.tile_size = 16;

@@ -129,8 +129,8 @@ template <Channel T, int C>
     const auto ax = cube_face_axes(f);
     auto edges = tile_set_edges::complete(n[detail::to_size(ax[0])], n[detail::to_size(ax[1])]);
     if (!edges) return edges.error();
-    auto set = wang_tile_set<T, C>::create(std::move(*edges), static_cast<index_t>(m->tile_size),
-                                           tiles[detail::to_size(f)]);
+    auto set =
+        wang_tile_set<T, C>::create(std::move(*edges), static_cast<index_t>(m->tile_size), tiles[detail::to_size(f)]);
     if (!set) return set.error();
     faces[detail::to_size(f)] = std::move(*set);
   }

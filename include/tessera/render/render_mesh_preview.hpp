@@ -251,8 +251,7 @@ result<image_buffer<std::uint8_t, 3>> render_textured_mesh_preview(const M& mesh
   if (tw < 1 || th < 1) return status::invalid_argument("render_textured_mesh_preview: the texture is empty");
   constexpr int TC = channels_v<I>;
   auto texel = [&](index_t x, index_t y) {
-    const auto p =
-        image_traits<I>::read(texture, std::clamp<index_t>(x, 0, tw - 1), std::clamp<index_t>(y, 0, th - 1));
+    const auto p = image_traits<I>::read(texture, std::clamp<index_t>(x, 0, tw - 1), std::clamp<index_t>(y, 0, th - 1));
     std::array<float, 3> c{};
     for (int k = 0; k < 3; ++k)
       c[detail::to_size(k)] = channel_to_unit(pixel_traits<pixel_t<I>>::get(p, TC >= 3 ? k : 0));

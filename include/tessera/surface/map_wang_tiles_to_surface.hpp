@@ -56,8 +56,8 @@ result<polycube_tiling> assign_polycube_tiles(const polycube_map& map, const axi
 /// Colours `map`'s grid edges with the image set's colour counts (color_polycube_edges, keyed by
 /// `seed`) and assigns the tiles: a pure function of (map, set, seed), whatever the executor.
 template <Channel T, int C, Executor E = serial_executor>
-result<polycube_tiling> tile_polycube(const polycube_map& map, const axis_wang_tile_set<T, C>& set,
-                                      std::uint64_t seed, E&& exec = {}) {
+result<polycube_tiling> tile_polycube(const polycube_map& map, const axis_wang_tile_set<T, C>& set, std::uint64_t seed,
+                                      E&& exec = {}) {
   if (set.size() == 0) return status::invalid_argument("tile_polycube: the image tile set is empty");
   auto coloring = color_polycube_edges(map, set.axis_colors(), seed, exec);
   if (!coloring) return coloring.error();
@@ -168,29 +168,30 @@ result<wang_surface_mesh> map_wang_tiles_to_surface(const M& mesh, const polycub
     const double tol = 1e-9 * std::max(1e-300, std::sqrt(squared_norm(box.extent())));
     for (index_t v = 0; v < nv; ++v)
       if (!(std::sqrt(squared_norm(vertex_position(mesh, v) - map.base.positions[detail::to_size(v)])) <= tol))
-        return status::invalid_argument(detail::cat(fn, ": vertex ", v,
-                                                    " differs from the polycube map's base: a polycube of another mesh"));
+        return status::invalid_argument(
+            detail::cat(fn, ": vertex ", v, " differs from the polycube map's base: a polycube of another mesh"));
     for (index_t f = 0; f < nf; ++f)
       for (int k = 0; k < 3; ++k)
         if (face_vertex(mesh, f, k) != map.base.faces[detail::to_size(f)][detail::to_size(k)])
-          return status::invalid_argument(detail::cat(
-              fn, ": face ", f, " differs from the polycube map's base: a polycube of another mesh"));
+          return status::invalid_argument(
+              detail::cat(fn, ": face ", f, " differs from the polycube map's base: a polycube of another mesh"));
   }
   if (auto s = detail::check_layout_for_tiling(map); !s) return s;
   if (!(map.tile_size > 0) || !std::isfinite(map.tile_size))
     return status::invalid_argument(detail::cat(fn, ": the map's tile_size must be > 0, got ", map.tile_size));
   const auto& L = map.layout;
   if (tiling.quads.size() != L.quads.size())
-    return status::invalid_argument(detail::cat(fn, ": the tiling covers ", tiling.quads.size(), " quads, the layout has ",
-                                                L.quads.size(), ": a tiling of another polycube"));
+    return status::invalid_argument(detail::cat(fn, ": the tiling covers ", tiling.quads.size(),
+                                                " quads, the layout has ", L.quads.size(),
+                                                ": a tiling of another polycube"));
   if (atlas.origin.empty() || atlas.tile_size <= 0 || atlas.image.width() <= 0 || atlas.image.height() <= 0)
     return status::invalid_argument(detail::cat(fn, ": the atlas has no tiles"));
   if (auto s = validate_axis_color_counts(atlas.axis_colors); !s)
     return status(s.code(), detail::cat(fn, ": atlas: ", s.message()));
   if (static_cast<index_t>(atlas.origin.size()) != axis_tile_count(atlas.axis_colors))
-    return status::invalid_argument(detail::cat(fn, ": the atlas holds ", atlas.origin.size(), " tiles, a complete set of ",
-                                                atlas.axis_colors[0], ", ", atlas.axis_colors[1], ", ",
-                                                atlas.axis_colors[2], " colours ", axis_tile_count(atlas.axis_colors)));
+    return status::invalid_argument(detail::cat(
+        fn, ": the atlas holds ", atlas.origin.size(), " tiles, a complete set of ", atlas.axis_colors[0], ", ",
+        atlas.axis_colors[1], ", ", atlas.axis_colors[2], " colours ", axis_tile_count(atlas.axis_colors)));
   for (std::size_t q = 0; q < L.quads.size(); ++q) {
     const index_t t = tiling.quads[q].tile;
     const polycube_label label = map.charts[detail::to_size(L.quads[q].chart)].label;
@@ -321,7 +322,7 @@ result<wang_surface_mesh> map_wang_tiles_to_surface(const M& mesh, const polycub
         }
         if ((dA < 0 && dB > 0) || (dA > 0 && dB < 0)) {
           detail::wang_clip_corner X = A;  // the side's support continues (entering)
-          if (A.edge >= 0) {  // on a base edge: its crossing with this grid plane
+          if (A.edge >= 0) {               // on a base edge: its crossing with this grid plane
             const auto e = detail::to_size(A.edge);
             const int axis3 = ax[detail::to_size(axis2d)];
             std::size_t j = 0;
@@ -370,9 +371,9 @@ result<wang_surface_mesh> map_wang_tiles_to_surface(const M& mesh, const polycub
                                  ? grid.quad[detail::to_size(cj * grid.size[0] + ci)]
                                  : -1;
         if (quad < 0) {
-          failures[detail::to_size(f)] = status::not_converged(detail::cat(
-              fn, ": face ", f, " reaches grid cell (", i, ", ", j, ") of chart ", map.face_chart[detail::to_size(f)],
-              ", which is no quad (area ", 0.5 * area2, " tiles)"));
+          failures[detail::to_size(f)] = status::not_converged(
+              detail::cat(fn, ": face ", f, " reaches grid cell (", i, ", ", j, ") of chart ",
+                          map.face_chart[detail::to_size(f)], ", which is no quad (area ", 0.5 * area2, " tiles)"));
           return;
         }
         auto corner_of = [&](const detail::wang_clip_corner& c) {

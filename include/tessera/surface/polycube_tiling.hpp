@@ -169,18 +169,20 @@ namespace detail {
 /// axis_tile), `tile_size` the side w_T of a tile in tile-local units. `name` starts messages.
 template <TileColoring C, class Info>
 result<polycube_tiling> assign_axis_tiles(const polycube_map& map, const axis_color_counts& n, index_t count,
-                                          Info&& tile_info, double tile_size, const C& coloring, std::string_view name) {
+                                          Info&& tile_info, double tile_size, const C& coloring,
+                                          std::string_view name) {
   if (auto s = validate_axis_color_counts(n); !s) return status(s.code(), detail::cat(name, ": ", s.message()));
   if (auto s = detail::check_layout_for_tiling(map); !s) return s;
   const auto& L = map.layout;
   if (coloring.num_faces() != static_cast<index_t>(L.quads.size()))
-    return status::invalid_argument(
-        detail::cat(name, ": the colouring has ", coloring.num_faces(), " faces, the layout ", L.quads.size(), " quads"));
+    return status::invalid_argument(detail::cat(name, ": the colouring has ", coloring.num_faces(),
+                                                " faces, the layout ", L.quads.size(), " quads"));
   // the tile of every (face, edges), by its index in the complete set: the set may be in any order
   std::vector<index_t> lookup(detail::to_size(axis_tile_count(n)), -1);
   for (index_t t = 0; t < count; ++t) {
     const axis_tile at = tile_info(t);
-    if (auto s = validate_axis_tile(at, n); !s) return status(s.code(), detail::cat(name, ": tile ", t, ": ", s.message()));
+    if (auto s = validate_axis_tile(at, n); !s)
+      return status(s.code(), detail::cat(name, ": tile ", t, ": ", s.message()));
     auto& slot = lookup[detail::to_size(axis_tile_index(at, n))];
     if (slot < 0) slot = t;
   }
@@ -215,10 +217,9 @@ result<polycube_tiling> assign_axis_tiles(const polycube_map& map, const axis_co
                   coloring.edge_color(static_cast<index_t>(q), side_west)};
     const index_t t = lookup[detail::to_size(axis_tile_index(want, n))];
     if (t < 0)
-      return status::invalid_argument(detail::cat(name, ": quad ", q, " (face ", cube_face_name(want.face),
-                                                  ") needs edges [", want.edges.north, ", ", want.edges.east, ", ",
-                                                  want.edges.south, ", ", want.edges.west,
-                                                  "], which no tile of the set has"));
+      return status::invalid_argument(detail::cat(
+          name, ": quad ", q, " (face ", cube_face_name(want.face), ") needs edges [", want.edges.north, ", ",
+          want.edges.east, ", ", want.edges.south, ", ", want.edges.west, "], which no tile of the set has"));
     auto& p = out.quads[q];
     p.tile = t;
     p.face = face;
