@@ -12,8 +12,12 @@
 #include <tessera/core/executor.hpp>
 #include <tessera/core/mesh_topology.hpp>
 #include <tessera/surface/build_polycube_map.hpp>
+#include <tessera/image/axis_wang_atlas.hpp>
+#include <tessera/image/axis_wang_tiles.hpp>
+#include <tessera/image/exemplars.hpp>
 #include <tessera/surface/build_shell.hpp>
 #include <tessera/surface/map_tiles_to_shell.hpp>
+#include <tessera/surface/map_wang_tiles_to_surface.hpp>
 #include <tessera/surface/polycube_distortion.hpp>
 #include <tessera/surface/polycube_projection.hpp>
 
@@ -186,6 +190,54 @@ void BM_build_shell(benchmark::State& st) {
   for (auto _ : st) benchmark::DoNotOptimize(build_shell(c.map.base, 0.2 * c.map.tile_size));
 }
 BENCHMARK(BM_build_shell)->Unit(benchmark::kMillisecond);
+
+// Image Wang tiles on surfaces (surface/map_wang_tiles_to_surface.hpp): the 384 quads of the same
+// 7352-vertex sphere coloured, given tiles of a 96-tile image set, and the base split along the quad
+// borders with atlas uvs. Same-run baselines: building the polycube map of that base (what a user
+// pays once before mapping), and face adjacency of the base (one sort of its sides).
+const axis_wang_atlas<std::uint8_t, 3>& wang_surface_atlas(axis_wang_tile_set<std::uint8_t, 3>* set_out = nullptr) {
+  static axis_wang_tile_set<std::uint8_t, 3> set;
+  static const axis_wang_atlas<std::uint8_t, 3> a = [] {
+    auto ex = make_exemplar<std::uint8_t, 3>(exemplar_kind::cells, {.width = 96, .height = 96});
+    set = *build_axis_wang_tiles(*ex, {2, 2, 2}, {.tile_size = 32});
+    return *build_axis_wang_atlas(set);
+  }();
+  if (set_out != nullptr) *set_out = set;
+  return a;
+}
+
+void BM_wang_surface_polycube_baseline(benchmark::State& st) {
+  const auto& c = shell_bench_case();
+  thread_pool_executor pool(1);
+  for (auto _ : st) benchmark::DoNotOptimize(build_polycube_map(c.map.base, polycube_options{0, 12}, pool));
+  st.counters["vertices"] = static_cast<double>(c.map.base.num_vertices());
+}
+BENCHMARK(BM_wang_surface_polycube_baseline)->Unit(benchmark::kMillisecond);
+
+void BM_wang_surface_adjacency_baseline(benchmark::State& st) {
+  const auto& c = shell_bench_case();
+  for (auto _ : st) benchmark::DoNotOptimize(face_adjacency(c.map.base));
+}
+BENCHMARK(BM_wang_surface_adjacency_baseline)->Unit(benchmark::kMillisecond);
+
+void BM_map_wang_tiles_to_surface(benchmark::State& st) {
+  const auto& c = shell_bench_case();
+  axis_wang_tile_set<std::uint8_t, 3> set;
+  const auto& atlas = wang_surface_atlas(&set);
+  thread_pool_executor pool(static_cast<int>(st.range(0)));
+  index_t faces = 0;
+  for (auto _ : st) {  // colouring + assignment + split and uvs
+    auto tiling = tile_polycube(c.map, set, 7, pool);
+    auto r = map_wang_tiles_to_surface(c.map.base, c.map, *tiling, atlas, pool);
+    if (!r)
+      st.SkipWithError(r.error().to_string().c_str());
+    else
+      faces = r->mesh.num_faces();
+  }
+  st.counters["quads"] = static_cast<double>(c.map.layout.quads.size());
+  st.counters["faces_out"] = static_cast<double>(faces);
+}
+BENCHMARK(BM_map_wang_tiles_to_surface)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 }  // namespace
 
 BENCHMARK_MAIN();

@@ -27,6 +27,8 @@
 #include "core/vec.hpp"
 
 // images: exemplars, metrics, patch synthesis (paper 002), quilting, Wang tiles
+#include "image/axis_wang_atlas.hpp"
+#include "image/axis_wang_tiles.hpp"
 #include "image/compose_tiles.hpp"
 #include "image/constrained_quilt.hpp"
 #include "image/exemplars.hpp"
@@ -66,6 +68,7 @@
 #include "surface/build_shell.hpp"
 #include "surface/map_geometric_tiles.hpp"
 #include "surface/map_tiles_to_shell.hpp"
+#include "surface/map_wang_tiles_to_surface.hpp"
 #include "surface/polycube_distortion.hpp"
 #include "surface/polycube_map.hpp"
 #include "surface/polycube_projection.hpp"

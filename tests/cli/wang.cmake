@@ -76,13 +76,13 @@ tessera_cli_test(NAME "cli: wang build for 4 mip levels"
 tessera_cli_test(NAME "cli: wang build help lists its options" REGEX "--colors NH,NV.*--mip-levels L" COMMAND wang build --help)
 _wang_fail("wang build with tiles larger than the exemplar" "tile_size 64 is larger than the 48 x 48 exemplar"
            wang build --exemplar sand --exemplar-size 48 --tile 64 --out ${_o}/bad)
-_wang_fail("wang build with zero colours" "--colors expects two integers NH,NV in \\[1, 4096\\], got '0,2'"
+_wang_fail("wang build with zero colours" "--colors expects two integers NH,NV or three NX,NY,NZ in \\[1, 4096\\], got '0,2'"
            wang build --exemplar sand --exemplar-size 48 --colors 0,2 --tile 16 --out ${_o}/bad)
-_wang_fail("wang build with 1e10 colours" "--colors expects two integers NH,NV in \\[1, 4096\\], got '1e10,2'"
+_wang_fail("wang build with 1e10 colours" "--colors expects two integers NH,NV or three NX,NY,NZ in \\[1, 4096\\], got '1e10,2'"
            wang build --exemplar sand --exemplar-size 48 --colors 1e10,2 --tile 16 --out ${_o}/bad)
-_wang_fail("wang build with fractional colours" "--colors expects two integers NH,NV in \\[1, 4096\\], got '2.5,2'"
+_wang_fail("wang build with fractional colours" "--colors expects two integers NH,NV or three NX,NY,NZ in \\[1, 4096\\], got '2.5,2'"
            wang build --exemplar sand --exemplar-size 48 --colors 2.5,2 --tile 16 --out ${_o}/bad)
-_wang_fail("wang build with one number for --colors" "--colors expects two integers NH,NV in \\[1, 4096\\], got '3'"
+_wang_fail("wang build with one number for --colors" "--colors expects two integers NH,NV or three NX,NY,NZ in \\[1, 4096\\], got '3'"
            wang build --exemplar sand --colors 3 --tile 16 --out ${_o}/bad)
 _wang_fail("wang build with 64 x 64 colours" "size_overflow: wang tile set: 16777216 tiles of 16 x 16 pixels"
            wang build --exemplar sand --exemplar-size 48 --colors 64,64 --tile 16 --out ${_o}/bad)
@@ -145,3 +145,43 @@ _wang_fail("wang tile with a mismatched tile" "tile_2.png is 96 x 80 but .*tiles
            wang tile --tiles ${_o}/wrong --grid 2x2 --out ${_o}/bad.png)
 set_tests_properties("cli: wang tile with a missing tile" "cli: wang tile with a mismatched tile" PROPERTIES FIXTURES_REQUIRED
                      wang_broken)
+
+# --- three-axis sets and wang map (image Wang tiles on surfaces) ------------------------------------
+set(_wsdata ${CMAKE_CURRENT_LIST_DIR}/../data/surface)
+tessera_cli_test(NAME "cli: wang build three-axis with stats"
+                 REGEX "^{\"command\":\"wang build\",\"tiles\":96,\"tile_size\":16,\"build_ms\":${_num},\"seam_ratio_mean\":${_num},\"seam_ratio_max\":${_num},\"atlas\":\"three_axis\",\"atlas_mip_levels\":2,\"shared_border\":[2-8]}\n$"
+                 COMMAND wang build --exemplar cells --exemplar-size 64 --colors 2,2,2 --tile 16 --out ${_o}/axis_tiles
+                         --threads 2 --stats)
+set_tests_properties("cli: wang build three-axis with stats" PROPERTIES FIXTURES_SETUP wang_axis_tiles)
+add_test(NAME "cli: wang build three-axis wrote version 2 tiles.json with faces"
+         COMMAND ${CMAKE_COMMAND} -DFILE=${_o}/axis_tiles/tiles.json -P ${CMAKE_CURRENT_LIST_DIR}/wang_support/check_axis_tiles_json.cmake)
+set_tests_properties("cli: wang build three-axis wrote version 2 tiles.json with faces" PROPERTIES FIXTURES_REQUIRED wang_axis_tiles)
+tessera_cli_test(NAME "cli: wang map torus with stats"
+                 REGEX "^{\"command\":\"wang map\",\"map_ms\":${_num},\"quads\":[1-9][0-9]*,\"tiles_used\":[1-9][0-9]*,\"vertices\":[1-9][0-9]*,\"faces\":[1-9][0-9]*,\"split_faces\":[1-9][0-9]*,\"refined\":false}\n$"
+                 COMMAND wang map --tiles ${_o}/axis_tiles --mesh ${_wsdata}/torus.obj --out ${_o}/torus_wang.obj --tile 0.5
+                         --seed 3 --threads 2 --stats)
+set_tests_properties("cli: wang map torus with stats" PROPERTIES FIXTURES_REQUIRED wang_axis_tiles FIXTURES_SETUP wang_map)
+_wang_png_size("wang map wrote the atlas beside the obj" ${_o}/torus_wang.png 240 160 wang_map)
+add_test(NAME "cli: wang map wrote an mtl naming the atlas"
+         COMMAND ${CMAKE_COMMAND} -DFILE=${_o}/torus_wang.mtl -DREGEX=map_Kd\ torus_wang\\.png
+                 -P ${CMAKE_CURRENT_LIST_DIR}/wang_support/check_file_matches.cmake)
+set_tests_properties("cli: wang map wrote an mtl naming the atlas" PROPERTIES FIXTURES_REQUIRED wang_map)
+tessera_cli_test(NAME "cli: wang map from a polycube file" REGEX "wrote .*l_wang\\.obj, .*l_wang\\.mtl and .*l_wang\\.png"
+                 COMMAND wang map --tiles ${_o}/axis_tiles --mesh ${_wsdata}/l_shape.off --polycube ${_wsdata}/l_shape.off
+                         --out ${_o}/l_wang.obj --tile 0.5)
+set_tests_properties("cli: wang map from a polycube file" PROPERTIES FIXTURES_REQUIRED wang_axis_tiles)
+_wang_fail("wang map on an open mesh" "is not closed"
+           wang map --tiles ${_o}/axis_tiles --mesh ${_wsdata}/open_cube.obj --out ${_o}/bad.obj --tile 0.5)
+_wang_fail("wang map with a planar set" "a planar tile set, not a three-axis one"
+           wang map --tiles ${_o}/tiles --mesh ${_wsdata}/torus.obj --out ${_o}/bad.obj --tile 0.5)
+_wang_fail("wang map without --tile" "--tile W \\(the quad size in mesh units, > 0\\) is required"
+           wang map --tiles ${_o}/axis_tiles --mesh ${_wsdata}/torus.obj --out ${_o}/bad.obj)
+_wang_fail("wang map with a polycube of another mesh" "connectivity|differs|vertex count|faces"
+           wang map --tiles ${_o}/axis_tiles --mesh ${_wsdata}/torus.obj --polycube ${_wsdata}/l_shape.off
+                    --out ${_o}/bad.obj --tile 0.5)
+_wang_fail("wang build three-axis with --subset" "--subset is for planar sets"
+           wang build --exemplar cells --colors 2,2,2 --tile 16 --subset --out ${_o}/bad_tiles)
+set_tests_properties("cli: wang map with a planar set" PROPERTIES FIXTURES_REQUIRED "wang_axis_tiles;wang_tiles")
+foreach(_t "wang map on an open mesh" "wang map without --tile" "wang map with a polycube of another mesh")
+  set_tests_properties("cli: ${_t}" PROPERTIES FIXTURES_REQUIRED wang_axis_tiles)
+endforeach()

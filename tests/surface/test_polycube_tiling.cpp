@@ -15,28 +15,11 @@
 
 #include "ring_tile_set.hpp"
 #include "shapes.hpp"
+#include "tiling_maps.hpp"
 
 using namespace tessera;
 
 namespace {
-struct named_map {
-  const char* name;
-  polycube_map map;
-};
-const std::vector<named_map>& maps() {  // convex edges only (sphere), and concave ones (L-shape, torus)
-  static const std::vector<named_map> all = [] {
-    std::vector<named_map> out;
-    polycube_options o;
-    o.tiles_across = 6;
-    out.push_back({"sphere", *build_polycube_map(shapes::sphere(8), o)});
-    out.push_back({"torus", *build_polycube_map(shapes::torus(2, 0.7, 48, 16), o)});
-    polycube_options v;
-    v.tile_size = 0.5;
-    out.push_back({"L-shape", *build_polycube_map(shapes::voxel_surface(shapes::l_shape(), 2), v)});
-    return out;
-  }();
-  return all;
-}
 // does the map have concave grid edges (two quads whose faces turn inwards)?
 bool has_concave(const polycube_map& m) {
   for (const auto& g : m.layout.edges) {
@@ -60,7 +43,7 @@ bool has_concave(const polycube_map& m) {
 
 TEST_CASE("polycube colouring: every edge draws from its axis, keyed by the edge, same on any executor",
           "[polycube_tiling]") {
-  for (const auto& [name, map] : maps()) {
+  for (const auto& [name, map] : tiling_maps::maps()) {
     INFO(name);
     const axis_color_counts n{2, 3, 4};
     auto serial = color_polycube_edges(map, n, 7);
@@ -98,7 +81,7 @@ TEST_CASE("polycube tiling: each quad gets the tile of its face whose edges matc
           "[polycube_tiling]") {
   const auto& set = ring_tile_set();
   bool concave_seen = false;
-  for (const auto& [name, map] : maps()) {
+  for (const auto& [name, map] : tiling_maps::maps()) {
     INFO(name);
     concave_seen = concave_seen || has_concave(map);
     auto tiling = tile_polycube(map, set, 3);
@@ -155,7 +138,7 @@ TEST_CASE("polycube tiling: each quad gets the tile of its face whose edges matc
 
 TEST_CASE("polycube tiling: any TileColoring over the quads may be passed", "[polycube_tiling]") {
   const auto& set = ring_tile_set();
-  const auto& map = maps()[0].map;
+  const auto& map = tiling_maps::maps()[0].map;
   const auto own = *color_polycube_edges(map, set.axis_colors, 9);
   const stored_tile_coloring stored = store_coloring(own);
   auto a = assign_polycube_tiles(map, set, stored), b = tile_polycube(map, set, 9);
@@ -171,7 +154,7 @@ TEST_CASE("polycube tiling: any TileColoring over the quads may be passed", "[po
 
 TEST_CASE("polycube tiling: bad input returns a clear status", "[polycube_tiling]") {
   const auto& set = ring_tile_set();
-  const auto& map = maps()[0].map;
+  const auto& map = tiling_maps::maps()[0].map;
   const auto good = *color_polycube_edges(map, set.axis_colors, 1);
   // colour counts
   auto s = color_polycube_edges(map, {2, 0, 2}, 1);
@@ -217,7 +200,7 @@ TEST_CASE("polycube tiling: bad input returns a clear status", "[polycube_tiling
   empty.layout = {};
   REQUIRE(tile_polycube(empty, set, 1).error().message().find("no quads") != std::string::npos);
   polycube_map wrong = map;
-  wrong.layout = maps()[1].map.layout;
+  wrong.layout = tiling_maps::maps()[1].map.layout;
   REQUIRE_FALSE(tile_polycube(wrong, set, 1).ok());
   polycube_map broken = map;
   broken.layout.quads[3].edges[1] = static_cast<index_t>(broken.layout.edges.size());

@@ -300,6 +300,75 @@ inline result<wang_sizes> resolve_wang_sizes(const wang_tile_options& o, index_t
 }
 }  // namespace detail
 
+namespace detail {
+/// What every Wang tile build shares once its colour counts are checked: the resolved sizes, the
+/// exemplar prepared for quilting and the quilting parameters.
+template <Channel T, int C>
+struct wang_build_context {
+  wang_sizes sizes;
+  quilt_source<T, C> src;
+  quilt_params prm;
+};
+
+/// Checks everything but the colour counts (exemplar extent and values, sizes, a set of `count` tiles,
+/// tolerance, boundary weight, candidates) and prepares the exemplar. Errors: those of
+/// build_wang_tiles that do not concern colours.
+template <Image E>
+result<wang_build_context<channel_t<E>, channels_v<E>>> prepare_wang_build(const E& exemplar,
+                                                                           const wang_tile_options& options,
+                                                                           index_t count) {
+  using T = channel_t<E>;
+  constexpr int C = channels_v<E>;
+  auto sizes = resolve_wang_sizes(options, width_of(exemplar), height_of(exemplar));
+  if (!sizes) return sizes.error();
+  if (auto s = validate_tile_set_extent(count, sizes->tile, sizeof(T) * C); !s) return s;
+  if (!(options.tolerance >= 0) || !std::isfinite(options.tolerance))
+    return status::invalid_argument(detail::cat("tolerance must be a finite number >= 0, got ", options.tolerance));
+  if (!(options.boundary_weight >= 1) || !(options.boundary_weight <= 1e6))
+    return status::invalid_argument(detail::cat("boundary_weight must be in [1, 1e6], got ", options.boundary_weight));
+  if (options.min_candidates < 1)
+    return status::invalid_argument(detail::cat("min_candidates must be >= 1, got ", options.min_candidates));
+  if (auto s = validate_finite_pixels(exemplar, "exemplar"); !s) return s;
+  auto ex = to_buffer<T, C>(exemplar, "exemplar");
+  if (!ex) return ex.error();
+  quilt_params prm;
+  prm.patch = sizes->patch;
+  prm.tolerance = options.tolerance;
+  prm.frontier_weight = static_cast<float>(options.boundary_weight);
+  prm.min_candidates = options.min_candidates;
+  prm.rng = counter_rng(options.seed, stream_id("image.wang_tiles")).substream(1);
+  return wang_build_context<T, C>{*sizes, quilt_source<T, C>(std::move(*ex)), prm};
+}
+
+/// Frame construction (paper 000 §3.2) and interior synthesis (§3.3) of `n` tiles: tile t gets the
+/// frame of edges(t) from frames(t) (a wang_frame_samples) and is quilted with key t into out(t) (a
+/// T* of tile_size² · C values). In batches of 4 through `exec`, progress reported between batches.
+template <Channel T, int C, class Edges, class Frames, class Out, class X>
+status build_framed_tiles(const wang_build_context<T, C>& ctx, index_t n, Edges&& edges, Frames&& frames, Out&& out,
+                          const progress& prog, X& exec) {
+  const index_t ts = ctx.sizes.tile, ov = ctx.sizes.overlap;
+  std::vector<status> failures(to_size(n));
+  auto build_one = [&](index_t t) {
+    quilt_canvas<T, C> canvas(ts, ts);
+    write_tile_frame(frames(t), edges(t), canvas);
+    quilt_params local = ctx.prm;
+    local.key = static_cast<std::uint64_t>(t);
+    serial_executor serial;
+    failures[to_size(t)] = fill_canvas(ctx.src, canvas, local, ov, serial);
+    std::memcpy(out(t), canvas.pixels.data(), canvas.pixels.size_bytes());
+  };
+  constexpr index_t batch = 4;
+  for (index_t b = 0; b < n; b += batch) {
+    exec.parallel_for(b, std::min(n, b + batch), build_one);
+    if (!prog.report(static_cast<double>(std::min(n, b + batch)) / static_cast<double>(n), "wang tiles"))
+      return status::cancelled();
+  }
+  for (const status& s : failures)
+    if (!s) return s;
+  return {};
+}
+}  // namespace detail
+
 /// Builds a Wang tile set from `exemplar` (Cohen et al. 2003 §4 with paper 000 §3's frame +
 /// interior pipeline): one edge sample per colour whose ends are a corner sample shared by all tile
 /// corners, each tile framed by its four edge samples and synthesized by constrained image quilting
@@ -331,64 +400,31 @@ template <Image E, Executor X = serial_executor>
     return s;
   if (auto s = validate_color_counts(options.horizontal_colors, options.vertical_colors); !s) return s;
   const int nh = options.horizontal_colors, nv = options.vertical_colors;
-  const index_t ew = width_of(exemplar), eh = height_of(exemplar);
-  auto sizes = detail::resolve_wang_sizes(options, ew, eh);
+  auto sizes = detail::resolve_wang_sizes(options, width_of(exemplar), height_of(exemplar));
   if (!sizes) return sizes.error();
-  // named locals, not a structured binding: lambdas below capture them (Clang 14 cannot capture bindings)
-  const index_t ts = sizes->tile, ov = sizes->overlap, patch = sizes->patch, border = sizes->border;
   const index_t count =
       options.tiles.empty() ? complete_tile_count(nh, nv) : static_cast<index_t>(options.tiles.size());
-  if (auto s = detail::validate_tile_set_extent(count, ts, sizeof(T) * C); !s) return s;
+  if (auto s = detail::validate_tile_set_extent(count, sizes->tile, sizeof(T) * C); !s) return s;
   auto edges = options.tiles.empty() ? tile_set_edges::complete(nh, nv) : tile_set_edges::create(nh, nv, options.tiles);
   if (!edges) return edges.error();
-  if (!(options.tolerance >= 0) || !std::isfinite(options.tolerance))
-    return status::invalid_argument(detail::cat("tolerance must be a finite number >= 0, got ", options.tolerance));
-  if (!(options.boundary_weight >= 1) || !(options.boundary_weight <= 1e6))
-    return status::invalid_argument(detail::cat("boundary_weight must be in [1, 1e6], got ", options.boundary_weight));
-  if (options.min_candidates < 1)
-    return status::invalid_argument(detail::cat("min_candidates must be >= 1, got ", options.min_candidates));
-  if (auto s = validate_finite_pixels(exemplar, "exemplar"); !s) return s;
-  auto set = detail::wang_tile_set_access::allocate<T, C>(*edges, ts);
+  auto ctx = detail::prepare_wang_build(exemplar, options, count);
+  if (!ctx) return ctx.error();
+  auto set = detail::wang_tile_set_access::allocate<T, C>(*edges, ctx->sizes.tile);
   if (!set) return set.error();
-  auto ex = to_buffer<T, C>(exemplar, "exemplar");
-  if (!ex) return ex.error();
-  const detail::quilt_source<T, C> src(std::move(*ex));
-
-  const counter_rng rng(options.seed, stream_id("image.wang_tiles"));
-  detail::quilt_params prm;
-  prm.patch = patch;
-  prm.tolerance = options.tolerance;
-  prm.frontier_weight = static_cast<float>(options.boundary_weight);
-  prm.min_candidates = options.min_candidates;
-  prm.rng = rng.substream(1);
   if (!options.progress.report(0.0, "wang tiles")) return status::cancelled();
   // Edge extraction (paper 000 §3.1): the corner sample and one strip per colour, whose ends are
   // the corner sample's halves (detail/wang_edge_samples.hpp).
   detail::wang_frame_samples<T, C> frame;
-  if (auto s = detail::build_frame_samples(src, ts, ov, border, nh, nv, prm, options.tolerance, exec, frame); !s)
+  if (auto s = detail::build_frame_samples(ctx->src, ctx->sizes.tile, ctx->sizes.overlap, ctx->sizes.border, nh, nv,
+                                           ctx->prm, options.tolerance, exec, frame);
+      !s)
     return s;
-
-  const index_t n = set->size();
-  std::vector<status> failures(detail::to_size(n));
-  auto build_one = [&](index_t t) {
-    detail::quilt_canvas<T, C> canvas(ts, ts);
-    // Frame construction (paper 000 §3.2), then interior synthesis (§3.3): constrained quilting of
-    // everything not fixed or framed.
-    detail::write_tile_frame(frame, (*edges)[t], canvas);
-    detail::quilt_params local = prm;
-    local.key = static_cast<std::uint64_t>(t);
-    serial_executor serial;
-    failures[detail::to_size(t)] = detail::fill_canvas(src, canvas, local, ov, serial);
-    std::memcpy(detail::wang_tile_set_access::tile_data(*set, t), canvas.pixels.data(), canvas.pixels.size_bytes());
-  };
-  constexpr index_t batch = 4;
-  for (index_t b = 0; b < n; b += batch) {
-    exec.parallel_for(b, std::min(n, b + batch), build_one);
-    if (!options.progress.report(static_cast<double>(std::min(n, b + batch)) / static_cast<double>(n), "wang tiles"))
-      return status::cancelled();
-  }
-  for (const status& s : failures)
-    if (!s) return s;
+  if (auto s = detail::build_framed_tiles(
+          *ctx, set->size(), [&](index_t t) { return (*edges)[t]; },
+          [&](index_t) -> const detail::wang_frame_samples<T, C>& { return frame; },
+          [&](index_t t) { return detail::wang_tile_set_access::tile_data(*set, t); }, options.progress, exec);
+      !s)
+    return s;
   detail::wang_tile_set_access::finish(*set);
   return set;
 }

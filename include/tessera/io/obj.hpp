@@ -1,6 +1,7 @@
 // tessera/io/obj.hpp: Wavefront OBJ triangle meshes.
 //   read_obj(path) / parse_obj(text, name)   -> result<tri_mesh>
 //   write_obj(path, mesh) / format_obj(mesh) <- any Mesh (per-corner uvs written when present)
+//   write_textured_obj(path, mesh, texture)  <- OBJ + MTL (map_Kd naming the texture) beside it
 // Reading understands `v x y z [w | r g b ...]` (extra values ignored), `vt u [v [w]]`,
 // `f v`, `f v/vt`, `f v//vn`, `f v/vt/vn` with positive or negative (relative) indices, comments,
 // blank lines, LF / CRLF / CR endings and `\` line continuations. Polygons with more than three
@@ -14,6 +15,7 @@
 #include <array>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -135,11 +137,10 @@ inline result<tri_mesh> read_obj(const std::string& path) {
   return parse_obj(*text, path);
 }
 
-/// Formats any valid Mesh as OBJ text: `v` lines with the shortest exact decimal of each
-/// coordinate, `vt` lines (identical uvs shared) when the mesh has uvs, and 1-based `f` lines.
-/// Precondition: validate_mesh(m) passed (write_obj checks it). O(V + F).
+namespace detail {
+/// format_obj, with `mtllib LIB` before the vertices and `usemtl MAT` before the faces when given.
 template <Mesh M>
-std::string format_obj(const M& m) {
+std::string format_obj_with(const M& m, std::string_view mtllib, std::string_view material) {
   const index_t nv = tessera::num_vertices(m), nf = tessera::num_faces(m);
   std::string out;
   out.reserve(detail::to_size(40 * nv + 30 * nf + 64));
@@ -148,6 +149,7 @@ std::string format_obj(const M& m) {
   out += " vertices, ";
   detail::append_number(out, nf);
   out += " triangles\n";
+  if (!mtllib.empty()) out += detail::cat("mtllib ", mtllib, "\n");
   for (index_t v = 0; v < nv; ++v) {
     const vec3 p = tessera::vertex_position(m, v);
     out += "v ";
@@ -186,6 +188,7 @@ std::string format_obj(const M& m) {
         }
     }
   }
+  if (!material.empty()) out += detail::cat("usemtl ", material, "\n");
   for (index_t f = 0; f < nf; ++f) {
     out += 'f';
     for (int k = 0; k < 3; ++k) {
@@ -200,6 +203,15 @@ std::string format_obj(const M& m) {
   }
   return out;
 }
+}  // namespace detail
+
+/// Formats any valid Mesh as OBJ text: `v` lines with the shortest exact decimal of each
+/// coordinate, `vt` lines (identical uvs shared) when the mesh has uvs, and 1-based `f` lines.
+/// Precondition: validate_mesh(m) passed (write_obj checks it). O(V + F).
+template <Mesh M>
+std::string format_obj(const M& m) {
+  return detail::format_obj_with(m, {}, {});
+}
 
 /// Validates any Mesh and writes it as an OBJ file (see format_obj). Errors: the validate_mesh
 /// status (naming the path) for an invalid mesh, io_error when the file cannot be written.
@@ -207,6 +219,30 @@ template <Mesh M>
 status write_obj(const std::string& path, const M& m) {
   if (auto s = validate_mesh(m, path); !s) return s;
   return detail::write_file(path, format_obj(m));
+}
+
+/// Writes a textured OBJ: `path` (a mesh with per-corner uvs, see format_obj, plus `mtllib` and
+/// `usemtl tessera`) and its material library beside it (`path` with the extension .mtl) whose one
+/// material "tessera" shows the image `texture` through `map_Kd` (a file name relative to the OBJ,
+/// e.g. an atlas PNG written beside it). Errors: the validate_mesh status (naming the path), a mesh
+/// without uvs, an empty texture name or one with a line break, io_error when a file cannot be written.
+template <Mesh M>
+status write_textured_obj(const std::string& path, const M& m, const std::string& texture) {
+  if (auto s = validate_mesh(m, path); !s) return s;
+  if (!tessera::has_uvs(m))
+    return status::invalid_argument(detail::cat(path, ": a textured OBJ needs a mesh with per-corner uvs"));
+  if (texture.empty() || texture.find_first_of("\r\n") != std::string::npos)
+    return status::invalid_argument(detail::cat(path, ": the texture name must be one non-empty line"));
+  const std::filesystem::path obj(path);
+  std::filesystem::path mtl = obj;
+  mtl.replace_extension(".mtl");
+  const std::string lib = mtl.filename().string();
+  if (auto s = detail::write_file(mtl.string(), detail::cat("# written by tessera\nnewmtl tessera\nKa 1 1 1\nKd 1 1 "
+                                                            "1\nKs 0 0 0\nillum 1\nmap_Kd ",
+                                                            texture, "\n"));
+      !s)
+    return s;
+  return detail::write_file(path, detail::format_obj_with(m, lib, "tessera"));
 }
 
 TESSERA_NAMESPACE_END

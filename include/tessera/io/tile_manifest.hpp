@@ -10,7 +10,7 @@
 //     ]
 //   }
 //
-// Three-axis geometric sets (paper 000 §3.1, polycube surfaces) write "version": 2, "axis_colors":
+// Three-axis sets, geometric or image (paper 000 §3.1, polycube surfaces), write "version": 2, "axis_colors":
 // [nX, nY, nZ] instead of the two colour counts, and a "face" (0..5: +X, -X, +Y, -Y, +Z, -Z) per tile,
 // whose edges are then in that face's frame (tiling/axis_tile_set.hpp). A file without "version" is
 // version 1 (planar); a version above 2 is refused, naming it.
@@ -144,7 +144,6 @@ inline status validate_tile_manifest(const tile_manifest& m, std::string_view na
   if (m.kind == tile_set_kind::image && (m.tile_size != std::floor(m.tile_size) || m.tile_size > 9.0e15))
     return bad("tile_size of image tiles must be a whole number of pixels, got ", m.tile_size);
   const bool three = m.axis_colors != axis_color_counts{0, 0, 0};
-  if (three && m.kind == tile_set_kind::image) return bad("three-axis manifests hold geometric tiles only");
   if (three) {
     if (auto s = validate_axis_color_counts(m.axis_colors); !s) return bad(s.message());
   } else if (auto s = validate_color_counts(m.horizontal_colors, m.vertical_colors); !s) {

@@ -15,6 +15,7 @@
 
 #include "../core/config.hpp"
 #include "../core/executor.hpp"
+#include "../core/image.hpp"
 #include "../core/image_buffer.hpp"
 #include "../core/mesh.hpp"
 #include "../core/mesh_topology.hpp"
@@ -68,9 +69,12 @@ inline std::array<float, 3> tint(std::array<float, 3> c, index_t id) {
 /// faces, an image size outside 1 to 8192 pixels a side, non-finite angles, a negative or non-finite
 /// grid spacing, a grid finer than 4096 lines over the mesh, a grid line width outside 1 to 64.
 /// O(F + pixels); rasterization runs through `exec` (same image for every executor).
-template <Mesh M, Executor E = serial_executor>
-result<image_buffer<std::uint8_t, 3>> render_mesh_preview(const M& mesh, const mesh_preview_options& o = {},
-                                                          E&& exec = {}) {
+namespace detail {
+/// render_mesh_preview with the unit RGB of face fi at barycentrics b given by surface(m, fi, b) (or
+/// the options' colour and tint when `surface` is null).
+template <Mesh M, Executor E, class Surface>
+result<image_buffer<std::uint8_t, 3>> render_preview_with(const M& mesh, const mesh_preview_options& o, E&& exec,
+                                                          const Surface* surface) {
   if (o.width < 1 || o.height < 1 || o.width > 8192 || o.height > 8192)
     return status::invalid_argument(
         detail::cat("render_mesh_preview: image size must be 1 to 8192 a side, got ", o.width, " x ", o.height));
@@ -133,7 +137,7 @@ result<image_buffer<std::uint8_t, 3>> render_mesh_preview(const M& mesh, const m
       {}, exec);
   if (!st) return st;
   std::vector<index_t> comp;
-  if (o.tint_elements) comp = connected_components(m).face_component;
+  if (o.tint_elements && surface == nullptr) comp = connected_components(m).face_component;
   const vec3 l1 = normalized(vec3{-0.4, -0.5, 0.75}), l2 = normalized(vec3{0.6, 0.3, 0.4});
   image_buffer<std::uint8_t, 3> img(o.width, o.height);
   auto to8 = [](float v) { return static_cast<std::uint8_t>(std::clamp(v, 0.0f, 1.0f) * 255.0f + 0.5f); };
@@ -151,7 +155,11 @@ result<image_buffer<std::uint8_t, 3>> render_mesh_preview(const M& mesh, const m
                           vn[detail::to_size(fc[2])] * bary_at[px][2]);
       if (dot(n, f) > 0) n = -n;  // back faces lit like front faces
       const double shade = 0.28 + 0.62 * std::max(0.0, dot(n, l1)) + 0.25 * std::max(0.0, dot(n, l2));
-      const auto col = o.tint_elements ? detail::tint(o.color, comp[detail::to_size(fi)]) : o.color;
+      std::array<float, 3> col = o.color;
+      if (surface != nullptr)
+        col = (*surface)(m, fi, bary_at[px]);
+      else if (o.tint_elements)
+        col = detail::tint(o.color, comp[detail::to_size(fi)]);
       for (int c = 0; c < 3; ++c) out[c] = to8(col[detail::to_size(c)] * static_cast<float>(shade));
     }
   if (o.grid_spacing > 0) {
@@ -214,6 +222,57 @@ result<image_buffer<std::uint8_t, 3>> render_mesh_preview(const M& mesh, const m
     }
   }
   return img;
+}
+
+}  // namespace detail
+
+/// Renders a shaded preview of any valid Mesh. Errors: invalid mesh (validate_mesh), a mesh without
+/// faces, an image size outside 1 to 8192 pixels a side, non-finite angles, a negative or non-finite
+/// grid spacing, a grid finer than 4096 lines over the mesh, a grid line width outside 1 to 64.
+/// O(F + pixels); rasterization runs through `exec` (same image for every executor).
+template <Mesh M, Executor E = serial_executor>
+result<image_buffer<std::uint8_t, 3>> render_mesh_preview(const M& mesh, const mesh_preview_options& o = {},
+                                                          E&& exec = {}) {
+  using no_surface = std::array<float, 3> (*)(const tri_mesh&, index_t, const std::array<float, 3>&);
+  return detail::render_preview_with(mesh, o, exec, static_cast<const no_surface*>(nullptr));
+}
+
+/// Renders a shaded preview of a mesh with per-corner uvs, its colour read from `texture` (any Image;
+/// its first three channels, or the first one three times for grey images) by bilinear filtering at
+/// the interpolated uv (v upwards, OBJ convention: uv (0, 1) is the texture's top-left corner; texel
+/// centres at half-integers, coordinates clamped to the texture). The view, lights and grid as
+/// render_mesh_preview; tint_elements and color are not used. Errors: those of render_mesh_preview, a
+/// mesh without uvs, an empty texture. O(F + pixels).
+template <Mesh M, Image I, Executor E = serial_executor>
+result<image_buffer<std::uint8_t, 3>> render_textured_mesh_preview(const M& mesh, const I& texture,
+                                                                   const mesh_preview_options& o = {}, E&& exec = {}) {
+  if (!has_uvs(mesh)) return status::invalid_argument("render_textured_mesh_preview: the mesh has no uvs");
+  const index_t tw = width_of(texture), th = height_of(texture);
+  if (tw < 1 || th < 1) return status::invalid_argument("render_textured_mesh_preview: the texture is empty");
+  constexpr int TC = channels_v<I>;
+  auto texel = [&](index_t x, index_t y) {
+    const auto p = image_traits<I>::read(texture, std::clamp<index_t>(x, 0, tw - 1), std::clamp<index_t>(y, 0, th - 1));
+    std::array<float, 3> c{};
+    for (int k = 0; k < 3; ++k)
+      c[detail::to_size(k)] = channel_to_unit(pixel_traits<pixel_t<I>>::get(p, TC >= 3 ? k : 0));
+    return c;
+  };
+  auto surface = [&](const tri_mesh& m, index_t f, const std::array<float, 3>& b) {
+    vec2 uv;
+    for (int k = 0; k < 3; ++k) uv = uv + m.uvs[detail::to_size(f)][detail::to_size(k)] * b[detail::to_size(k)];
+    const double x = uv.x * static_cast<double>(tw) - 0.5, y = (1 - uv.y) * static_cast<double>(th) - 0.5;
+    if (!std::isfinite(x) || !std::isfinite(y)) return std::array<float, 3>{0, 0, 0};
+    const double fx = std::floor(std::clamp(x, -1.0, static_cast<double>(tw))),
+                 fy = std::floor(std::clamp(y, -1.0, static_cast<double>(th)));
+    const auto ax = static_cast<float>(x - fx), ay = static_cast<float>(y - fy);
+    const auto ix = static_cast<index_t>(fx), iy = static_cast<index_t>(fy);
+    const auto c00 = texel(ix, iy), c10 = texel(ix + 1, iy), c01 = texel(ix, iy + 1), c11 = texel(ix + 1, iy + 1);
+    std::array<float, 3> c{};
+    for (std::size_t k = 0; k < 3; ++k)
+      c[k] = (c00[k] * (1 - ax) + c10[k] * ax) * (1 - ay) + (c01[k] * (1 - ax) + c11[k] * ax) * ay;
+    return c;
+  };
+  return detail::render_preview_with(mesh, o, exec, &surface);
 }
 
 TESSERA_NAMESPACE_END

@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <string_view>
 #include <vector>
 
 #include "../core/config.hpp"
@@ -163,6 +164,74 @@ struct polycube_tiling {
   index_t tiles_used = 0;
 };
 
+namespace detail {
+/// assign_polycube_tiles over any three-axis set: `count` tiles, tile t being `tile_info(t)` (an
+/// axis_tile), `tile_size` the side w_T of a tile in tile-local units. `name` starts messages.
+template <TileColoring C, class Info>
+result<polycube_tiling> assign_axis_tiles(const polycube_map& map, const axis_color_counts& n, index_t count,
+                                          Info&& tile_info, double tile_size, const C& coloring,
+                                          std::string_view name) {
+  if (auto s = validate_axis_color_counts(n); !s) return status(s.code(), detail::cat(name, ": ", s.message()));
+  if (auto s = detail::check_layout_for_tiling(map); !s) return s;
+  const auto& L = map.layout;
+  if (coloring.num_faces() != static_cast<index_t>(L.quads.size()))
+    return status::invalid_argument(detail::cat(name, ": the colouring has ", coloring.num_faces(),
+                                                " faces, the layout ", L.quads.size(), " quads"));
+  // the tile of every (face, edges), by its index in the complete set: the set may be in any order
+  std::vector<index_t> lookup(detail::to_size(axis_tile_count(n)), -1);
+  for (index_t t = 0; t < count; ++t) {
+    const axis_tile at = tile_info(t);
+    if (auto s = validate_axis_tile(at, n); !s)
+      return status(s.code(), detail::cat(name, ": tile ", t, ": ", s.message()));
+    auto& slot = lookup[detail::to_size(axis_tile_index(at, n))];
+    if (slot < 0) slot = t;
+  }
+  // colours: in range of their axis, and the same from both quads of every grid edge
+  std::vector<int> edge_color(L.edges.size(), -1);
+  for (std::size_t q = 0; q < L.quads.size(); ++q)
+    for (int k = 0; k < 4; ++k) {
+      const auto& g = L.edges[detail::to_size(L.quads[q].edges[detail::to_size(k)])];
+      const int c = static_cast<int>(coloring.edge_color(static_cast<index_t>(q), quad_tile_side(k)));
+      if (c < 0 || c >= n[detail::to_size(g.axis)])
+        return status::out_of_range(detail::cat(name, ": quad ", q, " ", side_name(quad_tile_side(k)), " side (along ",
+                                                "XYZ"[g.axis], ") has colour ", c, ", outside [0, ",
+                                                n[detail::to_size(g.axis)], ")"));
+      int& e = edge_color[detail::to_size(L.quads[q].edges[detail::to_size(k)])];
+      if (e >= 0 && e != c)
+        return status::invalid_argument(detail::cat(name, ": the two quads of grid edge ",
+                                                    L.quads[q].edges[detail::to_size(k)], " give it colours ", e,
+                                                    " and ", c));
+      e = c;
+    }
+  polycube_tiling out;
+  out.tile_size = tile_size;
+  const double scale = 1.0 / tile_size;
+  out.quads.resize(L.quads.size());
+  std::vector<char> used(detail::to_size(count), 0);
+  for (std::size_t q = 0; q < L.quads.size(); ++q) {
+    const polycube_label face = map.charts[detail::to_size(L.quads[q].chart)].label;
+    axis_tile want{static_cast<int>(face), {}};
+    want.edges = {coloring.edge_color(static_cast<index_t>(q), side_north),
+                  coloring.edge_color(static_cast<index_t>(q), side_east),
+                  coloring.edge_color(static_cast<index_t>(q), side_south),
+                  coloring.edge_color(static_cast<index_t>(q), side_west)};
+    const index_t t = lookup[detail::to_size(axis_tile_index(want, n))];
+    if (t < 0)
+      return status::invalid_argument(detail::cat(
+          name, ": quad ", q, " (face ", cube_face_name(want.face), ") needs edges [", want.edges.north, ", ",
+          want.edges.east, ", ", want.edges.south, ", ", want.edges.west, "], which no tile of the set has"));
+    auto& p = out.quads[q];
+    p.tile = t;
+    p.face = face;
+    // the tile's frame is the quad's frame (same face): (u, v, h) = (x, y, z) / w_T
+    p.tile_to_quad = {{{scale, 0, 0, 0}, {0, scale, 0, 0}, {0, 0, scale, 0}}};
+    out.tiles_used += used[detail::to_size(t)] ? 0 : 1;
+    used[detail::to_size(t)] = 1;
+  }
+  return out;
+}
+}  // namespace detail
+
 /// Gives every quad of `map` the tile of `set` (a three-axis set) whose face is the quad's label and
 /// whose four edge colours equal, side by side in the quad's (u, v) frame, the colours `coloring`
 /// gives the quad (TileColoring over the quads, face = quad, sides north = quad side 2, east = 1,
@@ -181,70 +250,18 @@ result<polycube_tiling> assign_polycube_tiles(const polycube_map& map, const geo
     return status::invalid_argument(
         "assign_polycube_tiles: the tile set is planar; polycube quads need a three-axis set "
         "(geometric_wang_options::axis_colors)");
-  const axis_color_counts n = set.axis_colors;
-  if (auto s = validate_axis_color_counts(n); !s)
+  if (auto s = validate_axis_color_counts(set.axis_colors); !s)
     return status(s.code(), detail::cat("assign_polycube_tiles: ", s.message()));
   if (set.tiles.size() != set.edges.size() || set.faces.size() != set.tiles.size() || set.tiles.empty())
     return status::invalid_argument("assign_polycube_tiles: the set's tiles, edges and faces differ in count");
   if (!(set.tile_size > 0) || !std::isfinite(set.tile_size))
     return status::invalid_argument(detail::cat("assign_polycube_tiles: tile_size must be > 0, got ", set.tile_size));
-  if (auto s = detail::check_layout_for_tiling(map); !s) return s;
-  const auto& L = map.layout;
-  if (coloring.num_faces() != static_cast<index_t>(L.quads.size()))
-    return status::invalid_argument(detail::cat("assign_polycube_tiles: the colouring has ", coloring.num_faces(),
-                                                " faces, the layout ", L.quads.size(), " quads"));
-  // the tile of every (face, edges), by its index in the complete set: the set may be in any order
-  std::vector<index_t> lookup(detail::to_size(axis_tile_count(n)), -1);
-  for (std::size_t t = 0; t < set.tiles.size(); ++t) {
-    const axis_tile at{set.faces[t], set.edges[t]};
-    if (auto s = validate_axis_tile(at, n); !s)
-      return status(s.code(), detail::cat("assign_polycube_tiles: tile ", t, ": ", s.message()));
-    auto& slot = lookup[detail::to_size(axis_tile_index(at, n))];
-    if (slot < 0) slot = static_cast<index_t>(t);
-  }
-  // colours: in range of their axis, and the same from both quads of every grid edge
-  std::vector<int> edge_color(L.edges.size(), -1);
-  for (std::size_t q = 0; q < L.quads.size(); ++q)
-    for (int k = 0; k < 4; ++k) {
-      const auto& g = L.edges[detail::to_size(L.quads[q].edges[detail::to_size(k)])];
-      const int c = static_cast<int>(coloring.edge_color(static_cast<index_t>(q), quad_tile_side(k)));
-      if (c < 0 || c >= n[detail::to_size(g.axis)])
-        return status::out_of_range(detail::cat("assign_polycube_tiles: quad ", q, " ", side_name(quad_tile_side(k)),
-                                                " side (along ", "XYZ"[g.axis], ") has colour ", c, ", outside [0, ",
-                                                n[detail::to_size(g.axis)], ")"));
-      int& e = edge_color[detail::to_size(L.quads[q].edges[detail::to_size(k)])];
-      if (e >= 0 && e != c)
-        return status::invalid_argument(detail::cat("assign_polycube_tiles: the two quads of grid edge ",
-                                                    L.quads[q].edges[detail::to_size(k)], " give it colours ", e,
-                                                    " and ", c));
-      e = c;
-    }
-  polycube_tiling out;
-  out.tile_size = set.tile_size;
-  out.quads.resize(L.quads.size());
-  std::vector<char> used(set.tiles.size(), 0);
-  const double s = 1.0 / set.tile_size;
-  for (std::size_t q = 0; q < L.quads.size(); ++q) {
-    const polycube_label face = map.charts[detail::to_size(L.quads[q].chart)].label;
-    axis_tile want{static_cast<int>(face), {}};
-    want.edges = {coloring.edge_color(static_cast<index_t>(q), side_north),
-                  coloring.edge_color(static_cast<index_t>(q), side_east),
-                  coloring.edge_color(static_cast<index_t>(q), side_south),
-                  coloring.edge_color(static_cast<index_t>(q), side_west)};
-    const index_t t = lookup[detail::to_size(axis_tile_index(want, n))];
-    if (t < 0)
-      return status::invalid_argument(detail::cat(
-          "assign_polycube_tiles: quad ", q, " (face ", cube_face_name(want.face), ") needs edges [", want.edges.north,
-          ", ", want.edges.east, ", ", want.edges.south, ", ", want.edges.west, "], which no tile of the set has"));
-    auto& p = out.quads[q];
-    p.tile = t;
-    p.face = face;
-    // the tile's frame is the quad's frame (same face): (u, v, h) = (x, y, z) / w_T
-    p.tile_to_quad = {{{s, 0, 0, 0}, {0, s, 0, 0}, {0, 0, s, 0}}};
-    out.tiles_used += used[detail::to_size(t)] ? 0 : 1;
-    used[detail::to_size(t)] = 1;
-  }
-  return out;
+  return detail::assign_axis_tiles(
+      map, set.axis_colors, static_cast<index_t>(set.tiles.size()),
+      [&](index_t t) {
+        return axis_tile{set.faces[detail::to_size(t)], set.edges[detail::to_size(t)]};
+      },
+      set.tile_size, coloring, "assign_polycube_tiles");
 }
 
 /// Colours `map`'s grid edges with the set's colour counts (color_polycube_edges, keyed by `seed`) and

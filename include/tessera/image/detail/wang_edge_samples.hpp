@@ -155,13 +155,34 @@ strip_origin choose_strip(const quilt_source<T, C>& src, const image_buffer<T, C
   return {};
 }
 
-/// Builds K and every strip (see the header comment): a strip holds its exemplar sample in its
+/// Makes K invariant under quarter turns (x, y) -> (2d - 1 - y, x) about its centre, each orbit of four
+/// pixels taking their mean: three-axis sets (image/axis_wang_tiles.hpp) use one strip both along and
+/// across a tile, and polycube corners join three or five tile corners, which only a corner sample
+/// that looks the same from every side can serve.
+template <Channel T, int C>
+void make_corner_rotation_symmetric(image_buffer<T, C>& k) {
+  const index_t n = k.width();
+  for (index_t y = 0; y < n / 2; ++y)
+    for (index_t x = 0; x < n / 2; ++x) {
+      const index_t xs[4] = {x, n - 1 - y, n - 1 - x, y}, ys[4] = {y, x, n - 1 - y, n - 1 - x};
+      for (int c = 0; c < C; ++c) {
+        float sum = 0;
+        for (int r = 0; r < 4; ++r) sum += channel_to_unit(k.pixel_ptr(xs[r], ys[r])[c]);
+        const T mean = unit_to_channel<T>(sum / 4);
+        for (int r = 0; r < 4; ++r) k.pixel_ptr(xs[r], ys[r])[c] = mean;
+      }
+    }
+}
+
+/// Builds K and every strip (see the header comment; with `rotation_symmetric_corner`, K is made
+/// invariant under quarter turns first): a strip holds its exemplar sample in its
 /// middle (along [ov, ts − ov), cuttable), K's halves at its ends (fixed), and the rest is quilted
 /// with the tiles' patch size and overlap, joining the ends to the sample by minimum-error cuts. Strips are quilted in
 /// parallel through `exec`, each keyed by its colour, so the result does not depend on the executor.
 template <Channel T, int C, class X>
 status build_frame_samples(const quilt_source<T, C>& src, index_t ts, index_t ov, index_t border, int nh, int nv,
-                           const quilt_params& prm, double tolerance, X& exec, wang_frame_samples<T, C>& out) {
+                           const quilt_params& prm, double tolerance, X& exec, wang_frame_samples<T, C>& out,
+                           bool rotation_symmetric_corner = false) {
   out.ts = ts;
   out.ov = ov;
   out.border = border;
@@ -171,6 +192,7 @@ status build_frame_samples(const quilt_source<T, C>& src, index_t ts, index_t ov
   out.corner = image_buffer<T, C>(2 * d, 2 * d);
   for (index_t y = 0; y < 2 * d; ++y)
     std::memcpy(out.corner.pixel_ptr(0, y), src.pixels.pixel_ptr(kx, ky + y), to_size(2 * d * C) * sizeof(T));
+  if (rotation_symmetric_corner) make_corner_rotation_symmetric(out.corner);
   // exemplar samples, chosen in order (distinct per direction)
   std::vector<strip_origin> h_origin, v_origin;
   for (int c = 0; c < nh; ++c)

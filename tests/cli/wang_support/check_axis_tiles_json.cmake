@@ -1,0 +1,22 @@
+# Checks the tiles.json of a three-axis tile directory (`tessera wang build --colors 2,2,2`):
+#   cmake -DFILE=<dir>/tiles.json -P check_axis_tiles_json.cmake
+# "version" 2, "axis_colors" [2, 2, 2], 96 tiles, tile i with "face" f: faces ascending, 16 per face.
+cmake_minimum_required(VERSION 3.21)
+file(READ "${FILE}" _json)
+string(JSON _version GET "${_json}" version)
+string(JSON _axes GET "${_json}" axis_colors)
+string(JSON _n LENGTH "${_json}" tiles)
+if(NOT _version EQUAL 2 OR NOT _n EQUAL 96)
+  message(FATAL_ERROR "${FILE}: version ${_version} and ${_n} tiles, expected 2 and 96")
+endif()
+string(REGEX REPLACE "[ \n]" "" _axes "${_axes}")
+if(NOT _axes STREQUAL "[2,2,2]")
+  message(FATAL_ERROR "${FILE}: axis_colors ${_axes}, expected [2,2,2]")
+endif()
+foreach(_i RANGE 95)
+  string(JSON _face GET "${_json}" tiles ${_i} face)
+  math(EXPR _want "${_i} / 16")
+  if(NOT _face EQUAL _want)
+    message(FATAL_ERROR "${FILE}: tile ${_i} has face ${_face}, expected ${_want}")
+  endif()
+endforeach()
