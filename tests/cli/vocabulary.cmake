@@ -93,8 +93,8 @@ _vocab("polycube --in" voc_pc polycube --in ${_vdata}/l_shape.off --tile 0.5 --o
 _vocab("polycube --mesh (alias)" voc_pc polycube --mesh ${_vdata}/l_shape.off --tile 0.5 --out ${_v}/pc_old.obj)
 _same("polycube --in = --mesh" ${_v}/pc_new.obj ${_v}/pc_old.obj voc_pc)
 
-# --colors: the same rule for both Wang commands (0 is refused by both; geo-wang also takes three counts)
-_refused("wang build refuses zero colours" 1 "--colors expects two integers NH,NV in \\[1, 4096\\], got '0,2'"
+# --colors: the same rule for both Wang commands (0 is refused by both; both also take three counts)
+_refused("wang build refuses zero colours" 1 "--colors expects two integers NH,NV or three NX,NY,NZ in \\[1, 4096\\], got '0,2'"
          wang build --exemplar grass --colors 0,2 --out ${_v}/never)
 _refused("geo-wang build refuses zero colours" 1 "--colors expects two integers NH,NV or three NX,NY,NZ in \\[1, 4096\\], got '0,2'"
          geo-wang build --exemplar x.obj --colors 0,2 --tile 4 --out ${_v}/never)
