@@ -154,7 +154,8 @@ result<map_geometric_tiles_result> map_geometric_tiles(const M& mesh, const poly
   if (!(o.height >= 0) || !std::isfinite(o.height))
     return status::invalid_argument(
         detail::cat("map_geometric_tiles: height must be > 0 (or 0 for the tiles' own proportions), got ", o.height));
-  const auto [z0, z1] = detail::tile_set_height_range(set);
+  const auto z_range = detail::tile_set_height_range(set);  // not a structured binding: a lambda below uses both
+  const double z0 = z_range.first, z1 = z_range.second;
   if (!(z1 > z0) || !(set.tile_size > 0) || !std::isfinite(set.tile_size))
     return status::invalid_argument(
         "map_geometric_tiles: the tile set has no height (no vertex above its base plane) or no tile size");
