@@ -26,3 +26,23 @@ TEST_CASE("config: index type, namespace macros and exception detection", "[conf
   REQUIRE(evaluated == 0);
 #endif
 }
+
+TEST_CASE("config: the library tests are instrumented when the build says so", "[config]") {
+  // TESSERA_TESTS_SANITIZE (scripts/test.sh) and TESSERA_SANITIZE define TESSERA_TESTS_SANITIZED for the
+  // test executables: then AddressSanitizer must really be compiled in, and the kernels' assertions on
+#if defined(TESSERA_TESTS_SANITIZED)
+#if defined(__SANITIZE_ADDRESS__)
+  constexpr bool address_sanitizer = true;
+#elif defined(__has_feature)
+  constexpr bool address_sanitizer = __has_feature(address_sanitizer);
+#else
+  constexpr bool address_sanitizer = false;
+#endif
+  REQUIRE(address_sanitizer);
+#if !defined(TESSERA_ENABLE_ASSERTS)
+  FAIL("an instrumented test build runs with TESSERA_ENABLE_ASSERTS");
+#endif
+#else
+  SUCCEED("the test executables are built like the library (TESSERA_TESTS_SANITIZE=OFF)");
+#endif
+}
