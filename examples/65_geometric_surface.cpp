@@ -17,6 +17,7 @@
 
 #include <tessera/core/executor.hpp>
 #include <tessera/core/mesh_topology.hpp>
+#include <tessera/geometry/bvh.hpp>
 #include <tessera/geometry/geometric_wang_tiles.hpp>
 #include <tessera/geometry/mesh_exemplars.hpp>
 #include <tessera/io/mesh_file.hpp>
@@ -130,14 +131,26 @@ int main(int argc, char** argv) {
     tri_mesh elements;
     elements.positions.assign(r->mesh.positions.begin(), r->mesh.positions.begin() + r->element_vertices);
     elements.faces.assign(r->mesh.faces.begin(), r->mesh.faces.begin() + r->element_faces);
+    // faces of the elements that cross each other (pairs sharing a vertex skipped): a bijective
+    // piecewise-linear shell map would give none; see docs/surface.md, "crossings near polycube corners"
+    index_t crossing = 0;
+    triangle_bvh(elements).for_each_self_intersection(
+        [&](index_t a, index_t b) {
+          for (index_t x : elements.faces[static_cast<std::size_t>(a)])
+            for (index_t y : elements.faces[static_cast<std::size_t>(b)])
+              if (x == y) return true;
+          return false;
+        },
+        [&](index_t, index_t) { ++crossing; });
     std::printf(
         "%s (%lld vertices, %lld across): polycube %.2f s, %zu quads, %lld tiles used; mapping %.2f s: H = %.3g, "
-        "%lld shell repairs, %lld element vertices, %lld faces, %lld elements, %zu open edges, %lld split edges\n",
+        "%lld shell repairs, %lld element vertices, %lld faces, %lld elements, %zu open edges, %lld split edges, "
+        "%lld crossing face pairs\n",
         j.name.c_str(), static_cast<long long>(mesh.num_vertices()), static_cast<long long>(j.across), polycube_s,
         map->layout.quads.size(), static_cast<long long>(r->tiling.tiles_used), map_s, r->height,
         static_cast<long long>(r->shell_repairs), static_cast<long long>(r->element_vertices),
         static_cast<long long>(r->element_faces), static_cast<long long>(connected_components(elements).count),
-        boundary_edges(elements).size(), static_cast<long long>(r->split_edges));
+        boundary_edges(elements).size(), static_cast<long long>(r->split_edges), static_cast<long long>(crossing));
     const std::string stem = dir + "/geo_" + kind + "_" + j.name;
     bool ok = write_obj(stem + ".obj", r->mesh).ok();
     mesh_preview_options view;
