@@ -8,6 +8,8 @@
 //              machine is shared
 //   synthesize_overlap_fallback/...: the same with the quality fallback (fill_fallback::overlap_error)
 //     instead of the paper's most-sets default, for a same-run ratio of the two
+//   synthesize_paper_feather/...: the same with the paper's feathering over the whole overlap
+//     (feather_width = 0) instead of the default narrow band
 //   memcpy/<output side>/<format>: the baseline alone
 //   preprocess/<exemplar side>/<kind>/<threads>/<seams>: build_patch_model (size analysis included; seams:
 //     also the minimum-error seam of every compatible pair), model_bytes and model_MiB (patch_model::memory_bytes)
@@ -60,7 +62,8 @@ std::pair<double, double> memcpy_seconds(std::size_t bytes) {
 }
 
 template <class T, int C>
-void run_synthesis(benchmark::State& state, tessera::fill_fallback fallback = tessera::fill_fallback::most_sets) {
+void run_synthesis(benchmark::State& state, tessera::fill_fallback fallback = tessera::fill_fallback::most_sets,
+                   index_t feather_width = tessera::patch_synthesis_options{}.feather_width) {
   const index_t ex_side = state.range(0), side = state.range(1);
   const int threads = static_cast<int>(state.range(3));
   const auto& model = model_for<T, C>(ex_side);
@@ -72,7 +75,8 @@ void run_synthesis(benchmark::State& state, tessera::fill_fallback fallback = te
   const auto t0 = std::chrono::steady_clock::now();
   for (auto _ : state) {
     const auto f0 = std::chrono::steady_clock::now();
-    const tessera::patch_synthesis_options o{.seed = static_cast<std::uint64_t>(frames), .fallback = fallback};
+    const tessera::patch_synthesis_options o{
+        .seed = static_cast<std::uint64_t>(frames), .feather_width = feather_width, .fallback = fallback};
     auto s = threads == 1 ? tessera::synthesize(model, out, o) : tessera::synthesize(model, out, o, pool);
     if (!s) state.SkipWithError(s.error().message().c_str());
     benchmark::DoNotOptimize(out.data());
@@ -101,6 +105,10 @@ void BM_synthesize(benchmark::State& state) {
 
 void BM_synthesize_overlap_fallback(benchmark::State& state) {
   run_synthesis<std::uint8_t, 4>(state, tessera::fill_fallback::overlap_error);
+}
+
+void BM_synthesize_paper_feather(benchmark::State& state) {
+  run_synthesis<std::uint8_t, 4>(state, tessera::fill_fallback::most_sets, 0);
 }
 
 void BM_memcpy(benchmark::State& state) {
@@ -149,6 +157,10 @@ void synthesis_args(benchmark::internal::Benchmark* b) {
 BENCHMARK(BM_memcpy)->ArgsProduct({{256, 512, 1024, 2048, 4096}, {0, 1}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_synthesize)->Apply(synthesis_args)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_synthesize_overlap_fallback)
+    ->ArgsProduct({{64, 128}, {1024}, {0}, {1, 2}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_synthesize_paper_feather)
     ->ArgsProduct({{64, 128}, {1024}, {0}, {1, 2}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();

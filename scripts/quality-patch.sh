@@ -21,7 +21,8 @@
 #   --label L    name of this run (default "default")
 #   --threads T  threads of tessera (default 2)
 #   --only A,B   only these photographs
-# Anything after `--` goes to `tessera synth` (e.g. -- --fallback overlap --seams cut, the quality mode).
+# Anything after `--` goes to `tessera synth` (e.g. -- --fallback overlap, the quality mode; -- --feather 0,
+# the paper's feathering over the whole overlap).
 # Environment: TESSERA_BIN (default build/bin/tessera), TESSERA_QUALITY_CACHE (default
 # build/quality-patch/cache: photographs and G'MIC outputs, reused between runs).
 set -euo pipefail
@@ -130,14 +131,15 @@ for run in runs:
     for k, v in vals.items(): agg[k].append(v)
     win = lambda a, b: "**" + fmt(a) + "**" if a <= b else fmt(a)
     fallback = f'{s["empty_intersections"]}/{s["filled"]}'
-    rows.append(f'| {what} | {s["exemplar_width"]}×{s["exemplar_height"]} | {s["patch"]}×{s["patch_height"]}, {s["overlap"]} '
+    band = f', {s["feather_width"]}' if s.get("seams") == "feather" and "feather_width" in s else ""
+    rows.append(f'| {what} | {s["exemplar_width"]}×{s["exemplar_height"]} | {s["patch"]}×{s["patch_height"]}, {s["overlap"]}{band} '
                 f'| {fallback} | {win(vals["te1"], vals["ge1"])} / {fmt(vals["ge1"])} '
                 f'| {win(vals["te2"], vals["ge2"])} / {fmt(vals["ge2"])} | {vals["tr"]:.2f} / {vals["gr"]:.2f} '
                 f'| {vals["th"]:.3f} / {vals["gh"]:.3f} '
                 f'| {s["preprocess_ms"]:.0f} + {s["synthesis_ms"]:.1f} / {g["time_ms"]:.0f} |')
 med = {k: statistics.median(v) for k, v in agg.items()}
 lines = [f"Run `{label}`, {size}×{size} outputs, tessera / G'MIC in every cell (bold: tessera no higher).", "",
-         "| photograph | exemplar | patch, overlap | fallback | energy 1× | energy ½× | repetition | histogram | time ms (tessera model + synthesis / G'MIC) |",
+         "| photograph | exemplar | patch, overlap, feather band | fallback | energy 1× | energy ½× | repetition | histogram | time ms (tessera model + synthesis / G'MIC) |",
          "|---|---|---|---:|---:|---:|---:|---:|---:|"] + rows + [
          f'| **median** | | | | {fmt(med["te1"])} / {fmt(med["ge1"])} | {fmt(med["te2"])} / {fmt(med["ge2"])} '
          f'| {med["tr"]:.2f} / {med["gr"]:.2f} | {med["th"]:.3f} / {med["gh"]:.3f} | |']

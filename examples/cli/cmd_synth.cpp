@@ -1,6 +1,6 @@
 // tessera synth: real-time patch synthesis of large textures (paper 002; image/patch_synthesis.hpp).
 //   tessera synth --exemplar E.png --size WxH --out O.png [--seed S] [--threads T] [--patch P]
-//                 [--overlap V] [--seams feather|cut] [--fallback overlap|sets] [--candidates K]
+//                 [--overlap V] [--seams feather|cut] [--feather W] [--fallback overlap|sets] [--candidates K]
 //                 [--window X,Y,W,H] [--source-map M.png]
 //                 [--repeat N] [--stats]
 #include <algorithm>
@@ -30,6 +30,7 @@ inline constexpr double max_origin = 4503599627370496.0;  // 2^52, tessera::max_
 struct synth_request {
   std::string exemplar, out, source_map;
   index_t width = 0, height = 0, patch_w = 0, patch_h = 0, overlap = 0;
+  index_t feather = tessera::patch_synthesis_options{}.feather_width;
   tessera::texture_offset origin;
   tessera::seam_mode seams = tessera::seam_mode::feather;
   tessera::fill_fallback fallback = tessera::fill_fallback::most_sets;
@@ -87,6 +88,9 @@ tessera::result<synth_request> parse(const cli::arguments& args) {
     r.seams = tessera::seam_mode::cut;
   else if (seams != "feather")
     return status::invalid_argument("--seams expects feather or cut, got '" + seams + "'");
+  auto feather = args.integer("--feather", static_cast<long long>(r.feather), 0, max_side);
+  if (!feather) return feather.error();
+  r.feather = static_cast<index_t>(*feather);
   const std::string fallback = args.str("--fallback", "sets");
   if (fallback == "overlap")
     r.fallback = tessera::fill_fallback::overlap_error;
@@ -121,7 +125,7 @@ int run_format(const cli::arguments& args, const synth_request& r) {
   auto out = tessera::image_buffer<T, C>::create(r.width, r.height);
   if (!out) return cli::fail(args, out.error());
   const tessera::patch_synthesis_options so{
-      .origin = r.origin, .seed = r.seed, .seams = r.seams, .fallback = r.fallback};
+      .origin = r.origin, .seed = r.seed, .seams = r.seams, .feather_width = r.feather, .fallback = r.fallback};
   tessera::result<tessera::patch_synthesis_stats> st = status::internal_error("not run");
   const double synthesis_ms = cli::median_ms(r.repeat, [&] { st = tessera::synthesize(*model, *out, so, pool); });
   if (!st) return cli::fail(args, st.error());
@@ -160,6 +164,7 @@ int run_format(const cli::arguments& args, const synth_request& r) {
         .add("patch_height", model->patch_height())
         .add("overlap", model->overlap())
         .add("seams", r.seams == tessera::seam_mode::cut ? "cut" : "feather")
+        .add("feather_width", r.feather > 0 ? std::min(r.feather, model->overlap()) : model->overlap())
         .add("threads", pool.concurrency())
         .add("preprocess_ms", preprocess_ms)
         .add("synthesis_ms", synthesis_ms)
@@ -230,6 +235,8 @@ std::vector<cli::option_spec> synth_options() {
       {"--patch", "P", "patch pitch P or WxH (default: chosen by the periodicity analysis, paper 002 section 2.1)"},
       {"--overlap", "V", "overlap width between patches (default: chosen by the analysis)"},
       {"--seams", "MODE", "feather (default, the paper's linear blend) or cut (minimum-error seams)"},
+      {"--feather", "W",
+       "feathering: width of the blend band centred in each overlap, 0 = the whole overlap (the paper)"},
       {"--fallback", "RULE",
        "cells whose four compatible sets share no patch: sets (default, the paper: the patch in the most sets) "
        "or overlap (smallest true overlap error; slower)"},
@@ -243,7 +250,8 @@ const cli::registrar reg(
     {.name = "synth",
      .summary = "synthesize a large texture or any window of an infinite one from an exemplar (patch synthesis)",
      .usage = "tessera synth --exemplar E.png --size WxH --out O.png [--seed S] [--threads T] [--patch P] "
-              "[--overlap V] [--seams feather|cut] [--fallback overlap|sets] [--candidates K] [--window X,Y,W,H] "
+              "[--overlap V] [--seams feather|cut] [--feather W] [--fallback overlap|sets] [--candidates K] [--window "
+              "X,Y,W,H] "
               "[--source-map M.png] [--repeat N] [--stats]",
      .options = synth_options(),
      .run = run_synth});

@@ -65,6 +65,11 @@ tessera_cli_test(NAME "cli: synth with a bad seed fails" CODE 2 REGEX "--seed ex
   COMMAND synth --exemplar sand --size 8x8 --seed -3 --out ${_o}/bad.png)
 tessera_cli_test(NAME "cli: synth with an unknown fallback fails" CODE 1 REGEX "--fallback expects overlap or sets, got 'random'"
   COMMAND synth --exemplar sand --size 8x8 --fallback random --out ${_o}/bad.png)
+tessera_cli_test(NAME "cli: synth with a negative feather band fails" CODE 1 REGEX "--feather expects an integer in \\[0, 32768\\], got '-1'"
+  COMMAND synth --exemplar sand --size 8x8 --feather -1 --out ${_o}/bad.png)
+tessera_cli_test(NAME "cli: synth --stats reports the feather band, clamped to the overlap"
+  REGEX "\"overlap\":4,\"seams\":\"feather\",\"feather_width\":4,"
+  COMMAND synth --exemplar sand --exemplar-size 48 --size 64x64 --patch 12 --overlap 4 --feather 9 --stats --out ${_o}/band.png)
 tessera_cli_test(NAME "cli: synth --stats reports the fallback rate and the structure check"
   REGEX "\"fallback_rate\":[0-9.e-]+.*\"fill_overlap_rms\":[0-9.e-]+.*\"pitch_alignment\":[0-9.e-]+.*\"structure_warning\":"
   COMMAND synth --exemplar bricks --exemplar-size 64 --size 96x96 --fallback sets --candidates 4 --stats --out ${_o}/fallback.png)

@@ -37,8 +37,10 @@ const tessera::patch_model<std::uint8_t, 3>& bricks_model() {
 
 TEST_CASE("synthesize: windows of the infinite texture are bit-identical to one large render", "[patch_synthesis]") {
   const auto& m = bricks_model();
-  for (seam_mode mode : {seam_mode::feather, seam_mode::cut}) {
-    const tessera::patch_synthesis_options whole{.origin = {-53, 29}, .seed = 11, .seams = mode};
+  for (int variant = 0; variant < 3; ++variant) {  // feather over the whole overlap, over 1 pixel, cut
+    const seam_mode mode = variant == 2 ? seam_mode::cut : seam_mode::feather;
+    const index_t band = variant == 1 ? 1 : 0;
+    const tessera::patch_synthesis_options whole{.origin = {-53, 29}, .seed = 11, .seams = mode, .feather_width = band};
     tessera::image_buffer<std::uint8_t, 3> full(101, 77);
     REQUIRE(tessera::synthesize(m, full, whole).ok());
     // uneven pieces, including ones that start inside overlaps and cells
@@ -55,18 +57,22 @@ TEST_CASE("synthesize: windows of the infinite texture are bit-identical to one 
       }
     // far from the origin, negative coordinates
     tessera::image_buffer<std::uint8_t, 3> far1(40, 30), far2(20, 30);
-    REQUIRE(tessera::synthesize(m, far1, {.origin = {-(index_t{1} << 40), 123456789}, .seed = 11, .seams = mode}).ok());
-    REQUIRE(tessera::synthesize(m, far2, {.origin = {-(index_t{1} << 40) + 20, 123456789}, .seed = 11, .seams = mode})
-                .ok());
+    auto o1 = whole, o2 = whole;
+    o1.origin = {-(index_t{1} << 40), 123456789};
+    o2.origin = {-(index_t{1} << 40) + 20, 123456789};
+    REQUIRE(tessera::synthesize(m, far1, o1).ok());
+    REQUIRE(tessera::synthesize(m, far2, o2).ok());
     CHECK(far2 == crop(far1, 20, 0, 20, 30));
   }
 }
 
 TEST_CASE("synthesize: bit-identical for any executor and thread count, and seeded", "[patch_synthesis]") {
   const auto& m = bricks_model();
-  for (seam_mode mode : {seam_mode::feather, seam_mode::cut}) {
+  for (int variant = 0; variant < 3; ++variant) {  // feather over the whole overlap, over 3 pixels, cut
+    const seam_mode mode = variant == 2 ? seam_mode::cut : seam_mode::feather;
     tessera::image_buffer<std::uint8_t, 3> a(150, 97), b(150, 97), c(150, 97), d(150, 97);
-    const tessera::patch_synthesis_options o{.origin = {5, -3}, .seed = 2, .seams = mode};
+    const tessera::patch_synthesis_options o{
+        .origin = {5, -3}, .seed = 2, .seams = mode, .feather_width = variant == 1 ? 3 : 0};
     const auto sa = tessera::synthesize(m, a, o).value();
     tessera::thread_pool_executor two(2), three(3);
     const auto sb = tessera::synthesize(m, b, o, two).value();
@@ -170,6 +176,21 @@ TEST_CASE("synthesize: pixels come from the exemplar (source map)", "[patch_synt
       const bool in_overlap = ((X % 12) + 12) % 12 < 4 || ((Y % 12) + 12) % 12 < 4;
       if (!in_overlap) CHECK(out.read(x, y) == ex.read(src.read(x, y)[0], src.read(x, y)[1]));
     }
+  // a feather band of one pixel (position (v - 1) / 2 = 1 of the overlap, weight 1/2) is a straight cut
+  // through the overlap elsewhere: every pixel off the band a copy of the source the map names (weights
+  // 0 and 1 are exact in fixed point)
+  feather.feather_width = 1;
+  REQUIRE(tessera::synthesize(m, out, feather).ok());
+  REQUIRE(tessera::synthesize_source_map(m, src, feather).ok());
+  index_t copies = 0;
+  for (index_t y = 0; y < 50; ++y)
+    for (index_t x = 0; x < 70; ++x) {
+      const index_t X = x - 9, Y = y + 4;
+      if (((X % 12) + 12) % 12 == 1 || ((Y % 12) + 12) % 12 == 1) continue;
+      CHECK(out.read(x, y) == ex.read(src.read(x, y)[0], src.read(x, y)[1]));
+      ++copies;
+    }
+  CHECK(copies == 70 * 50 - (5 * 50 + 4 * 70 - 5 * 4));  // band columns X = 1 mod 12 (5), rows (4)
 }
 
 TEST_CASE("synthesize_aligned: several maps from one model", "[patch_synthesis]") {
@@ -254,6 +275,9 @@ TEST_CASE("synthesize: bad input and cancellation", "[patch_synthesis]") {
   CHECK(tessera::synthesize(m, out, {.phase_radius = -2}).error().message().find("phase_radius") != std::string::npos);
   CHECK(tessera::synthesize(m, out, {.min_phase_group = 0}).error().message().find("min_phase_group") !=
         std::string::npos);
+  CHECK(tessera::synthesize(m, out, {.feather_width = -1}).error().message().find("feather_width") !=
+        std::string::npos);
+  CHECK(tessera::synthesize(m, out, {.feather_width = 1000}).ok());  // clamped to the overlap
   tessera::image_buffer<std::uint16_t, 1> one(4, 4);
   CHECK(tessera::synthesize_source_map(m, one).error().message().find("2 channels") != std::string::npos);
   // uint8 source maps cannot address exemplars wider than 256 pixels
@@ -637,10 +661,14 @@ TEST_CASE("synthesize: distributed cells draw from their phase group", "[patch_s
 
 TEST_CASE("synthesize: feathered overlaps are the paper's linear blend of the two sources", "[patch_synthesis]") {
   // C = (1 - w) C_A + w C_B with w = (t + 1/2) / v at overlap position t (the distance to the overlap's
-  // border); where a horizontal and a vertical overlap cross, the two rows blended that way, blended again
-  auto check = [](const auto& m, double edge_tolerance, double corner_tolerance) {
+  // border); where a horizontal and a vertical overlap cross, the two rows blended that way, blended again.
+  // A feather band b < v: w = 0 before the band's first position s = (v - b) / 2, (t - s + 1/2) / b in
+  // it, 1 after it.
+  auto check = [](const auto& m, index_t band, double edge_tolerance, double corner_tolerance) {
     const index_t pw = m.patch_width(), ph = m.patch_height(), v = m.overlap();
-    const tessera::patch_synthesis_options o{.origin = {-2 * pw, 3 * ph}, .seed = 12};
+    const index_t b = band == 0 ? v : std::min(band, v), s = (v - b) / 2;
+    const tessera::patch_synthesis_options o{.origin = {-2 * pw, 3 * ph}, .seed = 12, .feather_width = band};
+    const auto weight = [&](index_t t) { return t < s ? 0.0 : t >= s + b ? 1.0 : (t - s + 0.5) / double(b); };
     const auto g = recover_cells(m, o, -3, 2, 6, 5);
     tessera::image_buffer<typename std::remove_cvref_t<decltype(m)>::channel_type, 3> out(4 * pw, 3 * ph);
     REQUIRE(tessera::synthesize(m, out, o).ok());
@@ -655,7 +683,7 @@ TEST_CASE("synthesize: feathered overlaps are the paper's linear blend of the tw
         const index_t X = o.origin.x + x, Y = o.origin.y + y;
         const index_t i = tessera::detail::floor_div(X, pw), j = tessera::detail::floor_div(Y, ph), lx = X - i * pw,
                       ly = Y - j * ph;
-        const double wx = (lx + 0.5) / double(v), wy = (ly + 0.5) / double(v);
+        const double wx = weight(lx), wy = weight(ly);
         for (int c = 0; c < 3; ++c) {
           auto row = [&](index_t jj, index_t ry) {  // the horizontally blended row of cell row jj at patch row ry
             return lx >= v ? source(i, jj, lx, ry, c)
@@ -669,10 +697,35 @@ TEST_CASE("synthesize: feathered overlaps are the paper's linear blend of the tw
     CHECK(worst_edge <= edge_tolerance);
     CHECK(worst_corner <= corner_tolerance);
   };
-  check(bricks_model(), 1.0, 2.0);  // 8-bit fixed point: weight and result rounding
+  for (index_t band : {0, 1, 2, 3, 4, 9}) {
+    INFO("feather band " << band);
+    check(bricks_model(), band, 1.0, 2.0);  // 8-bit fixed point: weight and result rounding
+  }
   const auto exf = exemplar<float, 3>(tessera::exemplar_kind::grass, 40);
-  check(tessera::build_patch_model(exf, {.patch_width = 11, .patch_height = 9, .overlap = 4, .candidates = 4}).value(),
-        1e-5, 1e-5);
+  const auto mf =
+      tessera::build_patch_model(exf, {.patch_width = 11, .patch_height = 9, .overlap = 4, .candidates = 4}).value();
+  for (index_t band : {0, 1, 3}) check(mf, band, 1e-5, 1e-5);
+}
+
+TEST_CASE("synthesize: a narrow feather band keeps outputs closer to their exemplar than the paper's",
+          "[patch_synthesis]") {
+  // the default band (5 pixels in an overlap of 12) blends less of two unrelated patches than the
+  // paper's weights over the whole overlap: the ghosted band occurs nowhere in the exemplar
+  for (auto kind : {tessera::exemplar_kind::sand, tessera::exemplar_kind::bricks}) {
+    const auto ex = exemplar(kind, 64);
+    const auto m = tessera::build_patch_model(ex, {.patch_width = 24, .patch_height = 24, .overlap = 12}).value();
+    const tessera::neighborhood_energy_options eo{.window = 5, .sample_step = 2};
+    double paper = 0, narrow = 0;
+    for (std::uint64_t seed : {1u, 2u, 3u}) {
+      tessera::image_buffer<std::uint8_t, 3> a(120, 120), b(120, 120);
+      REQUIRE(tessera::synthesize(m, a, {.seed = seed, .feather_width = 0}).ok());
+      REQUIRE(tessera::synthesize(m, b, {.seed = seed}).ok());
+      paper += tessera::neighborhood_energy(a, ex, eo).value();
+      narrow += tessera::neighborhood_energy(b, ex, eo).value();
+    }
+    INFO(tessera::to_string(kind) << ": energy, paper's feathering " << paper / 3 << ", default band " << narrow / 3);
+    CHECK(narrow < paper);
+  }
 }
 
 TEST_CASE("synthesize: seam cuts keep a structured texture closer to its exemplar than feathering",
@@ -684,7 +737,7 @@ TEST_CASE("synthesize: seam cuts keep a structured texture closer to its exempla
       tessera::build_patch_model(ex, {.patch_width = 18, .patch_height = 18, .overlap = 8, .seams = true}).value();
   for (std::uint64_t seed : {5u, 6u}) {
     tessera::image_buffer<std::uint8_t, 3> feather(96, 96), cut(96, 96);
-    REQUIRE(tessera::synthesize(m, feather, {.seed = seed}).ok());
+    REQUIRE(tessera::synthesize(m, feather, {.seed = seed, .feather_width = 0}).ok());  // the paper's feathering
     REQUIRE(tessera::synthesize(m, cut, {.seed = seed, .seams = seam_mode::cut}).ok());
     const tessera::neighborhood_energy_options eo{.window = 5, .sample_step = 3};
     const double e_feather = tessera::neighborhood_energy(feather, ex, eo).value(),

@@ -47,6 +47,7 @@ struct patch_plan {
   index_t ox = 0, oy = 0, w = 0, h = 0;
   index_t ci0 = 0, cj0 = 0, ncx = 0, ncy = 0;
   std::vector<index_t> sx, sy;  ///< per cell (row-major): exemplar origin of its patch
+  index_t band = 0;             ///< feathering: width of the blend band centred in each overlap (1 to v)
   bool cut = false;
   std::vector<const std::uint8_t*> vseam;  ///< per cell: cut against the west neighbour (ph + v entries) or null
   std::vector<const std::uint8_t*> hseam;  ///< per cell: cut against the north neighbour (pw + v entries) or null
@@ -224,6 +225,7 @@ patch_plan make_plan(const patch_model<T, C>& m, index_t ox, index_t oy, index_t
   p.ncx = floor_div(ox + w - 1, p.pw) - p.ci0 + 1;
   p.ncy = floor_div(oy + h - 1, p.ph) - p.cj0 + 1;
   p.cut = cut;
+  p.band = p.v;
   const index_t ncells = p.ncx * p.ncy;
   const std::vector<std::uint32_t> group = phase_group(m, seed, radius, min_group);
   TESSERA_ASSERT(!group.empty());

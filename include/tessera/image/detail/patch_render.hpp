@@ -31,11 +31,21 @@ inline constexpr blend_weight<T> weight_one = std::is_same_v<T, std::uint8_t>   
                                               : std::is_same_v<T, std::uint16_t> ? 32768
                                                                                  : 1;
 
-/// Weight of the second (right or bottom) patch at overlap position t in [0, v): (t + 1/2) / v, the
-/// paper's linear weights by the distance to the overlap border (§2, "feathering").
+/// Weight in [0, 1] of the second (right or bottom) patch at overlap position t in [0, v) for a blend
+/// band of `band` pixels (1 <= band <= v) centred in the overlap: 0 before the band, (t - s + 1/2) / band
+/// inside it (s = (v - band) / 2, its first position), 1 after. band = v is the paper's linear weights by
+/// the distance to the overlap border (§2, "feathering"); a narrower band is ours (docs: narrow feathering).
+inline double feather_fraction(index_t t, index_t v, index_t band) noexcept {
+  const index_t s = (v - band) / 2;
+  if (t < s) return 0.0;
+  if (t >= s + band) return 1.0;
+  return (static_cast<double>(t - s) + 0.5) / static_cast<double>(band);
+}
+
+/// feather_fraction in the blend's fixed point (8 fractional bits for uint8, 15 for uint16) or float.
 template <class T>
-blend_weight<T> feather_weight(index_t t, index_t v) {
-  const double u = (static_cast<double>(t) + 0.5) / static_cast<double>(v);
+blend_weight<T> feather_weight(index_t t, index_t v, index_t band) {
+  const double u = feather_fraction(t, v, band);
   if constexpr (std::is_same_v<T, float>)
     return static_cast<float>(u);
   else
@@ -179,7 +189,7 @@ class plan_renderer {
     }
     weights_.resize(to_size(p.v * C));
     for (index_t t = 0; t < p.v; ++t)
-      for (int c = 0; c < C; ++c) weights_[to_size(t * C + c)] = feather_weight<T>(t, p.v);
+      for (int c = 0; c < C; ++c) weights_[to_size(t * C + c)] = feather_weight<T>(t, p.v, p.band);
   }
 
   /// Writes output row y (0-based in the window) to dst (w * C values); tmp is scratch of the same size.
@@ -248,13 +258,13 @@ inline void source_of(const patch_plan& p, index_t x, index_t y, index_t& sx, in
   const index_t ci = i - p.ci0, cj = j - p.cj0;
   auto right_wins = [&](index_t cell_row, index_t r) {  // column choice in cell row cell_row at patch row r
     if (lx >= p.v) return true;
-    if (!p.cut) return 2 * lx + 1 >= p.v;
+    if (!p.cut) return feather_fraction(lx, p.v, p.band) >= 0.5;
     return lx >= p.vseam[to_size(p.cell(ci, cell_row))][r];
   };
   bool lower = true;
   if (ly < p.v) {
     if (!p.cut) {
-      lower = 2 * ly + 1 >= p.v;
+      lower = feather_fraction(ly, p.v, p.band) >= 0.5;
     } else {
       const bool right = right_wins(cj, ly);
       const std::uint8_t* h = p.hseam[to_size(p.cell(right ? ci : ci - 1, cj))];
