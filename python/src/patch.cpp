@@ -98,7 +98,7 @@ options or an exemplar the library refuses, with its message.)doc");
       "synthesize",
       [](const any_patch_model& self, index_t width, index_t height, index_t x, index_t y, std::uint64_t seed,
          int threads, const py::object& progress, const py::object& seams, const py::object& out,
-         const std::string& fallback, int fallback_budget, const py::object& stats) {
+         const std::string& fallback, int fallback_budget, const py::object& stats, index_t feather_width) {
         if (!stats.is_none() && !py::isinstance<py::dict>(stats))
           throw py::type_error("synthesize: stats must be a dict or None");
         synthesis_request r{.width = width,
@@ -108,6 +108,7 @@ options or an exemplar the library refuses, with its message.)doc");
                             .seams = parse_seams(seams, self),
                             .fallback = parse_fallback(fallback),
                             .fallback_budget = fallback_budget,
+                            .feather_width = feather_width,
                             .threads = threads,
                             .out = out,
                             .stats = stats};
@@ -117,7 +118,7 @@ options or an exemplar the library refuses, with its message.)doc");
       py::arg("width"), py::arg("height"), py::arg("x") = 0, py::arg("y") = 0, py::arg("seed") = 0,
       py::arg("threads") = 0, py::arg("progress") = py::none(), py::arg("seams") = py::none(),
       py::arg("out") = py::none(), py::arg("fallback") = "sets", py::arg("fallback_budget") = 8,
-      py::arg("stats") = py::none(),
+      py::arg("stats") = py::none(), py::arg("feather_width") = 5,
       R"doc(The width x height window at (x, y) of the unbounded texture of this model and `seed`, as an
 H x W x C array of the exemplar's dtype. Any window is a pure function of (model, seed, x, y): windows
 tile the texture seamlessly and equal `tessera synth --window x,y,w,h --seed S` of the CLI (which
@@ -137,7 +138,9 @@ slower), as `tessera synth --fallback`; `fallback_budget` (1-256) bounds the ove
 per cell in that mode. `stats`: a dict to fill with the statistics `tessera synth --stats` prints
 (cells, placed, filled, empty_intersections, computed_seams, evaluated_errors, fill_overlap_rms) and
 synthesis_ms, the time of the C++ call alone (benchmarks/python_overhead.py compares it with the
-call's wall time).)doc");
+call's wall time). `feather_width`: width in pixels of the blend band centred in each overlap when
+feathering (default 5; 0: the whole overlap, the paper's weights), as `tessera synth --feather`;
+raises tessera.InvalidArgument when negative.)doc");
   c.def("save", &save, "The model as bytes (io/patch_model_file.hpp, format version 1); PatchModel.load reads them.");
   c.def_static("load", &load, py::arg("data"), py::arg("threads") = 0,
                R"doc(A model from the bytes of save(). Raises tessera.ParseError (a ValueError) for bytes that are

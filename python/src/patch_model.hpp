@@ -35,6 +35,7 @@ struct synthesis_request {
   seam_mode seams = seam_mode::feather;
   fill_fallback fallback = fill_fallback::most_sets;
   int fallback_budget = 8;
+  index_t feather_width = 5;  ///< patch_synthesis_options::feather_width
   int threads = 0;
   /// An array to render into (H x W x C, or H x W for one channel, of the model's dtype, writable,
   /// packed pixels in rows), or None for a new array.

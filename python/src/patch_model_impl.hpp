@@ -41,6 +41,7 @@ py::array synthesize_model(const any_patch_model& model, const synthesis_request
         patch_synthesis_options so{.origin = r.origin,
                                    .seed = r.seed,
                                    .seams = r.seams,
+                                   .feather_width = r.feather_width,
                                    .fallback = r.fallback,
                                    .fallback_budget = r.fallback_budget};
         so.progress = progress.sink();

@@ -45,7 +45,8 @@ class PatchModel:
     def synthesize(self, width: int, height: int, x: int = 0, y: int = 0, seed: int = 0, threads: int = 0,
                    progress: Progress = None, seams: Optional[Literal["feather", "cut"]] = None,
                    out: Optional[Image] = None, fallback: Literal["sets", "overlap"] = "sets",
-                   fallback_budget: int = 8, stats: Optional[Dict[str, float]] = None) -> Image:
+                   fallback_budget: int = 8, stats: Optional[Dict[str, float]] = None,
+                   feather_width: int = 5) -> Image:
         """The width x height window at (x, y) of the unbounded texture of (model, seed)."""
     def save(self) -> bytes:
         """The model as bytes (format version 1)."""

@@ -118,6 +118,26 @@ def test_overlap_fallback_matches_the_cli(tmp_path, cli):
         m.synthesize(8, 8, fallback="overlap", fallback_budget=0)
 
 
+def test_feather_width_matches_the_cli(tmp_path, cli):
+    """feather_width equals `tessera synth --feather W`; 5 is the default; a band narrower than the
+    overlap (4 pixels here) gives another texture than 0 (the paper's whole-overlap blend), a band as
+    wide as it the same; a negative width is refused."""
+    ex = tessera.exemplar("rock", 96, 96, seed=4)
+    path = str(tmp_path / "ex.png")
+    tessera.write_png(path, ex)
+    out = str(tmp_path / "o.png")
+    subprocess.run([cli, "synth", "--exemplar", path, "--out", out, "--seed", "9", "--size", "150x110",
+                    "--feather", "0"], check=True, capture_output=True)
+    m = tessera.PatchModel(tessera.read_png(path))
+    paper = m.synthesize(150, 110, seed=9, feather_width=0)
+    np.testing.assert_array_equal(paper, tessera.read_png(out))
+    np.testing.assert_array_equal(m.synthesize(150, 110, seed=9), m.synthesize(150, 110, seed=9, feather_width=5))
+    np.testing.assert_array_equal(paper, m.synthesize(150, 110, seed=9, feather_width=4))
+    assert not np.array_equal(paper, m.synthesize(150, 110, seed=9, feather_width=2))
+    with pytest.raises(ValueError, match="feather_width"):
+        m.synthesize(8, 8, feather_width=-1)
+
+
 def test_cli_bit_identity_16_bit_grey(tmp_path, cli):
     ex = (noise((48, 48, 1), np.uint16, seed=3) // 3 + 1000).astype(np.uint16)
     path = str(tmp_path / "ex16.png")
