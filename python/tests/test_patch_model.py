@@ -98,18 +98,22 @@ def test_bit_identical_to_the_cli(tmp_path, cli):
         np.testing.assert_array_equal(mine, tessera.read_png(out))
 
 
+def rock_model_and_cli(tmp_path, cli, *options):
+    """The model of a 96 x 96 rock exemplar and `tessera synth` of it (seed 9, 150 x 110) with options."""
+    path = str(tmp_path / "ex.png")
+    tessera.write_png(path, tessera.exemplar("rock", 96, 96, seed=4))
+    out = str(tmp_path / "o.png")
+    subprocess.run([cli, "synth", "--exemplar", path, "--out", out, "--seed", "9", "--size", "150x110", *options],
+                   check=True, capture_output=True)
+    return tessera.PatchModel(tessera.read_png(path)), tessera.read_png(out)
+
+
 def test_overlap_fallback_matches_the_cli(tmp_path, cli):
     """fallback="overlap" (quality mode) equals `tessera synth --fallback overlap`, and differs from the
     paper's fallback (the photographs' case: vacant cells whose four sets share no patch)."""
-    ex = tessera.exemplar("rock", 96, 96, seed=4)
-    path = str(tmp_path / "ex.png")
-    tessera.write_png(path, ex)
-    out = str(tmp_path / "o.png")
-    subprocess.run([cli, "synth", "--exemplar", path, "--out", out, "--seed", "9", "--size", "150x110",
-                    "--fallback", "overlap"], check=True, capture_output=True)
-    m = tessera.PatchModel(tessera.read_png(path))
+    m, cli_out = rock_model_and_cli(tmp_path, cli, "--fallback", "overlap")
     mine = m.synthesize(150, 110, seed=9, fallback="overlap")
-    np.testing.assert_array_equal(mine, tessera.read_png(out))
+    np.testing.assert_array_equal(mine, cli_out)
     assert not np.array_equal(mine, m.synthesize(150, 110, seed=9))
     np.testing.assert_array_equal(mine, m.synthesize(150, 110, seed=9, fallback="overlap", threads=1))
     with pytest.raises(ValueError, match="fallback must be"):
@@ -122,15 +126,9 @@ def test_feather_width_matches_the_cli(tmp_path, cli):
     """feather_width equals `tessera synth --feather W`; 5 is the default; a band narrower than the
     overlap (4 pixels here) gives another texture than 0 (the paper's whole-overlap blend), a band as
     wide as it the same; a negative width is refused."""
-    ex = tessera.exemplar("rock", 96, 96, seed=4)
-    path = str(tmp_path / "ex.png")
-    tessera.write_png(path, ex)
-    out = str(tmp_path / "o.png")
-    subprocess.run([cli, "synth", "--exemplar", path, "--out", out, "--seed", "9", "--size", "150x110",
-                    "--feather", "0"], check=True, capture_output=True)
-    m = tessera.PatchModel(tessera.read_png(path))
+    m, cli_out = rock_model_and_cli(tmp_path, cli, "--feather", "0")
     paper = m.synthesize(150, 110, seed=9, feather_width=0)
-    np.testing.assert_array_equal(paper, tessera.read_png(out))
+    np.testing.assert_array_equal(paper, cli_out)
     np.testing.assert_array_equal(m.synthesize(150, 110, seed=9), m.synthesize(150, 110, seed=9, feather_width=5))
     np.testing.assert_array_equal(paper, m.synthesize(150, 110, seed=9, feather_width=4))
     assert not np.array_equal(paper, m.synthesize(150, 110, seed=9, feather_width=2))
