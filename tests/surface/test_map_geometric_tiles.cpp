@@ -126,153 +126,154 @@ index_t gm_crossing_pairs(const tri_mesh& e) {
 }
 }  // namespace
 
-TEST_CASE("geometric tiles on a surface: closed elements stay closed across quad borders and polycube edges",
-          "[map_geometric_tiles]") {
-  thread_pool_executor pool(2);
-  for (const auto& c : gm_cases()) {
-    INFO(c.name);
-    map_geometric_tiles_options o;
-    o.seed = 5;
-    auto r = map_geometric_tiles(c.mesh, c.map, ring_tile_set(), o, pool);
-    INFO((r ? std::string() : r.error().to_string()));
-    REQUIRE(r);
-    CHECK(r->quads == static_cast<index_t>(c.map.layout.quads.size()));
-    CHECK(r->tiling.tiles_used > 1);
-    CHECK(r->welded_vertices > 0);
-    CHECK(r->mesh.num_vertices() == r->element_vertices);  // no base appended
-    // H keeps the tiles' proportions: (z1 - z0) / w_T tiles
-    const auto [z0, z1] = detail::tile_set_height_range(ring_tile_set());
-    CHECK(r->height == Approx((z1 - z0) / ring_tile_set().tile_size * c.map.tile_size).epsilon(1e-12));
-    const auto rep = gm_check_elements(c, *r);
-    // elements cut by tile borders came back whole: in the plane and around polycube edges
-    CHECK(rep.crossing_quad_borders > 0);
-    CHECK(rep.crossing_polycube_edges > 0);
-    // no two faces cross, except (known limitation, docs/surface.md) where the polycube map squeezes a
-    // thin element near a polycube corner below the chordal tolerance: on the torus, one spot
-    const index_t crossings = gm_crossing_pairs(gm_elements(*r));
-    if (std::string(c.name) == "torus") {
-      WARN("torus: " << crossings << " crossing face pairs");
-      CHECK(crossings <= 4);
-    } else {
-      CHECK(crossings == 0);
+TEST_CASE(
+    "geometric tiles on a surface: the 96-tile ring set and the test maps, built once per process for its sections",
+    "[map_geometric_tiles]") {
+  SECTION("closed elements stay closed across quad borders and polycube edges") {
+    thread_pool_executor pool(2);
+    for (const auto& c : gm_cases()) {
+      INFO(c.name);
+      map_geometric_tiles_options o;
+      o.seed = 5;
+      auto r = map_geometric_tiles(c.mesh, c.map, ring_tile_set(), o, pool);
+      INFO((r ? std::string() : r.error().to_string()));
+      REQUIRE(r);
+      CHECK(r->quads == static_cast<index_t>(c.map.layout.quads.size()));
+      CHECK(r->tiling.tiles_used > 1);
+      CHECK(r->welded_vertices > 0);
+      CHECK(r->mesh.num_vertices() == r->element_vertices);  // no base appended
+      // H keeps the tiles' proportions: (z1 - z0) / w_T tiles
+      const auto [z0, z1] = detail::tile_set_height_range(ring_tile_set());
+      CHECK(r->height == Approx((z1 - z0) / ring_tile_set().tile_size * c.map.tile_size).epsilon(1e-12));
+      const auto rep = gm_check_elements(c, *r);
+      // elements cut by tile borders came back whole: in the plane and around polycube edges
+      CHECK(rep.crossing_quad_borders > 0);
+      CHECK(rep.crossing_polycube_edges > 0);
+      // no two faces cross, except (known limitation, docs/surface.md) where the polycube map squeezes a
+      // thin element near a polycube corner below the chordal tolerance: on the torus, one spot
+      const index_t crossings = gm_crossing_pairs(gm_elements(*r));
+      if (std::string(c.name) == "torus") {
+        WARN("torus: " << crossings << " crossing face pairs");
+        CHECK(crossings <= 4);
+      } else {
+        CHECK(crossings == 0);
+      }
     }
   }
-}
-
-TEST_CASE("geometric tiles on a surface: height, base mesh and colouring options", "[map_geometric_tiles]") {
-  thread_pool_executor pool(2);
-  const auto& c = gm_cases()[1];  // torus
-  map_geometric_tiles_options o;
-  o.height = 0.1 * c.map.tile_size;
-  o.with_base = true;
-  auto r = map_geometric_tiles(c.mesh, c.map, ring_tile_set(), o, pool);
-  REQUIRE(r);
-  CHECK(r->height == o.height);
-  CHECK(r->mesh.num_faces() == r->element_faces + c.map.base.num_faces());
-  // the texture's height range fills the shell: the highest vertex is near H above the base
-  const triangle_bvh base(c.map.base);
-  double highest = 0;
-  for (index_t v = 0; v < r->element_vertices; ++v)
-    highest = std::max(highest, std::sqrt(base.closest_point(r->mesh.positions[detail::to_size(v)]).squared_distance));
-  CHECK(highest <= o.height * (1 + 1e-6));
-  CHECK(highest >= 0.8 * o.height);
-  // any TileColoring: the seeded colouring passed explicitly gives the same output
-  auto coloring = color_polycube_edges(c.map, ring_tile_set().axis_colors, o.seed);
-  REQUIRE(coloring);
-  auto same = map_geometric_tiles(c.mesh, c.map, ring_tile_set(), *coloring, o, pool);
-  REQUIRE(same);
-  CHECK(same->mesh.positions == r->mesh.positions);
-  CHECK(same->mesh.faces == r->mesh.faces);
-  // another seed, other tiles
-  o.seed = 99;
-  auto other = map_geometric_tiles(c.mesh, c.map, ring_tile_set(), o, pool);
-  REQUIRE(other);
-  bool differs = false;
-  for (std::size_t q = 0; q < other->tiling.quads.size(); ++q)
-    differs = differs || other->tiling.quads[q].tile != r->tiling.quads[q].tile;
-  CHECK(differs);
-  // the polycube built on the way (polycube_options overload) equals the given one
-  polycube_options po;
-  po.tiles_across = 6;
-  o.seed = 0;
-  auto built = map_geometric_tiles(c.mesh, po, ring_tile_set(), o, pool);
-  auto given = map_geometric_tiles(c.mesh, c.map, ring_tile_set(), o, pool);
-  REQUIRE(built);
-  REQUIRE(given);
-  CHECK(built->mesh.positions == given->mesh.positions);
-}
-
-TEST_CASE("geometric tiles on a surface: same seed, same output on 1 and 2 threads", "[map_geometric_tiles]") {
-  for (const auto& c : gm_cases()) {
-    INFO(c.name);
-    map_geometric_tiles_options o;
-    o.seed = 17;
-    o.with_base = true;
-    auto one = map_geometric_tiles(c.mesh, c.map, ring_tile_set(), o, serial_executor{});
+  SECTION("height, base mesh and colouring options") {
     thread_pool_executor pool(2);
-    auto two = map_geometric_tiles(c.mesh, c.map, ring_tile_set(), o, pool);
-    REQUIRE(one);
-    REQUIRE(two);
-    CHECK(one->mesh.positions == two->mesh.positions);  // bit for bit
-    CHECK(one->mesh.faces == two->mesh.faces);
-    CHECK(one->split_edges == two->split_edges);
+    const auto& c = gm_cases()[1];  // torus
+    map_geometric_tiles_options o;
+    o.height = 0.1 * c.map.tile_size;
+    o.with_base = true;
+    auto r = map_geometric_tiles(c.mesh, c.map, ring_tile_set(), o, pool);
+    REQUIRE(r);
+    CHECK(r->height == o.height);
+    CHECK(r->mesh.num_faces() == r->element_faces + c.map.base.num_faces());
+    // the texture's height range fills the shell: the highest vertex is near H above the base
+    const triangle_bvh base(c.map.base);
+    double highest = 0;
+    for (index_t v = 0; v < r->element_vertices; ++v)
+      highest =
+          std::max(highest, std::sqrt(base.closest_point(r->mesh.positions[detail::to_size(v)]).squared_distance));
+    CHECK(highest <= o.height * (1 + 1e-6));
+    CHECK(highest >= 0.8 * o.height);
+    // any TileColoring: the seeded colouring passed explicitly gives the same output
+    auto coloring = color_polycube_edges(c.map, ring_tile_set().axis_colors, o.seed);
+    REQUIRE(coloring);
+    auto same = map_geometric_tiles(c.mesh, c.map, ring_tile_set(), *coloring, o, pool);
+    REQUIRE(same);
+    CHECK(same->mesh.positions == r->mesh.positions);
+    CHECK(same->mesh.faces == r->mesh.faces);
+    // another seed, other tiles
+    o.seed = 99;
+    auto other = map_geometric_tiles(c.mesh, c.map, ring_tile_set(), o, pool);
+    REQUIRE(other);
+    bool differs = false;
+    for (std::size_t q = 0; q < other->tiling.quads.size(); ++q)
+      differs = differs || other->tiling.quads[q].tile != r->tiling.quads[q].tile;
+    CHECK(differs);
+    // the polycube built on the way (polycube_options overload) equals the given one
+    polycube_options po;
+    po.tiles_across = 6;
+    o.seed = 0;
+    auto built = map_geometric_tiles(c.mesh, po, ring_tile_set(), o, pool);
+    auto given = map_geometric_tiles(c.mesh, c.map, ring_tile_set(), o, pool);
+    REQUIRE(built);
+    REQUIRE(given);
+    CHECK(built->mesh.positions == given->mesh.positions);
   }
-}
-
-TEST_CASE("geometric tiles on a surface: bad input returns a clear status", "[map_geometric_tiles]") {
-  const auto& c = gm_cases()[0];  // sphere
-  const auto& set = ring_tile_set();
-  auto fails = [](const auto& r, status_code code, const std::string& text) {
-    REQUIRE(!r);
-    INFO(r.error().to_string());
-    CHECK(r.error().code() == code);
-    CHECK(r.error().message().find(text) != std::string::npos);
-  };
-  // a planar set; an incomplete three-axis set; a set whose colours do not fit the colouring
-  geometric_tile_set planar = set;
-  planar.axis_colors = {0, 0, 0};
-  planar.faces.clear();
-  fails(map_geometric_tiles(c.mesh, c.map, planar), status_code::invalid_argument, "planar");
-  geometric_tile_set incomplete = set;
-  incomplete.tiles.pop_back();
-  incomplete.edges.pop_back();
-  incomplete.faces.pop_back();
-  auto inc = map_geometric_tiles(c.mesh, c.map, incomplete, {.seed = 1});
-  // with 95 of 96 tiles the missing one (last face, -Z) may or may not be needed: try seeds until it is
-  for (std::uint64_t seed = 2; inc && seed < 64; ++seed)
-    inc = map_geometric_tiles(c.mesh, c.map, incomplete, {.seed = seed});
-  fails(inc, status_code::invalid_argument, "which no tile of the set has");
-  const auto wide = color_polycube_edges(c.map, {3, 3, 3}, 4);
-  REQUIRE(wide);
-  fails(map_geometric_tiles(c.mesh, c.map, set, *wide), status_code::out_of_range, "outside [0, 2)");
-  // a polycube of another mesh
-  const auto other = shapes::sphere(6);
-  fails(map_geometric_tiles(other, c.map, set), status_code::invalid_argument, "another mesh");
-  tri_mesh moved = c.mesh;
-  moved.positions[0].x += 1e-3;
-  fails(map_geometric_tiles(moved, c.map, set), status_code::invalid_argument, "another mesh");
-  // heights: negative, NaN, too large for the shell everywhere
-  fails(map_geometric_tiles(c.mesh, c.map, set, {.height = -1}), status_code::invalid_argument, "height");
-  fails(map_geometric_tiles(c.mesh, c.map, set, {.height = std::nan("")}), status_code::invalid_argument, "height");
-  fails(map_geometric_tiles(c.mesh, c.map, set, {.height = 50}), status_code::invalid_argument, "too large");
-  // an open base, an inside-out base
-  tri_mesh open = c.mesh;
-  open.faces.pop_back();
-  fails(map_geometric_tiles(open, c.map, set), status_code::invalid_argument, "not closed");
-  fails(map_geometric_tiles(open, polycube_options{}, set), status_code::invalid_argument, "not closed");
-  tri_mesh flipped = c.mesh;
-  for (auto& f : flipped.faces) std::swap(f[1], f[2]);
-  fails(map_geometric_tiles(flipped, c.map, set), status_code::invalid_argument, "inside out");
-  // a flat set (no height), a tile vertex outside its square
-  geometric_tile_set flat = set;
-  for (auto& t : flat.tiles)
-    for (auto& p : t.positions) p.z = 0;
-  fails(map_geometric_tiles(c.mesh, c.map, flat), status_code::invalid_argument, "no height");
-  geometric_tile_set outside = set;
-  for (auto& t : outside.tiles) t.positions[0].x = 1.5 * set.tile_size;
-  fails(map_geometric_tiles(c.mesh, c.map, outside), status_code::invalid_argument, "outside [0, 1]");
-  // cancelled by the progress callback
-  map_geometric_tiles_options stop;
-  stop.progress.callback = [](double, std::string_view stage) { return stage != "shell"; };
-  fails(map_geometric_tiles(c.mesh, c.map, set, stop), status_code::cancelled, "cancel");
+  SECTION("same seed, same output on 1 and 2 threads") {
+    for (const auto& c : gm_cases()) {
+      INFO(c.name);
+      map_geometric_tiles_options o;
+      o.seed = 17;
+      o.with_base = true;
+      auto one = map_geometric_tiles(c.mesh, c.map, ring_tile_set(), o, serial_executor{});
+      thread_pool_executor pool(2);
+      auto two = map_geometric_tiles(c.mesh, c.map, ring_tile_set(), o, pool);
+      REQUIRE(one);
+      REQUIRE(two);
+      CHECK(one->mesh.positions == two->mesh.positions);  // bit for bit
+      CHECK(one->mesh.faces == two->mesh.faces);
+      CHECK(one->split_edges == two->split_edges);
+    }
+  }
+  SECTION("bad input returns a clear status") {
+    const auto& c = gm_cases()[0];  // sphere
+    const auto& set = ring_tile_set();
+    auto fails = [](const auto& r, status_code code, const std::string& text) {
+      REQUIRE(!r);
+      INFO(r.error().to_string());
+      CHECK(r.error().code() == code);
+      CHECK(r.error().message().find(text) != std::string::npos);
+    };
+    // a planar set; an incomplete three-axis set; a set whose colours do not fit the colouring
+    geometric_tile_set planar = set;
+    planar.axis_colors = {0, 0, 0};
+    planar.faces.clear();
+    fails(map_geometric_tiles(c.mesh, c.map, planar), status_code::invalid_argument, "planar");
+    geometric_tile_set incomplete = set;
+    incomplete.tiles.pop_back();
+    incomplete.edges.pop_back();
+    incomplete.faces.pop_back();
+    auto inc = map_geometric_tiles(c.mesh, c.map, incomplete, {.seed = 1});
+    // with 95 of 96 tiles the missing one (last face, -Z) may or may not be needed: try seeds until it is
+    for (std::uint64_t seed = 2; inc && seed < 64; ++seed)
+      inc = map_geometric_tiles(c.mesh, c.map, incomplete, {.seed = seed});
+    fails(inc, status_code::invalid_argument, "which no tile of the set has");
+    const auto wide = color_polycube_edges(c.map, {3, 3, 3}, 4);
+    REQUIRE(wide);
+    fails(map_geometric_tiles(c.mesh, c.map, set, *wide), status_code::out_of_range, "outside [0, 2)");
+    // a polycube of another mesh
+    const auto other = shapes::sphere(6);
+    fails(map_geometric_tiles(other, c.map, set), status_code::invalid_argument, "another mesh");
+    tri_mesh moved = c.mesh;
+    moved.positions[0].x += 1e-3;
+    fails(map_geometric_tiles(moved, c.map, set), status_code::invalid_argument, "another mesh");
+    // heights: negative, NaN, too large for the shell everywhere
+    fails(map_geometric_tiles(c.mesh, c.map, set, {.height = -1}), status_code::invalid_argument, "height");
+    fails(map_geometric_tiles(c.mesh, c.map, set, {.height = std::nan("")}), status_code::invalid_argument, "height");
+    fails(map_geometric_tiles(c.mesh, c.map, set, {.height = 50}), status_code::invalid_argument, "too large");
+    // an open base, an inside-out base
+    tri_mesh open = c.mesh;
+    open.faces.pop_back();
+    fails(map_geometric_tiles(open, c.map, set), status_code::invalid_argument, "not closed");
+    fails(map_geometric_tiles(open, polycube_options{}, set), status_code::invalid_argument, "not closed");
+    tri_mesh flipped = c.mesh;
+    for (auto& f : flipped.faces) std::swap(f[1], f[2]);
+    fails(map_geometric_tiles(flipped, c.map, set), status_code::invalid_argument, "inside out");
+    // a flat set (no height), a tile vertex outside its square
+    geometric_tile_set flat = set;
+    for (auto& t : flat.tiles)
+      for (auto& p : t.positions) p.z = 0;
+    fails(map_geometric_tiles(c.mesh, c.map, flat), status_code::invalid_argument, "no height");
+    geometric_tile_set outside = set;
+    for (auto& t : outside.tiles) t.positions[0].x = 1.5 * set.tile_size;
+    fails(map_geometric_tiles(c.mesh, c.map, outside), status_code::invalid_argument, "outside [0, 1]");
+    // cancelled by the progress callback
+    map_geometric_tiles_options stop;
+    stop.progress.callback = [](double, std::string_view stage) { return stage != "shell"; };
+    fails(map_geometric_tiles(c.mesh, c.map, set, stop), status_code::cancelled, "cancel");
+  }
 }
