@@ -6,7 +6,8 @@
 #                                 inside it (TESSERA_TESTS_SANITIZE; TESSERA_TESTS_SANITIZE=OFF in the
 #                                 environment builds them like the library instead), the library, the
 #                                 command and the examples as users build them, the Python module at -O1
-#                                 (TESSERA_PYTHON_OPTIMIZE; pip and plain CMake builds use -O2)
+#                                 (TESSERA_PYTHON_OPTIMIZE; pip and plain CMake builds use -O2), and
+#                                 every public header alone (TESSERA_CHECK_DETAIL_HEADERS=ON adds detail/)
 #   scripts/test.sh --sanitize    a whole build with ASan + UBSan in build-asan/ (-Og): the same library
 #                                 tests and fuzz corpus replay; not the structural build-shape checks,
 #                                 the examples, the Python module (an ASan extension cannot load into an
@@ -42,7 +43,8 @@ else
   step "configure $build (Release; library tests with ASan + UBSan)"
   configure "$build" -DCMAKE_BUILD_TYPE=Release -DTESSERA_BUILD_TESTS=ON -DTESSERA_BUILD_CLI=ON \
     -DTESSERA_BUILD_EXAMPLES=ON -DTESSERA_TESTS_SANITIZE="${TESSERA_TESTS_SANITIZE:-ON}" \
-    -DTESSERA_PYTHON_OPTIMIZE="${TESSERA_PYTHON_OPTIMIZE:--O1}"
+    -DTESSERA_PYTHON_OPTIMIZE="${TESSERA_PYTHON_OPTIMIZE:--O1}" \
+    -DTESSERA_CHECK_DETAIL_HEADERS="${TESSERA_CHECK_DETAIL_HEADERS:-OFF}"
 fi
 # read by the instrumented test executables only
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1:strict_string_checks=1}
