@@ -61,3 +61,18 @@ def test_origin_and_threads_in_process(tmp_path, rendered):
                "--chunks-per-task", 2)  # rows of 3 chunks: tasks of 2 and of 1
     model = tessera.PatchModel(tessera.read_png(ex), patch_width=24, patch_height=24, overlap=6)
     np.testing.assert_array_equal(zarr.open(store, mode="r")[:], model.synthesize(96, 96, x=-30, y=70, seed=9))
+
+
+def test_gray16_chunks_reuse_one_buffer(tmp_path):
+    # one channel, 16 bits, chunks of a task of different sizes (edge chunks): each task renders into
+    # one reused buffer, so a stale pixel from the previous chunk would show here
+    ex = str(tmp_path / "g.png")
+    rock = tessera.exemplar("rock", 48, 48, seed=2).astype(np.uint16) * 257
+    tessera.write_png(ex, np.ascontiguousarray(rock[:, :, 1]))
+    store = str(tmp_path / "g.zarr")
+    run_script("--exemplar", ex, "--size", 70, "--chunk", 32, "--seed", 3, "--out", store, "--workers", 1,
+               "--no-processes", "--patch", "16", "--overlap", "4", "--chunks-per-task", 3)
+    z = zarr.open(store, mode="r")
+    assert z.shape == (70, 70, 1) and z.dtype == np.uint16
+    model = tessera.PatchModel(tessera.read_png(ex), patch_width=16, patch_height=16, overlap=4)
+    np.testing.assert_array_equal(z[:], model.synthesize(70, 70, seed=3).reshape(70, 70, 1))
