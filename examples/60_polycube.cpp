@@ -70,9 +70,6 @@ image_buffer<std::uint8_t, 3> picture(const tri_mesh& m, const std::vector<rgb>&
   return img;
 }
 
-const rgb label_color[6] = {{0.90f, 0.35f, 0.30f}, {0.60f, 0.20f, 0.45f}, {0.40f, 0.75f, 0.35f},
-                            {0.85f, 0.75f, 0.25f}, {0.35f, 0.55f, 0.90f}, {0.30f, 0.75f, 0.80f}};
-
 bool run(const tri_mesh& mesh, const std::string& name, const std::string& out) {
   std::vector<rgb> by_label, heat;
   bool ok = true, first = true;
@@ -97,7 +94,7 @@ bool run(const tri_mesh& mesh, const std::string& name, const std::string& out) 
                                               map->base.position(map->base.faces[0][2]) * 0.5) > 1e-9)
       ok = false;
     by_label.clear();
-    for (auto l : map->labels) by_label.push_back(label_color[static_cast<int>(l)]);
+    for (auto l : map->labels) by_label.push_back(polycube_label_color(l));
     std::printf("%s, %lld tiles across: %zu charts, %zu corners, %zu quads, area distortion %.3f, angle %.3f\n",
                 name.c_str(), static_cast<long long>(n), map->charts.size(), map->corners.size(),
                 map->layout.quads.size(), d.area_distortion, d.angle_distortion);

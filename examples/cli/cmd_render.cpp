@@ -1,8 +1,12 @@
-// tessera render --in IN.obj --out P.png: a shaded preview of a mesh (io/mesh_preview.hpp).
+// tessera render --in IN.obj --out P.png: a shaded preview of a mesh (io/mesh_preview.hpp), coloured
+// by polycube chart label with --labels (io/polycube_file.hpp, surface/polycube_map.hpp).
 #include <string>
+#include <vector>
 
 #include <tessera/io/mesh_file.hpp>
 #include <tessera/io/mesh_preview.hpp>
+#include <tessera/io/polycube_file.hpp>
+#include <tessera/surface/polycube_map.hpp>
 
 #include "cli.hpp"
 
@@ -41,9 +45,23 @@ int run(const cli::arguments& args) {
   }
   auto mesh = read_mesh(args.str("--in"));
   if (!mesh) return cli::fail(args, mesh.error());
+  // --labels: one polycube chart label per face (tessera polycube --labels-out), drawn in its colour
+  std::vector<std::array<float, 3>> colors;
+  if (args.has("--labels")) {
+    auto labels = read_polycube_labels(args.str("--labels"));
+    if (!labels) return cli::fail(args, labels.error());
+    if (static_cast<index_t>(labels->size()) != mesh->num_faces())
+      return cli::fail(args,
+                       status::invalid_argument("--labels: " + std::to_string(labels->size()) + " labels for " +
+                                                std::to_string(mesh->num_faces()) + " faces of " + args.str("--in")));
+    for (std::uint8_t l : *labels) colors.push_back(polycube_label_color(static_cast<polycube_label>(l)));
+  }
   thread_pool_executor pool(args.threads());
   result<image_buffer<std::uint8_t, 3>> img = status::internal_error("not run");
-  const double ms = cli::median_ms(args.repeat(), [&] { img = render_mesh_preview(*mesh, o, pool); });
+  const double ms = cli::median_ms(args.repeat(), [&] {
+    img = args.has("--labels") ? render_face_colored_mesh_preview(*mesh, colors, o, pool)
+                               : render_mesh_preview(*mesh, o, pool);
+  });
   if (!img) return cli::fail(args, img.error());
   if (auto s = write_png(*out, *img); !s) return cli::fail(args, s);
   if (args.stats())
@@ -68,7 +86,10 @@ const cli::registrar reg({
                 {"--azimuth", "DEG", "camera azimuth around +Z (overrides the view)"},
                 {"--elevation", "DEG", "camera elevation, 90 = top (overrides the view)"},
                 {"--size", "WxH", "image size (default 800x600)", {"--image-size"}},
-                {"--tile", "W", "draw the borders of W x W tiles (in mesh units) over the mesh", {"--grid"}}},
+                {"--tile", "W", "draw the borders of W x W tiles (in mesh units) over the mesh", {"--grid"}},
+                {"--labels", "FILE",
+                 "colour faces by polycube chart label (tessera polycube --labels-out: +X red, -X purple, "
+                 "+Y green, -Y yellow, +Z blue, -Z cyan)"}},
     .run = run,
     .positional = "IN",
     .positional_options = {"--in"},

@@ -19,6 +19,16 @@ tessera_cli_test(NAME "cli: polycube labels of another mesh" CODE 1 REGEX "label
                  COMMAND polycube --mesh ${_pcdata}/torus.obj --labels-in ${_pc}/l.labels --out ${_pc}/never.obj)
 set_tests_properties("cli: polycube labels of another mesh" PROPERTIES FIXTURES_REQUIRED pc_labels)
 
+# the labels drawn on the base mesh they belong to (tessera render --labels)
+tessera_cli_test(NAME "cli: render polycube labels" REGEX "wrote .*l_labels\\.png"
+                 COMMAND render --in ${_pc}/l_base.obj --labels ${_pc}/l.labels --out ${_pc}/l_labels.png --size 160x120)
+set_tests_properties("cli: render polycube labels" PROPERTIES FIXTURES_REQUIRED pc_labels)
+tessera_cli_test(NAME "cli: render labels of another mesh" CODE 1 REGEX "--labels: [0-9]+ labels for 768 faces"
+                 COMMAND render --in ${_pcdata}/torus.obj --labels ${_pc}/l.labels --out ${_pc}/never.png)
+set_tests_properties("cli: render labels of another mesh" PROPERTIES FIXTURES_REQUIRED pc_labels)
+tessera_cli_test(NAME "cli: render labels file missing" CODE 1 REGEX "no_such\\.labels"
+                 COMMAND render --in ${_pcdata}/torus.obj --labels ${_pc}/no_such.labels --out ${_pc}/never.png)
+
 tessera_cli_test(NAME "cli: polycube open mesh" CODE 1 REGEX "not closed"
                  COMMAND polycube --mesh ${_pcdata}/open_cube.obj --out ${_pc}/never.obj)
 tessera_cli_test(NAME "cli: polycube tile too large" CODE 1 REGEX "larger than the mesh"

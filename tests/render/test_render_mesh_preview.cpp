@@ -64,3 +64,50 @@ TEST_CASE("mesh preview: coarse, huge and far-away grids finish quickly", "[mesh
   far.faces = {{0, 1, 2}};
   REQUIRE(render_mesh_preview(far, {.width = 32, .height = 32, .elevation_degrees = 90, .grid_spacing = 1}).ok());
 }
+
+TEST_CASE("face-coloured preview: each face in its colour, shaded, bad colours and counts refused", "[mesh_preview]") {
+  // two triangles side by side in the plane z = 0, seen from the top: the left one red, the right blue
+  tri_mesh m;
+  m.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {2, 0, 0}, {2, 1, 0}};
+  m.faces = {{0, 1, 2}, {1, 4, 5}};
+  const std::vector<std::array<float, 3>> colors{{1, 0, 0}, {0, 0, 1}};
+  const mesh_preview_options top{.width = 120, .height = 60, .elevation_degrees = 90};
+  const auto img = render_face_colored_mesh_preview(m, colors, top);
+  REQUIRE(img.ok());
+  index_t reds = 0, blues = 0, others = 0;
+  for (index_t i = 0; i < 120 * 60; ++i) {
+    const std::uint8_t* p = img->data() + 3 * i;
+    if (p[0] == 255 && p[1] == 255 && p[2] == 255) continue;  // background
+    if (p[0] > 50 && p[1] == 0 && p[2] == 0)
+      ++reds;
+    else if (p[2] > 50 && p[0] == 0 && p[1] == 0)
+      ++blues;
+    else
+      ++others;
+  }
+  REQUIRE(reds > 200);
+  REQUIRE(blues > 200);
+  REQUIRE(others == 0);
+  // the left face is left of the right one in the picture
+  index_t red_x = 0, blue_x = 0;
+  for (index_t y = 0; y < 60; ++y)
+    for (index_t x = 0; x < 120; ++x) {
+      const std::uint8_t* p = img->pixel_ptr(x, y);
+      if (p[0] > 50 && p[1] == 0 && p[2] == 0) red_x += x;
+      if (p[2] > 50 && p[0] == 0 && p[1] == 0) blue_x += x;
+    }
+  REQUIRE(red_x / reds < blue_x / blues);
+  // same picture on a pool
+  thread_pool_executor pool(2);
+  const auto again = render_face_colored_mesh_preview(m, colors, top, pool);
+  REQUIRE(std::equal(img->data(), img->data() + 120 * 60 * 3, again->data()));
+  // non-finite and out-of-range components are drawn as 0 and clamped, never undefined
+  const std::vector<std::array<float, 3>> odd{{std::nanf(""), 7.0f, -3.0f},
+                                              {std::numeric_limits<float>::infinity(), 0.5f, 0.5f}};
+  const auto clamped = render_face_colored_mesh_preview(m, odd, top);
+  REQUIRE(clamped.ok());
+  // the count must match the faces
+  REQUIRE(render_face_colored_mesh_preview(m, std::span(colors).first(1), top).error().code() ==
+          status_code::invalid_argument);
+  REQUIRE_FALSE(render_face_colored_mesh_preview(tri_mesh{}, {}, top).ok());
+}

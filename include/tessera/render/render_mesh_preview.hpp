@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <span>
 #include <vector>
 
 #include "../core/config.hpp"
@@ -235,6 +236,28 @@ result<image_buffer<std::uint8_t, 3>> render_mesh_preview(const M& mesh, const m
                                                           E&& exec = {}) {
   using no_surface = std::array<float, 3> (*)(const tri_mesh&, index_t, const std::array<float, 3>&);
   return detail::render_preview_with(mesh, o, exec, static_cast<const no_surface*>(nullptr));
+}
+
+/// Renders a shaded preview of any valid Mesh with one unit RGB colour per face, in face order (a
+/// polycube map's chart labels through polycube_label_color, a per-face measure as a heat map).
+/// Components are clamped to [0, 1], non-finite ones drawn as 0. The view, lights and grid as
+/// render_mesh_preview; tint_elements and color are not used. Errors: those of render_mesh_preview,
+/// invalid_argument when the colour count differs from the face count. O(F + pixels).
+template <Mesh M, Executor E = serial_executor>
+result<image_buffer<std::uint8_t, 3>> render_face_colored_mesh_preview(
+    const M& mesh, std::span<const std::array<float, 3>> face_colors, const mesh_preview_options& o = {},
+    E&& exec = {}) {
+  if (auto s = validate_mesh(mesh, "render_face_colored_mesh_preview: mesh"); !s) return s;
+  const index_t faces = mesh_traits<M>::num_faces(mesh);
+  if (static_cast<index_t>(face_colors.size()) != faces)
+    return status::invalid_argument(detail::cat("render_face_colored_mesh_preview: ", face_colors.size(),
+                                                " face colours for a mesh of ", faces, " faces"));
+  auto surface = [&](const tri_mesh&, index_t f, const std::array<float, 3>&) {
+    std::array<float, 3> c = face_colors[detail::to_size(f)];
+    for (float& v : c) v = std::isfinite(v) ? std::clamp(v, 0.0f, 1.0f) : 0.0f;
+    return c;
+  };
+  return detail::render_preview_with(mesh, o, exec, &surface);
 }
 
 /// Renders a shaded preview of a mesh with per-corner uvs, its colour read from `texture` (any Image;

@@ -42,6 +42,18 @@ constexpr vec3 label_direction(polycube_label l) noexcept {
   return d;
 }
 
+/// The colour pictures give a label's charts (unit RGB; render_face_colored_mesh_preview, `tessera
+/// render --labels`): +X red, -X purple, +Y green, -Y yellow, +Z blue, -Z cyan.
+constexpr std::array<float, 3> polycube_label_color(polycube_label l) noexcept {
+  constexpr std::array<std::array<float, 3>, 6> colors{{{0.90f, 0.35f, 0.30f},
+                                                        {0.60f, 0.20f, 0.45f},
+                                                        {0.40f, 0.75f, 0.35f},
+                                                        {0.85f, 0.75f, 0.25f},
+                                                        {0.35f, 0.55f, 0.90f},
+                                                        {0.30f, 0.75f, 0.80f}}};
+  return colors[static_cast<std::size_t>(l) % 6];
+}
+
 /// An integer point of the tile grid (multiply by tile_size for mesh units).
 using grid_point = std::array<std::int64_t, 3>;
 
