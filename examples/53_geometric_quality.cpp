@@ -58,7 +58,7 @@ void row(const char* what, const std::string& kind, const texture_quality_compar
       static_cast<long long>(v.nonmanifold_edges), static_cast<long long>(v.intersecting_pairs), ms);
 }
 
-int run_kind(const std::string& dir, const std::string& kind, bool before, thread_pool_executor& pool) {
+int run_kind(const std::string& dir, const std::string& kind, bool before, bool no_fill, thread_pool_executor& pool) {
   const auto exemplar = make_kind(kind);
   if (!exemplar) return std::fprintf(stderr, "%s\n", exemplar.error().to_string().c_str()), 1;
   const auto prepared = prepare_quilt_exemplar(*exemplar);
@@ -71,6 +71,7 @@ int run_kind(const std::string& dir, const std::string& kind, bool before, threa
   const auto t0 = std::chrono::steady_clock::now();
   mesh_quilt_options qo{.seed = 7};
   if (before) qo.merge_whole = true, qo.cell_retries = 0, qo.nudge_inside = false;
+  if (before || no_fill) qo.fill_holes = false;
   const auto q = mesh_quilt(*prepared, size, size, qo, pool);
   const double quilt_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   if (!q) return std::fprintf(stderr, "%s\n", q.error().to_string().c_str()), 1;
@@ -78,8 +79,12 @@ int run_kind(const std::string& dir, const std::string& kind, bool before, threa
   const auto qv = check_geometric_texture(q->mesh);
   if (!qc || !qv) return std::fprintf(stderr, "quilt: measuring failed\n"), 1;
   row("quilt 24 x 24", kind, *qc, false, *qv, quilt_ms);
-  if (auto s =
-          write_mesh_preview(dir + "/quality_" + kind + (before ? "_before" : "") + "_quilt.png", q->mesh, view, pool);
+  if (auto s = write_mesh_preview(dir + "/quality_" + kind +
+                                      (before    ? "_before"
+                                       : no_fill ? "_nofill"
+                                                 : "") +
+                                      "_quilt.png",
+                                  q->mesh, view, pool);
       !s)
     return 1;
 
@@ -108,8 +113,12 @@ int run_kind(const std::string& dir, const std::string& kind, bool before, threa
   if (!pc || !pv) return std::fprintf(stderr, "plane: measuring failed\n"), 1;
   row("tiles 6 x 6", kind, *pc, true, *pv, set_ms);
   view.grid_spacing = w;
-  if (auto s =
-          write_mesh_preview(dir + "/quality_" + kind + (before ? "_before" : "") + "_plane.png", *plane, view, pool);
+  if (auto s = write_mesh_preview(dir + "/quality_" + kind +
+                                      (before    ? "_before"
+                                       : no_fill ? "_nofill"
+                                                 : "") +
+                                      "_plane.png",
+                                  *plane, view, pool);
       !s)
     return 1;
   return 0;
@@ -119,7 +128,9 @@ int run_kind(const std::string& dir, const std::string& kind, bool before, threa
 int main(int argc, char** argv) {
   const std::string dir = argc > 1 ? argv[1] : ".";
   const std::string which = argc > 2 ? argv[2] : "rings";
+  // "before": the rules of the first quality table; "nofill": today's rules without hole filling
   const bool before = argc > 3 && std::string(argv[3]) == "before";
+  const bool no_fill = argc > 3 && std::string(argv[3]) == "nofill";
   std::vector<std::string> kinds{which};
   if (which == "all") kinds = {"rings", "chain_mail", "beads", "stones", "pebbles", "weave"};
   tessera::thread_pool_executor pool;
@@ -128,6 +139,6 @@ int main(int argc, char** argv) {
       "(exemplar) | spacing outside spread %% (exemplar) | open/non-manifold/intersecting | ms |\n"
       "|---|---|---|---|---|---|---|---|---|---|\n");
   for (const auto& k : kinds)
-    if (run_kind(dir, k, before, pool) != 0) return 1;
+    if (run_kind(dir, k, before, no_fill, pool) != 0) return 1;
   return 0;
 }

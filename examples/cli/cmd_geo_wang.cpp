@@ -53,6 +53,7 @@ int build(const cli::arguments& args) {
   o.tile_size = *tile;
   o.edge_height = *edge;
   o.quilt.seed = args.seed();
+  o.quilt.fill_holes = !args.has("--no-fill-holes");
   thread_pool_executor pool(args.threads());
   result<geometric_tile_set> set = status::internal_error("not run");
   const double ms = cli::median_ms(args.repeat(), [&] { set = build_geometric_wang_tiles(*ex, o, pool); });
@@ -98,6 +99,7 @@ int build(const cli::arguments& args) {
         .add("merges_attempted", set->stats.merges_attempted)
         .add("elements_merged", set->stats.elements_merged)
         .add("elements_dropped", set->stats.elements_dropped)
+        .add("elements_filled", set->stats.elements_filled)
         .add("frame_merges_attempted", set->frame_merges_attempted)
         .add("frame_merged", set->frame_merged)
         .add("frame_dropped", set->frame_dropped)
@@ -353,6 +355,7 @@ const cli::registrar reg_build{[] {
                    "colours of edges along X, Y, Z; 1 to 4096 each (default 2,2)"},
                   {"--tile", "W", "tile size in exemplar units"},
                   {"--edge-height", "H", "edge strip height h_E (default 1.5 x element size)"},
+                  {"--no-fill-holes", "", "leave the holes where elements were dropped (no single-element filling)"},
                   {"--out", "DIR", "output directory: tile_<index>.obj and tiles.json"}},
                  build};
   return c;

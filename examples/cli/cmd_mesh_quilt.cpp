@@ -28,6 +28,7 @@ int run(const cli::arguments& args) {
   mesh_quilt_options o;
   o.seed = args.seed();
   o.lambda = *lambda;
+  o.fill_holes = !args.has("--no-fill-holes");
   thread_pool_executor pool(args.threads());
   result<mesh_quilt_result> r = status::internal_error("not run");
   const double ms = cli::median_ms(args.repeat(), [&] { r = mesh_quilt(*ex, size->first, size->second, o, pool); });
@@ -47,6 +48,7 @@ int run(const cli::arguments& args) {
         .add("elements_added", r->stats.elements_added)
         .add("elements_merged", r->stats.elements_merged)
         .add("elements_dropped", r->stats.elements_dropped)
+        .add("elements_filled", r->stats.elements_filled)
         .add("merges_attempted", r->stats.merges_attempted)
         .add("merges_succeeded", r->stats.merges_succeeded)
         .add("merge_fail_correspondence", r->stats.merge_fail_correspondence)
@@ -75,7 +77,8 @@ const cli::registrar reg{[] {
                  {{"--exemplar", "FILE", "exemplar mesh of closed elements (.obj, .off, .ply)"},
                   {"--size", "WxH", "output extent in exemplar units (W alone: W x W; the older X,Y is accepted)"},
                   {"--out", "FILE", "output mesh"},
-                  {"--lambda", "L", "weight of the normal term of the matching cost (default 1)"}},
+                  {"--lambda", "L", "weight of the normal term of the matching cost (default 1)"},
+                  {"--no-fill-holes", "", "leave the holes where elements were dropped (no single-element filling)"}},
                  run};
   return c;
 }()};

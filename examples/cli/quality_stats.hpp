@@ -23,8 +23,10 @@ inline void add_quality(json_line& line, const tessera::texture_quality_comparis
       .add("exemplar_nn_outside", c.exemplar.nn_outside);
   if (tiled) line.add("band_ratio", c.band_ratio).add("corner_ratio", c.corner_ratio);
   std::string h = "[";
-  for (std::size_t i = 0; i < c.output.nn_histogram.size(); ++i)
-    h += (i ? "," : "") + std::to_string(c.output.nn_histogram[i]);
+  for (std::size_t i = 0; i < c.output.nn_histogram.size(); ++i) {
+    if (i) h += ',';  // appended one at a time: GCC 12 at -O3 warns (-Wrestrict) on "," + to_string(...)
+    h += std::to_string(c.output.nn_histogram[i]);
+  }
   line.raw("nn_histogram", h + "]");
 }
 

@@ -61,6 +61,7 @@ result<mesh_quilt_result> constrained_mesh_quilt(const quilt_exemplar& exemplar,
       [&exec](index_t n, const std::function<void(index_t)>& fn) { exec.parallel_for(0, n, fn); });
   engine.add_frame(std::move(frame.elements), frame.occupied);
   if (auto s = engine.run(options.progress); !s) return s;
+  if (auto s = engine.fill_holes(options.progress); !s) return s;
   return detail::finish_quilt(engine);
 }
 

@@ -175,6 +175,7 @@ result<wang_strip_plan> plan_wang_strips(const quilt_exemplar& exemplar, const g
                                                   picked.message(), ") and quilt_larger_source is off"));
     const double size = 2 * o.tile_size + 2 * he;
     mesh_quilt_options qo = o.quilt;
+    if (three) qo.fill_holes = false;  // as the tiles' quilts of a three-axis set (below)
     qo.progress = {};
     if (o.progress.token) qo.progress.token = o.progress.token;
     auto big = mesh_quilt(exemplar, size, size, qo, exec);
@@ -249,6 +250,11 @@ result<geometric_tile_set> build_geometric_wang_tiles(const quilt_exemplar& exem
       mesh_quilt_options qo = o.quilt;
       qo.progress = {};
       if (o.progress.token) qo.progress.token = o.progress.token;
+      qo.fill_border_margin = std::max(qo.fill_border_margin, plan->sp.half_height);
+      // three-axis sets go onto surfaces, whose shell map follows a tile only within its chordal
+      // tolerance: the tighter gaps of filled holes made elements cross there (the test sphere: 0 ->
+      // 23 crossing face pairs), so they are quilted without hole filling (docs/surface.md)
+      if (three) qo.fill_holes = false;
       auto q = constrained_mesh_quilt(exemplar, {0, 0, o.tile_size, o.tile_size}, std::move(fr.frame), qo,
                                       static_cast<std::uint64_t>(t) + 1);
       if (!q) {

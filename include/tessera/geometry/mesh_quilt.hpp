@@ -54,6 +54,16 @@ struct mesh_quilt_options {
   /// stone and pebble tiles (covered area 0.82 -> 0.87 of the exemplar's) but hurt the ring and
   /// chain-mail quilts (0.94 -> 0.88, 1.00 -> 0.91) and took longer (docs/geometry.md).
   bool occupancy_aware = false;
+  /// After the patches, place single exemplar elements into the holes left where elements were
+  /// dropped (an extension of §3.3; docs/geometry.md measures it): each hole, largest first, gets an
+  /// element whose footprint fits with the exemplar's clearance, never intersecting or leaving a tile.
+  /// Three-axis geometric tile sets turn it off (their tiles go onto surfaces; docs/geometry.md).
+  bool fill_holes = true;
+  /// Constrained quilting: holes are not filled by elements reaching within this distance of the
+  /// domain's sides. Geometric tile sets use half the edge strip height (h_E / 2): there a tile's
+  /// elements must agree with the strip the neighbouring tile shares, and on a surface two tiles meet
+  /// at an angle across it (docs/geometry.md).
+  double fill_border_margin = 0;
   /// Seed of the patch choices.
   std::uint64_t seed = 0;
   /// Progress callback and cancellation token.
@@ -87,6 +97,9 @@ inline status check_quilt_options(const mesh_quilt_options& o) {
     return status::invalid_argument(detail::cat("mesh_quilt: deform_weight must be > 0, got ", o.deform_weight));
   if (o.cell_retries < 0 || o.cell_retries > 16)
     return status::invalid_argument(detail::cat("mesh_quilt: cell_retries must be in [0, 16], got ", o.cell_retries));
+  if (!(o.fill_border_margin >= 0) || !std::isfinite(o.fill_border_margin))
+    return status::invalid_argument(
+        detail::cat("mesh_quilt: fill_border_margin must be finite and >= 0, got ", o.fill_border_margin));
   if (o.smooth_rings < 0)
     return status::invalid_argument(detail::cat("mesh_quilt: smooth_rings must be >= 0, got ", o.smooth_rings));
   return validate_enum(o.rules, {"tessera", "paper"}, "mesh_quilt: options.rules");
@@ -118,7 +131,9 @@ inline mesh_quilt_params to_params(const mesh_quilt_options& o, bool constrained
           .merge_whole = o.merge_whole,
           .cell_retries = o.cell_retries,
           .nudge_inside = o.nudge_inside,
-          .occupancy_aware = o.occupancy_aware};
+          .occupancy_aware = o.occupancy_aware,
+          .fill_holes = o.fill_holes,
+          .fill_border_margin = o.fill_border_margin};
 }
 }  // namespace detail
 
@@ -145,6 +160,7 @@ result<mesh_quilt_result> mesh_quilt(const quilt_exemplar& exemplar, double widt
       exemplar, {0, 0, width, height}, detail::to_params(options, false, 0),
       [&exec](index_t n, const std::function<void(index_t)>& fn) { exec.parallel_for(0, n, fn); });
   if (auto s = engine.run(options.progress); !s) return s;
+  if (auto s = engine.fill_holes(options.progress); !s) return s;
   return detail::finish_quilt(engine);
 }
 

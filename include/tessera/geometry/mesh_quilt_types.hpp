@@ -44,6 +44,8 @@ struct mesh_quilt_stats {
   index_t cells_retried = 0;
   /// Constrained quilting: elements reaching a little across a tile side, moved back inside.
   index_t elements_nudged = 0;
+  /// Exemplar elements placed one by one into the holes left after the patches (fill_holes).
+  index_t elements_filled = 0;
   /// Adds every counter of `o`.
   mesh_quilt_stats& operator+=(const mesh_quilt_stats& o) {
     patches += o.patches;
@@ -62,6 +64,7 @@ struct mesh_quilt_stats {
     elements_skipped += o.elements_skipped;
     cells_retried += o.cells_retried;
     elements_nudged += o.elements_nudged;
+    elements_filled += o.elements_filled;
     return *this;
   }
 };

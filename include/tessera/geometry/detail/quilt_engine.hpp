@@ -27,6 +27,7 @@
 #include "../mesh_elements.hpp"
 #include "../quilt_exemplar.hpp"
 #include "element_merge.hpp"
+#include "hole_fill.hpp"
 #include "mesh_clip.hpp"
 #include "triangle_geometry.hpp"
 
@@ -53,6 +54,8 @@ struct mesh_quilt_params {
   int cell_retries = 1;
   bool nudge_inside = true;
   bool occupancy_aware = false;
+  bool fill_holes = true;
+  double fill_border_margin = 0;
 };
 
 // A class template (`Deferred` is always void) only so that its merge step, and the Eigen sparse
@@ -128,6 +131,96 @@ class basic_quilt_engine {
       ++stats_.patches;
     }
     prog.report(1.0, "mesh quilting");
+    return {};
+  }
+
+  /// After run() (an extension of §3.3): places single exemplar elements (not long ones) into the
+  /// holes the patches left where their elements were dropped. The holes are the local maxima of the
+  /// distance to the elements' XY projections (hole_fill.hpp), largest first; each gets an exemplar
+  /// element drawn among those whose footprint, plus the exemplar's clearance between elements,
+  /// fits, centred there with its exemplar orientation and height; one that would
+  /// intersect an element, or leave a constrained domain, is not placed. Up to hole_passes passes (the
+  /// distances are recomputed after each), fewer when a pass places nothing. Random draws are keyed
+  /// by (seed, stream, pass, hole), so the result is deterministic.
+  status fill_holes(const progress& prog) {
+    if (!p_.fill_holes) return {};
+    std::vector<std::pair<double, index_t>> fits;  // (footprint radius, exemplar element), smallest first
+    for (index_t e = 0; e < ex_.num_elements(); ++e)
+      if (!ex_.is_long(e)) fits.push_back({footprint_radius(ex_.elements()[to_size(e)]), e});
+    if (fits.empty()) return {};
+    std::sort(fits.begin(), fits.end());
+    const double d = ex_.element_diameter();
+    // unconstrained: elements may stand across the domain's sides (their centres inside), so the
+    // raster reaches a diameter beyond them; constrained: the domain itself
+    const double pad = p_.constrained ? 0.0 : d;
+    const xy_rect area{domain_.x0 - pad, domain_.y0 - pad, domain_.x1 + pad, domain_.y1 + pad};
+    double h = d / hole_raster_per_diameter;
+    if (area.width() * area.height() / (h * h) > hole_raster_max_pixels)
+      h = std::sqrt(area.width() * area.height() / hole_raster_max_pixels);
+    const auto w = std::max<index_t>(1, static_cast<index_t>(std::ceil(area.width() / h))),
+               rows = std::max<index_t>(1, static_cast<index_t>(std::ceil(area.height() / h)));
+    // the exemplar's own spacing (+ a pixel: the raster is sampled)
+    std::vector<unsigned char> is_long(to_size(ex_.num_elements()));
+    for (index_t e = 0; e < ex_.num_elements(); ++e) is_long[to_size(e)] = ex_.is_long(e) ? 1 : 0;
+    const double clearance = std::max(hole_min_clearance_diameters * d,
+                                      exemplar_clearance(ex_.elements(), is_long, h, d, hole_clearance_quantile)) +
+                             h;
+    // filling stops where the exemplar's covered share is reached: the holes left are the smallest
+    const double target = exemplar_coverage(ex_.elements(), h, d);
+    const counter_rng rng(p_.seed, p_.stream);
+    bool reached = false;
+    for (int pass = 0; pass < hole_passes && !reached; ++pass) {
+      if (prog.cancelled()) return status::cancelled();
+      coverage_raster r(area.x0, area.y0, h, w, rows);
+      r.count_in(domain_);
+      for (std::size_t i = 0; i < elems_.size(); ++i)
+        if (alive_[i]) r.add_mesh(elems_[i].mesh);
+      if (r.counted_share() >= target) break;
+      const auto sites =
+          hole_sites(distance_to_covered(r), w, rows, static_cast<float>((fits.front().first + clearance) / h));
+      index_t placed = 0;
+      for (const hole_site& s : sites) {
+        const vec3 c = r.centre(s.i, s.j);
+        if (!domain_.contains(c)) continue;
+        const auto room = static_cast<double>(s.radius) * h - clearance;
+        const auto n_fit = static_cast<std::size_t>(
+            std::upper_bound(fits.begin(), fits.end(), std::pair{room, std::numeric_limits<index_t>::max()}) -
+            fits.begin());
+        if (n_fit == 0) continue;
+        const auto site = static_cast<std::uint64_t>(s.j * w + s.i);
+        for (int t = 0; t < hole_tries; ++t) {
+          // the larger half of the elements that fit: small ones fit nearly everywhere, and filling
+          // with them would add more elements than the covered area calls for
+          const std::size_t first = n_fit / 2;
+          const auto& [re, e] = fits[first + to_size(rng.below(n_fit - first, 3, static_cast<std::uint64_t>(pass), site,
+                                                               static_cast<std::uint64_t>(t)))];
+          if (!r.disc_free(c, re + clearance)) continue;  // an element placed since covers part of it
+          if (p_.constrained && std::min({c.x - domain_.x0, domain_.x1 - c.x, c.y - domain_.y0, domain_.y1 - c.y}) <
+                                    re + p_.fill_border_margin)
+            continue;  // in the band where a tile's elements must agree with its neighbour's strip
+          const texture_element& src = ex_.elements()[to_size(e)];
+          const vec3 shift{c.x - src.box.center().x, c.y - src.box.center().y, 0};
+          texture_element el;
+          el.mesh = src.mesh;
+          for (vec3& q : el.mesh.positions) q += shift;
+          el.fixed.assign(el.mesh.positions.size(), 0);
+          el.update_box();
+          bool inside = true;
+          if (p_.constrained)
+            for (const vec3& q : el.mesh.positions)
+              inside = inside && strictly_inside(domain_, q, 2 * inside_margin_fraction * cell_);
+          if (!inside || intersects_alive(el, {})) continue;
+          r.add_mesh(el.mesh);
+          push(std::move(el));
+          ++stats_.elements_filled;
+          ++placed;
+          reached = r.counted_share() >= target;
+          break;
+        }
+        if (reached) break;
+      }
+      if (placed == 0) break;
+    }
     return {};
   }
 
@@ -552,6 +645,12 @@ class basic_quilt_engine {
   static constexpr double nudge_diameters = 0.35;
   /// The occupancy term chooses among translations within (1 + this x tolerance) of the best eq. 4.
   static constexpr double occupancy_tolerance_factor = 3.0;
+  /// Hole filling: raster pixels per exemplar element diameter (at most hole_raster_max_pixels in
+  /// all); the empty margin kept around a placed element: the exemplar's (exemplar_clearance at this
+  /// quantile), at least this many element diameters; draws per hole, and passes.
+  static constexpr double hole_raster_per_diameter = 12, hole_raster_max_pixels = double(1 << 24);
+  static constexpr double hole_min_clearance_diameters = 0.04, hole_clearance_quantile = 0.25;
+  static constexpr int hole_tries = 4, hole_passes = 3;
 
   const quilt_exemplar& ex_;
   xy_rect domain_;

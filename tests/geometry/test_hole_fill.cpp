@@ -1,0 +1,127 @@
+// Hole filling after mesh quilting (geometry/detail/hole_fill.hpp, quilt_engine.hpp fill_holes): the
+// distance transform against brute force, hole sites, the exemplar's clearance and coverage on a lattice
+// whose answers are known, and the whole step on a stone quilt (holes gone, no intersections,
+// deterministic).
+#include <tessera/geometry/detail/hole_fill.hpp>
+
+#include <tessera/core/random.hpp>
+#include <tessera/geometry/check_geometric_texture.hpp>
+#include <tessera/geometry/mesh_exemplars.hpp>
+#include <tessera/geometry/mesh_quilt.hpp>
+#include <tessera/geometry/texture_quality.hpp>
+
+#include <catch2/catch.hpp>
+
+using namespace tessera;
+
+namespace {
+// flat rings (major 0.6, minor 0.1: footprint radius 0.7) centred at (s i + 1, s j + 1)
+std::vector<texture_element> ring_lattice(int n, double s) {
+  std::vector<texture_element> out;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      texture_element e;
+      detail::add_torus(e.mesh, {s * i + 1, s * j + 1, 0.1}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, 0.6, 0.1, 32, 8);
+      e.update_box();
+      out.push_back(std::move(e));
+    }
+  return out;
+}
+}  // namespace
+
+TEST_CASE("hole fill: the distance transform is the exact distance to the nearest covered pixel", "[hole_fill]") {
+  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+    const counter_rng rng(seed, 1);
+    const auto w = static_cast<index_t>(1 + rng.below(23, 0)), h = static_cast<index_t>(1 + rng.below(19, 1));
+    const double density = seed % 4 == 0 ? 0.0 : 0.02 * static_cast<double>(seed);  // some rasters empty
+    detail::coverage_raster r(0, 0, 1, w, h);
+    for (index_t j = 0; j < h; ++j)
+      for (index_t i = 0; i < w; ++i)
+        if (rng.uniform(2, i, j) < density) r.cover(i, j);
+    const auto d = detail::distance_to_covered(r);
+    REQUIRE(d.size() == static_cast<std::size_t>(w * h));
+    for (index_t j = 0; j < h; ++j)
+      for (index_t i = 0; i < w; ++i) {
+        // brute force, with the raster's outside counting as covered (the pixels around it)
+        double best = static_cast<double>(std::min({i + 1, j + 1, w - i, h - j}));
+        for (index_t b = 0; b < h; ++b)
+          for (index_t a = 0; a < w; ++a)
+            if (r.covered(a, b)) best = std::min(best, std::hypot(double(a - i), double(b - j)));
+        INFO("seed " << seed << " pixel " << i << ", " << j);
+        REQUIRE(d[static_cast<std::size_t>(j * w + i)] == Approx(best).margin(1e-5));
+      }
+  }
+}
+
+TEST_CASE("hole fill: sites are the local maxima, largest first, discs see what covers them", "[hole_fill]") {
+  detail::coverage_raster r(0, 0, 1, 31, 21);
+  // a wall at column 10: the left part (10 x 21) has its widest free disc smaller than the right's
+  for (index_t j = 0; j < 21; ++j) r.cover(10, j);
+  const auto d = detail::distance_to_covered(r);
+  const auto sites = detail::hole_sites(d, 31, 21, 2.0f);
+  REQUIRE(sites.size() >= 2);
+  for (std::size_t k = 1; k < sites.size(); ++k) REQUIRE(sites[k - 1].radius >= sites[k].radius);
+  CHECK(sites.front().i > 10);  // the largest hole is right of the wall
+  CHECK(sites.front().radius == Approx(10.0).margin(0.6));
+  CHECK(r.disc_free(r.centre(20, 10), 8.0));
+  CHECK_FALSE(r.disc_free(r.centre(14, 10), 5.0));  // reaches the wall
+  CHECK_FALSE(r.disc_free(r.centre(28, 10), 5.0));  // leaves the raster
+  // counting: the wall is 21 of the 31 x 21 pixels; a rectangle of 5 x 5 more
+  r.count_in({0, 0, 31, 21});
+  CHECK(r.counted_share() == Approx(21.0 / (31 * 21)));
+  for (index_t j = 0; j < 5; ++j)
+    for (index_t i = 20; i < 25; ++i) r.cover(i, j);
+  CHECK(r.counted_share() == Approx(46.0 / (31 * 21)));
+}
+
+TEST_CASE("hole fill: the exemplar's clearance and coverage on a ring lattice", "[hole_fill]") {
+  // spacing 2.0 and footprint radius 0.7: the nearest neighbour's pixels are 1.3 away from a centre
+  const auto rings = ring_lattice(6, 2.0);
+  const std::vector<unsigned char> is_long(rings.size(), 0);
+  const double h = 0.02;
+  CHECK(detail::footprint_radius(rings[0]) == Approx(0.7).epsilon(1e-3));
+  CHECK(detail::exemplar_clearance(rings, is_long, h, 1.4, 0.25) == Approx(2.0 - 2 * 0.7).margin(2 * h));
+  CHECK(detail::exemplar_clearance(ring_lattice(4, 3.0), std::vector<unsigned char>(16, 0), h, 1.4, 0.5) ==
+        Approx(3.0 - 2 * 0.7).margin(2 * h));
+  // covered share: each 2 x 2 cell holds an annulus of radii 0.5 and 0.7
+  const double annulus = 3.14159265358979 * (0.7 * 0.7 - 0.5 * 0.5) / 4.0;
+  CHECK(detail::exemplar_coverage(rings, h, 1.4) == Approx(annulus).epsilon(0.05));
+  // a lone element: no neighbour, no clearance figure
+  CHECK(detail::exemplar_clearance(ring_lattice(1, 2.0), {0}, h, 1.4, 0.25) == 0.0);
+}
+
+TEST_CASE("hole fill: a stone quilt keeps no holes, no intersections, and is deterministic", "[hole_fill]") {
+  const auto stones = make_stone_exemplar({.seed = 7});
+  REQUIRE(stones.ok());
+  const auto ex = prepare_quilt_exemplar(*stones);
+  REQUIRE(ex.ok());
+  const double size = 10;
+  mesh_quilt_options with{.seed = 7};
+  mesh_quilt_options without = with;
+  without.fill_holes = false;
+  const auto a = mesh_quilt(*ex, size, size, with);
+  const auto b = mesh_quilt(*ex, size, size, without);
+  REQUIRE(a.ok());
+  REQUIRE(b.ok());
+  CHECK(a->stats.elements_filled > 0);
+  CHECK(b->stats.elements_filled == 0);
+  const auto qa = compare_texture_quality(*stones, a->mesh, {0, 0, size, size});
+  const auto qb = compare_texture_quality(*stones, b->mesh, {0, 0, size, size});
+  REQUIRE(qa.ok());
+  REQUIRE(qb.ok());
+  INFO("coverage " << qb->coverage_ratio << " -> " << qa->coverage_ratio << ", empty cells "
+                   << qb->output.empty_cell_rate << " -> " << qa->output.empty_cell_rate);
+  CHECK(qa->coverage_ratio > qb->coverage_ratio);
+  CHECK(qa->coverage_ratio < 1.15);  // not crowded past the exemplar
+  CHECK(qa->output.empty_cell_rate <= qb->output.empty_cell_rate);
+  const auto check = check_geometric_texture(a->mesh);
+  REQUIRE(check.ok());
+  CHECK(check->intersecting_pairs == 0);
+  CHECK(check->nonmanifold_edges == 0);
+  // the same on a pool of threads
+  thread_pool_executor pool(2);
+  const auto c = mesh_quilt(*ex, size, size, with, pool);
+  REQUIRE(c.ok());
+  REQUIRE(c->mesh.positions == a->mesh.positions);
+  REQUIRE(c->mesh.faces == a->mesh.faces);
+}
