@@ -132,7 +132,7 @@ int main(int argc, char** argv) {
     elements.positions.assign(r->mesh.positions.begin(), r->mesh.positions.begin() + r->element_vertices);
     elements.faces.assign(r->mesh.faces.begin(), r->mesh.faces.begin() + r->element_faces);
     // faces of the elements that cross each other (pairs sharing a vertex skipped): a bijective
-    // piecewise-linear shell map would give none; see docs/surface.md, "crossings near polycube corners"
+    // piecewise-linear shell map would give none; see docs/surface.md, "crossing faces"
     index_t crossing = 0;
     triangle_bvh(elements).for_each_self_intersection(
         [&](index_t a, index_t b) {

@@ -176,6 +176,22 @@ TEST_CASE("triangle-triangle test: coplanar, touching and shared-vertex cases", 
   REQUIRE_FALSE(detail::triangles_intersect(a, {vec3{0.8, 0.8, -1}, vec3{0.8, 0.8, 1}, vec3{0.9, 0.85, 1}}));
 }
 
+TEST_CASE("triangle-triangle test: nearly parallel triangles apart", "[bvh]") {
+  // two pieces of one flat facet of a mapped ring element (planes 1.7e-5 rad apart, 2.2e-4 apart in the
+  // plane): Möller's intervals along the nearly degenerate intersection line called them crossing
+  const std::array<vec3, 3> a{vec3{1.73839853, 1.73748816, 0.57849332}, vec3{1.73811791, 1.73757191, 0.57790904},
+                              vec3{1.73781883, 1.73753307, 0.5782972}};
+  const std::array<vec3, 3> b{vec3{1.73780035, 1.73741047, 0.57926964}, vec3{1.73809944, 1.73744931, 0.57888148},
+                              vec3{1.7375105, 1.73743293, 0.57917158}};
+  REQUIRE_FALSE(detail::triangles_intersect(a, b));
+  REQUIRE_FALSE(detail::triangles_intersect(b, a));
+  // an edge of one lying in the other's plane, inside it (the other's edges miss the first triangle)
+  const std::array<vec3, 3> c{vec3{0, 0, 0}, vec3{4, 0, 0}, vec3{0, 4, 0}};
+  REQUIRE(detail::triangles_intersect(c, {vec3{1, 1, 0}, vec3{1.5, 1, 0}, vec3{1.2, 1, 1}}));
+  REQUIRE(detail::triangles_intersect({vec3{1, 1, 0}, vec3{1.5, 1, 0}, vec3{1.2, 1, 1}}, c));
+  REQUIRE_FALSE(detail::triangles_intersect(c, {vec3{5, 1, 0}, vec3{5.5, 1, 0}, vec3{5.2, 1, 1}}));
+}
+
 TEST_CASE("BVH intersecting pairs equal brute force", "[bvh]") {
   const tri_mesh a = random_soup(31, 150, 0.15), b = random_soup(32, 150, 0.15);
   const triangle_bvh ba(a), bb(b);

@@ -188,6 +188,32 @@ inline bool triangle_line_interval(const double pv[3], const double dv[3], doubl
   return true;
 }
 
+/// True when segment [p, q], whose ends lie at (snapped) signed distances dp, dq from the plane of
+/// triangle u, meets the closed triangle u: the ends do not lie strictly on one side, and the point
+/// where the segment meets the plane lies in u, tested in 2D on the plane where u's normal is largest
+/// (a segment in the plane: it crosses an edge of u or starts inside). The point is always on the
+/// segment, so a segment nearly in u's plane (noisy dp, dq) is still judged by where it lies.
+inline bool edge_meets_triangle(vec3 p, vec3 q, double dp, double dq, const std::array<vec3, 3>& u) noexcept {
+  if ((dp > 0 && dq > 0) || (dp < 0 && dq < 0)) return false;
+  const vec3 n = cross(u[1] - u[0], u[2] - u[0]);
+  const double ax = std::abs(n.x), ay = std::abs(n.y), az = std::abs(n.z);
+  const int i0 = ax >= ay && ax >= az ? 1 : 0, i1 = ax >= ay && ax >= az ? 2 : ay >= az ? 2 : 1;
+  double w[3][2];
+  for (int k = 0; k < 3; ++k) {
+    w[k][0] = u[to_size(k)][i0];
+    w[k][1] = u[to_size(k)][i1];
+  }
+  if (dp == 0 && dq == 0) {
+    const double a[2] = {p[i0], p[i1]}, b[2] = {q[i0], q[i1]};
+    for (int k = 0; k < 3; ++k)
+      if (segments_intersect_2d(a, b, w[k], w[(k + 1) % 3])) return true;
+    return point_in_triangle_2d(a, w[0], w[1], w[2]);
+  }
+  const vec3 x = p + (dp / (dp - dq)) * (q - p);
+  const double c[2] = {x[i0], x[i1]};
+  return point_in_triangle_2d(c, w[0], w[1], w[2]);
+}
+
 /// True when the closed triangles t and u share at least one point. Touching counts as
 /// intersecting. Degenerate (zero-area) triangles are treated through their edges.
 inline bool triangles_intersect(const std::array<vec3, 3>& t, const std::array<vec3, 3>& u) noexcept {
@@ -213,16 +239,15 @@ inline bool triangles_intersect(const std::array<vec3, 3>& t, const std::array<v
     if (!(du[0] == 0 && du[1] == 0 && du[2] == 0)) return false;  // parallel planes, apart
     return coplanar_triangles_intersect(squared_norm(n1) > 0 ? n1 : n2, t, u);
   }
-  // project on the largest axis of dir
-  int axis = 0;
-  if (std::abs(dir.y) > std::abs(dir[axis])) axis = 1;
-  if (std::abs(dir.z) > std::abs(dir[axis])) axis = 2;
-  const double pt[3] = {t[0][axis], t[1][axis], t[2][axis]};
-  const double pu[3] = {u[0][axis], u[1][axis], u[2][axis]};
-  double lo1, hi1, lo2, hi2;
-  if (!triangle_line_interval(pt, dt, lo1, hi1)) return false;
-  if (!triangle_line_interval(pu, du, lo2, hi2)) return false;
-  return lo1 <= hi2 && lo2 <= hi1;
+  // Not coplanar: the triangles meet iff an edge of one meets the other (the ends of their common
+  // segment lie on edges). Tested with orientation signs, no division: Möller's intervals along
+  // cross(n1, n2) lose all precision for nearly parallel planes (a fine split of one flat facet of an
+  // element reported pairs ~10^-4 apart as crossing).
+  for (int k = 0; k < 3; ++k) {
+    if (edge_meets_triangle(t[to_size(k)], t[to_size((k + 1) % 3)], dt[k], dt[(k + 1) % 3], u)) return true;
+    if (edge_meets_triangle(u[to_size(k)], u[to_size((k + 1) % 3)], du[k], du[(k + 1) % 3], t)) return true;
+  }
+  return false;
 }
 
 /// True when segment [p, q] meets the closed triangle (a, b, c) (used as a brute-force oracle).
