@@ -63,7 +63,8 @@ std::pair<double, double> memcpy_seconds(std::size_t bytes) {
 }
 
 template <class T, int C>
-void run_synthesis(benchmark::State& state, tessera::fill_fallback fallback = tessera::patch_synthesis_options{}.fallback,
+void run_synthesis(benchmark::State& state,
+                   tessera::fill_fallback fallback = tessera::patch_synthesis_options{}.fallback,
                    index_t feather_width = tessera::patch_synthesis_options{}.feather_width) {
   const index_t ex_side = state.range(0), side = state.range(1);
   const int threads = static_cast<int>(state.range(3));

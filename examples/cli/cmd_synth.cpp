@@ -268,7 +268,8 @@ const cli::registrar reg(
     {.name = "synth",
      .summary = "synthesize a large texture or any window of an infinite one from an exemplar (patch synthesis)",
      .usage = "tessera synth --exemplar E.png --size WxH --out O.png [--seed S] [--threads T] [--patch P] "
-              "[--overlap V] [--seams feather|cut] [--feather W] [--fallback estimate|sets|overlap] [--candidates K] [--min-patch-fraction F] [--window "
+              "[--overlap V] [--seams feather|cut] [--feather W] [--fallback estimate|sets|overlap] [--candidates K] "
+              "[--min-patch-fraction F] [--window "
               "X,Y,W,H] "
               "[--source-map M.png] [--repeat N] [--stats]",
      .options = synth_options(),

@@ -22,8 +22,10 @@ decltype(auto) by_type(channel_type t, F&& f) {
 
 any_patch_model build(const py::array& exemplar, index_t patch_width, index_t patch_height, index_t overlap,
                       int candidates, bool exact_sets, int pca_dims, index_t pca_samples, int search_pool,
-                      int refine_iterations, bool seams, int threads, const py::object& progress) {
+                      int refine_iterations, bool seams, int threads, const py::object& progress,
+                      double min_patch_fraction) {
   patch_model_options o;
+  o.min_patch_fraction = min_patch_fraction;
   o.patch_width = patch_width;
   o.patch_height = patch_height;
   o.overlap = overlap;
@@ -45,8 +47,10 @@ fill_fallback parse_fallback(const std::string& f) {
   if (f == "sets") return fill_fallback::most_sets;
   if (f == "overlap") return fill_fallback::overlap_error;
   if (f == "estimate") return fill_fallback::estimated_error;
-  raise_invalid("synthesize: fallback must be \"estimate\" (the default), \"sets\" (paper 002) or \"overlap\" (quality "
-                "mode), got '" + f + "'");
+  raise_invalid(
+      "synthesize: fallback must be \"estimate\" (the default), \"sets\" (paper 002) or \"overlap\" (quality "
+      "mode), got '" +
+      f + "'");
 }
 
 seam_mode parse_seams(const py::object& seams, const any_patch_model& m) {
@@ -95,7 +99,7 @@ options or an exemplar the library refuses, with its message.)doc");
         py::arg("overlap") = 0, py::arg("candidates") = 8, py::arg("exact_sets") = false, py::arg("pca_dims") = 8,
         py::arg("pca_samples") = 384, py::arg("search_pool") = 16, py::arg("refine_iterations") = 4,
         py::arg("seams") = false, py::arg("threads") = 0, py::arg("progress") = py::none(),
-        "Builds the model of `exemplar` (see the class documentation).");
+        py::arg("min_patch_fraction") = 0.375, "Builds the model of `exemplar` (see the class documentation).");
   c.def(
       "synthesize",
       [](const any_patch_model& self, index_t width, index_t height, index_t x, index_t y, std::uint64_t seed,

@@ -59,7 +59,7 @@ struct patch_model_options {
   /// `analysis.min_size` is 0: 0.375 (ours; on photographs the paper's 1/4 breaks the structure at the
   /// scale of the patches, docs/patch_synthesis.md "Patch size"); 0.25 is paper 002 §2.1's range. In (0, 0.5].
   double min_patch_fraction = 0.375;
-  tessera::progress progress = {};   ///< fraction done; return false (or raise the token) to cancel
+  tessera::progress progress = {};  ///< fraction done; return false (or raise the token) to cancel
 };
 
 namespace detail {
@@ -274,9 +274,9 @@ struct patch_model_builder {
       if (!a.progress.callback && a.progress.token == nullptr) a.progress.token = opts.progress.token;
       if (a.min_size == 0) {  // at least 2, at most the largest side the analysis tries
         const index_t largest = a.max_size > 0 ? a.max_size : std::max<index_t>(2, std::min(W, H) / 2);
-        a.min_size = std::clamp<index_t>(
-            static_cast<index_t>(opts.min_patch_fraction * static_cast<double>(std::min(W, H))), 2,
-            std::max<index_t>(2, largest));
+        a.min_size =
+            std::clamp<index_t>(static_cast<index_t>(opts.min_patch_fraction * static_cast<double>(std::min(W, H))), 2,
+                                std::max<index_t>(2, largest));
       }
       auto analysis = (m.pw_ == 0 || m.ph_ == 0) ? analyze_patch_size(m.exemplar_, a, exec)
                                                  : analyze_overlap(m.exemplar_, m.pw_, m.ph_, a);
@@ -336,9 +336,9 @@ struct patch_model_builder {
     const patch_geometry g{pw, ph, v, m.nx_, m.ny_};
     const compatible_set_options so{
         k, opts.exact_sets, opts.pca_dims, opts.pca_samples, opts.search_pool, opts.refine_iterations};
-    auto sets = compatible_sets(m.exemplar_, g, so, exec, [&](double f) {
-      return opts.progress.report(0.05 + 0.8 * f, "patch model: compatible sets");
-    }, m.strips_);
+    auto sets = compatible_sets(
+        m.exemplar_, g, so, exec,
+        [&](double f) { return opts.progress.report(0.05 + 0.8 * f, "patch model: compatible sets"); }, m.strips_);
     if (sets.empty()) return status::cancelled();
     m.worst_.resize(to_size(n * 4));
     for (int si = 0; si < 4; ++si) {

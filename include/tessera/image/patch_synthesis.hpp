@@ -48,9 +48,9 @@ enum class seam_mode {
 /// photographs the common case: the paper's k = 8 sets rarely intersect four ways). Default:
 /// estimated_error.
 enum class fill_fallback {
-  overlap_error,  ///< the union's patch with the smallest true overlap error against all four neighbours
-                  ///< (quality mode: a few times slower synthesis on stochastic exemplars)
-  most_sets,      ///< paper 002 §2: the patch in the most sets (ties: smallest lower bound of its error, index)
+  overlap_error,   ///< the union's patch with the smallest true overlap error against all four neighbours
+                   ///< (quality mode: a few times slower synthesis on stochastic exemplars)
+  most_sets,       ///< paper 002 §2: the patch in the most sets (ties: smallest lower bound of its error, index)
   estimated_error  ///< the union's patch with the smallest overlap error against all four neighbours, the errors
                    ///< the sets do not hold estimated from the strips' PCA descriptors (ours)
 };
@@ -125,7 +125,9 @@ inline status validate_window(index_t w, index_t h, const patch_synthesis_option
     return status::invalid_argument(cat(fn, ": feather_width must be >= 0, got ", opts.feather_width));
   if (opts.fallback_budget < 1 || opts.fallback_budget > 256)
     return status::invalid_argument(cat(fn, ": fallback_budget must be in [1, 256], got ", opts.fallback_budget));
-  if (auto s = validate_enum(opts.fallback, {"overlap_error", "most_sets", "estimated_error"}, cat(fn, ": options.fallback")); !s)
+  if (auto s = validate_enum(opts.fallback, {"overlap_error", "most_sets", "estimated_error"},
+                             cat(fn, ": options.fallback"));
+      !s)
     return s;
   return validate_enum(opts.seams, {"feather", "cut"}, cat(fn, ": options.seams"));
 }

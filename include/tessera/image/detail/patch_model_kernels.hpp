@@ -150,7 +150,8 @@ struct strip_descriptors {
     const index_t n = f.count_x * f.count_y, stride = f.d + 1;
     s.values.resize(to_size(n * stride));
     for (index_t i = 0; i < n; ++i) {
-      for (int j = 0; j < f.d; ++j) s.values[to_size(i * stride + j)] = static_cast<float>(f.projected[to_size(i * f.d + j)]);
+      for (int j = 0; j < f.d; ++j)
+        s.values[to_size(i * stride + j)] = static_cast<float>(f.projected[to_size(i * f.d + j)]);
       s.values[to_size(i * stride + f.d)] = static_cast<float>(f.residual[to_size(i)]);
     }
     return s;
