@@ -469,11 +469,11 @@ std::pair<std::vector<index_t>, index_t> brute_fill(const M& m, index_t west, in
   return {inter, best};
 }
 
-// Brute-force overlap_error fallback: the member of the union of the four facing sets with the smallest
-// true overlap error (overlap_error against each neighbour, summed), ties by the smaller index. Returns
-// the patch and its total.
-template <class M>
-std::pair<index_t, double> brute_overlap_fill(const M& m, index_t west, index_t east, index_t north, index_t south) {
+// The member of the union of the four facing sets of a vacant cell with the smallest total(q, owners,
+// facing), ties by the smaller index, and its total.
+template <class M, class Total>
+std::pair<index_t, double> brute_union_fill(const M& m, index_t west, index_t east, index_t north, index_t south,
+                                            Total&& total_of) {
   const index_t owners[4] = {west, east, north, south};
   const int facing[4] = {tessera::side_east, tessera::side_west, tessera::side_south, tessera::side_north};
   std::vector<index_t> candidates;
@@ -484,11 +484,22 @@ std::pair<index_t, double> brute_overlap_fill(const M& m, index_t west, index_t 
   index_t best = -1;
   double best_total = std::numeric_limits<double>::infinity();
   for (index_t q : candidates) {
-    double total = 0;
-    for (int s = 0; s < 4; ++s) total += m.overlap_error(owners[s], q, facing[s]);
+    const double total = total_of(q, owners, facing);
     if (total < best_total) best = q, best_total = total;  // ascending: ties keep the smaller index
   }
   return {best, best_total};
+}
+
+// Brute-force overlap_error fallback: the member of the union of the four facing sets with the smallest
+// true overlap error (overlap_error against each neighbour, summed), ties by the smaller index. Returns
+// the patch and its total.
+template <class M>
+std::pair<index_t, double> brute_overlap_fill(const M& m, index_t west, index_t east, index_t north, index_t south) {
+  return brute_union_fill(m, west, east, north, south, [&](index_t q, const index_t* owners, const int* facing) {
+    double total = 0;
+    for (int s = 0; s < 4; ++s) total += m.overlap_error(owners[s], q, facing[s]);
+    return total;
+  });
 }
 
 // Brute-force estimated_error fallback: the member of the union of the four facing sets with the
@@ -496,31 +507,24 @@ std::pair<index_t, double> brute_overlap_fill(const M& m, index_t west, index_t 
 // holding it, patch_model::estimated_error (in the same order); ties by the smaller index.
 template <class M>
 index_t brute_estimated_fill(const M& m, index_t west, index_t east, index_t north, index_t south) {
-  const index_t owners[4] = {west, east, north, south};
-  const int facing[4] = {tessera::side_east, tessera::side_west, tessera::side_south, tessera::side_north};
-  std::vector<index_t> candidates;
-  for (int s = 0; s < 4; ++s)
-    for (std::uint32_t q : m.compatible(owners[s], facing[s])) candidates.push_back(q);
-  std::sort(candidates.begin(), candidates.end());
-  candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
-  index_t best = -1;
-  double best_total = std::numeric_limits<double>::infinity();
-  for (index_t q : candidates) {
-    double known = 0;
-    bool held[4] = {};
-    for (int s = 0; s < 4; ++s) {
-      const auto set = m.compatible(owners[s], facing[s]);
-      const auto errors = m.compatible_errors(owners[s], facing[s]);
-      const auto it = std::find(set.begin(), set.end(), static_cast<std::uint32_t>(q));
-      held[s] = it != set.end();
-      if (held[s]) known += static_cast<double>(errors[static_cast<std::size_t>(it - set.begin())]);
-    }
-    double total = known;
-    for (int s = 0; s < 4; ++s)
-      if (!held[s]) total += m.estimated_error(owners[s], q, facing[s]);
-    if (total < best_total) best = q, best_total = total;  // ascending: ties keep the smaller index
-  }
-  return best;
+  return brute_union_fill(m, west, east, north, south,
+                          [&](index_t q, const index_t* owners, const int* facing) {
+                            double known = 0;
+                            bool held[4] = {};
+                            for (int s = 0; s < 4; ++s) {
+                              const auto set = m.compatible(owners[s], facing[s]);
+                              const auto errors = m.compatible_errors(owners[s], facing[s]);
+                              const auto it = std::find(set.begin(), set.end(), static_cast<std::uint32_t>(q));
+                              held[s] = it != set.end();
+                              if (held[s])
+                                known += static_cast<double>(errors[static_cast<std::size_t>(it - set.begin())]);
+                            }
+                            double total = known;
+                            for (int s = 0; s < 4; ++s)
+                              if (!held[s]) total += m.estimated_error(owners[s], q, facing[s]);
+                            return total;
+                          })
+      .first;
 }
 
 }  // namespace
