@@ -97,7 +97,9 @@ tessera::result<synth_request> parse(const cli::arguments& args) {
     r.fallback = tessera::fill_fallback::overlap_error;
   else if (fallback == "estimate")
     r.fallback = tessera::fill_fallback::estimated_error;
-  else if (fallback != "sets")
+  else if (fallback == "sets")
+    r.fallback = tessera::fill_fallback::most_sets;
+  else
     return status::invalid_argument("--fallback expects estimate, sets or overlap, got '" + fallback + "'");
   if (args.has("--min-patch-fraction")) {
     auto f = args.numbers("--min-patch-fraction", 1);
