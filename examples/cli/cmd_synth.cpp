@@ -1,6 +1,6 @@
 // tessera synth: real-time patch synthesis of large textures (paper 002; image/patch_synthesis.hpp).
 //   tessera synth --exemplar E.png --size WxH --out O.png [--seed S] [--threads T] [--patch P]
-//                 [--overlap V] [--seams feather|cut] [--feather W] [--fallback estimate|sets|overlap] [--candidates K] [--min-patch-fraction F]
+//                 [--overlap V] [--seams feather|cut] [--feather W] [--fallback sets|estimate|overlap] [--candidates K] [--min-patch-fraction F]
 //                 [--window X,Y,W,H] [--source-map M.png]
 //                 [--repeat N] [--stats]
 #include <algorithm>
@@ -33,7 +33,7 @@ struct synth_request {
   index_t feather = tessera::patch_synthesis_options{}.feather_width;
   tessera::texture_offset origin;
   tessera::seam_mode seams = tessera::seam_mode::feather;
-  tessera::fill_fallback fallback = tessera::fill_fallback::estimated_error;
+  tessera::fill_fallback fallback = tessera::fill_fallback::most_sets;
   int candidates = 8;
   double min_patch_fraction = tessera::patch_model_options{}.min_patch_fraction;
   std::uint64_t seed = 1;
@@ -92,7 +92,7 @@ tessera::result<synth_request> parse(const cli::arguments& args) {
   auto feather = args.integer("--feather", static_cast<long long>(r.feather), 0, max_side);
   if (!feather) return feather.error();
   r.feather = static_cast<index_t>(*feather);
-  const std::string fallback = args.str("--fallback", "estimate");
+  const std::string fallback = args.str("--fallback", "sets");
   if (fallback == "overlap")
     r.fallback = tessera::fill_fallback::overlap_error;
   else if (fallback == "estimate")
@@ -254,9 +254,9 @@ std::vector<cli::option_spec> synth_options() {
       {"--feather", "W",
        "feathering: width of the blend band centred in each overlap, 0 = the whole overlap (the paper)"},
       {"--fallback", "RULE",
-       "cells whose four compatible sets share no patch: estimate (default: smallest overlap error, the errors the "
-       "sets miss estimated), sets (the paper: the patch in the most sets) or overlap (missing errors computed "
-       "exactly; slower)"},
+       "cells whose four compatible sets share no patch: sets (default, the paper: the patch in the most sets), "
+       "estimate (smallest overlap error, the errors the sets miss estimated) or overlap (missing errors computed "
+       "exactly; slowest)"},
       {"--candidates", "K", "size of each compatible set, 1 to 64 (default 8, the paper's)"},
       {"--min-patch-fraction", "F",
        "smallest patch side the automatic size tries, as a fraction of the exemplar's smaller side, in (0, 0.5] "
@@ -270,7 +270,7 @@ const cli::registrar reg(
     {.name = "synth",
      .summary = "synthesize a large texture or any window of an infinite one from an exemplar (patch synthesis)",
      .usage = "tessera synth --exemplar E.png --size WxH --out O.png [--seed S] [--threads T] [--patch P] "
-              "[--overlap V] [--seams feather|cut] [--feather W] [--fallback estimate|sets|overlap] [--candidates K] "
+              "[--overlap V] [--seams feather|cut] [--feather W] [--fallback sets|estimate|overlap] [--candidates K] "
               "[--min-patch-fraction F] [--window "
               "X,Y,W,H] "
               "[--source-map M.png] [--repeat N] [--stats]",

@@ -48,7 +48,7 @@ fill_fallback parse_fallback(const std::string& f) {
   if (f == "overlap") return fill_fallback::overlap_error;
   if (f == "estimate") return fill_fallback::estimated_error;
   raise_invalid(
-      "synthesize: fallback must be \"estimate\" (the default), \"sets\" (paper 002) or \"overlap\" (quality "
+      "synthesize: fallback must be \"sets\" (paper 002, the default), \"estimate\" or \"overlap\" (quality "
       "mode), got '" +
       f + "'");
 }
@@ -123,7 +123,7 @@ options or an exemplar the library refuses, with its message.)doc");
       },
       py::arg("width"), py::arg("height"), py::arg("x") = 0, py::arg("y") = 0, py::arg("seed") = 0,
       py::arg("threads") = 0, py::arg("progress") = py::none(), py::arg("seams") = py::none(),
-      py::arg("out") = py::none(), py::arg("fallback") = "estimate", py::arg("fallback_budget") = 8,
+      py::arg("out") = py::none(), py::arg("fallback") = "sets", py::arg("fallback_budget") = 8,
       py::arg("stats") = py::none(), py::arg("feather_width") = 5,
       R"doc(The width x height window at (x, y) of the unbounded texture of this model and `seed`, as an
 H x W x C array of the exemplar's dtype. Any window is a pure function of (model, seed, x, y): windows
@@ -138,10 +138,11 @@ a window beyond the texture plane of +-2^52. `out`: an array to render into inst
 padding allowed); it is returned. Reusing one buffer for many windows avoids the allocation and page
 faults of a new array, which are most of the Python-side cost of a fast synthesis. `fallback`: how a
 vacant cell is filled when its four neighbours' compatible sets share no patch (on photographs nearly
-always): "estimate" (the default: the patch of the union of the four sets with the smallest overlap
-error against all four neighbours, the errors the sets miss estimated from the strips' PCA
-descriptors), "sets" (paper 002: the patch in the most sets) or "overlap" (quality mode: as "estimate"
-with the missing errors computed exactly, a few times slower), as `tessera synth --fallback`; `fallback_budget` (1-256) bounds the overlap errors computed
+always): "sets" (paper 002, the default: the patch in the most sets), "estimate" (the patch of the
+union of the four sets with the smallest overlap error against all four neighbours, the errors the
+sets miss estimated from the strips' PCA descriptors; about 2.4 times the CPU time) or "overlap"
+(quality mode: as "estimate" with the missing errors computed exactly, several times slower), as
+`tessera synth --fallback`; `fallback_budget` (1-256) bounds the overlap errors computed
 per cell in that mode. `stats`: a dict to fill with the statistics `tessera synth --stats` prints
 (cells, placed, filled, empty_intersections, computed_seams, evaluated_errors, fill_overlap_rms) and
 synthesis_ms, the time of the C++ call alone (benchmarks/python_overhead.py compares it with the

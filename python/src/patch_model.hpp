@@ -33,7 +33,7 @@ struct synthesis_request {
   texture_offset origin;
   std::uint64_t seed = 0;
   seam_mode seams = seam_mode::feather;
-  fill_fallback fallback = fill_fallback::estimated_error;
+  fill_fallback fallback = fill_fallback::most_sets;
   int fallback_budget = 8;
   index_t feather_width = 5;  ///< patch_synthesis_options::feather_width
   int threads = 0;

@@ -44,7 +44,7 @@ class PatchModel:
                  progress: Progress = None, min_patch_fraction: float = 0.375) -> None: ...
     def synthesize(self, width: int, height: int, x: int = 0, y: int = 0, seed: int = 0, threads: int = 0,
                    progress: Progress = None, seams: Optional[Literal["feather", "cut"]] = None,
-                   out: Optional[Image] = None, fallback: Literal["estimate", "sets", "overlap"] = "estimate",
+                   out: Optional[Image] = None, fallback: Literal["sets", "estimate", "overlap"] = "sets",
                    fallback_budget: int = 8, stats: Optional[Dict[str, float]] = None,
                    feather_width: int = 5) -> Image:
         """The width x height window at (x, y) of the unbounded texture of (model, seed)."""

@@ -123,14 +123,14 @@ def test_overlap_fallback_matches_the_cli(tmp_path, cli):
 
 
 def test_fallback_rules_and_patch_fraction_match_the_cli(tmp_path, cli):
-    """fallback="estimate" is the default of both (equal to the CLI's default output) and "sets" (the paper's rule)
-    equals `--fallback sets`; min_patch_fraction=0.25 (the paper's size range) equals `--min-patch-fraction 0.25`."""
+    """fallback="sets" (the paper's rule) is the default of both (equal to the CLI's default output), "estimate"
+    equals `--fallback estimate`; min_patch_fraction=0.25 (the paper's size range) equals `--min-patch-fraction 0.25`."""
     m, cli_default = rock_model_and_cli(tmp_path, cli)
     mine = m.synthesize(150, 110, seed=9)
     np.testing.assert_array_equal(mine, cli_default)
-    np.testing.assert_array_equal(mine, m.synthesize(150, 110, seed=9, fallback="estimate", threads=1))
-    _, cli_sets = rock_model_and_cli(tmp_path, cli, "--fallback", "sets")
-    np.testing.assert_array_equal(m.synthesize(150, 110, seed=9, fallback="sets"), cli_sets)
+    np.testing.assert_array_equal(mine, m.synthesize(150, 110, seed=9, fallback="sets", threads=1))
+    _, cli_estimate = rock_model_and_cli(tmp_path, cli, "--fallback", "estimate")
+    np.testing.assert_array_equal(m.synthesize(150, 110, seed=9, fallback="estimate"), cli_estimate)
     _, cli_paper = rock_model_and_cli(tmp_path, cli, "--min-patch-fraction", "0.25")
     paper = tessera.PatchModel(tessera.read_png(str(tmp_path / "ex.png")), min_patch_fraction=0.25)
     np.testing.assert_array_equal(paper.synthesize(150, 110, seed=9), cli_paper)

@@ -212,9 +212,10 @@ TEST_CASE("patch_model: automatic size, executor independence, memory", "[patch_
       const auto x = m.compatible(a, side), y = p.compatible(a, side);
       REQUIRE(std::equal(x.begin(), x.end(), y.begin()));
     }
-  // memory: about n * 4 sides * k * 8 bytes plus the exemplar
+  // memory: about n * 4 sides * k * 8 bytes plus the exemplar, plus two strip descriptors of 9 floats per
+  // strip position (at most about twice as many positions as patches)
   const double per_patch = double(m.memory_bytes() - m.exemplar().size_bytes()) / double(m.num_patches());
-  CHECK(per_patch < 4 * (4 + 8 * 4 + 8 * 8) + 32);
+  CHECK(per_patch < 4 * (4 + 8 * 4 + 8 * 8) + 32 + 2 * 2 * 9 * 4);
   // given sizes skip the size analysis; a given size with overlap 0 runs only the overlap analysis
   const auto given = tessera::build_patch_model(ex, {.patch_width = 16, .patch_height = 14, .overlap = 5}).value();
   CHECK(!given.analysis().has_value());

@@ -620,9 +620,9 @@ TEST_CASE("synthesize: the overlap_error fallback fits filled cells better than 
       }
     }
   CHECK(sum_exact < sum_paper);
-  // the estimated fallback (the default) lands between: better than the paper's rule, at most the exact one's
+  // the estimated fallback (the default) fits better than the paper's rule too (the exact one, limited to
+  // fallback_budget candidates, is not a bound on it)
   CHECK(sum_estimated < sum_paper);
-  CHECK(sum_estimated >= sum_exact * 0.999);
   CHECK(paper.evaluated_errors == 0);
   // bit-identical for any thread count and window
   tessera::thread_pool_executor pool(2);
