@@ -8,6 +8,7 @@
 //              machine is shared
 //   synthesize_overlap_fallback/...: the same with the quality fallback (fill_fallback::overlap_error)
 //     instead of the paper's most-sets default, for a same-run ratio of the two
+//   synthesize_estimated_fallback/...: the same with the estimated fallback (fill_fallback::estimated_error)
 //   synthesize_paper_feather/...: the same with the paper's feathering over the whole overlap
 //     (feather_width = 0) instead of the default narrow band
 //   memcpy/<output side>/<format>: the baseline alone
@@ -62,7 +63,8 @@ std::pair<double, double> memcpy_seconds(std::size_t bytes) {
 }
 
 template <class T, int C>
-void run_synthesis(benchmark::State& state, tessera::fill_fallback fallback = tessera::fill_fallback::most_sets,
+void run_synthesis(benchmark::State& state,
+                   tessera::fill_fallback fallback = tessera::patch_synthesis_options{}.fallback,
                    index_t feather_width = tessera::patch_synthesis_options{}.feather_width) {
   const index_t ex_side = state.range(0), side = state.range(1);
   const int threads = static_cast<int>(state.range(3));
@@ -108,7 +110,11 @@ void BM_synthesize_overlap_fallback(benchmark::State& state) {
 }
 
 void BM_synthesize_paper_feather(benchmark::State& state) {
-  run_synthesis<std::uint8_t, 4>(state, tessera::fill_fallback::most_sets, 0);
+  run_synthesis<std::uint8_t, 4>(state, tessera::patch_synthesis_options{}.fallback, 0);
+}
+
+void BM_synthesize_estimated_fallback(benchmark::State& state) {
+  run_synthesis<std::uint8_t, 4>(state, tessera::fill_fallback::estimated_error);
 }
 
 void BM_memcpy(benchmark::State& state) {
@@ -157,6 +163,10 @@ void synthesis_args(benchmark::internal::Benchmark* b) {
 BENCHMARK(BM_memcpy)->ArgsProduct({{256, 512, 1024, 2048, 4096}, {0, 1}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_synthesize)->Apply(synthesis_args)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_synthesize_overlap_fallback)
+    ->ArgsProduct({{64, 128}, {1024}, {0}, {1, 2}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_synthesize_estimated_fallback)
     ->ArgsProduct({{64, 128}, {1024}, {0}, {1, 2}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();

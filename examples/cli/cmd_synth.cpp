@@ -1,6 +1,6 @@
 // tessera synth: real-time patch synthesis of large textures (paper 002; image/patch_synthesis.hpp).
 //   tessera synth --exemplar E.png --size WxH --out O.png [--seed S] [--threads T] [--patch P]
-//                 [--overlap V] [--seams feather|cut] [--feather W] [--fallback overlap|sets] [--candidates K]
+//                 [--overlap V] [--seams feather|cut] [--feather W] [--fallback sets|estimate|overlap] [--candidates K] [--min-patch-fraction F]
 //                 [--window X,Y,W,H] [--source-map M.png]
 //                 [--repeat N] [--stats]
 #include <algorithm>
@@ -35,6 +35,7 @@ struct synth_request {
   tessera::seam_mode seams = tessera::seam_mode::feather;
   tessera::fill_fallback fallback = tessera::fill_fallback::most_sets;
   int candidates = 8;
+  double min_patch_fraction = tessera::patch_model_options{}.min_patch_fraction;
   std::uint64_t seed = 1;
   int threads = 0, repeat = 1;
   bool stats = false;
@@ -94,8 +95,20 @@ tessera::result<synth_request> parse(const cli::arguments& args) {
   const std::string fallback = args.str("--fallback", "sets");
   if (fallback == "overlap")
     r.fallback = tessera::fill_fallback::overlap_error;
-  else if (fallback != "sets")
-    return status::invalid_argument("--fallback expects overlap or sets, got '" + fallback + "'");
+  else if (fallback == "estimate")
+    r.fallback = tessera::fill_fallback::estimated_error;
+  else if (fallback == "sets")
+    r.fallback = tessera::fill_fallback::most_sets;
+  else
+    return status::invalid_argument("--fallback expects estimate, sets or overlap, got '" + fallback + "'");
+  if (args.has("--min-patch-fraction")) {
+    auto f = args.numbers("--min-patch-fraction", 1);
+    if (!f) return f.error();
+    if (!((*f)[0] > 0 && (*f)[0] <= 0.5))
+      return status::invalid_argument("--min-patch-fraction expects a number in (0, 0.5], got '" +
+                                      args.str("--min-patch-fraction") + "'");
+    r.min_patch_fraction = (*f)[0];
+  }
   auto k = args.integer("--candidates", 8, 1, 64);
   if (!k) return k.error();
   r.candidates = static_cast<int>(*k);
@@ -117,7 +130,8 @@ int run_format(const cli::arguments& args, const synth_request& r) {
                                         .patch_height = r.patch_h,
                                         .overlap = r.overlap,
                                         .candidates = r.candidates,
-                                        .seams = r.seams == tessera::seam_mode::cut};
+                                        .seams = r.seams == tessera::seam_mode::cut,
+                                        .min_patch_fraction = r.min_patch_fraction};
   tessera::result<tessera::patch_model<T, C>> model = status::internal_error("not built");
   const double preprocess_ms = cli::time_ms([&] { model = tessera::build_patch_model(*ex, mo, pool); });
   if (!model) return cli::fail(args, model.error());
@@ -174,7 +188,9 @@ int run_format(const cli::arguments& args, const synth_request& r) {
         .add("filled", st->filled)
         .add("empty_intersections", st->empty_intersections)
         .add("fallback_rate", st->filled > 0 ? static_cast<double>(st->empty_intersections) / st->filled : 0.0)
-        .add("fallback", r.fallback == tessera::fill_fallback::most_sets ? "sets" : "overlap")
+        .add("fallback", r.fallback == tessera::fill_fallback::most_sets         ? "sets"
+                         : r.fallback == tessera::fill_fallback::estimated_error ? "estimate"
+                                                                                 : "overlap")
         .add("evaluated_errors", st->evaluated_errors)
         .add("fill_overlap_rms", st->fill_overlap_rms)
         .add("candidates", model->candidates())
@@ -238,9 +254,13 @@ std::vector<cli::option_spec> synth_options() {
       {"--feather", "W",
        "feathering: width of the blend band centred in each overlap, 0 = the whole overlap (the paper)"},
       {"--fallback", "RULE",
-       "cells whose four compatible sets share no patch: sets (default, the paper: the patch in the most sets) "
-       "or overlap (smallest true overlap error; slower)"},
+       "cells whose four compatible sets share no patch: sets (default, the paper: the patch in the most sets), "
+       "estimate (smallest overlap error, the errors the sets miss estimated) or overlap (missing errors computed "
+       "exactly; slowest)"},
       {"--candidates", "K", "size of each compatible set, 1 to 64 (default 8, the paper's)"},
+      {"--min-patch-fraction", "F",
+       "smallest patch side the automatic size tries, as a fraction of the exemplar's smaller side, in (0, 0.5] "
+       "(default 0.375; 0.25 is the paper's range)"},
       {"--window", "X,Y,W,H", "render the W x H window at (X, Y) of the infinite texture instead of --size"},
       {"--source-map", "M.png", "also write the exemplar coordinates of every pixel (16-bit RGB: red x, green y)"}};
   return o;
@@ -250,7 +270,8 @@ const cli::registrar reg(
     {.name = "synth",
      .summary = "synthesize a large texture or any window of an infinite one from an exemplar (patch synthesis)",
      .usage = "tessera synth --exemplar E.png --size WxH --out O.png [--seed S] [--threads T] [--patch P] "
-              "[--overlap V] [--seams feather|cut] [--feather W] [--fallback overlap|sets] [--candidates K] [--window "
+              "[--overlap V] [--seams feather|cut] [--feather W] [--fallback sets|estimate|overlap] [--candidates K] "
+              "[--min-patch-fraction F] [--window "
               "X,Y,W,H] "
               "[--source-map M.png] [--repeat N] [--stats]",
      .options = synth_options(),

@@ -22,8 +22,10 @@ decltype(auto) by_type(channel_type t, F&& f) {
 
 any_patch_model build(const py::array& exemplar, index_t patch_width, index_t patch_height, index_t overlap,
                       int candidates, bool exact_sets, int pca_dims, index_t pca_samples, int search_pool,
-                      int refine_iterations, bool seams, int threads, const py::object& progress) {
+                      int refine_iterations, bool seams, int threads, const py::object& progress,
+                      double min_patch_fraction) {
   patch_model_options o;
+  o.min_patch_fraction = min_patch_fraction;
   o.patch_width = patch_width;
   o.patch_height = patch_height;
   o.overlap = overlap;
@@ -44,7 +46,11 @@ any_patch_model build(const py::array& exemplar, index_t patch_width, index_t pa
 fill_fallback parse_fallback(const std::string& f) {
   if (f == "sets") return fill_fallback::most_sets;
   if (f == "overlap") return fill_fallback::overlap_error;
-  raise_invalid("synthesize: fallback must be \"sets\" (paper 002) or \"overlap\" (quality mode), got '" + f + "'");
+  if (f == "estimate") return fill_fallback::estimated_error;
+  raise_invalid(
+      "synthesize: fallback must be \"sets\" (paper 002, the default), \"estimate\" or \"overlap\" (quality "
+      "mode), got '" +
+      f + "'");
 }
 
 seam_mode parse_seams(const py::object& seams, const any_patch_model& m) {
@@ -93,7 +99,7 @@ options or an exemplar the library refuses, with its message.)doc");
         py::arg("overlap") = 0, py::arg("candidates") = 8, py::arg("exact_sets") = false, py::arg("pca_dims") = 8,
         py::arg("pca_samples") = 384, py::arg("search_pool") = 16, py::arg("refine_iterations") = 4,
         py::arg("seams") = false, py::arg("threads") = 0, py::arg("progress") = py::none(),
-        "Builds the model of `exemplar` (see the class documentation).");
+        py::arg("min_patch_fraction") = 0.375, "Builds the model of `exemplar` (see the class documentation).");
   c.def(
       "synthesize",
       [](const any_patch_model& self, index_t width, index_t height, index_t x, index_t y, std::uint64_t seed,
@@ -132,9 +138,11 @@ a window beyond the texture plane of +-2^52. `out`: an array to render into inst
 padding allowed); it is returned. Reusing one buffer for many windows avoids the allocation and page
 faults of a new array, which are most of the Python-side cost of a fast synthesis. `fallback`: how a
 vacant cell is filled when its four neighbours' compatible sets share no patch (on photographs nearly
-always): "sets" (paper 002, the default: the patch in the most sets) or "overlap" (quality mode: the
-patch of the union with the smallest true overlap error against all four neighbours, a few times
-slower), as `tessera synth --fallback`; `fallback_budget` (1-256) bounds the overlap errors computed
+always): "sets" (paper 002, the default: the patch in the most sets), "estimate" (the patch of the
+union of the four sets with the smallest overlap error against all four neighbours, the errors the
+sets miss estimated from the strips' PCA descriptors; about 2.4 times the CPU time) or "overlap"
+(quality mode: as "estimate" with the missing errors computed exactly, several times slower), as
+`tessera synth --fallback`; `fallback_budget` (1-256) bounds the overlap errors computed
 per cell in that mode. `stats`: a dict to fill with the statistics `tessera synth --stats` prints
 (cells, placed, filled, empty_intersections, computed_seams, evaluated_errors, fill_overlap_rms) and
 synthesis_ms, the time of the C++ call alone (benchmarks/python_overhead.py compares it with the

@@ -41,10 +41,10 @@ class PatchModel:
     def __init__(self, exemplar: Image, *, patch_width: int = 0, patch_height: int = 0, overlap: int = 0,
                  candidates: int = 8, exact_sets: bool = False, pca_dims: int = 8, pca_samples: int = 384,
                  search_pool: int = 16, refine_iterations: int = 4, seams: bool = False, threads: int = 0,
-                 progress: Progress = None) -> None: ...
+                 progress: Progress = None, min_patch_fraction: float = 0.375) -> None: ...
     def synthesize(self, width: int, height: int, x: int = 0, y: int = 0, seed: int = 0, threads: int = 0,
                    progress: Progress = None, seams: Optional[Literal["feather", "cut"]] = None,
-                   out: Optional[Image] = None, fallback: Literal["sets", "overlap"] = "sets",
+                   out: Optional[Image] = None, fallback: Literal["sets", "estimate", "overlap"] = "sets",
                    fallback_budget: int = 8, stats: Optional[Dict[str, float]] = None,
                    feather_width: int = 5) -> Image:
         """The width x height window at (x, y) of the unbounded texture of (model, seed)."""

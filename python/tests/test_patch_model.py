@@ -122,6 +122,24 @@ def test_overlap_fallback_matches_the_cli(tmp_path, cli):
         m.synthesize(8, 8, fallback="overlap", fallback_budget=0)
 
 
+def test_fallback_rules_and_patch_fraction_match_the_cli(tmp_path, cli):
+    """fallback="sets" (the paper's rule) is the default of both (equal to the CLI's default output), "estimate"
+    equals `--fallback estimate`; min_patch_fraction=0.25 (the paper's size range) equals `--min-patch-fraction 0.25`."""
+    m, cli_default = rock_model_and_cli(tmp_path, cli)
+    mine = m.synthesize(150, 110, seed=9)
+    np.testing.assert_array_equal(mine, cli_default)
+    np.testing.assert_array_equal(mine, m.synthesize(150, 110, seed=9, fallback="sets", threads=1))
+    _, cli_estimate = rock_model_and_cli(tmp_path, cli, "--fallback", "estimate")
+    np.testing.assert_array_equal(m.synthesize(150, 110, seed=9, fallback="estimate"), cli_estimate)
+    _, cli_paper = rock_model_and_cli(tmp_path, cli, "--min-patch-fraction", "0.25")
+    paper = tessera.PatchModel(tessera.read_png(str(tmp_path / "ex.png")), min_patch_fraction=0.25)
+    np.testing.assert_array_equal(paper.synthesize(150, 110, seed=9), cli_paper)
+    assert paper.patch_width <= m.patch_width
+    for bad in (0.0, 0.6, float("nan")):
+        with pytest.raises(ValueError, match="min_patch_fraction"):
+            tessera.PatchModel(tessera.exemplar("rock", 32, 32), min_patch_fraction=bad)
+
+
 def test_feather_width_matches_the_cli(tmp_path, cli):
     """feather_width equals `tessera synth --feather W`; 5 is the default; a band narrower than the
     overlap (4 pixels here) gives another texture than 0 (the paper's whole-overlap blend), a band as

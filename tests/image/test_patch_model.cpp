@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -211,9 +212,10 @@ TEST_CASE("patch_model: automatic size, executor independence, memory", "[patch_
       const auto x = m.compatible(a, side), y = p.compatible(a, side);
       REQUIRE(std::equal(x.begin(), x.end(), y.begin()));
     }
-  // memory: about n * 4 sides * k * 8 bytes plus the exemplar
+  // memory: about n * 4 sides * k * 8 bytes plus the exemplar, plus two strip descriptors of 9 floats per
+  // strip position (at most about twice as many positions as patches)
   const double per_patch = double(m.memory_bytes() - m.exemplar().size_bytes()) / double(m.num_patches());
-  CHECK(per_patch < 4 * (4 + 8 * 4 + 8 * 8) + 32);
+  CHECK(per_patch < 4 * (4 + 8 * 4 + 8 * 8) + 32 + 2 * 2 * 9 * 4);
   // given sizes skip the size analysis; a given size with overlap 0 runs only the overlap analysis
   const auto given = tessera::build_patch_model(ex, {.patch_width = 16, .patch_height = 14, .overlap = 5}).value();
   CHECK(!given.analysis().has_value());
@@ -313,4 +315,67 @@ TEST_CASE("patch_model: the deprecated patch_side spelling reads as core's sides
   CHECK(tessera::side_name(tessera::side_west) == "west");
   CHECK(tessera::side_name(4) == "invalid side");
   CHECK(tessera::side_name(-1) == "invalid side");
+}
+
+TEST_CASE("patch_model: estimated overlap errors from the strip descriptors", "[patch_model]") {
+  // strips of 3 values (patch 2 x 2, overlap 1, one channel) lie in the PCA span (8 dimensions):
+  // the estimate is the exact error up to float rounding
+  const auto grey = exemplar<std::uint8_t, 1>(tessera::exemplar_kind::sand, 16);
+  const auto small = tessera::build_patch_model(grey, {.patch_width = 2, .patch_height = 2, .overlap = 1}).value();
+  for (index_t a = 0; a < small.num_patches(); a += 7)
+    for (index_t b = 0; b < small.num_patches(); b += 5)
+      for (int side : all_sides) {
+        const double exact = small.overlap_error(a, b, side), est = small.estimated_error(a, b, side);
+        INFO("a " << a << " b " << b << " side " << side);
+        CHECK(est == Approx(exact).margin(0.5).epsilon(1e-3));
+      }
+  // larger strips: never negative, and on average close to the true error of unrelated pairs (the
+  // projections' distance plus both residuals)
+  const auto ex = exemplar(tessera::exemplar_kind::sand, 48);
+  const auto m = tessera::build_patch_model(ex, {.patch_width = 12, .patch_height = 12, .overlap = 4}).value();
+  double sum_exact = 0, sum_est = 0;
+  for (index_t a = 0; a < m.num_patches(); a += 37)
+    for (index_t b = 3; b < m.num_patches(); b += 41)
+      for (int side : all_sides) {
+        const double e = m.estimated_error(a, b, side);
+        CHECK(e >= 0);
+        sum_est += e;
+        sum_exact += m.overlap_error(a, b, side);
+      }
+  INFO("estimated " << sum_est << " exact " << sum_exact);
+  CHECK(sum_est > 0.7 * sum_exact);
+  CHECK(sum_est < 1.3 * sum_exact);
+  // a flat exemplar: every estimate is 0
+  tessera::image_buffer<std::uint8_t, 3> flat(24, 24, {90, 90, 90});
+  const auto f = tessera::build_patch_model(flat, {.patch_width = 6, .patch_height = 6, .overlap = 2}).value();
+  for (int side : all_sides) CHECK(f.estimated_error(0, f.num_patches() - 1, side) == 0.0);
+}
+
+TEST_CASE("patch_model: min_patch_fraction bounds the automatic size", "[patch_model]") {
+  const auto ex = exemplar(tessera::exemplar_kind::sand, 64);
+  const auto ours = tessera::build_patch_model(ex).value();  // default 0.375: sides 24 to 32
+  CHECK(ours.patch_width() >= 24);
+  CHECK(ours.patch_height() >= 24);
+  REQUIRE(ours.analysis().has_value());
+  for (const auto& s : ours.analysis()->sizes) CHECK(std::min(s.width, s.height) >= 24);
+  const auto paper = tessera::build_patch_model(ex, {.min_patch_fraction = 0.25}).value();  // the paper's 16 to 32
+  CHECK(paper.analysis()->sizes.front().width == 16);
+  // an explicit analysis range wins; a max_size below the fraction's side lowers it
+  {
+    tessera::patch_model_options o;
+    o.analysis.max_size = 20;
+    const auto capped = tessera::build_patch_model(ex, o).value();
+    CHECK(capped.patch_width() <= 20);
+  }
+  for (double bad : {0.0, -1.0, 0.51, std::numeric_limits<double>::quiet_NaN()}) {
+    auto r = tessera::build_patch_model(ex, {.min_patch_fraction = bad});
+    REQUIRE(!r);
+    CHECK(r.error().code() == tessera::status_code::invalid_argument);
+    CHECK(r.error().message().find("min_patch_fraction") != std::string::npos);
+  }
+  // tiny exemplars still get a size (8 x 8: sides 3 to 4) or a clear status, never a crash
+  for (index_t side : {8, 9, 12}) {
+    auto r = tessera::build_patch_model(exemplar(tessera::exemplar_kind::sand, side));
+    if (!r) CHECK(!r.error().message().empty());
+  }
 }

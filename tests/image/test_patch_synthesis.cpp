@@ -469,11 +469,11 @@ std::pair<std::vector<index_t>, index_t> brute_fill(const M& m, index_t west, in
   return {inter, best};
 }
 
-// Brute-force overlap_error fallback: the member of the union of the four facing sets with the smallest
-// true overlap error (overlap_error against each neighbour, summed), ties by the smaller index. Returns
-// the patch and its total.
-template <class M>
-std::pair<index_t, double> brute_overlap_fill(const M& m, index_t west, index_t east, index_t north, index_t south) {
+// The member of the union of the four facing sets of a vacant cell with the smallest total(q, owners,
+// facing), ties by the smaller index, and its total.
+template <class M, class Total>
+std::pair<index_t, double> brute_union_fill(const M& m, index_t west, index_t east, index_t north, index_t south,
+                                            Total&& total_of) {
   const index_t owners[4] = {west, east, north, south};
   const int facing[4] = {tessera::side_east, tessera::side_west, tessera::side_south, tessera::side_north};
   std::vector<index_t> candidates;
@@ -484,11 +484,47 @@ std::pair<index_t, double> brute_overlap_fill(const M& m, index_t west, index_t 
   index_t best = -1;
   double best_total = std::numeric_limits<double>::infinity();
   for (index_t q : candidates) {
-    double total = 0;
-    for (int s = 0; s < 4; ++s) total += m.overlap_error(owners[s], q, facing[s]);
+    const double total = total_of(q, owners, facing);
     if (total < best_total) best = q, best_total = total;  // ascending: ties keep the smaller index
   }
   return {best, best_total};
+}
+
+// Brute-force overlap_error fallback: the member of the union of the four facing sets with the smallest
+// true overlap error (overlap_error against each neighbour, summed), ties by the smaller index. Returns
+// the patch and its total.
+template <class M>
+std::pair<index_t, double> brute_overlap_fill(const M& m, index_t west, index_t east, index_t north, index_t south) {
+  return brute_union_fill(m, west, east, north, south, [&](index_t q, const index_t* owners, const int* facing) {
+    double total = 0;
+    for (int s = 0; s < 4; ++s) total += m.overlap_error(owners[s], q, facing[s]);
+    return total;
+  });
+}
+
+// Brute-force estimated_error fallback: the member of the union of the four facing sets with the
+// smallest total, the errors a set holds (summed west, east, north, south) plus, for each set not
+// holding it, patch_model::estimated_error (in the same order); ties by the smaller index.
+template <class M>
+index_t brute_estimated_fill(const M& m, index_t west, index_t east, index_t north, index_t south) {
+  return brute_union_fill(m, west, east, north, south,
+                          [&](index_t q, const index_t* owners, const int* facing) {
+                            double known = 0;
+                            bool held[4] = {};
+                            for (int s = 0; s < 4; ++s) {
+                              const auto set = m.compatible(owners[s], facing[s]);
+                              const auto errors = m.compatible_errors(owners[s], facing[s]);
+                              const auto it = std::find(set.begin(), set.end(), static_cast<std::uint32_t>(q));
+                              held[s] = it != set.end();
+                              if (held[s])
+                                known += static_cast<double>(errors[static_cast<std::size_t>(it - set.begin())]);
+                            }
+                            double total = known;
+                            for (int s = 0; s < 4; ++s)
+                              if (!held[s]) total += m.estimated_error(owners[s], q, facing[s]);
+                            return total;
+                          })
+      .first;
 }
 
 }  // namespace
@@ -525,6 +561,8 @@ TEST_CASE("synthesize: a vacant cell's patch is in its neighbours' set intersect
           ++empty;
           if (rule == tessera::fill_fallback::most_sets) {
             CHECK(g.at(i, j) == fallback);
+          } else if (rule == tessera::fill_fallback::estimated_error) {
+            CHECK(g.at(i, j) == brute_estimated_fill(m, w, e, n, s));
           } else {
             const auto [best, total] = brute_overlap_fill(m, w, e, n, s);
             INFO("chosen " << g.at(i, j) << ", brute force " << best << " (total " << total << ")");
@@ -537,11 +575,12 @@ TEST_CASE("synthesize: a vacant cell's patch is in its neighbours' set intersect
       }
     CHECK(stats.empty_intersections == empty);
     CHECK(stats.filled == empty + intersected);
-    if (rule == tessera::fill_fallback::most_sets) CHECK(stats.evaluated_errors == 0);
+    if (rule != tessera::fill_fallback::overlap_error) CHECK(stats.evaluated_errors == 0);
     if (rule == tessera::fill_fallback::overlap_error && empty > 0) CHECK(stats.evaluated_errors > 0);
     return std::pair{empty, intersected};
   };
-  for (auto rule : {tessera::fill_fallback::most_sets, tessera::fill_fallback::overlap_error}) {
+  for (auto rule : {tessera::fill_fallback::most_sets, tessera::fill_fallback::overlap_error,
+                    tessera::fill_fallback::estimated_error}) {
     CHECK(check(bricks_model(), 3, rule).second > 0);  // intersections were checked
     CHECK(check(small_k, 4, rule).first > 0);          // and fallbacks
   }
@@ -558,7 +597,7 @@ TEST_CASE("synthesize: the overlap_error fallback fits filled cells better than 
   tessera::image_buffer<std::uint8_t, 3> a(256, 256), b(256, 256);
   const tessera::patch_synthesis_options exact_opts{.seed = 9, .fallback = tessera::fill_fallback::overlap_error};
   const auto exact = tessera::synthesize(m, a, exact_opts).value();
-  const auto paper = tessera::synthesize(m, b, {.seed = 9}).value();  // the default: the paper's rule
+  const auto paper = tessera::synthesize(m, b, {.seed = 9, .fallback = tessera::fill_fallback::most_sets}).value();
   REQUIRE(exact.empty_intersections > exact.filled / 2);
   CHECK(exact.fill_overlap_rms > 0);
   CHECK(exact.fill_overlap_rms < 0.5);
@@ -566,19 +605,24 @@ TEST_CASE("synthesize: the overlap_error fallback fits filled cells better than 
   // the paper's rule knows all four errors only for the intersected cells; compare through brute force
   const auto g_exact = recover_cells(m, exact_opts, 0, 0, 16, 16);
   const auto g_paper = recover_cells(m, {.seed = 9, .fallback = tessera::fill_fallback::most_sets}, 0, 0, 16, 16);
-  double sum_exact = 0, sum_paper = 0;
+  const auto g_estimated =
+      recover_cells(m, {.seed = 9, .fallback = tessera::fill_fallback::estimated_error}, 0, 0, 16, 16);
+  double sum_exact = 0, sum_paper = 0, sum_estimated = 0;
   for (index_t j = 1; j < 15; ++j)
     for (index_t i = 1; i < 15; ++i) {
       if (((i + j) & 1) == 0) continue;
       const int facing[4] = {tessera::side_east, tessera::side_west, tessera::side_south, tessera::side_north};
-      for (const auto* g : {&g_exact, &g_paper}) {
+      for (const auto* g : {&g_exact, &g_paper, &g_estimated}) {
         const index_t owners[4] = {g->at(i - 1, j), g->at(i + 1, j), g->at(i, j - 1), g->at(i, j + 1)};
         double total = 0;
         for (int s = 0; s < 4; ++s) total += m.overlap_error(owners[s], g->at(i, j), facing[s]);
-        (g == &g_exact ? sum_exact : sum_paper) += total;
+        (g == &g_exact ? sum_exact : g == &g_paper ? sum_paper : sum_estimated) += total;
       }
     }
   CHECK(sum_exact < sum_paper);
+  // the estimated fallback (the default) fits better than the paper's rule too (the exact one, limited to
+  // fallback_budget candidates, is not a bound on it)
+  CHECK(sum_estimated < sum_paper);
   CHECK(paper.evaluated_errors == 0);
   // bit-identical for any thread count and window
   tessera::thread_pool_executor pool(2);

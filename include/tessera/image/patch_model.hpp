@@ -55,7 +55,11 @@ struct patch_model_options {
   int refine_iterations = 4;  ///< approximate sets: coherence propagation rounds after the kd-tree search
   bool seams = false;         ///< also precompute a minimum-error seam for every compatible pair
   patch_size_options analysis = {};  ///< options of the size analysis when a size or the overlap is 0
-  tessera::progress progress = {};   ///< fraction done; return false (or raise the token) to cancel
+  /// Smallest patch side the size analysis tries, as a fraction of the exemplar's smaller side, when
+  /// `analysis.min_size` is 0: 0.375 (ours; on photographs the paper's 1/4 breaks the structure at the
+  /// scale of the patches, docs/patch_synthesis.md "Patch size"); 0.25 is paper 002 §2.1's range. In (0, 0.5].
+  double min_patch_fraction = 0.375;
+  tessera::progress progress = {};  ///< fraction done; return false (or raise the token) to cancel
 };
 
 namespace detail {
@@ -163,6 +167,31 @@ class patch_model {
     return bounded_error(a, b, side, std::numeric_limits<double>::infinity());
   }
 
+  /// Estimated overlap_error(a, b, side), from the strips' PCA descriptors kept by the model: the
+  /// squared distance of the two overlap strips' projections on the model's PCA basis (pca_dims) plus
+  /// both strips' residuals (their squared distances to that subspace, taken as uncorrelated). Cheap (d +
+  /// 1 values per strip); used by the estimated fallback of synthesis (fill_fallback::estimated_error).
+  [[nodiscard]] double estimated_error(index_t a, index_t b, int side) const noexcept {
+    const float* sa = strip_descriptor(a, side);
+    const float* sb = strip_descriptor(b, (side + 2) % 4);
+    return strips_[side == side_east || side == side_west ? 0 : 1].estimate(sa, sb);
+  }
+  /// The descriptor of one side's overlap strip of a patch (d projections and the residual); internal
+  /// layout, for estimated_error and synthesis.
+  [[nodiscard]] const float* strip_descriptor(index_t patch, int side) const noexcept {
+    const patch_origin o = origin(patch);
+    switch (side) {
+      case side_east: return strips_[0].at(o.x + pw_, o.y);
+      case side_west: return strips_[0].at(o.x, o.y);
+      case side_south: return strips_[1].at(o.x, o.y + ph_);
+      default: return strips_[1].at(o.x, o.y);
+    }
+  }
+  /// The distance estimate between two strip descriptors of a side's family (see estimated_error).
+  [[nodiscard]] double descriptor_distance(const float* a, const float* b, int side) const noexcept {
+    return strips_[side == side_east || side == side_west ? 0 : 1].estimate(a, b);
+  }
+
   /// Phases are numbered py * patch_width + px.
   [[nodiscard]] index_t num_phases() const noexcept { return pw_ * ph_; }
   /// The phase of a patch: its origin modulo the patch size.
@@ -203,7 +232,7 @@ class patch_model {
     for (int s = 0; s < 4; ++s)
       b += compat_[s].size() * sizeof(std::uint32_t) + worst_.size() * sizeof(float) / 4 +
            by_index_[s].size() * sizeof(indexed_candidate) + seams_[s].size();
-    return b + sizeof(*this);
+    return b + strips_[0].bytes() + strips_[1].bytes() + sizeof(*this);
   }
 
  private:
@@ -224,6 +253,7 @@ class patch_model {
   double alignment_ = 0;
   std::vector<phase_offset> phase_order_;
   std::vector<std::uint8_t> seams_[4];
+  detail::strip_descriptors strips_[2];  ///< vertical and horizontal overlap strips, every exemplar position
   std::optional<patch_size_analysis> analysis_;
 };
 
@@ -242,6 +272,12 @@ struct patch_model_builder {
     if (m.pw_ == 0 || m.ph_ == 0 || m.v_ == 0) {  // step 1: the size analysis (§2.1)
       patch_size_options a = opts.analysis;
       if (!a.progress.callback && a.progress.token == nullptr) a.progress.token = opts.progress.token;
+      if (a.min_size == 0) {  // at least 2, at most the largest side the analysis tries
+        const index_t largest = a.max_size > 0 ? a.max_size : std::max<index_t>(2, std::min(W, H) / 2);
+        a.min_size =
+            std::clamp<index_t>(static_cast<index_t>(opts.min_patch_fraction * static_cast<double>(std::min(W, H))), 2,
+                                std::max<index_t>(2, largest));
+      }
       auto analysis = (m.pw_ == 0 || m.ph_ == 0) ? analyze_patch_size(m.exemplar_, a, exec)
                                                  : analyze_overlap(m.exemplar_, m.pw_, m.ph_, a);
       if (!analysis) return analysis.error();
@@ -300,9 +336,9 @@ struct patch_model_builder {
     const patch_geometry g{pw, ph, v, m.nx_, m.ny_};
     const compatible_set_options so{
         k, opts.exact_sets, opts.pca_dims, opts.pca_samples, opts.search_pool, opts.refine_iterations};
-    auto sets = compatible_sets(m.exemplar_, g, so, exec, [&](double f) {
-      return opts.progress.report(0.05 + 0.8 * f, "patch model: compatible sets");
-    });
+    auto sets = compatible_sets(
+        m.exemplar_, g, so, exec,
+        [&](double f) { return opts.progress.report(0.05 + 0.8 * f, "patch model: compatible sets"); }, m.strips_);
     if (sets.empty()) return status::cancelled();
     m.worst_.resize(to_size(n * 4));
     for (int si = 0; si < 4; ++si) {
@@ -373,6 +409,9 @@ auto build_patch_model(const I& exemplar, const patch_model_options& opts = {}, 
     return status::invalid_argument(detail::cat("build_patch_model: pca_dims must be in [1, 64], got ", opts.pca_dims));
   if (opts.pca_samples < 2)
     return status::invalid_argument(detail::cat("build_patch_model: pca_samples must be >= 2, got ", opts.pca_samples));
+  if (!(opts.min_patch_fraction > 0 && opts.min_patch_fraction <= 0.5))
+    return status::invalid_argument(
+        detail::cat("build_patch_model: min_patch_fraction must be in (0, 0.5], got ", opts.min_patch_fraction));
   if (opts.search_pool < 1 || opts.refine_iterations < 0 || opts.refine_iterations > 64)
     return status::invalid_argument(
         detail::cat("build_patch_model: search_pool must be >= 1 and refine_iterations in [0, 64], got ",

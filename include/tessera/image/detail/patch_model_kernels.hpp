@@ -85,6 +85,7 @@ struct strip_family {
   using row_major = Eigen::Matrix<real, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
   matrix basis;                   ///< D x d
   std::vector<double> projected;  ///< count_x * count_y rows of d values
+  std::vector<double> residual;   ///< per window: its squared distance to the PCA subspace (centred strips)
   int d = 0;
 
   void gather(const image_buffer<T, C>& img, index_t x, index_t y, double* out) const {
@@ -112,7 +113,12 @@ struct strip_family {
     }
     basis = pca_basis(matrix(sample), dims);
     d = static_cast<int>(basis.cols());
+    // the sample mean and its projection, for each window's residual |x - mean|^2 - |B^T (x - mean)|^2
+    // (the basis is orthonormal): what the d projections miss of the strip
+    const Eigen::Matrix<real, 1, Eigen::Dynamic> mean = sample.colwise().mean();
+    const Eigen::Matrix<real, 1, Eigen::Dynamic> mean_proj = mean * basis;
     projected.assign(to_size(n * d), 0.0);
+    residual.assign(to_size(n), 0.0);
     constexpr index_t block = 128;
     exec.parallel_for(0, (n + block - 1) / block, [&](index_t b) {
       const index_t first = b * block, last = std::min(n, first + block);
@@ -120,11 +126,47 @@ struct strip_family {
       for (index_t i = first; i < last; ++i) gather(img, i % count_x, i / count_x, x.row(i - first).data());
       Eigen::Map<row_major> out(projected.data() + first * d, last - first, d);
       out.noalias() = x * basis;
+      for (index_t i = first; i < last; ++i) {
+        const real total = (x.row(i - first) - mean).squaredNorm();
+        const real in_span = (out.row(i - first) - mean_proj).squaredNorm();
+        residual[to_size(i)] = std::max(0.0, static_cast<double>(total - in_span));
+      }
     });
   }
   [[nodiscard]] const double* projection(index_t x, index_t y) const {
     return projected.data() + (y * count_x + x) * d;
   }
+};
+
+/// The strips of one family in the compact form the estimated fallback of synthesis reads: per window
+/// (x, y), its d PCA projections and its residual (strip_family), as float.
+struct strip_descriptors {
+  index_t count_x = 0, count_y = 0;
+  int d = 0;
+  std::vector<float> values;  ///< count_x * count_y windows of d + 1 floats
+  template <class T, int C>
+  static strip_descriptors of(const strip_family<T, C>& f) {
+    strip_descriptors s{f.count_x, f.count_y, f.d, {}};
+    const index_t n = f.count_x * f.count_y, stride = f.d + 1;
+    s.values.resize(to_size(n * stride));
+    for (index_t i = 0; i < n; ++i) {
+      for (int j = 0; j < f.d; ++j)
+        s.values[to_size(i * stride + j)] = static_cast<float>(f.projected[to_size(i * f.d + j)]);
+      s.values[to_size(i * stride + f.d)] = static_cast<float>(f.residual[to_size(i)]);
+    }
+    return s;
+  }
+  [[nodiscard]] const float* at(index_t x, index_t y) const noexcept {
+    return values.data() + (y * count_x + x) * (d + 1);
+  }
+  /// Estimated squared error between two windows: the distance of their projections plus both residuals
+  /// (what the projections miss, taken as uncorrelated).
+  [[nodiscard]] double estimate(const float* a, const float* b) const noexcept {
+    float e = a[d] + b[d];
+    for (int j = 0; j < d; ++j) e += (a[j] - b[j]) * (a[j] - b[j]);
+    return static_cast<double>(e);
+  }
+  [[nodiscard]] std::size_t bytes() const noexcept { return values.size() * sizeof(float); }
 };
 
 /// One round of coherence propagation over approximate compatible sets (the k-coherence idea of paper

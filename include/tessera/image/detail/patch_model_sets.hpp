@@ -94,11 +94,16 @@ struct side_sets {
 /// not depend on the executor.
 template <class T, int C, class Ex, class Report>
 std::vector<side_sets> compatible_sets(const image_buffer<T, C>& ex, const patch_geometry& g,
-                                       const compatible_set_options& o, Ex&& exec, Report&& report) {
+                                       const compatible_set_options& o, Ex&& exec, Report&& report,
+                                       strip_descriptors* descriptors = nullptr) {
   const index_t W = ex.width(), H = ex.height(), n = g.nx * g.ny, k = o.k;
   strip_family<T, C> vertical, horizontal;
   vertical.build(ex, g.v, g.ph + g.v, W - g.v + 1, g.ny, o.pca_dims, o.pca_samples, exec);
   horizontal.build(ex, g.pw + g.v, g.v, g.nx, H - g.v + 1, o.pca_dims, o.pca_samples, exec);
+  if (descriptors != nullptr) {
+    descriptors[0] = strip_descriptors::of(vertical);
+    descriptors[1] = strip_descriptors::of(horizontal);
+  }
   if (!report(0.1)) return {};
   double max_value = 0;
   for (index_t i = 0; i < W * H * C; ++i) max_value = std::max(max_value, std::abs(static_cast<double>(ex.data()[i])));

@@ -34,9 +34,10 @@ struct plan_counts {
 
 /// How fill_cell picks a patch when the four compatible sets have no common member.
 struct fill_policy {
-  bool exact = false;  ///< true: smallest true overlap error against all four neighbours; false: the paper's
-                       ///< "present in the most sets" rule with estimated errors
-  int budget = 8;      ///< exact: at most this many candidates get their missing errors computed
+  bool exact = false;      ///< true: smallest true overlap error against all four neighbours
+  bool estimated = false;  ///< (when not exact) smallest overlap error, the errors the sets miss estimated from
+                           ///< the strips' PCA descriptors; both false: the paper's "present in the most sets"
+  int budget = 8;          ///< exact: at most this many candidates get their missing errors computed
 };
 
 /// The decisions for a window [ox, ox + w) x [oy, oy + h) of the infinite texture. Cell (i, j) holds a
@@ -111,8 +112,11 @@ struct fill_result {
 ///    ties by index), stopping when the next lower bound exceeds the best total or after
 ///    `policy.budget` candidates; equal totals go to the smaller index. With exact sets and a budget of
 ///    at least the union's size this is the exact minimum over the union (tests check it by brute force);
-///  - otherwise (the default) the paper's rule: the patch appearing in the most sets; ties go to the smallest estimated
-///    error (the lower bound above), then the smallest index.
+///  - policy.estimated (fill_fallback::estimated_error): the same minimum over the union, every error the
+///    sets miss estimated from the two strips' descriptors (patch_model::estimated_error) instead of
+///    computed; equal totals go to the smaller index;
+///  - otherwise the paper's rule: the patch appearing in the most sets; ties go to the smallest
+///    lower bound above, then the smallest index.
 template <Channel T, int C>
 fill_result fill_cell(const patch_model<T, C>& m, std::uint32_t west, std::uint32_t east, std::uint32_t north,
                       std::uint32_t south, const counter_rng& rng, index_t i, index_t j,
@@ -176,6 +180,24 @@ fill_result fill_cell(const patch_model<T, C>& m, std::uint32_t west, std::uint3
   if (ni > 0) {
     const auto r = to_size(rng.below(static_cast<std::uint64_t>(ni), i, j));
     return {inter[r], false, true, 0, inter_error[r]};
+  }
+  if (policy.estimated && !policy.exact) {
+    // known errors plus, for each set missing the candidate, the descriptor estimate of its error
+    const float* own[4];
+    for (int s = 0; s < 4; ++s) own[s] = m.strip_descriptor(owners[s], facing[s]);
+    fill_result out{uni[0].patch, true, false, 0, std::numeric_limits<double>::infinity()};
+    for (index_t c = 0; c < nu; ++c) {
+      const member& u = uni[c];
+      double total = u.known;
+      for (int s = 0; s < 4; ++s)
+        if ((u.mask & (1u << s)) == 0)
+          total += m.descriptor_distance(own[s], m.strip_descriptor(u.patch, (facing[s] + 2) % 4), facing[s]);
+      if (total < out.error) {  // union in index order: equal totals keep the smaller index
+        out.error = total;
+        out.patch = u.patch;
+      }
+    }
+    return out;
   }
   if (!policy.exact) return {best, true, false, 0, best_error};
 
