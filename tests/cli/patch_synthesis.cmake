@@ -63,7 +63,7 @@ tessera_cli_test(NAME "cli: synth with an unknown seam mode fails" CODE 1 REGEX 
   COMMAND synth --exemplar sand --size 8x8 --seams zigzag --out ${_o}/bad.png)
 tessera_cli_test(NAME "cli: synth with a bad seed fails" CODE 2 REGEX "--seed expects an integer in \\[0, 2\\^64 - 1\\], got '-3'"
   COMMAND synth --exemplar sand --size 8x8 --seed -3 --out ${_o}/bad.png)
-tessera_cli_test(NAME "cli: synth with an unknown fallback fails" CODE 1 REGEX "--fallback expects overlap or sets, got 'random'"
+tessera_cli_test(NAME "cli: synth with an unknown fallback fails" CODE 1 REGEX "--fallback expects estimate, sets or overlap, got 'random'"
   COMMAND synth --exemplar sand --size 8x8 --fallback random --out ${_o}/bad.png)
 tessera_cli_test(NAME "cli: synth with a negative feather band fails" CODE 1 REGEX "--feather expects an integer in \\[0, 32768\\], got '-1'"
   COMMAND synth --exemplar sand --size 8x8 --feather -1 --out ${_o}/bad.png)
