@@ -20,6 +20,7 @@
 #include "../core/status.hpp"
 #include "../core/tri_mesh.hpp"
 #include "../core/vec.hpp"
+#include "detail/xy_raster.hpp"
 #include "mesh_elements.hpp"
 
 TESSERA_NAMESPACE_BEGIN
@@ -198,52 +199,11 @@ inline double median_diameter(const element_figures& f) {
   return percentile(std::move(d), 0.5);
 }
 
-/// The rasters of the coverage and band figures: square pixels over a window.
-struct quality_raster {
-  xy_rect window;
-  double px = 0;
-  std::size_t nx = 0, ny = 0;
-  [[nodiscard]] vec3 centre(std::size_t x, std::size_t y) const {
-    return {window.x0 + (double(x) + 0.5) * px, window.y0 + (double(y) + 0.5) * px, 0};
-  }
-};
-
-inline quality_raster make_raster(const xy_rect& w, double px, index_t max_pixels) {
-  quality_raster r;
-  r.window = w;
-  r.px = std::max(px, std::sqrt(w.width() * w.height() / double(std::max<index_t>(max_pixels, 1))));
-  r.nx = static_cast<std::size_t>(std::max(1.0, std::ceil(w.width() / r.px)));
-  r.ny = static_cast<std::size_t>(std::max(1.0, std::ceil(w.height() / r.px)));
-  return r;
-}
-
-/// Marks the pixels whose centre lies in the XY projection of some triangle.
-inline std::vector<unsigned char> rasterize_coverage(const tri_mesh& m, const quality_raster& r) {
+/// Marks the pixels whose centre lies in the XY projection of some triangle (rasters of the
+/// coverage and band figures: detail/xy_raster.hpp).
+inline std::vector<unsigned char> rasterize_coverage(const tri_mesh& m, const xy_raster& r) {
   std::vector<unsigned char> cov(r.nx * r.ny, 0);
-  for (const auto& f : m.faces) {
-    const vec3 a = m.positions[to_size(f[0])], b = m.positions[to_size(f[1])], c = m.positions[to_size(f[2])];
-    const double area2 = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
-    if (area2 == 0 || !std::isfinite(area2)) continue;  // seen edge-on: covers no pixel centre
-    const double s = area2 > 0 ? 1.0 : -1.0;
-    const double lo_x = std::min({a.x, b.x, c.x}), hi_x = std::max({a.x, b.x, c.x});
-    const double lo_y = std::min({a.y, b.y, c.y}), hi_y = std::max({a.y, b.y, c.y});
-    const double fx0 = std::floor((lo_x - r.window.x0) / r.px - 0.5),
-                 fx1 = std::ceil((hi_x - r.window.x0) / r.px - 0.5);
-    const double fy0 = std::floor((lo_y - r.window.y0) / r.px - 0.5),
-                 fy1 = std::ceil((hi_y - r.window.y0) / r.px - 0.5);
-    if (fx1 < 0 || fy1 < 0 || fx0 >= double(r.nx) || fy0 >= double(r.ny)) continue;
-    const auto x0 = static_cast<std::size_t>(std::max(0.0, fx0)), y0 = static_cast<std::size_t>(std::max(0.0, fy0));
-    const auto x1 = static_cast<std::size_t>(std::min(double(r.nx - 1), fx1)),
-               y1 = static_cast<std::size_t>(std::min(double(r.ny - 1), fy1));
-    for (std::size_t y = y0; y <= y1; ++y)
-      for (std::size_t x = x0; x <= x1; ++x) {
-        const vec3 p = r.centre(x, y);
-        const double w0 = s * ((b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x));
-        const double w1 = s * ((c.x - b.x) * (p.y - b.y) - (c.y - b.y) * (p.x - b.x));
-        const double w2 = s * ((a.x - c.x) * (p.y - c.y) - (a.y - c.y) * (p.x - c.x));
-        if (w0 >= 0 && w1 >= 0 && w2 >= 0) cov[y * r.nx + x] = 1;
-      }
-  }
+  for_each_covered_pixel(m, r, [&](std::size_t x, std::size_t y) { cov[y * r.nx + x] = 1; });
   return cov;
 }
 
@@ -347,7 +307,7 @@ result<texture_quality> measure_texture_quality(const M& texture, const texture_
   // projected coverage over the whole domain; the covered fraction is its average under a window
   // with Gaussian edges (dwin below, blurred by sigma: a lattice's phase against the window then
   // does not count, as for the density); empty cells are counted inside `win`
-  const auto r = detail::make_raster(domain, ref.diameter / o.pixels_per_diameter, o.max_pixels);
+  const auto r = detail::make_xy_raster(domain, ref.diameter / o.pixels_per_diameter, o.max_pixels);
   const auto cov = detail::rasterize_coverage(m, r);
   {
     auto soft = [&](double p, double lo, double hi) {
@@ -379,7 +339,7 @@ result<texture_quality> measure_texture_quality(const M& texture, const texture_
     q.empty_cell_rate = double(std::count(full.begin(), full.end(), 0)) / double(full.size());
   }
 
-  const auto d = detail::make_raster(dwin, 0.5 * sigma, o.max_pixels);
+  const auto d = detail::make_xy_raster(dwin, 0.5 * sigma, o.max_pixels);
   std::vector<double> dens(d.nx * d.ny, 0.0);
   const double gauss = 1.0 / (2 * 3.14159265358979323846 * sigma * sigma);
   const auto reach = static_cast<std::ptrdiff_t>(std::ceil(3 * sigma / d.px));

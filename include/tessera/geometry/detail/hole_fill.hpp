@@ -15,6 +15,7 @@
 #include "../../core/tri_mesh.hpp"
 #include "../../core/vec.hpp"
 #include "../mesh_elements.hpp"
+#include "xy_raster.hpp"
 
 TESSERA_NAMESPACE_BEGIN
 
@@ -24,12 +25,19 @@ namespace detail {
 /// lies in the XY projection of some triangle (or a vertex lies in the pixel: thin slivers count).
 class coverage_raster {
  public:
+  explicit coverage_raster(const xy_raster& r)
+      : grid_(r),
+        x0_(r.window.x0),
+        y0_(r.window.y0),
+        h_(r.px),
+        w_(static_cast<index_t>(r.nx)),
+        rows_(static_cast<index_t>(r.ny)),
+        covered_(r.nx * r.ny, 0) {}
   coverage_raster(double x0, double y0, double h, index_t w, index_t rows)
-      : x0_(x0), y0_(y0), h_(h), w_(w), rows_(rows), covered_(to_size(w * rows), 0) {}
+      : coverage_raster(xy_raster{{x0, y0, x0 + double(w) * h, y0 + double(rows) * h}, h, to_size(w), to_size(rows)}) {}
 
   [[nodiscard]] index_t width() const noexcept { return w_; }
   [[nodiscard]] index_t height() const noexcept { return rows_; }
-  [[nodiscard]] double pixel() const noexcept { return h_; }
   [[nodiscard]] bool covered(index_t i, index_t j) const noexcept { return covered_[to_size(j * w_ + i)] != 0; }
   void cover(index_t i, index_t j) noexcept {
     if (i >= 0 && j >= 0 && i < w_ && j < rows_) set(i, j);
@@ -57,8 +65,8 @@ class coverage_raster {
 
   void add_mesh(const tri_mesh& m) {
     for (const vec3& p : m.positions) cover(pixel_of(p.x - x0_), pixel_of(p.y - y0_));
-    for (const auto& f : m.faces)
-      add_triangle(m.positions[to_size(f[0])], m.positions[to_size(f[1])], m.positions[to_size(f[2])]);
+    for_each_covered_pixel(
+        m, grid_, [&](std::size_t i, std::size_t j) { set(static_cast<index_t>(i), static_cast<index_t>(j)); });
   }
 
   /// True when no covered pixel's centre lies within `r` of `c` and the disc stays on the raster.
@@ -81,32 +89,13 @@ class coverage_raster {
     // clamped before the conversion: a far vertex must not overflow index_t
     return static_cast<index_t>(std::floor(std::clamp(u, -2.0, 1e15)));
   }
-  void add_triangle(vec3 a, vec3 b, vec3 c) {
-    const double ax = (a.x - x0_) / h_, ay = (a.y - y0_) / h_, bx = (b.x - x0_) / h_, by = (b.y - y0_) / h_,
-                 cx = (c.x - x0_) / h_, cy = (c.y - y0_) / h_;
-    const double area = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
-    if (!(std::abs(area) > 0)) return;  // degenerate in projection: its vertices are marked
-    const index_t i0 = std::max<index_t>(0, pixel_of_unit(std::min({ax, bx, cx}))),
-                  i1 = std::min<index_t>(w_ - 1, pixel_of_unit(std::max({ax, bx, cx}))),
-                  j0 = std::max<index_t>(0, pixel_of_unit(std::min({ay, by, cy}))),
-                  j1 = std::min<index_t>(rows_ - 1, pixel_of_unit(std::max({ay, by, cy})));
-    const double s = area > 0 ? 1.0 : -1.0;
-    for (index_t j = j0; j <= j1; ++j)
-      for (index_t i = i0; i <= i1; ++i) {
-        const double px = static_cast<double>(i) + 0.5, py = static_cast<double>(j) + 0.5;
-        const double e0 = s * ((bx - ax) * (py - ay) - (by - ay) * (px - ax)),
-                     e1 = s * ((cx - bx) * (py - by) - (cy - by) * (px - bx)),
-                     e2 = s * ((ax - cx) * (py - cy) - (ay - cy) * (px - cx));
-        if (e0 >= 0 && e1 >= 0 && e2 >= 0) set(i, j);
-      }
-  }
-
   void set(index_t i, index_t j) noexcept {
     unsigned char& c = covered_[to_size(j * w_ + i)];
     if (c == 0 && i >= ci0_ && i <= ci1_ && j >= cj0_ && j <= cj1_) ++counted_;
     c = 1;
   }
 
+  xy_raster grid_;
   double x0_, y0_, h_;
   index_t w_, rows_;
   std::vector<unsigned char> covered_;
@@ -279,10 +268,7 @@ inline double exemplar_coverage(const std::vector<texture_element>& elements, do
   const double in = 0.5 * diameter;
   const xy_rect inner{all.min.x + in, all.min.y + in, all.max.x - in, all.max.y - in};
   if (!(inner.x1 > inner.x0) || !(inner.y1 > inner.y0)) return 0;
-  const auto w = static_cast<index_t>(std::ceil(inner.width() / h)),
-             rows = static_cast<index_t>(std::ceil(inner.height() / h));
-  if (w < 1 || rows < 1 || double(w) * double(rows) > double(1 << 24)) return 0;
-  coverage_raster r(inner.x0, inner.y0, h, w, rows);
+  coverage_raster r(make_xy_raster(inner, h, index_t{1} << 24));
   r.count_in(inner);
   for (const auto& e : elements) r.add_mesh(e.mesh);
   return r.counted_share();

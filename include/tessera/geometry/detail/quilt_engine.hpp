@@ -154,11 +154,9 @@ class basic_quilt_engine {
     // raster reaches a diameter beyond them; constrained: the domain itself
     const double pad = p_.constrained ? 0.0 : d;
     const xy_rect area{domain_.x0 - pad, domain_.y0 - pad, domain_.x1 + pad, domain_.y1 + pad};
-    double h = d / hole_raster_per_diameter;
-    if (area.width() * area.height() / (h * h) > hole_raster_max_pixels)
-      h = std::sqrt(area.width() * area.height() / hole_raster_max_pixels);
-    const auto w = std::max<index_t>(1, static_cast<index_t>(std::ceil(area.width() / h))),
-               rows = std::max<index_t>(1, static_cast<index_t>(std::ceil(area.height() / h)));
+    const xy_raster grid = make_xy_raster(area, d / hole_raster_per_diameter, hole_raster_max_pixels);
+    const double h = grid.px;
+    const auto w = static_cast<index_t>(grid.nx), rows = static_cast<index_t>(grid.ny);
     // the exemplar's own spacing (+ a pixel: the raster is sampled)
     std::vector<unsigned char> is_long(to_size(ex_.num_elements()));
     for (index_t e = 0; e < ex_.num_elements(); ++e) is_long[to_size(e)] = ex_.is_long(e) ? 1 : 0;
@@ -171,7 +169,7 @@ class basic_quilt_engine {
     bool reached = false;
     for (int pass = 0; pass < hole_passes && !reached; ++pass) {
       if (prog.cancelled()) return status::cancelled();
-      coverage_raster r(area.x0, area.y0, h, w, rows);
+      coverage_raster r(grid);
       r.count_in(domain_);
       for (std::size_t i = 0; i < elems_.size(); ++i)
         if (alive_[i]) r.add_mesh(elems_[i].mesh);
@@ -648,7 +646,8 @@ class basic_quilt_engine {
   /// Hole filling: raster pixels per exemplar element diameter (at most hole_raster_max_pixels in
   /// all); the empty margin kept around a placed element: the exemplar's (exemplar_clearance at this
   /// quantile), at least this many element diameters; draws per hole, and passes.
-  static constexpr double hole_raster_per_diameter = 12, hole_raster_max_pixels = double(1 << 24);
+  static constexpr double hole_raster_per_diameter = 12;
+  static constexpr index_t hole_raster_max_pixels = index_t{1} << 24;
   static constexpr double hole_min_clearance_diameters = 0.04, hole_clearance_quantile = 0.25;
   static constexpr int hole_tries = 4, hole_passes = 3;
 
