@@ -4,19 +4,23 @@
 #
 # The photographs are the texture set of Debian's `sweethome3d` package (photographs of stone, brick,
 # pebbles, grass, hedge, wood and plaster, 256 pixels wide; fetched with `apt-get download`, unpacked
-# into the cache, never installed). GIMP's pattern set is deliberately not used: it is kept aside to
-# check the result. Installs `gmic` with apt-get when it is missing (root only).
+# into the cache, never installed). GIMP's pattern set (Debian's `gimp-data`, also fetched with
+# `apt-get download`) is kept aside to check the result: `--set gimp` runs the same comparison on its
+# photographic patterns (fabric, bark, cracked paint, crystals, stone, wood, leather, paper, water;
+# 50 to 156 pixels), which were never used while tuning. Installs `gmic` with apt-get when it is
+# missing (root only).
 #
 # For every photograph: `tessera synth` and G'MIC at the same output size, then `tessera metrics`
-# on both outputs (neighbourhood energy 7 x 7 at 1x and 1/2x, histogram distance, repetition), the
+# on both outputs (neighbourhood energy 7 x 7 at 1x, 1/2x and 1/4x, histogram distance, repetition), the
 # times (tessera: model preparation + synthesis; G'MIC: the whole command), a markdown table and a
 # side-by-side picture (exemplar | tessera | G'MIC, 256 x 256 crops at full resolution; exemplars
 # shorter than 256 are padded with black).
 #
-#   scripts/quality-patch.sh [--size N] [--out DIR] [--images DIR] [--label L] [-- extra synth args]
+#   scripts/quality-patch.sh [--set S] [--size N] [--out DIR] [--images DIR] [--label L] [-- extra synth args]
 #
+#   --set S      sweethome3d (default; the photographs tuned on) or gimp (the held-out check)
 #   --size N     output side (default 512, as `-syntexturize_matchpatch 512,512`)
-#   --out DIR    table and JSON (default build/quality-patch/<label>)
+#   --out DIR    table and JSON (default build/quality-patch/<set>-<label>)
 #   --images DIR side-by-side PNGs (default: none; docs use docs/images/patch/quality)
 #   --label L    name of this run (default "default")
 #   --threads T  threads of tessera (default 2)
@@ -29,6 +33,7 @@ set -euo pipefail
 source "$(dirname "$0")/common.sh"
 
 size=512
+set=sweethome3d
 label=default
 out=
 images=
@@ -37,6 +42,7 @@ only=
 extra=()
 while (($#)); do
   case $1 in
+    --set) set=$2; shift 2 ;;
     --size) size=$2; shift 2 ;;
     --out) out=$2; shift 2 ;;
     --images) images=$2; shift 2 ;;
@@ -49,7 +55,8 @@ while (($#)); do
 done
 bin=${TESSERA_BIN:-$TESSERA_ROOT/build/bin/tessera}
 cache=${TESSERA_QUALITY_CACHE:-$TESSERA_ROOT/build/quality-patch/cache}
-out=${out:-$TESSERA_ROOT/build/quality-patch/$label}
+out=${out:-$TESSERA_ROOT/build/quality-patch/$set-$label}
+[[ $set == sweethome3d || $set == gimp ]] || { echo "quality-patch.sh: --set expects sweethome3d or gimp, got $set" >&2; exit 2; }
 py=/usr/bin/python3
 [[ -x $py ]] || py=python3
 [[ -x $bin ]] || { echo "quality-patch.sh: $bin not built (cmake --build build --target tessera)" >&2; exit 1; }
@@ -61,30 +68,77 @@ if ! command -v gmic >/dev/null; then
   step "install gmic"
   apt-get install -y gmic || { apt-get update && apt-get install -y gmic; }
 fi
-# name:file:what (photographs of the package's texture catalogue; the tiled and painted ones are left out)
-photos=(
-  stone_wall:stoneWall:"stone wall (cut blocks)"
-  stone_wall_2:stone2Wall:"stone wall (rough blocks)"
-  paving:pavingStone:"paving stones"
-  pebbles:pebbles:"pebbles"
-  marble:marbleWall:"speckled stone"
-  roughcast:roughcast:"roughcast plaster"
-  red_bricks:smallRedBricks:"brick wall"
-  hedge:boxTree:"box hedge (foliage)"
-  grass:grass:"grass"
-  wood:woodenFloor:"parquet (wood)"
-  old_wood:oldWoodenFloor:"old floor boards (wood)"
-)
-if [[ ! -f $cache/photos/stoneWall.png ]]; then
-  step "fetch the sweethome3d package (apt-get download; not installed)"
-  tmp=$(mktemp -d)
-  (cd "$tmp" && { apt-get download sweethome3d || { apt-get update && apt-get download sweethome3d; }; })
-  dpkg -x "$tmp"/sweethome3d_*.deb "$tmp/x"
-  mkdir -p "$cache/photos"
-  (cd "$cache/photos" && unzip -o -j -q "$tmp"/x/usr/share/sweethome3d/sweethome3d.jar \
-    'com/eteks/sweethome3d/io/resources/textures/*.jpg')
-  for f in "$cache"/photos/*.jpg; do gmic -v -1 "$f" -o "${f%.jpg}.png" >/dev/null 2>&1; done
-  rm -rf "$tmp"
+# name:file:what (sweethome3d: photographs of the package's texture catalogue, the tiled and painted
+# ones left out; gimp: the photographic RGB patterns, the legacy, sky and synthetic ones left out)
+if [[ $set == sweethome3d ]]; then
+  photos=(
+    stone_wall:stoneWall:"stone wall (cut blocks)"
+    stone_wall_2:stone2Wall:"stone wall (rough blocks)"
+    paving:pavingStone:"paving stones"
+    pebbles:pebbles:"pebbles"
+    marble:marbleWall:"speckled stone"
+    roughcast:roughcast:"roughcast plaster"
+    red_bricks:smallRedBricks:"brick wall"
+    hedge:boxTree:"box hedge (foliage)"
+    grass:grass:"grass"
+    wood:woodenFloor:"parquet (wood)"
+    old_wood:oldWoodenFloor:"old floor boards (wood)"
+  )
+  if [[ ! -f $cache/photos/stoneWall.png ]]; then
+    step "fetch the sweethome3d package (apt-get download; not installed)"
+    tmp=$(mktemp -d)
+    (cd "$tmp" && { apt-get download sweethome3d || { apt-get update && apt-get download sweethome3d; }; })
+    dpkg -x "$tmp"/sweethome3d_*.deb "$tmp/x"
+    mkdir -p "$cache/photos"
+    (cd "$cache/photos" && unzip -o -j -q "$tmp"/x/usr/share/sweethome3d/sweethome3d.jar \
+      'com/eteks/sweethome3d/io/resources/textures/*.jpg')
+    for f in "$cache"/photos/*.jpg; do gmic -v -1 "$f" -o "${f%.jpg}.png" >/dev/null 2>&1; done
+    rm -rf "$tmp"
+  fi
+else
+  photos=(
+    burlap:burlap:"burlap (fabric)"
+    leather:leather:"leather"
+    bark:bark:"bark"
+    cracked:cracked:"cracked paint"
+    amethyst:amethyst:"amethyst (crystals)"
+    ground:ground1:"ground (soil and pebbles)"
+    rock:rock:"rock"
+    stone:stone33:"stone"
+    pink_marble:pink_marble:"pink marble"
+    terra:terra:"terracotta"
+    brick:brick:"bricks"
+    burlwood:burlwood:"burl wood"
+    walnut:walnut:"walnut"
+    pine:pine:"pine"
+    parquet:parque1:"parquet"
+    crinkle:crinklepaper:"crinkled paper"
+    java:java:"coffee beans"
+    ice:ice:"ice"
+    rain:rain:"rain on water"
+  )
+  if [[ ! -f $cache/photos/burlap.png ]]; then
+    step "fetch the gimp-data package (apt-get download; not installed)"
+    tmp=$(mktemp -d)
+    (cd "$tmp" && { apt-get download gimp-data || { apt-get update && apt-get download gimp-data; }; })
+    dpkg -x "$tmp"/gimp-data_*.deb "$tmp/x"
+    mkdir -p "$cache/photos"
+    # GIMP patterns (.pat): a big-endian header (header size, version, width, height, bytes per
+    # pixel, "GPAT", name) and the raw pixels; written as PNM, converted by gmic
+    for f in "$tmp"/x/usr/share/gimp/2.0/patterns/*/*.pat; do
+      n=$(basename "$f" .pat)
+      $py -c '
+import struct, sys
+d = open(sys.argv[1], "rb").read()
+hs, ver, w, h, bpp = struct.unpack(">5I", d[:20])
+if d[20:24] == b"GPAT" and bpp in (1, 3) and len(d) >= hs + w * h * bpp:
+    open(sys.argv[2], "wb").write((b"P5" if bpp == 1 else b"P6") + b"\n%d %d\n255\n" % (w, h) + d[hs:hs + w * h * bpp])
+' "$f" "$cache/photos/$n.pnm"
+      [[ -f $cache/photos/$n.pnm ]] && gmic -v -1 "$cache/photos/$n.pnm" -o "$cache/photos/$n.png" >/dev/null 2>&1
+      rm -f "$cache/photos/$n.pnm"
+    done
+    rm -rf "$tmp"
+  fi
 fi
 
 now() { date +%s.%N; }
@@ -95,19 +149,19 @@ for entry in "${photos[@]}"; do
   ex=$cache/photos/$file.png
   step "$name ($what)"
   # G'MIC (cached: its output does not depend on our changes)
-  g=$cache/gmic_${name}_$size.png
+  g=$cache/gmic_${set}_${name}_$size.png
   if [[ ! -f $g || ! -f $g.json ]]; then
     t0=$(now)
     gmic -v -1 "$ex" -syntexturize_matchpatch "$size,$size" -o "$g" >/dev/null 2>&1
     t1=$(now)
-    "$bin" metrics --exemplar "$ex" --in "$g" --step 4 --threads "$threads" |
+    "$bin" metrics --exemplar "$ex" --in "$g" --step 4 --levels 3 --threads "$threads" |
       $py -c "import json,sys; d=json.loads(sys.stdin.read()); d['time_ms']=($t1-$t0)*1e3; print(json.dumps(d))" >"$g.json"
   fi
   # tessera
   t=$out/tessera_$name.png
   "$bin" synth --exemplar "$ex" --size "${size}x$size" --out "$t" --threads "$threads" --stats "${extra[@]}" \
     >"$out/synth_$name.json"
-  "$bin" metrics --exemplar "$ex" --in "$t" --step 4 --threads "$threads" >"$out/metrics_$name.json"
+  "$bin" metrics --exemplar "$ex" --in "$t" --step 4 --levels 3 --threads "$threads" >"$out/metrics_$name.json"
   if [[ -n $images ]]; then
     # exemplar | tessera | G'MIC, 256 x 256 crops at full resolution
     gmic -v -1 "$ex" "$t" "$g" -crop 0,0,255,255,0 -append x -o "$images/$name.png" >/dev/null 2>&1
@@ -116,33 +170,40 @@ for entry in "${photos[@]}"; do
 done
 
 step "table"
-$py - "$out" "$cache" "$size" "$label" "${runs[@]}" <<'EOF'
+$py - "$out" "$cache" "$size" "$set-$label" "$set" "${runs[@]}" <<'EOF'
 import json, statistics, sys
-out, cache, size, label, runs = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4], sys.argv[5:]
-rows, agg = [], {k: [] for k in ("te1", "ge1", "te2", "ge2", "tr", "gr", "th", "gh")}
+out, cache, size, label, pset, runs = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4], sys.argv[5], sys.argv[6:]
+rows, agg = [], {k: [] for k in ("te1", "ge1", "te2", "ge2", "te4", "ge4", "tr", "gr", "th", "gh", "r1", "r2", "r4")}
 fmt = lambda v: f"{v:.4f}"
 for run in runs:
     name, what = run.split(":", 1)
     s = json.load(open(f"{out}/synth_{name}.json"))
     m = json.load(open(f"{out}/metrics_{name}.json"))
-    g = json.load(open(f"{cache}/gmic_{name}_{size}.png.json"))
+    g = json.load(open(f"{cache}/gmic_{pset}_{name}_{size}.png.json"))
     vals = dict(te1=m["energy_1x"], ge1=g["energy_1x"], te2=m["energy_2x"], ge2=g["energy_2x"],
+                te4=m["energy_4x"], ge4=g["energy_4x"],
                 tr=m["repetition"], gr=g["repetition"], th=m["histogram_distance"], gh=g["histogram_distance"])
     for k, v in vals.items(): agg[k].append(v)
+    for l in "124": agg["r" + l].append(vals["te" + l] / vals["ge" + l])
     win = lambda a, b: "**" + fmt(a) + "**" if a <= b else fmt(a)
     fallback = f'{s["empty_intersections"]}/{s["filled"]}'
     band = f', {s["feather_width"]}' if s.get("seams") == "feather" and "feather_width" in s else ""
     rows.append(f'| {what} | {s["exemplar_width"]}×{s["exemplar_height"]} | {s["patch"]}×{s["patch_height"]}, {s["overlap"]}{band} '
                 f'| {fallback} | {win(vals["te1"], vals["ge1"])} / {fmt(vals["ge1"])} '
-                f'| {win(vals["te2"], vals["ge2"])} / {fmt(vals["ge2"])} | {vals["tr"]:.2f} / {vals["gr"]:.2f} '
+                f'| {win(vals["te2"], vals["ge2"])} / {fmt(vals["ge2"])} '
+                f'| {win(vals["te4"], vals["ge4"])} / {fmt(vals["ge4"])} | {vals["tr"]:.2f} / {vals["gr"]:.2f} '
                 f'| {vals["th"]:.3f} / {vals["gh"]:.3f} '
                 f'| {s["preprocess_ms"]:.0f} + {s["synthesis_ms"]:.1f} / {g["time_ms"]:.0f} |')
 med = {k: statistics.median(v) for k, v in agg.items()}
 lines = [f"Run `{label}`, {size}×{size} outputs, tessera / G'MIC in every cell (bold: tessera no higher).", "",
-         "| photograph | exemplar | patch, overlap, feather band | fallback | energy 1× | energy ½× | repetition | histogram | time ms (tessera model + synthesis / G'MIC) |",
-         "|---|---|---|---:|---:|---:|---:|---:|---:|"] + rows + [
+         "| photograph | exemplar | patch, overlap, feather band | fallback | energy 1× | energy ½× | energy ¼× | repetition | histogram | time ms (tessera model + synthesis / G'MIC) |",
+         "|---|---|---|---:|---:|---:|---:|---:|---:|---:|"] + rows + [
          f'| **median** | | | | {fmt(med["te1"])} / {fmt(med["ge1"])} | {fmt(med["te2"])} / {fmt(med["ge2"])} '
-         f'| {med["tr"]:.2f} / {med["gr"]:.2f} | {med["th"]:.3f} / {med["gh"]:.3f} | |']
+         f'| {fmt(med["te4"])} / {fmt(med["ge4"])} '
+         f'| {med["tr"]:.2f} / {med["gr"]:.2f} | {med["th"]:.3f} / {med["gh"]:.3f} | |', "",
+         "Median of the per-photograph ratios tessera / G'MIC: " + ", ".join(
+             f'{n} {statistics.median(agg["r" + l]):.2f} (no higher on {sum(r <= 1 for r in agg["r" + l])} of {len(agg["r" + l])})'
+             for n, l in (("1×", "1"), ("½×", "2"), ("¼×", "4"))) + "."]
 open(f"{out}/table.md", "w").write("\n".join(lines) + "\n")
 print("\n".join(lines))
 EOF
