@@ -68,6 +68,16 @@ if ! command -v gmic >/dev/null; then
   step "install gmic"
   apt-get install -y gmic || { apt-get update && apt-get install -y gmic; }
 fi
+# fetch_deb PACKAGE: downloads a Debian package (not installed) and unpacks it into $tmp/x (a new
+# temporary directory)
+fetch_deb() {
+  step "fetch the $1 package (apt-get download; not installed)"
+  tmp=$(mktemp -d)
+  (cd "$tmp" && { apt-get download "$1" || { apt-get update && apt-get download "$1"; }; })
+  dpkg -x "$tmp/$1"_*.deb "$tmp/x"
+  mkdir -p "$cache/photos"
+}
+
 # name:file:what (sweethome3d: photographs of the package's texture catalogue, the tiled and painted
 # ones left out; gimp: the photographic RGB patterns, the legacy, sky and synthetic ones left out)
 if [[ $set == sweethome3d ]]; then
@@ -85,11 +95,7 @@ if [[ $set == sweethome3d ]]; then
     old_wood:oldWoodenFloor:"old floor boards (wood)"
   )
   if [[ ! -f $cache/photos/stoneWall.png ]]; then
-    step "fetch the sweethome3d package (apt-get download; not installed)"
-    tmp=$(mktemp -d)
-    (cd "$tmp" && { apt-get download sweethome3d || { apt-get update && apt-get download sweethome3d; }; })
-    dpkg -x "$tmp"/sweethome3d_*.deb "$tmp/x"
-    mkdir -p "$cache/photos"
+    fetch_deb sweethome3d
     (cd "$cache/photos" && unzip -o -j -q "$tmp"/x/usr/share/sweethome3d/sweethome3d.jar \
       'com/eteks/sweethome3d/io/resources/textures/*.jpg')
     for f in "$cache"/photos/*.jpg; do gmic -v -1 "$f" -o "${f%.jpg}.png" >/dev/null 2>&1; done
@@ -118,11 +124,7 @@ else
     rain:rain:"rain on water"
   )
   if [[ ! -f $cache/photos/burlap.png ]]; then
-    step "fetch the gimp-data package (apt-get download; not installed)"
-    tmp=$(mktemp -d)
-    (cd "$tmp" && { apt-get download gimp-data || { apt-get update && apt-get download gimp-data; }; })
-    dpkg -x "$tmp"/gimp-data_*.deb "$tmp/x"
-    mkdir -p "$cache/photos"
+    fetch_deb gimp-data
     # GIMP patterns (.pat): a big-endian header (header size, version, width, height, bytes per
     # pixel, "GPAT", name) and the raw pixels; written as PNM, converted by gmic
     for f in "$tmp"/x/usr/share/gimp/2.0/patterns/*/*.pat; do
