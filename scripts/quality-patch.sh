@@ -11,8 +11,9 @@
 # missing (root only).
 #
 # For every photograph: `tessera synth` and G'MIC at the same output size, then `tessera metrics`
-# on both outputs (neighbourhood energy 7 x 7 at 1x, 1/2x and 1/4x, histogram distance, repetition), the
-# times (tessera: model preparation + synthesis; G'MIC: the whole command), a markdown table and a
+# on both outputs (neighbourhood energy 7 x 7 at 1x, 1/2x and 1/4x, histogram distance, repetition,
+# and the seam step ratio on the lines of tessera's patch grid: a visible grid on tessera's output, a
+# control on G'MIC's, which has no seams there), the times (tessera: model preparation + synthesis; G'MIC: the whole command), a markdown table and a
 # side-by-side picture (exemplar | tessera | G'MIC, 256 x 256 crops at full resolution; exemplars
 # shorter than 256 are padded with black).
 #
@@ -163,7 +164,13 @@ for entry in "${photos[@]}"; do
   t=$out/tessera_$name.png
   "$bin" synth --exemplar "$ex" --size "${size}x$size" --out "$t" --threads "$threads" --stats "${extra[@]}" \
     >"$out/synth_$name.json"
-  "$bin" metrics --exemplar "$ex" --in "$t" --step 4 --levels 3 --threads "$threads" >"$out/metrics_$name.json"
+  # the seams of tessera's patch grid, measured on both outputs (on G'MIC's, which has no grid there, as
+  # the control: how much two regions of a good output differ across arbitrary lines)
+  read -r pitch overlap < <($py -c "import json,sys; d=json.load(open(sys.argv[1])); print(f'{d[\"patch\"]}x{d[\"patch_height\"]} {d[\"overlap\"]}')" \
+    "$out/synth_$name.json")
+  grid=(--patch "$pitch" --overlap "$overlap")
+  "$bin" metrics --exemplar "$ex" --in "$t" --step 4 --levels 3 "${grid[@]}" --threads "$threads" >"$out/metrics_$name.json"
+  "$bin" metrics --exemplar "$ex" --in "$g" --step 8 --levels 1 "${grid[@]}" --threads "$threads" >"$out/gmic_grid_$name.json"
   if [[ -n $images ]]; then
     # exemplar | tessera | G'MIC, 256 x 256 crops at full resolution
     gmic -v -1 "$ex" "$t" "$g" -crop 0,0,255,255,0 -append x -o "$images/$name.png" >/dev/null 2>&1
@@ -175,15 +182,16 @@ step "table"
 $py - "$out" "$cache" "$size" "$set-$label" "$set" "${runs[@]}" <<'EOF'
 import json, statistics, sys
 out, cache, size, label, pset, runs = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4], sys.argv[5], sys.argv[6:]
-rows, agg = [], {k: [] for k in ("te1", "ge1", "te2", "ge2", "te4", "ge4", "tr", "gr", "th", "gh", "r1", "r2", "r4")}
+rows, agg = [], {k: [] for k in ("te1", "ge1", "te2", "ge2", "te4", "ge4", "tr", "gr", "th", "gh", "ts", "gs", "r1", "r2", "r4")}
 fmt = lambda v: f"{v:.4f}"
 for run in runs:
     name, what = run.split(":", 1)
     s = json.load(open(f"{out}/synth_{name}.json"))
     m = json.load(open(f"{out}/metrics_{name}.json"))
     g = json.load(open(f"{cache}/gmic_{pset}_{name}_{size}.png.json"))
+    gg = json.load(open(f"{out}/gmic_grid_{name}.json"))
     vals = dict(te1=m["energy_1x"], ge1=g["energy_1x"], te2=m["energy_2x"], ge2=g["energy_2x"],
-                te4=m["energy_4x"], ge4=g["energy_4x"],
+                te4=m["energy_4x"], ge4=g["energy_4x"], ts=m["seam_step_ratio"], gs=gg["seam_step_ratio"],
                 tr=m["repetition"], gr=g["repetition"], th=m["histogram_distance"], gh=g["histogram_distance"])
     for k, v in vals.items(): agg[k].append(v)
     for l in "124": agg["r" + l].append(vals["te" + l] / vals["ge" + l])
@@ -194,15 +202,15 @@ for run in runs:
                 f'| {fallback} | {win(vals["te1"], vals["ge1"])} / {fmt(vals["ge1"])} '
                 f'| {win(vals["te2"], vals["ge2"])} / {fmt(vals["ge2"])} '
                 f'| {win(vals["te4"], vals["ge4"])} / {fmt(vals["ge4"])} | {vals["tr"]:.2f} / {vals["gr"]:.2f} '
-                f'| {vals["th"]:.3f} / {vals["gh"]:.3f} '
+                f'| {vals["th"]:.3f} / {vals["gh"]:.3f} | {vals["ts"]:.2f} / {vals["gs"]:.2f} '
                 f'| {s["preprocess_ms"]:.0f} + {s["synthesis_ms"]:.1f} / {g["time_ms"]:.0f} |')
 med = {k: statistics.median(v) for k, v in agg.items()}
 lines = [f"Run `{label}`, {size}×{size} outputs, tessera / G'MIC in every cell (bold: tessera no higher).", "",
-         "| photograph | exemplar | patch, overlap, feather band | fallback | energy 1× | energy ½× | energy ¼× | repetition | histogram | time ms (tessera model + synthesis / G'MIC) |",
-         "|---|---|---|---:|---:|---:|---:|---:|---:|---:|"] + rows + [
+         "| photograph | exemplar | patch, overlap, feather band | fallback | energy 1× | energy ½× | energy ¼× | repetition | histogram | seam steps | time ms (tessera model + synthesis / G'MIC) |",
+         "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|"] + rows + [
          f'| **median** | | | | {fmt(med["te1"])} / {fmt(med["ge1"])} | {fmt(med["te2"])} / {fmt(med["ge2"])} '
          f'| {fmt(med["te4"])} / {fmt(med["ge4"])} '
-         f'| {med["tr"]:.2f} / {med["gr"]:.2f} | {med["th"]:.3f} / {med["gh"]:.3f} | |', "",
+         f'| {med["tr"]:.2f} / {med["gr"]:.2f} | {med["th"]:.3f} / {med["gh"]:.3f} | {med["ts"]:.2f} / {med["gs"]:.2f} | |', "",
          "Median of the per-photograph ratios tessera / G'MIC: " + ", ".join(
              f'{n} {statistics.median(agg["r" + l]):.2f} (no higher on {sum(r <= 1 for r in agg["r" + l])} of {len(agg["r" + l])})'
              for n, l in (("1×", "1"), ("½×", "2"), ("¼×", "4"))) + "."]

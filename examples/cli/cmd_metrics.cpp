@@ -2,12 +2,13 @@
 // as one JSON line, for any image (ours or another program's): scripts/quality-patch.sh compares
 // patch synthesis with G'MIC through it.
 //   tessera metrics --exemplar E.png --in I.png [--window 7] [--levels 2] [--step 2]
-//                   [--min-offset 16] [--threads T]
+//                   [--min-offset 16] [--patch WxH --overlap V] [--threads T]
 #include <algorithm>
 #include <string>
 
 #include <tessera/core/format.hpp>
 #include <tessera/image/metrics.hpp>
+#include <tessera/image/patch_synthesis.hpp>
 
 #include "cli.hpp"
 #include "image_source.hpp"
@@ -32,6 +33,15 @@ int run_format(const cli::arguments& args) {
   auto min_offset =
       args.integer("--min-offset", std::min<index_t>(16, max_offset), 1, std::max<index_t>(1, max_offset));
   if (!min_offset) return cli::fail(args, min_offset.error());
+  std::vector<tessera::seam_segment> seams;  // --patch (and --overlap): the seam lines of a patch grid
+  if (args.has("--patch")) {
+    auto pitch = args.size("--patch", 32768);
+    if (!pitch) return cli::fail(args, pitch.error());
+    auto overlap = args.integer("--overlap", 0, 0, std::min(pitch->first, pitch->second));
+    if (!overlap) return cli::fail(args, overlap.error());
+    seams = tessera::patch_seam_lines(pitch->first, pitch->second, static_cast<index_t>(*overlap), image->width(),
+                                      image->height());
+  }
   tessera::thread_pool_executor pool(args.threads());
 
   const tessera::multiscale_energy_options mo{.window = static_cast<index_t>(*window),
@@ -54,7 +64,15 @@ int run_format(const cli::arguments& args) {
       .add("window", static_cast<index_t>(*window));
   for (std::size_t l = 0; l < energy->size(); ++l)
     line.add(("energy_" + std::to_string(index_t{1} << l) + "x").c_str(), (*energy)[l]);  // 1x, 2x: 1/2 resolution
-  line.add("histogram_distance", *histogram).add("repetition", *repetition).add("metrics_ms", ms).print();
+  line.add("histogram_distance", *histogram).add("repetition", *repetition);
+  if (!seams.empty()) {
+    auto gradient = tessera::seam_gradient_ratio(*image, seams, *ex);
+    if (!gradient) return cli::fail(args, gradient.error());
+    auto steps = tessera::seam_step_ratio(*image, seams, *ex);
+    if (!steps) return cli::fail(args, steps.error());
+    line.add("seam_gradient_ratio", *gradient).add("seam_step_ratio", *steps);
+  }
+  line.add("metrics_ms", ms).print();
   return 0;
 }
 
@@ -69,9 +87,9 @@ int run_metrics(const cli::arguments& args) {
 const cli::registrar reg(
     {.name = "metrics",
      .summary = "quality figures of an image against its exemplar (multi-scale neighbourhood energy, histogram, "
-                "repetition) as JSON",
+                "repetition, seams of a patch grid) as JSON",
      .usage = "tessera metrics --exemplar E.png --in I.png [--window 7] [--levels 2] [--step 2] [--min-offset 16] "
-              "[--threads T]",
+              "[--patch WxH --overlap V] [--threads T]",
      .options = {{"--exemplar", "E.png", "the exemplar (PNG or a procedural kind)"},
                  {"--in", "I.png",
                   "the image to measure (PNG or a procedural kind); the exemplar is converted to its format"},
@@ -79,7 +97,11 @@ const cli::registrar reg(
                  {"--window", "N", "neighbourhood side (default 7)"},
                  {"--levels", "L", "energy at 1x, 1/2x, ... 1/2^(L-1) resolution (default 2)"},
                  {"--step", "S", "output neighbourhoods every S pixels (default 2)"},
-                 {"--min-offset", "D", "repetition: smallest shift considered (default 16)"}},
+                 {"--min-offset", "D", "repetition: smallest shift considered (default 16)"},
+                 {"--patch", "P",
+                  "also measure the seams of a patch grid of pitch P (or WxH) at the image's origin, at the "
+                  "centres of its overlaps (seam_gradient_ratio, seam_step_ratio), as tessera synth --patch"},
+                 {"--overlap", "V", "the overlap of that grid (default 0: the lines at the cell borders)"}},
      .run = run_metrics});
 
 }  // namespace

@@ -76,3 +76,12 @@ tessera_cli_test(NAME "cli: synth --stats reports the fallback rate and the stru
 tessera_cli_test(NAME "cli: metrics of an image against its exemplar"
   REGEX "\"energy_1x\":[0-9.e-]+,\"energy_2x\":[0-9.e-]+,\"histogram_distance\":[0-9.e-]+,\"repetition\":"
   COMMAND metrics --exemplar sand --exemplar-size 48 --in sand --window 5 --levels 2 --step 4)
+tessera_cli_test(NAME "cli: synth --stats reports the seam steps and a grid warning"
+  REGEX "\"seam_gradient_ratio\":[0-9.e-]+,\"seam_step_ratio\":[0-9.e-]+,\"seam_warning\":\""
+  COMMAND synth --exemplar rock --exemplar-size 64 --size 128x128 --stats --out ${_o}/steps.png)
+tessera_cli_test(NAME "cli: metrics --patch measures the seams of a patch grid"
+  REGEX "\"repetition\":[0-9.e-]+,\"seam_gradient_ratio\":[0-9.e-]+,\"seam_step_ratio\":[0-9.e-]+,\"metrics_ms\""
+  COMMAND metrics --exemplar sand --exemplar-size 48 --in sand --window 5 --levels 1 --step 4 --patch 16 --overlap 4)
+tessera_cli_test(NAME "cli: metrics with an overlap wider than the patch fails" CODE 1
+  REGEX "--overlap expects an integer in \\[0, 16\\], got '20'"
+  COMMAND metrics --exemplar sand --exemplar-size 48 --in sand --patch 16 --overlap 20)

@@ -1,8 +1,10 @@
 #include <tessera/image/metrics.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -10,6 +12,7 @@
 #include <catch2/catch.hpp>
 #include <tessera/core/random.hpp>
 #include <tessera/image/exemplars.hpp>
+#include <tessera/image/patch_synthesis.hpp>
 #include "../support/test_support.hpp"
 
 using tessera_test::crop;
@@ -176,6 +179,119 @@ TEST_CASE("seam_gradient_ratio: bad input", "[metrics]") {
   tessera::image_view<const std::uint8_t, 3> empty;
   CHECK(!tessera::seam_gradient_ratio(empty, ok, img));
   CHECK(!tessera::seam_gradient_ratio(img, ok, empty));
+}
+
+namespace {
+// seam_step_ratio by its definition, with every box mean summed directly (no integral image)
+template <int C>
+double brute_step_ratio(const tessera::image_buffer<float, C>& img, const std::vector<tessera::seam_segment>& seams,
+                        const tessera::image_buffer<float, C>& ref, index_t box) {
+  auto mean = [&](const tessera::image_buffer<float, C>& im, index_t x0, index_t y0, int c) {
+    double s = 0;
+    for (index_t y = y0; y < y0 + box; ++y)
+      for (index_t x = x0; x < x0 + box; ++x) s += im.pixel_ptr(x, y)[c];
+    return s / static_cast<double>(box * box);
+  };
+  auto step = [&](const tessera::image_buffer<float, C>& im, bool vertical, index_t x, index_t y) {
+    double d = 0;
+    for (int c = 0; c < C; ++c)
+      d += vertical ? std::abs(mean(im, x - box, y, c) - mean(im, x, y, c))
+                    : std::abs(mean(im, x, y - box, c) - mean(im, x, y, c));
+    return d / C;
+  };
+  double sum = 0, nv = 0, nh = 0;
+  for (const auto& s : seams) {
+    const index_t across = s.vertical ? img.width() : img.height();
+    if (s.position < box || s.position + box > across) continue;
+    for (index_t t = s.begin; t + box <= s.end; t += box) {
+      sum += s.vertical ? step(img, true, s.position, t) : step(img, false, t, s.position);
+      (s.vertical ? nv : nh) += 1;
+    }
+  }
+  double rx = 0, ry = 0, cx = 0, cy = 0;
+  for (index_t y = 0; y + box <= ref.height(); ++y)
+    for (index_t x = box; x + box <= ref.width(); ++x, ++cx) rx += step(ref, true, x, y);
+  for (index_t y = box; y + box <= ref.height(); ++y)
+    for (index_t x = 0; x + box <= ref.width(); ++x, ++cy) ry += step(ref, false, x, y);
+  const double expected = (nv * (cx > 0 ? rx / cx : 0) + nh * (cy > 0 ? ry / cy : 0)) / (nv + nh);
+  return sum / (nv + nh) / expected;
+}
+}  // namespace
+
+TEST_CASE("seam_step_ratio: equals its definition computed directly", "[metrics]") {
+  // random images, seams and box sizes; the integral images must give the brute-force value
+  const tessera::counter_rng rng(41);
+  for (std::uint64_t trial = 0; trial < 12; ++trial) {
+    const index_t w = 20 + static_cast<index_t>(rng.below(30, trial, 0)),
+                  h = 20 + static_cast<index_t>(rng.below(30, trial, 1));
+    const index_t box = 1 + static_cast<index_t>(rng.below(6, trial, 2));
+    tessera::image_buffer<float, 3> img(w, h), ref(w + 3, h - 2);
+    for (index_t i = 0; i < w * h * 3; ++i) img.data()[i] = static_cast<float>(rng.uniform(trial, 3, i));
+    for (index_t i = 0; i < (w + 3) * (h - 2) * 3; ++i) ref.data()[i] = static_cast<float>(rng.uniform(trial, 4, i));
+    std::vector<tessera::seam_segment> seams;
+    for (std::uint64_t k = 0; k < 4; ++k) {
+      const bool vertical = rng.below(2, trial, 5, k) == 0;
+      const index_t across = vertical ? w : h, along = vertical ? h : w;
+      const index_t begin = static_cast<index_t>(rng.below(static_cast<std::uint64_t>(along / 2), trial, 6, k));
+      seams.push_back(
+          {vertical, 1 + static_cast<index_t>(rng.below(static_cast<std::uint64_t>(across - 1), trial, 7, k)), begin,
+           begin + 1 + static_cast<index_t>(rng.below(static_cast<std::uint64_t>(along - begin), trial, 8, k))});
+    }
+    seams.push_back({true, w / 2, 0, h});  // at least one position that fits
+    INFO("trial " << trial << ", box " << box);
+    CHECK(tessera::seam_step_ratio(img, seams, ref, box).value() ==
+          Approx(brute_step_ratio(img, seams, ref, box)).epsilon(1e-9));
+  }
+}
+
+TEST_CASE("seam_step_ratio: a grid of brighter and darker patches shows more than in the one-pixel gradient",
+          "[metrics]") {
+  const auto rock = exemplar(tessera::exemplar_kind::rock, 96);
+  // the exemplar itself, measured across a grid of lines: about as much as any two of its regions
+  const auto lines = tessera::patch_seam_lines(24, 24, 6, 96, 96);
+  const double own = tessera::seam_step_ratio(rock, lines, rock).value();
+  CHECK(own > 0.6);
+  CHECK(own < 1.5);
+  // cells of 24 pixels alternately 0.12 brighter and darker, blended over a 5-pixel band around each line
+  // (as a narrow feather band does): the step ratio rises clearly more than the one-pixel gradient ratio
+  auto grid = tessera::to_buffer<float, 3>(rock, "rock").value();
+  auto ramp = [](index_t p) {  // -1 / +1 by cell (lines at 3, 27, 51, 75), linear over the 5 pixels around each line
+    auto sign = [](index_t q) { return ((q + 21) / 24) % 2 == 0 ? -1.0 : 1.0; };  // cell of q: floor((q - 3) / 24)
+    const index_t line = (p + 21) / 24 * 24 - 21, near = p - line < 12 ? line : line + 24;
+    if (std::abs(p - near) > 2) return sign(p);
+    const double before = sign(near - 1), after = sign(near);
+    return before + (after - before) * (static_cast<double>(p - (near - 2)) + 0.5) / 5.0;
+  };
+  for (index_t y = 0; y < 96; ++y)
+    for (index_t x = 0; x < 96; ++x)
+      for (int c = 0; c < 3; ++c) {
+        float& v = grid.pixel_ptr(x, y)[c];
+        v = std::clamp(v + static_cast<float>(0.06 * (ramp(x) + ramp(y))), 0.0f, 1.0f);
+      }
+  const double steps = tessera::seam_step_ratio(grid, lines, rock).value();
+  const double gradient = tessera::seam_gradient_ratio(grid, lines, rock).value();
+  const double own_gradient = tessera::seam_gradient_ratio(rock, lines, rock).value();
+  CHECK(steps > 2.0 * own);                               // measured 2.09 against 0.78
+  CHECK(steps / own > 1.25 * (gradient / own_gradient));  // measured 2.66 against 1.77
+}
+
+TEST_CASE("seam_step_ratio: bad input", "[metrics]") {
+  const auto img = exemplar(tessera::exemplar_kind::sand, 32);
+  const std::vector<tessera::seam_segment> none, mid = {{true, 16, 0, 32}};
+  CHECK(tessera::seam_step_ratio(img, none, img).error().message().find("seam_step_ratio: seams is empty") !=
+        std::string::npos);
+  const std::vector<tessera::seam_segment> outside = {{true, 32, 0, 4}};
+  CHECK(tessera::seam_step_ratio(img, outside, img).error().code() == tessera::status_code::out_of_range);
+  CHECK(tessera::seam_step_ratio(img, mid, img, 0).error().message().find("box must be >= 1") != std::string::npos);
+  const std::vector<tessera::seam_segment> near_border = {{true, 3, 0, 32}};  // no 8-pixel square left of it
+  CHECK(tessera::seam_step_ratio(img, near_border, img).error().message().find("no seam position") !=
+        std::string::npos);
+  tessera::image_buffer<std::uint8_t, 3> small(10, 10, {1, 2, 3}), flat(32, 32, {7, 7, 7});
+  CHECK(tessera::seam_step_ratio(img, mid, small).error().message().find("too small") != std::string::npos);
+  CHECK(tessera::seam_step_ratio(img, mid, flat).error().message().find("flat") != std::string::npos);
+  auto nan = tessera::to_buffer<float, 3>(img, "img").value();
+  nan.pixel_ptr(5, 5)[1] = std::numeric_limits<float>::quiet_NaN();
+  CHECK(!tessera::seam_step_ratio(nan, mid, img));
 }
 
 TEST_CASE("histogram_distance: identities and bounds", "[metrics]") {

@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <limits>
 #include <span>
+#include <string_view>
 #include <type_traits>
 #include <vector>
 
@@ -269,6 +270,53 @@ struct seam_segment {
   index_t end = 0;
 };
 
+namespace detail {
+/// The checks seam_gradient_ratio and seam_step_ratio share: images valid and finite, seams inside.
+template <Image I, Image R>
+status validate_seam_inputs(const I& image, std::span<const seam_segment> seams, const R& reference,
+                            std::string_view fn) {
+  if (auto s = validate_image(image, "image"); !s) return s;
+  if (auto s = validate_finite_pixels(image, "image"); !s) return s;
+  if (auto s = validate_image(reference, "reference"); !s) return s;
+  if (auto s = validate_finite_pixels(reference, "reference"); !s) return s;
+  if (seams.empty()) return status::invalid_argument(cat(fn, ": seams is empty"));
+  const index_t w = width_of(image), h = height_of(image);
+  for (std::size_t i = 0; i < seams.size(); ++i) {
+    const seam_segment& s = seams[i];
+    const index_t across = s.vertical ? w : h, along = s.vertical ? h : w;
+    if (s.position < 1 || s.position > across - 1 || s.begin < 0 || s.begin >= s.end || s.end > along)
+      return status::out_of_range(cat(fn, ": seams[", i, "] (", s.vertical ? "vertical" : "horizontal", ", position ",
+                                      s.position, ", rows/columns [", s.begin, ", ", s.end, ")) lies outside the ", w,
+                                      " x ", h, " image"));
+  }
+  return {};
+}
+
+/// Per-channel integral image (sums over [0, x) x [0, y)) for box means in O(1).
+template <int C>
+class box_sums {
+ public:
+  explicit box_sums(const image_buffer<float, C>& img)
+      : w_(img.width() + 1), sums_(to_size(w_ * (img.height() + 1) * C)) {
+    for (index_t y = 0; y < img.height(); ++y)
+      for (index_t x = 0; x < img.width(); ++x)
+        for (int c = 0; c < C; ++c)
+          at(x + 1, y + 1, c) =
+              static_cast<double>(img.pixel_ptr(x, y)[c]) + at(x, y + 1, c) + at(x + 1, y, c) - at(x, y, c);
+  }
+  /// Mean of channel c over [x, x + bw) x [y, y + bh).
+  [[nodiscard]] double mean(index_t x, index_t y, index_t bw, index_t bh, int c) const {
+    return (at(x + bw, y + bh, c) - at(x, y + bh, c) - at(x + bw, y, c) + at(x, y, c)) / static_cast<double>(bw * bh);
+  }
+
+ private:
+  [[nodiscard]] double at(index_t x, index_t y, int c) const { return sums_[to_size((y * w_ + x) * C + c)]; }
+  double& at(index_t x, index_t y, int c) { return sums_[to_size((y * w_ + x) * C + c)]; }
+  index_t w_;
+  std::vector<double> sums_;
+};
+}  // namespace detail
+
 /// Seam gradient ratio: the mean absolute difference across the given seams (over the pixel pairs
 /// the seams separate and all channels, unit range) divided by the mean absolute difference between
 /// neighbouring pixels of `reference` (the exemplar) in the same directions, weighted by how many seam
@@ -283,20 +331,7 @@ struct seam_segment {
 template <Image I, Image R>
 result<double> seam_gradient_ratio(const I& image, std::span<const seam_segment> seams, const R& reference) {
   constexpr int C = channels_v<I>;
-  if (auto s = validate_image(image, "image"); !s) return s;
-  if (auto s = validate_finite_pixels(image, "image"); !s) return s;
-  if (auto s = validate_image(reference, "reference"); !s) return s;
-  if (auto s = validate_finite_pixels(reference, "reference"); !s) return s;
-  if (seams.empty()) return status::invalid_argument("seam_gradient_ratio: seams is empty");
-  const index_t w = width_of(image), h = height_of(image);
-  for (std::size_t i = 0; i < seams.size(); ++i) {
-    const seam_segment& s = seams[i];
-    const index_t across = s.vertical ? w : h, along = s.vertical ? h : w;
-    if (s.position < 1 || s.position > across - 1 || s.begin < 0 || s.begin >= s.end || s.end > along)
-      return status::out_of_range(detail::cat(
-          "seam_gradient_ratio: seams[", i, "] (", s.vertical ? "vertical" : "horizontal", ", position ", s.position,
-          ", rows/columns [", s.begin, ", ", s.end, ")) lies outside the ", w, " x ", h, " image"));
-  }
+  if (auto s = detail::validate_seam_inputs(image, seams, reference, "seam_gradient_ratio"); !s) return s;
   auto img = to_buffer<float, C>(image, "image");
   auto ref = to_buffer<float, C>(reference, "reference");
   if (!img) return img.error();
@@ -336,6 +371,72 @@ result<double> seam_gradient_ratio(const I& image, std::span<const seam_segment>
   if (!(expected > 0))
     return status::invalid_argument(
         "seam_gradient_ratio: reference has no gradients in the seams' directions (flat image)");
+  return seam_sum / static_cast<double>(n_vertical + n_horizontal) / expected;
+}
+
+/// Seam step ratio: how much the mean colour steps across the given seams, against the exemplar's own
+/// steps at the same scale. At every `box` pixels along a seam, the box x box squares on either side
+/// of it (touching it) are averaged; the step is the mean absolute difference of the two means over
+/// the channels (unit range). The result is the mean step over the seams divided by the mean step
+/// between side-by-side squares of `reference` at every position in the same directions (weighted
+/// like seam_gradient_ratio). About 1: the patches meet like any two neighbouring regions of the
+/// exemplar; well above 1: a visible grid of brighter and darker patches, which a narrow blend band
+/// spreads over a few pixels, so that seam_gradient_ratio (one pixel across) and the neighbourhood
+/// energies miss it (docs/patch_synthesis.md, "The current figures"). Positions whose squares do not
+/// fit the image are skipped.
+///
+/// Errors: those of seam_gradient_ratio's inputs; invalid_argument for box < 1, no seam position
+/// whose squares fit the image, a reference smaller than 2 box x box in a needed direction or with no
+/// steps (flat). Complexity O(image pixels + reference pixels). Thread safety: pure function.
+template <Image I, Image R>
+result<double> seam_step_ratio(const I& image, std::span<const seam_segment> seams, const R& reference,
+                               index_t box = 8) {
+  constexpr int C = channels_v<I>;
+  if (auto s = detail::validate_seam_inputs(image, seams, reference, "seam_step_ratio"); !s) return s;
+  if (box < 1) return status::invalid_argument(detail::cat("seam_step_ratio: box must be >= 1, got ", box));
+  auto img = to_buffer<float, C>(image, "image");
+  auto ref = to_buffer<float, C>(reference, "reference");
+  if (!img) return img.error();
+  if (!ref) return ref.error();
+  const detail::box_sums<C> is(*img), rs(*ref);
+  // the step between the squares left of / above (x, y) and right of / below it
+  auto step = [&](const detail::box_sums<C>& b, bool vertical, index_t x, index_t y) {
+    double d = 0;
+    for (int c = 0; c < C; ++c)
+      d += vertical ? std::abs(b.mean(x - box, y, box, box, c) - b.mean(x, y, box, box, c))
+                    : std::abs(b.mean(x, y - box, box, box, c) - b.mean(x, y, box, box, c));
+    return d / C;
+  };
+  const index_t w = img->width(), h = img->height();
+  double seam_sum = 0;
+  index_t n_vertical = 0, n_horizontal = 0;
+  for (const seam_segment& s : seams) {
+    const index_t across = s.vertical ? w : h, along = s.vertical ? h : w;
+    if (s.position < box || s.position + box > across) continue;
+    for (index_t t = s.begin; t + box <= std::min(s.end, along); t += box) {
+      seam_sum += s.vertical ? step(is, true, s.position, t) : step(is, false, t, s.position);
+      ++(s.vertical ? n_vertical : n_horizontal);
+    }
+  }
+  if (n_vertical + n_horizontal == 0)
+    return status::invalid_argument(detail::cat("seam_step_ratio: no seam position has ", box, " x ", box,
+                                                " squares on both sides inside the ", w, " x ", h, " image"));
+  const index_t rw = ref->width(), rh = ref->height();
+  if ((n_vertical > 0 && rw < 2 * box) || (n_horizontal > 0 && rh < 2 * box) || rw < box || rh < box)
+    return status::invalid_argument(detail::cat("seam_step_ratio: reference ", rw, " x ", rh, " is too small for ", box,
+                                                " x ", box, " squares on both sides of a step"));
+  double ref_x = 0, ref_y = 0;
+  index_t nx = 0, ny = 0;
+  for (index_t y = 0; y + box <= rh; ++y)
+    for (index_t x = box; x + box <= rw; ++x, ++nx) ref_x += step(rs, true, x, y);
+  for (index_t y = box; y + box <= rh; ++y)
+    for (index_t x = 0; x + box <= rw; ++x, ++ny) ref_y += step(rs, false, x, y);
+  const double mean_x = nx > 0 ? ref_x / static_cast<double>(nx) : 0;
+  const double mean_y = ny > 0 ? ref_y / static_cast<double>(ny) : 0;
+  const double expected = (static_cast<double>(n_vertical) * mean_x + static_cast<double>(n_horizontal) * mean_y) /
+                          static_cast<double>(n_vertical + n_horizontal);
+  if (!(expected > 0))
+    return status::invalid_argument("seam_step_ratio: reference has no steps in the seams' directions (flat image)");
   return seam_sum / static_cast<double>(n_vertical + n_horizontal) / expected;
 }
 

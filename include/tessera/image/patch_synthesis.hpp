@@ -307,19 +307,26 @@ requires WritableImage<std::remove_cvref_t<S>> result<patch_synthesis_stats> syn
   }
 }
 
-/// The centre lines of the overlaps inside a w x h window at `origin` (where feathered seams are most
-/// visible), clipped to the window, as seam_segment for seam_gradient_ratio (image/metrics.hpp).
-template <Channel T, int C>
-std::vector<seam_segment> patch_seam_lines(const patch_model<T, C>& model, index_t w, index_t h,
-                                           texture_offset origin = {}) {
+/// The centre lines of the overlaps of a cell grid of pitch pw x ph and overlap `overlap` inside a
+/// w x h window at `origin` (where feathered seams are most visible), clipped to the window, as
+/// seam_segment for seam_gradient_ratio and seam_step_ratio (image/metrics.hpp). Empty for a pitch < 1.
+inline std::vector<seam_segment> patch_seam_lines(index_t pw, index_t ph, index_t overlap, index_t w, index_t h,
+                                                  texture_offset origin = {}) {
   std::vector<seam_segment> out;
-  const index_t pw = model.patch_width(), ph = model.patch_height(), half = model.overlap() / 2;
-  if (pw <= 0 || w <= 0 || h <= 0) return out;
+  const index_t half = overlap / 2;
+  if (pw <= 0 || ph <= 0 || w <= 0 || h <= 0) return out;
   for (index_t X = detail::floor_div(origin.x, pw) * pw + half; X < origin.x + w; X += pw)
     if (X - origin.x >= 1) out.push_back({.vertical = true, .position = X - origin.x, .begin = 0, .end = h});
   for (index_t Y = detail::floor_div(origin.y, ph) * ph + half; Y < origin.y + h; Y += ph)
     if (Y - origin.y >= 1) out.push_back({.vertical = false, .position = Y - origin.y, .begin = 0, .end = w});
   return out;
+}
+
+/// The seam lines of `model`'s cell grid inside a w x h window at `origin` (the overload above).
+template <Channel T, int C>
+std::vector<seam_segment> patch_seam_lines(const patch_model<T, C>& model, index_t w, index_t h,
+                                           texture_offset origin = {}) {
+  return patch_seam_lines(model.patch_width(), model.patch_height(), model.overlap(), w, h, origin);
 }
 
 TESSERA_NAMESPACE_END
