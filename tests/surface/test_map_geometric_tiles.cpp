@@ -149,16 +149,31 @@ TEST_CASE(
       // elements cut by tile borders came back whole: in the plane and around polycube edges
       CHECK(rep.crossing_quad_borders > 0);
       CHECK(rep.crossing_polycube_edges > 0);
-      // no two faces cross, except (known limitation, docs/surface.md "crossing faces") on the torus: one
-      // ring tube near a polycube corner, 2 pairs, all real (exact check), which the midpoint splitting
-      // only removes at ~50x the faces; exact clipping at the texture-space tetrahedra is not done yet
+      // no two faces cross: the tiles are clipped exactly at the shell's texture-space tetrahedra
       const index_t crossings = gm_crossing_pairs(gm_elements(*r));
-      if (std::string(c.name) == "torus") {
-        WARN("torus: " << crossings << " crossing face pairs");
-        CHECK(crossings <= 4);
-      } else {
-        CHECK(crossings == 0);
-      }
+      CHECK(crossings == 0);
+    }
+  }
+  SECTION("exact clipping removes the crossings of midpoint refinement") {
+    // on the torus the midpoint approximation lets one ring tube cross itself near a polycube corner
+    // (docs/surface.md, "crossing faces"); the exact clip of the same tiles has no crossing pair
+    thread_pool_executor pool(2);
+    for (const auto& c : gm_cases()) {
+      INFO(c.name);
+      map_geometric_tiles_options o;
+      o.seed = 5;
+      o.mapping.clip = shell_clip::midpoint;
+      auto mid = map_geometric_tiles(c.mesh, c.map, ring_tile_set(), o, pool);
+      o.mapping.clip = shell_clip::exact;
+      auto exact = map_geometric_tiles(c.mesh, c.map, ring_tile_set(), o, pool);
+      REQUIRE(mid);
+      REQUIRE(exact);
+      const index_t before = gm_crossing_pairs(gm_elements(*mid)), after = gm_crossing_pairs(gm_elements(*exact));
+      WARN(c.name << ": crossing face pairs " << before << " (midpoint) -> " << after << " (exact); faces "
+                  << mid->element_faces << " -> " << exact->element_faces);
+      if (std::string(c.name) == "torus") CHECK(before > 0);
+      CHECK(after == 0);
+      gm_check_elements(c, *exact);
     }
   }
   SECTION("height, base mesh and colouring options") {
@@ -255,7 +270,9 @@ TEST_CASE(
     // heights: negative, NaN, too large for the shell everywhere
     fails(map_geometric_tiles(c.mesh, c.map, set, {.height = -1}), status_code::invalid_argument, "height");
     fails(map_geometric_tiles(c.mesh, c.map, set, {.height = std::nan("")}), status_code::invalid_argument, "height");
-    fails(map_geometric_tiles(c.mesh, c.map, set, {.height = 50}), status_code::invalid_argument, "too large");
+    // (midpoint refinement cannot follow a shell that high within its budget; the exact clip can)
+    fails(map_geometric_tiles(c.mesh, c.map, set, {.height = 50, .mapping = {.clip = shell_clip::midpoint}}),
+          status_code::invalid_argument, "too large");
     // an open base, an inside-out base
     tri_mesh open = c.mesh;
     open.faces.pop_back();

@@ -150,8 +150,9 @@ TEST_CASE("shell mapping: a plate over every quad welds into one closed offset s
     CHECK(d <= 0.5 * f.H * (1 + 1e-9));
     CHECK(d >= 0.2 * f.H);
   }
-  // without split rounds every quad stays two triangles
+  // midpoint refinement without split rounds: every quad stays two triangles
   shell_map_options coarse;
+  coarse.clip = shell_clip::midpoint;
   coarse.max_split_rounds = 0;
   auto c = map_tiles_to_shell(
       f.map, pj, f.sh, [&](index_t) { return &plate; }, coarse);
