@@ -65,7 +65,7 @@ struct shell_map_options {
   shell_clip clip = shell_clip::exact;
   /// exact: texture-space distance within which clip points snap onto tile triangle sides and corners
   /// and merge (pieces thinner than this are not made).
-  double clip_tolerance = 1e-5;
+  double clip_tolerance = 3e-6;
   /// midpoint (the four options below apply to it only): largest distance of a mapped edge's midpoint
   /// from the straight chord between its mapped ends.
   double chordal_tolerance = 5e-3;

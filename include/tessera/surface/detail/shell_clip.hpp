@@ -222,8 +222,12 @@ shell_clip_stats clip_shell_mesh(std::vector<shell_texture_point>& points, std::
       len[to_size(k)] = norm(X[to_size((k + 1) % 3)] - X[to_size(k)]);
       alt[to_size(k)] = len[to_size(k)] > 0 ? area2 / len[to_size(k)] : 0;
     }
-    // a (nearly) degenerate triangle is kept whole (with the points of its sides, step C)
-    if (!(area2 > tol * std::max({len[0], len[1], len[2]}))) return;
+    // the snap and merge distance of this triangle: the tolerance, or less in a sliver (a thousandth of its
+    // smallest altitude), whose pieces would otherwise all snap onto its long side
+    const double maxlen = std::max({len[0], len[1], len[2]});
+    const double tl = std::min(tol, 1e-3 * area2 / std::max(maxlen, 1e-300));
+    // a degenerate triangle is kept whole (with the points of its sides, step C)
+    if (!(area2 > 1e-12 * maxlen * maxlen)) return;
     auto& rec = recs[to_size(r)];
     std::vector<index_t> visited, queue;
     std::vector<clip_lambda> poly, a, b, piece;
@@ -251,7 +255,7 @@ shell_clip_stats clip_shell_mesh(std::vector<shell_texture_point>& points, std::
       int zeros = 0, zk = -1;
       for (int c = 0; c < 3; ++c) {
         // corner c is opposite side (c + 1) % 3
-        if (l[to_size(c)] * alt[to_size((c + 1) % 3)] <= tol || l[to_size(c)] <= 0) {
+        if (l[to_size(c)] * alt[to_size((c + 1) % 3)] <= tl || l[to_size(c)] <= 0) {
           l[to_size(c)] = 0;
           ++zeros;
           zk = c;
@@ -272,9 +276,9 @@ shell_clip_stats clip_shell_mesh(std::vector<shell_texture_point>& points, std::
         const bool i_low = v[to_size(i)] < v[to_size(j)];
         double s = (i_low ? l[to_size(j)] : l[to_size(i)]) / w;
         s = std::clamp(s, 0.0, 1.0);
-        if (s * len[to_size(k)] <= tol || (1 - s) * len[to_size(k)] <= tol) {
+        if (s * len[to_size(k)] <= tl || (1 - s) * len[to_size(k)] <= tl) {
           x.kind = 0;
-          x.slot = static_cast<std::int8_t>((s * len[to_size(k)] <= tol) == i_low ? i : j);
+          x.slot = static_cast<std::int8_t>((s * len[to_size(k)] <= tl) == i_low ? i : j);
         } else {
           x.kind = 1;
           x.slot = static_cast<std::int8_t>(k);
@@ -299,8 +303,8 @@ shell_clip_stats clip_shell_mesh(std::vector<shell_texture_point>& points, std::
       for (std::size_t q = 0; q < rec.verts.size(); ++q) {
         const vertex& y = rec.verts[q];
         if (y.kind != x.kind || y.slot != x.slot) continue;
-        if (x.kind == 0 || (x.kind == 1 && std::abs(y.s - x.s) * len[to_size(x.slot)] <= tol) ||
-            (x.kind == 2 && norm(pos(y) - px) <= tol))
+        if (x.kind == 0 || (x.kind == 1 && std::abs(y.s - x.s) * len[to_size(x.slot)] <= tl) ||
+            (x.kind == 2 && norm(pos(y) - px) <= tl))
           return static_cast<index_t>(q);
       }
       rec.verts.push_back(x);
@@ -430,7 +434,8 @@ shell_clip_stats clip_shell_mesh(std::vector<shell_texture_point>& points, std::
     const vec3 N = cross(X[1] - X[0], X[2] - X[0]);
     const double nn = norm(N);
     const vec3 Nu = nn > 0 ? N / nn : N;
-    const double area_eps = 1e-6 * tol * std::max({norm(X[1] - X[0]), norm(X[2] - X[1]), norm(X[0] - X[2])});
+    const double maxlen = std::max({norm(X[1] - X[0]), norm(X[2] - X[1]), norm(X[0] - X[2])});
+    const double area_eps = 1e-6 * std::min(tol, 1e-3 * nn / std::max(maxlen, 1e-300)) * maxlen;
     // one simple loop of ids (no id twice) into triangles
     auto emit_loop = [&](std::vector<index_t>& cid, std::vector<vec3>& cx) {
       if (cid.size() < 3) return;
