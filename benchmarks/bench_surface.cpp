@@ -194,13 +194,8 @@ void BM_map_tiles_to_shell(benchmark::State& st) {
   st.counters["faces"] = static_cast<double>(faces);
   st.counters["splits"] = static_cast<double>(splits);
 }
-// second argument: 0 exact clipping (the default), 1 midpoint refinement (the earlier approximation)
-BENCHMARK(BM_map_tiles_to_shell)
-    ->Args({1, 0})
-    ->Args({1, 1})
-    ->Args({2, 0})
-    ->Args({2, 1})
-    ->Unit(benchmark::kMillisecond);
+// second argument: 0 exact clipping, 1 midpoint refinement (the default)
+BENCHMARK(BM_map_tiles_to_shell)->Args({1, 0})->Args({1, 1})->Args({2, 0})->Args({2, 1})->Unit(benchmark::kMillisecond);
 
 void BM_build_shell(benchmark::State& st) {
   const auto& c = shell_bench_case();
@@ -342,7 +337,7 @@ void BM_map_geometric_tiles(benchmark::State& st) {
   st.counters["splits"] = static_cast<double>(splits);
   st.counters["repairs"] = static_cast<double>(repairs);
 }
-// arguments: cube sphere n, threads, 0 exact clipping (the default) / 1 midpoint refinement
+// arguments: cube sphere n, threads, 0 exact clipping / 1 midpoint refinement (the default)
 BENCHMARK(BM_map_geometric_tiles)
     ->Args({35, 1, 0})
     ->Args({35, 1, 1})

@@ -167,7 +167,8 @@ int main(int argc, char** argv) {
         boundary_edges(elements).size(), static_cast<long long>(r->split_edges), static_cast<long long>(crossing));
     if (mid)
       std::printf("  midpoint refinement: mapping %.2f s, %lld faces, %lld crossing face pairs\n", mid_s,
-                  static_cast<long long>(mid->element_faces), static_cast<long long>(count_crossings(elements_of(*mid))));
+                  static_cast<long long>(mid->element_faces),
+                  static_cast<long long>(count_crossings(elements_of(*mid))));
     const std::string stem = dir + "/geo_" + kind + "_" + j.name;
     bool ok = write_obj(stem + ".obj", r->mesh).ok();
     mesh_preview_options view;

@@ -138,6 +138,7 @@ TEST_CASE(
       INFO(c.name);
       map_geometric_tiles_options o;
       o.seed = 5;
+      o.mapping.clip = shell_clip::exact;
       auto r = map_geometric_tiles(c.mesh, c.map, ring_tile_set(), o, pool);
       INFO((r ? std::string() : r.error().to_string()));
       REQUIRE(r);
@@ -228,6 +229,7 @@ TEST_CASE(
       map_geometric_tiles_options o;
       o.seed = 17;
       o.with_base = true;
+      o.mapping.clip = shell_clip::exact;
       auto one = map_geometric_tiles(c.mesh, c.map, ring_tile_set(), o, serial_executor{});
       thread_pool_executor pool(2);
       auto two = map_geometric_tiles(c.mesh, c.map, ring_tile_set(), o, pool);
@@ -273,9 +275,9 @@ TEST_CASE(
     // heights: negative, NaN, too large for the shell everywhere
     fails(map_geometric_tiles(c.mesh, c.map, set, {.height = -1}), status_code::invalid_argument, "height");
     fails(map_geometric_tiles(c.mesh, c.map, set, {.height = std::nan("")}), status_code::invalid_argument, "height");
-    // (midpoint refinement cannot follow a shell that high within its budget; the exact clip can)
-    fails(map_geometric_tiles(c.mesh, c.map, set, {.height = 50, .mapping = {.clip = shell_clip::midpoint}}),
-          status_code::invalid_argument, "too large");
+    // (midpoint refinement, the default, cannot follow a shell that high within its budget; the exact
+    // clip can)
+    fails(map_geometric_tiles(c.mesh, c.map, set, {.height = 50}), status_code::invalid_argument, "too large");
     // an open base, an inside-out base
     tri_mesh open = c.mesh;
     open.faces.pop_back();

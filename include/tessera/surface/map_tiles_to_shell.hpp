@@ -4,10 +4,10 @@
 // P⁻¹ (base face + barycentric weights, polycube_projector::inverse) and placed by the shell map
 // (build_shell.hpp: its barycentric coordinates in the texture-space tetrahedron, the polycube triangle
 // extruded along the chart normal, applied to the shell-space one). Tile triangles that overlap several
-// texture-space tetrahedra are clipped at their boundaries (detail/shell_clip.hpp, the default: the
-// output is the exact image of the tiles under the piecewise-linear shell map) or, with
-// shell_clip::midpoint, split at edge midpoints until a chordal tolerance holds (detail/shell_refine.hpp,
-// an approximation: nearby elements can cross), and vertices on shared quad sides and
+// texture-space tetrahedra are split at edge midpoints until a chordal tolerance holds (the default,
+// shell_clip::midpoint, detail/shell_refine.hpp: an approximation, nearby elements can cross) or, with
+// shell_clip::exact, clipped at the tetrahedra's boundaries (detail/shell_clip.hpp: the output is the
+// exact image of the tiles under the piecewise-linear shell map), and vertices on shared quad sides and
 // corners, in the plane and around polycube edges, are welded from a canonical side
 // (detail/shell_weld.hpp), so closed elements stay closed.
 //
@@ -61,12 +61,13 @@ enum class shell_clip : std::uint8_t {
 
 /// Options of map_tiles_to_shell. Lengths are in tile units (multiples of polycube_map::tile_size).
 struct shell_map_options {
-  /// Exact clipping (default) or midpoint refinement.
-  shell_clip clip = shell_clip::exact;
+  /// Midpoint refinement (default: 7.5-15x faster on bench_surface) or exact clipping (no crossings
+  /// from the approximation, 2.6-5x the faces; docs/surface.md).
+  shell_clip clip = shell_clip::midpoint;
   /// exact: texture-space distance within which clip points snap onto tile triangle sides and corners
   /// and merge (pieces thinner than this are not made).
   double clip_tolerance = 3e-6;
-  /// midpoint (the four options below apply to it only): largest distance of a mapped edge's midpoint
+  /// midpoint (this and the next three options apply to it only): largest distance of a mapped edge's midpoint
   /// from the straight chord between its mapped ends.
   double chordal_tolerance = 5e-3;
   /// Tile vertices within this of a quad side or corner count as on it; vertices of neighbouring quads
@@ -178,10 +179,9 @@ requires std::is_invocable_r_v<const tri_mesh*, const Tiles&, index_t> result<sh
                     [&](index_t i) { mapped[detail::to_size(i)] = map_point(tex.points[detail::to_size(i)], -1, -1); });
   if (o.clip == shell_clip::exact) {
     std::vector<index_t> chart(tex.face_quad.size());
-    for (std::size_t i = 0; i < chart.size(); ++i)
-      chart[i] = map.layout.quads[detail::to_size(tex.face_quad[i])].chart;
-    const auto st = detail::clip_shell_mesh(tex.points, mapped, tex.faces, chart, map, H, o.clip_tolerance * T,
-                                            map_in_face, exec);
+    for (std::size_t i = 0; i < chart.size(); ++i) chart[i] = map.layout.quads[detail::to_size(tex.face_quad[i])].chart;
+    const auto st =
+        detail::clip_shell_mesh(tex.points, mapped, tex.faces, chart, map, H, o.clip_tolerance * T, map_in_face, exec);
     res.split_edges = st.side_points;
     res.clipped_faces = st.clipped_faces;
     res.inner_points = st.inner_points;

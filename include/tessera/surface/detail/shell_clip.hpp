@@ -363,8 +363,8 @@ shell_clip_stats clip_shell_mesh(std::vector<shell_texture_point>& points, std::
     }
   }
   std::sort(sp.begin(), sp.end(), [](const side_point& x, const side_point& y) {
-    return x.key != y.key ? x.key < y.key
-           : x.s != y.s   ? x.s < y.s
+    return x.key != y.key     ? x.key < y.key
+           : x.s != y.s       ? x.s < y.s
            : x.face != y.face ? x.face < y.face
            : x.rec != y.rec   ? x.rec < y.rec
                               : x.vert < y.vert;
@@ -444,8 +444,9 @@ shell_clip_stats clip_shell_mesh(std::vector<shell_texture_point>& points, std::
       double total = 0;
       for (std::size_t i = 1; i + 1 < cid.size(); ++i) total += dot(cross(cx[i] - cx[0], cx[i + 1] - cx[0]), Nu);
       if (!(total > area_eps)) return;
-      stats.flat_faces += clip_triangulate(cid, cx, Nu, area_eps,
-                                           [&](index_t a, index_t b, index_t c) { out.push_back({a, b, c}); });
+      stats.flat_faces += clip_triangulate(cid, cx, Nu, area_eps, [&](index_t a, index_t b, index_t c) {
+        out.push_back({a, b, c});
+      });
     };
     auto emit_polygon = [&](std::vector<index_t>& pid, std::vector<vec3>& px) {
       // drop repeated ids (merged vertices); a loop that visits an id twice (two vertices of a piece
@@ -466,8 +467,10 @@ shell_clip_stats clip_shell_mesh(std::vector<shell_texture_point>& points, std::
         for (std::size_t i = 0; i < cid.size() && !cut; ++i)
           for (std::size_t j = i + 1; j < cid.size() && !cut; ++j) {
             if (cid[i] != cid[j]) continue;
-            std::vector<index_t> lid(cid.begin() + static_cast<std::ptrdiff_t>(i), cid.begin() + static_cast<std::ptrdiff_t>(j));
-            std::vector<vec3> lx(cx.begin() + static_cast<std::ptrdiff_t>(i), cx.begin() + static_cast<std::ptrdiff_t>(j));
+            std::vector<index_t> lid(cid.begin() + static_cast<std::ptrdiff_t>(i),
+                                     cid.begin() + static_cast<std::ptrdiff_t>(j));
+            std::vector<vec3> lx(cx.begin() + static_cast<std::ptrdiff_t>(i),
+                                 cx.begin() + static_cast<std::ptrdiff_t>(j));
             emit_loop(lid, lx);
             cid.erase(cid.begin() + static_cast<std::ptrdiff_t>(i), cid.begin() + static_cast<std::ptrdiff_t>(j));
             cx.erase(cx.begin() + static_cast<std::ptrdiff_t>(i), cx.begin() + static_cast<std::ptrdiff_t>(j));
