@@ -132,6 +132,29 @@ index_t clip_triangulate(std::vector<index_t> ids, std::vector<vec3> x, vec3 n, 
   return flat;
 }
 
+/// A vertex of a clipped triangle's pieces (clip_shell_mesh).
+struct shell_clip_vertex {
+  std::int8_t kind = 0;  ///< 0 corner, 1 on a side, 2 inside
+  std::int8_t slot = 0;  ///< corner slot, or side k = (v[k], v[k + 1])
+  double s = 0;          ///< side parameter from the side's lower-id end
+  clip_lambda lambda{};  ///< inside: weights of the corners
+  index_t face = -1;     ///< a base face whose prism holds the point
+  index_t id = -1;       ///< output vertex (side points: set in step B; inside points: in step C)
+};
+
+/// Texture-space position of `y` on the triangle with vertex ids `v` and positions `X`.
+inline vec3 clip_vertex_position(const shell_clip_vertex& y, const std::array<index_t, 3>& v,
+                                 const std::array<vec3, 3>& X) {
+  if (y.kind == 0) return X[to_size(y.slot)];
+  if (y.kind == 1) {
+    const int i = y.slot, j = (y.slot + 1) % 3;
+    const bool i_low = v[to_size(i)] < v[to_size(j)];
+    const vec3 lo = X[to_size(i_low ? i : j)], hi = X[to_size(i_low ? j : i)];
+    return lo + y.s * (hi - lo);
+  }
+  return y.lambda[0] * X[0] + y.lambda[1] * X[1] + y.lambda[2] * X[2];
+}
+
 /// Clips `faces` (texture triangles over `points`; `face_chart[i]` the chart of face i) at the
 /// texture-space tetrahedra of the shell (see the file comment), in place: `points` and `mapped` grow
 /// by the new vertices. `map_in_face(face, bary, h)` maps a point of a known base face. `tolerance`:
@@ -179,14 +202,7 @@ shell_clip_stats clip_shell_mesh(std::vector<shell_texture_point>& points, std::
   auto chart_normal = [&](index_t chart) { return label_direction(map.charts[to_size(chart)].label); };
 
   // A: the pieces of every triangle that is not inside one tetrahedron
-  struct vertex {
-    std::int8_t kind = 0;  // 0 corner, 1 on a side, 2 inside
-    std::int8_t slot = 0;  // corner slot, or side k = (v[k], v[k + 1])
-    double s = 0;          // side parameter from the side's lower-id end
-    clip_lambda lambda{};  // inside: weights of the corners
-    index_t face = -1;     // a base face whose prism holds the point
-    index_t id = -1;       // output vertex (side points: set in B; inside points: in C)
-  };
+  using vertex = shell_clip_vertex;
   struct record {
     std::vector<vertex> verts;
     std::vector<index_t> poly, start{0};  // polygons as vertex lists
@@ -289,16 +305,7 @@ shell_clip_stats clip_shell_mesh(std::vector<shell_texture_point>& points, std::
         x.kind = 2;
         x.lambda = {l[0] / w, l[1] / w, l[2] / w};
       }
-      auto pos = [&](const vertex& y) {
-        if (y.kind == 0) return X[to_size(y.slot)];
-        if (y.kind == 1) {
-          const int i = y.slot, j = (y.slot + 1) % 3;
-          const bool i_low = v[to_size(i)] < v[to_size(j)];
-          const vec3 lo = X[to_size(i_low ? i : j)], hi = X[to_size(i_low ? j : i)];
-          return lo + y.s * (hi - lo);
-        }
-        return y.lambda[0] * X[0] + y.lambda[1] * X[1] + y.lambda[2] * X[2];
-      };
+      auto pos = [&](const vertex& y) { return clip_vertex_position(y, v, X); };
       const vec3 px = pos(x);
       for (std::size_t q = 0; q < rec.verts.size(); ++q) {
         const vertex& y = rec.verts[q];
@@ -536,16 +543,7 @@ shell_clip_stats clip_shell_mesh(std::vector<shell_texture_point>& points, std::
         ++stats.inner_points;
       }
     }
-    auto pos = [&](const vertex& y) {
-      if (y.kind == 0) return X[to_size(y.slot)];
-      if (y.kind == 1) {
-        const int i = y.slot, j = (y.slot + 1) % 3;
-        const bool i_low = v[to_size(i)] < v[to_size(j)];
-        const vec3 lo = X[to_size(i_low ? i : j)], hi = X[to_size(i_low ? j : i)];
-        return lo + y.s * (hi - lo);
-      }
-      return y.lambda[0] * X[0] + y.lambda[1] * X[1] + y.lambda[2] * X[2];
-    };
+    auto pos = [&](const vertex& y) { return clip_vertex_position(y, v, X); };
     // parameter (from v[k]) of vertex y on side k, or -1 when it is not on that side
     auto on_side = [&](const vertex& y, int k) {
       if (y.kind == 0) return y.slot == k ? 0.0 : y.slot == (k + 1) % 3 ? 1.0 : -1.0;
