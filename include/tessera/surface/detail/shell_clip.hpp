@@ -90,12 +90,12 @@ inline double clip_lambda_area2(const std::vector<clip_lambda>& p) {
   return a;
 }
 
-/// Cuts the polygon `ids` (positions `x`, counter-clockwise about `n`) into triangles by ear clipping:
+/// Cuts the polygon `ids` (positions `x`, counter-clockwise about `n`; both consumed) into triangles by ear clipping:
 /// each step removes the ear of positive area with the best shape (area over the sum of squared sides)
 /// whose removal leaves a polygon of positive area; when there is none (a degenerate polygon) the
 /// largest ear. Returns the number of zero-area triangles emitted.
 template <class Emit>
-index_t clip_triangulate(std::vector<index_t> ids, std::vector<vec3> x, vec3 n, double area_eps, Emit&& emit) {
+index_t clip_triangulate(std::vector<index_t>& ids, std::vector<vec3>& x, vec3 n, double area_eps, Emit&& emit) {
   index_t flat = 0;
   auto ear_area = [&](std::size_t a, std::size_t b, std::size_t c) { return dot(cross(x[b] - x[a], x[c] - x[a]), n); };
   double total = 0;
@@ -245,8 +245,11 @@ shell_clip_stats clip_shell_mesh(std::vector<shell_texture_point>& points, std::
     // a degenerate triangle is kept whole (with the points of its sides, step C)
     if (!(area2 > 1e-12 * maxlen * maxlen)) return;
     auto& rec = recs[to_size(r)];
-    std::vector<index_t> visited, queue;
-    std::vector<clip_lambda> poly, a, b, piece;
+    // per-thread scratch, reused from triangle to triangle
+    thread_local std::vector<index_t> visited, queue;
+    thread_local std::vector<clip_lambda> poly, a, b, piece;
+    visited.clear();
+    queue.clear();
     auto push_ring = [&](index_t f) {
       for (index_t u : base[to_size(f)])
         for (index_t j = ring_start[to_size(u)]; j < ring_start[to_size(u) + 1]; ++j) {
