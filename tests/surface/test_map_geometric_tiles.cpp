@@ -153,31 +153,18 @@ TEST_CASE(
       // elements cut by tile borders came back whole: in the plane and around polycube edges
       CHECK(rep.crossing_quad_borders > 0);
       CHECK(rep.crossing_polycube_edges > 0);
-      // no two faces cross: the tiles are clipped exactly at the shell's texture-space tetrahedra
+      // no two faces cross: the tiles are clipped exactly at the shell's texture-space tetrahedra. Midpoint
+      // refinement of the same tiles lets one ring tube on the torus cross itself near a polycube corner
+      // (docs/surface.md, "crossing faces"): the test can fail
       const index_t crossings = gm_crossing_pairs(gm_elements(*r));
       CHECK(crossings == 0);
-    }
-  }
-  SECTION("exact clipping removes the crossings of midpoint refinement") {
-    // on the torus the midpoint approximation lets one ring tube cross itself near a polycube corner
-    // (docs/surface.md, "crossing faces"); the exact clip of the same tiles has no crossing pair
-    thread_pool_executor pool(2);
-    for (const auto& c : gm_cases()) {
-      INFO(c.name);
-      map_geometric_tiles_options o;
-      o.seed = 5;
       o.mapping.clip = shell_clip::midpoint;
       auto mid = map_geometric_tiles(c.mesh, c.map, ring_tile_set(), o, pool);
-      o.mapping.clip = shell_clip::exact;
-      auto exact = map_geometric_tiles(c.mesh, c.map, ring_tile_set(), o, pool);
       REQUIRE(mid);
-      REQUIRE(exact);
-      const index_t before = gm_crossing_pairs(gm_elements(*mid)), after = gm_crossing_pairs(gm_elements(*exact));
-      WARN(c.name << ": crossing face pairs " << before << " (midpoint) -> " << after << " (exact); faces "
-                  << mid->element_faces << " -> " << exact->element_faces);
+      const index_t before = gm_crossing_pairs(gm_elements(*mid));
+      WARN(c.name << ": crossing face pairs " << before << " (midpoint) -> " << crossings << " (exact); faces "
+                  << mid->element_faces << " -> " << r->element_faces);
       if (std::string(c.name) == "torus") CHECK(before > 0);
-      CHECK(after == 0);
-      gm_check_elements(c, *exact);
     }
   }
   SECTION("height, base mesh and colouring options") {
