@@ -181,9 +181,11 @@ void BM_map_tiles_to_shell(benchmark::State& st) {
   const polycube_projector pj(c.map);
   thread_pool_executor pool(static_cast<int>(st.range(0)));
   index_t faces = 0, splits = 0;
+  shell_map_options o;
+  o.clip = st.range(1) == 0 ? shell_clip::exact : shell_clip::midpoint;
   for (auto _ : st) {
     auto r = map_tiles_to_shell(
-        c.map, pj, c.sh, [&](index_t) { return &c.ring; }, {}, pool);
+        c.map, pj, c.sh, [&](index_t) { return &c.ring; }, o, pool);
     faces = r->element_faces;
     splits = r->split_edges;
   }
@@ -192,7 +194,8 @@ void BM_map_tiles_to_shell(benchmark::State& st) {
   st.counters["faces"] = static_cast<double>(faces);
   st.counters["splits"] = static_cast<double>(splits);
 }
-BENCHMARK(BM_map_tiles_to_shell)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
+// second argument: 0 exact clipping, 1 midpoint refinement (the default)
+BENCHMARK(BM_map_tiles_to_shell)->Args({1, 0})->Args({1, 1})->Args({2, 0})->Args({2, 1})->Unit(benchmark::kMillisecond);
 
 void BM_build_shell(benchmark::State& st) {
   const auto& c = shell_bench_case();
@@ -315,6 +318,7 @@ void BM_map_geometric_tiles(benchmark::State& st) {
   thread_pool_executor pool(static_cast<int>(st.range(1)));
   map_geometric_tiles_options o;
   o.seed = 7;
+  o.mapping.clip = st.range(2) == 0 ? shell_clip::exact : shell_clip::midpoint;
   index_t faces = 0, splits = 0, repairs = 0;
   for (auto _ : st) {
     auto r = map_geometric_tiles(map.base, map, set, o, pool);
@@ -333,11 +337,16 @@ void BM_map_geometric_tiles(benchmark::State& st) {
   st.counters["splits"] = static_cast<double>(splits);
   st.counters["repairs"] = static_cast<double>(repairs);
 }
+// arguments: cube sphere n, threads, 0 exact clipping / 1 midpoint refinement (the default)
 BENCHMARK(BM_map_geometric_tiles)
-    ->Args({35, 1})
-    ->Args({35, 2})
-    ->Args({82, 1})
-    ->Args({82, 2})
+    ->Args({35, 1, 0})
+    ->Args({35, 1, 1})
+    ->Args({35, 2, 0})
+    ->Args({35, 2, 1})
+    ->Args({82, 1, 0})
+    ->Args({82, 1, 1})
+    ->Args({82, 2, 0})
+    ->Args({82, 2, 1})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 

@@ -305,6 +305,12 @@ int map(const cli::arguments& args) {
   o.height = *height;
   o.seed = args.seed();
   o.with_base = args.has("--with-base");
+  if (args.has("--clip")) {
+    const std::string clip = args.str("--clip");
+    if (clip != "exact" && clip != "midpoint")
+      return cli::fail(args, status::invalid_argument("--clip expects exact or midpoint, got '" + clip + "'"));
+    o.mapping.clip = clip == "exact" ? shell_clip::exact : shell_clip::midpoint;
+  }
   result<map_geometric_tiles_result> r = status::internal_error("not run");
   const double ms = cli::median_ms(args.repeat(), [&] { r = map_geometric_tiles(*mesh, *pc, *set, o, pool); });
   if (!r) return cli::fail(args, r.error());
@@ -382,8 +388,11 @@ const cli::registrar reg_map{[] {
       "geo-wang map",
       "cover a closed mesh with a three-axis geometric Wang tile set (polycube map + shell map, paper 000 §4)",
       "tessera geo-wang map --tiles SET --mesh BASE --out OUT.obj [--polycube PC.obj | --tile W] [--height H] "
-      "[--with-base] [--seed S] [--threads T] [--stats]",
+      "[--with-base] [--clip exact|midpoint] [--seed S] [--threads T] [--stats]",
       {{"--tiles", "DIR", "three-axis tile set directory (geo-wang build --colors NX,NY,NZ)"},
+       {"--clip", "MODE",
+        "midpoint (default): split tile edges until the shell is followed within a tolerance; exact: clip "
+        "tile triangles at the shell's tetrahedra (no crossing faces, 2.6-5x the faces, 7.5-15x the time)"},
        {"--mesh", "FILE", "closed, manifold, outward-oriented base mesh (.obj, .off, .ply)"},
        {"--out", "FILE", "output mesh: the texture elements (then the base with --with-base)"},
        {"--polycube", "FILE",

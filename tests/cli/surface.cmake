@@ -53,6 +53,14 @@ tessera_cli_test(NAME "cli: geo-wang map with a polycube" REGEX "${_map_stats}"
                          --polycube ${_pc}/torus_pc.obj --height 0.05 --with-base --out ${_pc}/torus_rings_pc.obj --stats)
 set_tests_properties("cli: geo-wang map with a polycube" PROPERTIES FIXTURES_REQUIRED "geo_tiles3;pc_torus")
 set_tests_properties("cli: polycube torus" PROPERTIES FIXTURES_SETUP pc_torus)
+tessera_cli_test(NAME "cli: geo-wang map exact clip" REGEX "${_map_stats}"
+                 COMMAND geo-wang map --tiles ${TESSERA_CLI_OUT}/geometry/tiles3 --mesh ${_pcdata}/torus.obj
+                         --out ${_pc}/torus_rings_exact.obj --tiles-across 6 --seed 3 --clip exact --stats)
+set_tests_properties("cli: geo-wang map exact clip" PROPERTIES FIXTURES_REQUIRED geo_tiles3)
+tessera_cli_test(NAME "cli: geo-wang map bad clip" CODE 1 REGEX "--clip expects exact or midpoint"
+                 COMMAND geo-wang map --tiles ${TESSERA_CLI_OUT}/geometry/tiles3 --mesh ${_pcdata}/torus.obj
+                         --out ${_pc}/never.obj --clip fast)
+set_tests_properties("cli: geo-wang map bad clip" PROPERTIES FIXTURES_REQUIRED geo_tiles3)
 tessera_cli_test(NAME "cli: geo-wang map boolean" CODE 1 REGEX "Boolean union and difference .* not built yet"
                  COMMAND geo-wang map --tiles ${TESSERA_CLI_OUT}/geometry/tiles3 --mesh ${_pcdata}/torus.obj
                          --out ${_pc}/never.obj --boolean union)

@@ -118,12 +118,17 @@ TEST_CASE("shell mapping: rings inside a quad, across a quad border and across a
       tiles.meshes[static_cast<std::size_t>(q)] = halves[0];
       tiles.meshes[static_cast<std::size_t>(n)] = halves[1];
     }
-    auto r = map_tiles_to_shell(f.map, pj, f.sh, tiles);
-    REQUIRE(r);
-    CHECK(r->quads == 5);
-    CHECK(r->welded_vertices == 2 * 2 * 8);  // two cut columns of 8 vertices per crossing ring
-    CHECK(r->dropped_faces == 0);
-    check_elements(f, *r, 3);
+    // both modes: closed and welded across quad borders and polycube edges, no crossing
+    for (const auto mode : {shell_clip::midpoint, shell_clip::exact}) {
+      shell_map_options o;
+      o.clip = mode;
+      auto r = map_tiles_to_shell(f.map, pj, f.sh, tiles, o);
+      REQUIRE(r);
+      CHECK(r->quads == 5);
+      CHECK(r->welded_vertices == 2 * 2 * 8);  // two cut columns of 8 vertices per crossing ring
+      CHECK(r->dropped_faces == 0);
+      check_elements(f, *r, 3);
+    }
   }
 }
 
@@ -135,23 +140,29 @@ TEST_CASE("shell mapping: a plate over every quad welds into one closed offset s
     plate.add_vertex(p + vec3{0, 0, f.H / 2});
   plate.add_face(0, 1, 2);
   plate.add_face(0, 2, 3);
-  auto r = map_tiles_to_shell(f.map, pj, f.sh, [&](index_t) { return &plate; });
-  REQUIRE(r);
   const auto nq = static_cast<index_t>(f.map.layout.quads.size());
-  CHECK(r->tile_vertices == 4 * nq);
-  CHECK(r->welded_vertices == 3 * nq);  // one vertex per grid corner: V = E - F = F quads on a torus
-  CHECK(r->split_edges > 0);
-  CHECK(r->element_faces > 2 * nq);
-  check_elements(f, *r, 1);
-  // every vertex at half the local height above the base (up to the shell map's tilt)
-  const triangle_bvh base(f.map.base);
-  for (const vec3& p : r->mesh.positions) {
-    const double d = std::sqrt(base.closest_point(p).squared_distance);
-    CHECK(d <= 0.5 * f.H * (1 + 1e-9));
-    CHECK(d >= 0.2 * f.H);
+  shell_map_options exact;
+  exact.clip = shell_clip::exact;
+  for (const auto& mode : {shell_map_options{}, exact}) {
+    auto r = map_tiles_to_shell(
+        f.map, pj, f.sh, [&](index_t) { return &plate; }, mode);
+    REQUIRE(r);
+    CHECK(r->tile_vertices == 4 * nq);
+    CHECK(r->welded_vertices == 3 * nq);  // one vertex per grid corner: V = E - F = F quads on a torus
+    CHECK(r->split_edges > 0);
+    CHECK(r->element_faces > 2 * nq);
+    check_elements(f, *r, 1);
+    // every vertex at half the local height above the base (up to the shell map's tilt)
+    const triangle_bvh base(f.map.base);
+    for (const vec3& p : r->mesh.positions) {
+      const double d = std::sqrt(base.closest_point(p).squared_distance);
+      CHECK(d <= 0.5 * f.H * (1 + 1e-9));
+      CHECK(d >= 0.2 * f.H);
+    }
   }
-  // without split rounds every quad stays two triangles
+  // midpoint refinement without split rounds: every quad stays two triangles
   shell_map_options coarse;
+  coarse.clip = shell_clip::midpoint;
   coarse.max_split_rounds = 0;
   auto c = map_tiles_to_shell(
       f.map, pj, f.sh, [&](index_t) { return &plate; }, coarse);
@@ -167,6 +178,7 @@ TEST_CASE("shell mapping: same output on any number of threads") {
   const auto ring = ring_tiles::ring(0.5, 0.5, 0.3, 0.1, 0.1 * T, 0.08 * T, 16, 6);
   shell_map_options o;
   o.with_base = true;
+  o.clip = shell_clip::exact;
   auto a = map_tiles_to_shell(
       f.map, pj, f.sh, [&](index_t) { return &ring; }, o);
   REQUIRE(a);

@@ -33,10 +33,11 @@ struct shell_texture_point {
 struct shell_texture_mesh {
   std::vector<shell_texture_point> points;
   std::vector<std::array<index_t, 3>> faces;
-  index_t input_vertices = 0;  ///< tile vertices over all quads
-  index_t welded = 0;          ///< tile vertices merged into a vertex of another record
-  index_t dropped_faces = 0;   ///< faces that lost a corner to the weld (two corners merged)
-  index_t quads = 0;           ///< quads with a non-empty tile mesh
+  std::vector<index_t> face_quad;  ///< the quad of every face
+  index_t input_vertices = 0;      ///< tile vertices over all quads
+  index_t welded = 0;              ///< tile vertices merged into a vertex of another record
+  index_t dropped_faces = 0;       ///< faces that lost a corner to the weld (two corners merged)
+  index_t quads = 0;               ///< quads with a non-empty tile mesh
 };
 
 inline index_t weld_find(std::vector<index_t>& parent, index_t i) {
@@ -178,6 +179,7 @@ result<shell_texture_mesh> gather_shell_tiles(const polycube_map& map, const Til
         continue;
       }
       out.faces.push_back(g);
+      out.face_quad.push_back(q);
     }
   }
   return out;
