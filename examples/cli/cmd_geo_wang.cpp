@@ -305,11 +305,10 @@ int map(const cli::arguments& args) {
   o.height = *height;
   o.seed = args.seed();
   o.with_base = args.has("--with-base");
-  if (args.has("--clip")) {
-    const std::string clip = args.str("--clip");
-    if (clip != "exact" && clip != "midpoint")
-      return cli::fail(args, status::invalid_argument("--clip expects exact or midpoint, got '" + clip + "'"));
-    o.mapping.clip = clip == "exact" ? shell_clip::exact : shell_clip::midpoint;
+  if (args.has("--clip")) {  // midpoint when absent
+    auto clip = args.choice("--clip", {"exact", "midpoint"});
+    if (!clip) return cli::fail(args, clip.error());
+    o.mapping.clip = *clip == "exact" ? shell_clip::exact : shell_clip::midpoint;
   }
   result<map_geometric_tiles_result> r = status::internal_error("not run");
   const double ms = cli::median_ms(args.repeat(), [&] { r = map_geometric_tiles(*mesh, *pc, *set, o, pool); });

@@ -411,9 +411,9 @@ result<double> seam_step_ratio(const I& image, std::span<const seam_segment> sea
   double seam_sum = 0;
   index_t n_vertical = 0, n_horizontal = 0;
   for (const seam_segment& s : seams) {
-    const index_t across = s.vertical ? w : h, along = s.vertical ? h : w;
+    const index_t across = s.vertical ? w : h;  // validated: s.end is inside the image
     if (s.position < box || s.position + box > across) continue;
-    for (index_t t = s.begin; t + box <= std::min(s.end, along); t += box) {
+    for (index_t t = s.begin; t + box <= s.end; t += box) {
       seam_sum += s.vertical ? step(is, true, s.position, t) : step(is, false, t, s.position);
       ++(s.vertical ? n_vertical : n_horizontal);
     }
