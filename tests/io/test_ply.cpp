@@ -168,6 +168,16 @@ TEST_CASE("ply: malformed headers name the line", "[ply]") {
                         "unknown format");
   require_error_at_line(tessera::parse_ply("ply\nformat ascii 2.0\nend_header\n", "h.ply"), "h.ply", 2, "version");
   require_error_at_line(tessera::parse_ply("ply\n" + f + f + "end_header\n", "h.ply"), "h.ply", 3, "second format");
+  // a second face element, the second with per-corner uvs (a fuzz finding: the uvs covered only the
+  // second element's faces), and a second vertex element
+  const std::string face = "element face 1\nproperty list uchar int vertex_indices\n";
+  require_error_at_line(
+      tessera::parse_ply("ply\n" + f + "element vertex 3\nproperty float x\nproperty float y\n" + "property float z\n" +
+                             face + face + "property list uchar float texcoord\nend_header\n",
+                         "h.ply"),
+      "h.ply", 9, "a second 'face' element (the first is on line 7)");
+  require_error_at_line(tessera::parse_ply("ply\n" + f + "element vertex 0\nelement vertex 0\nend_header\n", "h.ply"),
+                        "h.ply", 4, "a second 'vertex' element");
   require_error_at_line(tessera::parse_ply("ply\n" + f + "property float x\nend_header\n", "h.ply"), "h.ply", 3,
                         "before any element");
   require_error_at_line(tessera::parse_ply("ply\n" + f + "element vertex -1\nend_header\n", "h.ply"), "h.ply", 3,

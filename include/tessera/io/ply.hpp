@@ -185,6 +185,7 @@ inline result<tri_mesh> parse_ply(std::string_view data, std::string_view name =
     s = detail::read_ply_elements(*h, src, name, m);
   }
   if (!s) return s;
+  if (auto v = validate_mesh(m, name); !v) return v;  // the promise of the header comment, checked once
   return m;
 }
 

@@ -107,6 +107,12 @@ inline result<ply_header> parse_ply_header(std::string_view data, std::string_vi
         return parse_error_at_line(name, n, "expected 'element NAME COUNT' with a non-negative count");
       e.count = static_cast<index_t>(c);
       e.header_line = n;
+      // one vertex and one face element: the reader's indices and per-face uvs refer to them
+      if (e.name == "vertex" || e.name == "face")
+        for (const ply_element& earlier : h.elements)
+          if (earlier.name == e.name)
+            return parse_error_at_line(
+                name, n, cat("a second '", e.name, "' element (the first is on line ", earlier.header_line, ")"));
       h.elements.push_back(std::move(e));
     } else if (key == "property") {
       if (h.elements.empty()) return parse_error_at_line(name, n, "a property before any element");
