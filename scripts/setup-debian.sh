@@ -10,6 +10,8 @@ packages=(build-essential cmake ninja-build pkg-config ccache libeigen3-dev libg
 # clang-format 14 for the house-style check (structural: formatted as .clang-format says). Installed
 # when missing, but a failure to install them only warns: everything else works without them.
 optional=(clang libclang-rt-14-dev clang-format-14)
+# CGAL for the mesh Booleans (geo-wang map --boolean; optional and GPL: TESSERA_WITH_CGAL)
+optional+=(libcgal-dev)
 # the Python module (python/, issue 20) and its Dask example; the module is skipped with a message without them
 optional+=(pybind11-dev python3-pybind11 python3-numpy python3-pytest python3-dev python3-pip python3-venv python3-setuptools
   python3-dask python3-distributed python3-zarr)

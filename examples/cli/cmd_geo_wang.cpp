@@ -22,6 +22,7 @@
 #include <tessera/tiling/scanline_coloring.hpp>
 
 #include "cli.hpp"
+#include "mesh_boolean.hpp"
 #include "quality_stats.hpp"
 
 namespace {
@@ -236,10 +237,20 @@ tessera::result<double> polycube_grid(const tessera::tri_mesh& deformed) {
 
 int map(const cli::arguments& args) {
   using namespace tessera;
-  if (args.has("--boolean"))
-    return cli::fail(
-        args, status::unsupported("--boolean: Boolean union and difference with the base mesh are not built yet; write "
-                                  "the elements with --with-base and combine them in a mesh tool"));
+  // --boolean: the elements joined with (union), engraved into (difference) or cut by (intersection)
+  // the base, sunk into it by --sink (default 0.1 for a union, 0.5 otherwise) so that they overlap it
+  std::string boolean;
+  if (args.has("--boolean")) {
+    auto op = args.choice("--boolean", {"union", "difference", "intersection"});
+    if (!op) return cli::fail(args, op.error());
+    if (!cli::has_mesh_boolean()) return cli::fail(args, cli::mesh_boolean(tri_mesh{}, tri_mesh{}, *op).error());
+    if (args.has("--with-base"))
+      return cli::fail(args, status::invalid_argument("give --with-base or --boolean, not both (a Boolean's output "
+                                                      "holds the base already)"));
+    boolean = *op;
+  }
+  auto sink = args.number("--sink", boolean.empty() ? 0.0 : boolean == "union" ? 0.1 : 0.5, 0, 0.95);
+  if (!sink) return cli::fail(args, sink.error());
   auto dir = args.required("--tiles");
   auto in = args.required("--mesh");
   auto out = args.required("--out");
@@ -305,6 +316,7 @@ int map(const cli::arguments& args) {
   o.height = *height;
   o.seed = args.seed();
   o.with_base = args.has("--with-base");
+  o.shell.sink = *sink;
   if (args.has("--clip")) {  // midpoint when absent
     auto clip = args.choice("--clip", {"exact", "midpoint"});
     if (!clip) return cli::fail(args, clip.error());
@@ -313,7 +325,16 @@ int map(const cli::arguments& args) {
   result<map_geometric_tiles_result> r = status::internal_error("not run");
   const double ms = cli::median_ms(args.repeat(), [&] { r = map_geometric_tiles(*mesh, *pc, *set, o, pool); });
   if (!r) return cli::fail(args, r.error());
-  if (auto s = write_mesh(*out, r->mesh); !s) return cli::fail(args, s);
+  result<tri_mesh> joined = status::internal_error("not run");
+  double boolean_ms = 0;
+  if (!boolean.empty()) {
+    tri_mesh elements;  // the leading part of r->mesh (no base: --with-base was refused)
+    elements.positions.assign(r->mesh.positions.begin(), r->mesh.positions.begin() + r->element_vertices);
+    elements.faces.assign(r->mesh.faces.begin(), r->mesh.faces.begin() + r->element_faces);
+    boolean_ms = cli::median_ms(1, [&] { joined = cli::mesh_boolean(pc->base, elements, boolean); });
+    if (!joined) return cli::fail(args, joined.error());
+  }
+  if (auto s = write_mesh(*out, boolean.empty() ? r->mesh : *joined); !s) return cli::fail(args, s);
   if (args.stats()) {
     tri_mesh elements;
     elements.positions.assign(r->mesh.positions.begin(), r->mesh.positions.begin() + r->element_vertices);
@@ -340,6 +361,9 @@ int map(const cli::arguments& args) {
         .add("refined", pc->refined())
         .add("welded_vertices", r->welded_vertices)
         .add("split_edges", r->split_edges)
+        .add("sink", o.shell.sink)
+        .add("boolean_ms", boolean_ms)
+        .add("boolean_faces", boolean.empty() ? index_t{0} : joined->num_faces())
         .print();
   } else {
     std::printf("wrote %s (%zu quads, %lld tiles used, %lld element faces, H = %g)\n", out->c_str(),
@@ -387,7 +411,8 @@ const cli::registrar reg_map{[] {
       "geo-wang map",
       "cover a closed mesh with a three-axis geometric Wang tile set (polycube map + shell map, paper 000 §4)",
       "tessera geo-wang map --tiles SET --mesh BASE --out OUT.obj [--polycube PC.obj | --tile W] [--height H] "
-      "[--with-base] [--clip exact|midpoint] [--seed S] [--threads T] [--stats]",
+      "[--with-base | --boolean union|difference|intersection] [--sink S] [--clip exact|midpoint] [--seed S] "
+      "[--threads T] [--stats]",
       {{"--tiles", "DIR", "three-axis tile set directory (geo-wang build --colors NX,NY,NZ)"},
        {"--clip", "MODE",
         "midpoint (default): split tile edges until the shell is followed within a tolerance; exact: clip "
@@ -401,7 +426,13 @@ const cli::registrar reg_map{[] {
        {"--tiles-across", "N", "build the polycube map with N tiles across the largest extent (default 8)"},
        {"--height", "H", "shell height in base-mesh units (default: the tiles' own proportions)"},
        {"--with-base", "", "append the base mesh to the output"},
-       {"--boolean", "union|difference", "not built yet: refused with a message"}},
+       {"--boolean", "OP",
+        "union (one solid, e.g. for 3D printing), difference (the elements engraved into the base) or "
+        "intersection of the base and the elements (CGAL's corefinement; needs a build with CGAL, then GPL; the "
+        "elements must not cross each other: use --clip exact)"},
+       {"--sink", "S",
+        "share of the shell height sunk below the surface, 0 to 0.95 (default 0, with --boolean 0.1 for a union "
+        "and 0.5 otherwise, so that elements overlap the base)"}},
       map};
   return c;
 }()};

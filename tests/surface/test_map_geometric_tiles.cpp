@@ -210,6 +210,61 @@ TEST_CASE(
     REQUIRE(given);
     CHECK(built->mesh.positions == given->mesh.positions);
   }
+  SECTION("sink: the texture fills [-sink H, (1 - sink) H] about the surface") {
+    thread_pool_executor pool(2);
+    const auto& c = gm_cases()[0];  // sphere
+    map_geometric_tiles_options o;
+    o.height = 0.1 * c.map.tile_size;
+    o.seed = 4;
+    auto flat = map_geometric_tiles(c.mesh, c.map, ring_tile_set(), o, pool);
+    o.shell.sink = 0.5;
+    o.with_base = true;
+    auto sunk = map_geometric_tiles(c.mesh, c.map, ring_tile_set(), o, pool);
+    REQUIRE(flat);
+    REQUIRE(sunk);
+    // the same elements, moved: the appended base is the surface itself, not the sunk shell's bottom
+    CHECK(sunk->element_faces == flat->element_faces);
+    CHECK(sunk->mesh.num_faces() == sunk->element_faces + c.map.base.num_faces());
+    CHECK(std::equal(c.map.base.positions.begin(), c.map.base.positions.end(),
+                     sunk->mesh.positions.begin() + sunk->element_vertices));
+    // signed distances to the base (negative inside): from about -H/2 to at most +H/2
+    const triangle_bvh base(c.map.base);
+    auto signed_range = [&](const map_geometric_tiles_result& r) {
+      double lo = 1e300, hi = -1e300;
+      for (index_t v = 0; v < r.element_vertices; ++v) {
+        const vec3 p = r.mesh.positions[detail::to_size(v)];
+        const auto hit = base.closest_point(p);
+        const auto& f = c.map.base.faces[detail::to_size(hit.face)];
+        const vec3 n = cross(c.map.base.position(f[1]) - c.map.base.position(f[0]),
+                             c.map.base.position(f[2]) - c.map.base.position(f[0]));
+        const double d = std::sqrt(hit.squared_distance) * (dot(p - hit.point, n) < 0 ? -1 : 1);
+        lo = std::min(lo, d);
+        hi = std::max(hi, d);
+      }
+      return std::pair{lo, hi};
+    };
+    const auto [flat_lo, flat_hi] = signed_range(*flat);
+    const auto [lo, hi] = signed_range(*sunk);
+    CHECK(flat_lo >= -1e-6 * o.height);
+    CHECK(flat_hi >= 0.8 * o.height);
+    CHECK(lo <= -0.4 * o.height);
+    CHECK(lo >= -0.5 * o.height * (1 + 1e-6) - 1e-9);
+    CHECK(hi <= 0.5 * o.height * (1 + 1e-6));
+    CHECK(hi >= 0.3 * o.height);
+    // out of range; a sink as deep as a tightly curved surface allows is repaired like an outward fold
+    for (double bad : {-0.1, 1.0, std::nan("")}) {
+      o.shell.sink = bad;
+      auto r = map_geometric_tiles(c.mesh, c.map, ring_tile_set(), o, pool);
+      REQUIRE(!r);
+      CHECK(r.error().message().find("sink in [0, 1)") != std::string::npos);
+    }
+    o.shell.sink = 0.9;
+    o.height = 4 * c.map.tile_size;  // sunk 1.2 units into a unit sphere: the inward offset folds
+    auto sh = build_shell(c.map.base, o.height, o.shell);
+    REQUIRE(sh);
+    CHECK(sh->repaired_vertices > 0);
+    for (index_t f = 0; f < c.map.base.num_faces(); ++f) REQUIRE(shell_prism_quality(*sh, f) >= o.shell.min_quality);
+  }
   SECTION("same seed, same output on 1 and 2 threads") {
     for (const auto& c : gm_cases()) {
       INFO(c.name);

@@ -24,7 +24,8 @@
 
 TESSERA_NAMESPACE_BEGIN
 
-/// A shell over a base mesh: the top of vertex v is base.position(v) + heights[v] * directions[v].
+/// A shell over a base mesh: the top of vertex v is base.position(v) + (1 - sink) * heights[v] *
+/// directions[v], its bottom base.position(v) - sink * heights[v] * directions[v] (sink 0: the base).
 struct shell {
   /// The base mesh (positions and faces).
   tri_mesh base;
@@ -38,9 +39,15 @@ struct shell {
   index_t repaired_vertices = 0;
   /// Repair rounds run (0: the plain offset did not fold).
   int repair_rounds = 0;
+  /// Share of each vertex's height below the surface, in [0, 1) (shell_options::sink).
+  double sink = 0;
   /// Top (offset) position of vertex v.
   [[nodiscard]] vec3 top(index_t v) const noexcept {
-    return base.position(v) + heights[detail::to_size(v)] * directions[detail::to_size(v)];
+    return base.position(v) + ((1 - sink) * heights[detail::to_size(v)]) * directions[detail::to_size(v)];
+  }
+  /// Bottom position of vertex v: the base vertex itself unless the shell is sunk.
+  [[nodiscard]] vec3 bottom(index_t v) const noexcept {
+    return base.position(v) - (sink * heights[detail::to_size(v)]) * directions[detail::to_size(v)];
   }
 };
 
@@ -57,20 +64,27 @@ struct shell_options {
   double min_height_ratio = 0.2;
   /// Most repair rounds.
   int max_rounds = 100;
+  /// Share of the height sunk below the surface, in [0, 1): the bottom of vertex v lies at base(v) -
+  /// sink · h_v · d_v and its top at base(v) + (1 - sink) · h_v · d_v, so a texture mapped through the
+  /// shell fills [-sink · H, (1 - sink) · H] about the surface and its elements overlap the base's volume
+  /// (a union with the base is then one solid, a difference engraves them: mesh_boolean, paper 000 Fig.
+  /// 7). The repair then also covers the inward offset, which folds where the surface is convex and
+  /// tighter than the sunk depth. 0 (the default): the shell stands on the surface.
+  double sink = 0;
 };
 
 namespace detail {
 /// Lowest tetrahedron quality of the prism over face f (see shell_options::min_quality).
 inline double shell_prism_quality(const tri_mesh& base, const std::vector<vec3>& dir, const std::vector<double>& h,
-                                  index_t f) {
+                                  index_t f, double sink = 0) {
   const auto& fv = base.faces[to_size(f)];
   const prism_order o = sorted_prism_order(fv);
   std::array<vec3, 6> c;
   double hbar = 0;
   for (int k = 0; k < 3; ++k) {
     const auto v = to_size(fv[to_size(o.corner[to_size(k)])]);
-    c[to_size(k)] = base.positions[v];
-    c[to_size(k + 3)] = base.positions[v] + h[v] * dir[v];
+    c[to_size(k)] = base.positions[v] - (sink * h[v]) * dir[v];
+    c[to_size(k + 3)] = c[to_size(k)] + h[v] * dir[v];
     hbar += h[v] / 3;
   }
   const double ref = norm(cross(c[1] - c[0], c[2] - c[0])) * hbar;
@@ -87,7 +101,7 @@ inline double shell_prism_quality(const tri_mesh& base, const std::vector<vec3>&
 /// Lowest quality of the three tetrahedra of the prism over face f of `s` (1 for an upright prism,
 /// <= 0 when one is inverted). Precondition: f in [0, F).
 inline double shell_prism_quality(const shell& s, index_t f) {
-  return detail::shell_prism_quality(s.base, s.directions, s.heights, f);
+  return detail::shell_prism_quality(s.base, s.directions, s.heights, f, s.sink);
 }
 
 namespace detail {
@@ -103,6 +117,11 @@ inline vec3 shell_position_in_tet(const shell& s, index_t f, vec3 bary, double t
     const auto v = to_size(fv[to_size(o.corner[to_size(k)])]);
     p += (g[k] * s.heights[v]) * s.directions[v];
   }
+  if (s.sink != 0)  // the bottom of a sunk shell: its barycentric point, lowered (an affine map stays affine)
+    for (int k = 0; k < 3; ++k) {
+      const auto v = to_size(fv[to_size(k)]);
+      p -= (bary[k] * s.sink * s.heights[v]) * s.directions[v];
+    }
   return p;
 }
 }  // namespace detail
@@ -110,8 +129,9 @@ inline vec3 shell_position_in_tet(const shell& s, index_t f, vec3 bary, double t
 /// The shell map (Porumbescu et al. 2005): the point of the texture-space prism over base face f with
 /// barycentric weights `bary` (of the face's corners 0, 1, 2) at relative height t = h / H in [0, 1],
 /// carried to shell space by its barycentric coordinates in its texture-space tetrahedron. Equals
-/// Σ bary_k b_k + Σ γ_k heights_k directions_k with γ from detail::prism_top_weights, so its distance to
-/// the base triangle is at most t · H. Continuous across prism sides. Precondition: f in [0, F). O(1).
+/// Σ bary_k b_k + Σ γ_k heights_k directions_k with γ from detail::prism_top_weights and b_k the
+/// bottoms (shell::bottom), so its distance to the base triangle is at most t · H (|t - sink| · H
+/// about, for a sunk shell). Continuous across prism sides. Precondition: f in [0, F). O(1).
 inline vec3 shell_position(const shell& s, index_t f, vec3 bary, double t) {
   int tet = 0;
   return detail::shell_position_in_tet(s, f, bary, t, tet);
@@ -133,14 +153,18 @@ result<shell> build_shell(const M& base, double height, const shell_options& o =
   if (!(height > 0) || !std::isfinite(height))
     return status::invalid_argument(detail::cat("shell: height must be finite and > 0, got ", height));
   if (!(o.min_quality > 0 && o.min_quality < 1) || !(o.height_step > 0 && o.height_step < 1) ||
-      !(o.min_height_ratio > 0 && o.min_height_ratio <= 1) || o.max_rounds < 0 || o.smoothing_rounds < 0)
+      !(o.min_height_ratio > 0 && o.min_height_ratio <= 1) || o.max_rounds < 0 || o.smoothing_rounds < 0 ||
+      !(o.sink >= 0 && o.sink < 1))
     return status::invalid_argument(
-        "shell_options: need 0 < min_quality < 1, 0 < height_step < 1, 0 < min_height_ratio <= 1, rounds >= 0");
+        detail::cat("shell_options: need 0 < min_quality < 1, 0 < height_step < 1, 0 < "
+                    "min_height_ratio <= 1, rounds >= 0, sink in [0, 1); sink is ",
+                    o.sink));
   auto mesh = to_tri_mesh(base, "shell base");
   if (!mesh) return mesh.error();
   shell s;
   s.base = std::move(*mesh);
   s.height = height;
+  s.sink = o.sink;
   const auto nv = s.base.positions.size(), nf = s.base.faces.size();
   // angle-weighted vertex normals (Thürmer & Wüthrich 1998)
   s.directions.assign(nv, vec3{});
@@ -168,7 +192,7 @@ result<shell> build_shell(const M& base, double height, const shell_options& o =
   std::vector<vec3> next;
   for (int round = 0;; ++round) {
     exec.parallel_for(0, static_cast<index_t>(nf), [&](index_t f) {
-      quality[detail::to_size(f)] = detail::shell_prism_quality(s.base, s.directions, s.heights, f);
+      quality[detail::to_size(f)] = detail::shell_prism_quality(s.base, s.directions, s.heights, f, s.sink);
     });
     std::fill(marked.begin(), marked.end(), 0);
     bool any = false;

@@ -49,7 +49,8 @@ struct map_geometric_tiles_options {
   std::uint64_t seed = 0;
   /// Append the base mesh (the polycube map's base, refined or not) after the elements.
   bool with_base = false;
-  /// Fold repair of the shell (build_shell).
+  /// Fold repair of the shell (build_shell), and its sink: shell.sink > 0 sinks the texture that share
+  /// of H into the base, so that its elements overlap the base's volume (for mesh_boolean, Fig. 7).
   shell_options shell = {};
   /// Splitting and welding of the mapping (map_tiles_to_shell); its with_base is ignored (see above).
   shell_map_options mapping = {};

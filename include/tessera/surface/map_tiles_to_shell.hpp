@@ -135,8 +135,9 @@ requires std::is_invocable_r_v<const tri_mesh*, const Tiles&, index_t> result<sh
         "0 <= max_split_rounds <= 30, 1 <= max_split_growth <= 1e6, 0 < clip_tolerance < 0.01, clip exact or "
         "midpoint");
   if (!(sh.height > 0) || sh.heights.size() != sh.base.positions.size() ||
-      sh.directions.size() != sh.base.positions.size())
-    return status::invalid_argument("map_tiles_to_shell: the shell is empty or inconsistent (use build_shell)");
+      sh.directions.size() != sh.base.positions.size() || !(sh.sink >= 0 && sh.sink < 1))
+    return status::invalid_argument(
+        "map_tiles_to_shell: the shell is empty or inconsistent, or its sink outside [0, 1) (use build_shell)");
   const double H = sh.height, T = map.tile_size;
   auto gathered = detail::gather_shell_tiles(map, tiles, H, o.weld_tolerance);
   if (!gathered) return gathered.error();
