@@ -165,7 +165,7 @@ inline tri_mesh from_cgal_mesh(const cgal_mesh& m) {
 /// not manifold or not consistently oriented (the face), not closed (the open edges), crossing itself
 /// (the pairs of faces), not bounding a volume; when the result is not a manifold surface (the inputs
 /// touch along an edge or at a vertex without overlapping: sink elements into the base,
-/// map_geometric_tiles_options::sink); cancelled by the progress; internal_error when CGAL throws
+/// shell_options::sink); cancelled by the progress; internal_error when CGAL throws
 /// (the message it gave). O((F_a + F_b) log(F_a + F_b) + intersections).
 template <Mesh A, Mesh B>
 result<tri_mesh> mesh_boolean(const A& a, const B& b, boolean_op op, const mesh_boolean_options& o = {}) {
