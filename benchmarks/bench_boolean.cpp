@@ -49,12 +49,6 @@ map_geometric_tiles_options mapping(double sink) {
   o.mapping.clip = shell_clip::exact;
   return o;
 }
-tri_mesh elements_of(const map_geometric_tiles_result& r) {
-  tri_mesh e;
-  e.positions.assign(r.mesh.positions.begin(), r.mesh.positions.begin() + r.element_vertices);
-  e.faces.assign(r.mesh.faces.begin(), r.mesh.faces.begin() + r.element_faces);
-  return e;
-}
 }  // namespace
 
 // baseline: the mapping of the elements (one thread)
@@ -70,7 +64,7 @@ BENCHMARK(BM_boolean_mapping_baseline)->Unit(benchmark::kMillisecond);
 void BM_mesh_boolean(benchmark::State& st) {
   const auto& c = bench_case();
   const bool unite = st.range(0) == 0;
-  const tri_mesh elements = elements_of(*map_geometric_tiles(c.base, c.map, c.set, mapping(unite ? 0.1 : 0.5)));
+  const tri_mesh elements = map_geometric_tiles(c.base, c.map, c.set, mapping(unite ? 0.1 : 0.5))->elements();
   index_t faces = 0;
   for (auto _ : st) {
     auto r = mesh_boolean(c.map.base, elements, unite ? boolean_op::unite : boolean_op::subtract);

@@ -103,9 +103,7 @@ bool run(const tri_mesh& base, index_t tiles_across, bool across_sides, const st
     std::printf("%s: %s\n", name.c_str(), r.error().to_string().c_str());
     return false;
   }
-  tri_mesh elements;
-  elements.positions.assign(r->mesh.positions.begin(), r->mesh.positions.begin() + r->element_vertices);
-  elements.faces.assign(r->mesh.faces.begin(), r->mesh.faces.begin() + r->element_faces);
+  const tri_mesh elements = r->elements();
   std::printf(
       "%s: %zu quads, H = %.3g, %lld shell repairs, %lld element vertices, %lld faces, %lld welded, "
       "%lld split edges, %lld elements, %zu open edges\n",

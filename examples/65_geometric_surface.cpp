@@ -135,12 +135,6 @@ int main(int argc, char** argv) {
           [&](index_t, index_t) { ++crossing; });
       return crossing;
     };
-    auto elements_of = [](const map_geometric_tiles_result& r) {
-      tri_mesh e;
-      e.positions.assign(r.mesh.positions.begin(), r.mesh.positions.begin() + r.element_vertices);
-      e.faces.assign(r.mesh.faces.begin(), r.mesh.faces.begin() + r.element_faces);
-      return e;
-    };
     o.mapping.clip = shell_clip::midpoint;
     t0 = std::chrono::steady_clock::now();
     auto mid = map_geometric_tiles(map->base, *map, *set, o, pool);
@@ -154,7 +148,7 @@ int main(int argc, char** argv) {
       continue;
     }
     const double map_s = seconds_since(t0);
-    const tri_mesh elements = elements_of(*r);
+    const tri_mesh elements = r->elements();
     const index_t crossing = count_crossings(elements);
     std::printf(
         "%s (%lld vertices, %lld across): polycube %.2f s, %zu quads, %lld tiles used; mapping %.2f s: H = %.3g, "
@@ -167,8 +161,7 @@ int main(int argc, char** argv) {
         boundary_edges(elements).size(), static_cast<long long>(r->split_edges), static_cast<long long>(crossing));
     if (mid)
       std::printf("  midpoint refinement: mapping %.2f s, %lld faces, %lld crossing face pairs\n", mid_s,
-                  static_cast<long long>(mid->element_faces),
-                  static_cast<long long>(count_crossings(elements_of(*mid))));
+                  static_cast<long long>(mid->element_faces), static_cast<long long>(count_crossings(mid->elements())));
     const std::string stem = dir + "/geo_" + kind + "_" + j.name;
     bool ok = write_obj(stem + ".obj", r->mesh).ok();
     mesh_preview_options view;

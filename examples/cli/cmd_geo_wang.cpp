@@ -328,17 +328,13 @@ int map(const cli::arguments& args) {
   result<tri_mesh> joined = status::internal_error("not run");
   double boolean_ms = 0;
   if (!boolean.empty()) {
-    tri_mesh elements;  // the leading part of r->mesh (no base: --with-base was refused)
-    elements.positions.assign(r->mesh.positions.begin(), r->mesh.positions.begin() + r->element_vertices);
-    elements.faces.assign(r->mesh.faces.begin(), r->mesh.faces.begin() + r->element_faces);
+    const tri_mesh elements = r->elements();
     boolean_ms = cli::median_ms(1, [&] { joined = cli::mesh_boolean(pc->base, elements, boolean); });
     if (!joined) return cli::fail(args, joined.error());
   }
   if (auto s = write_mesh(*out, boolean.empty() ? r->mesh : *joined); !s) return cli::fail(args, s);
   if (args.stats()) {
-    tri_mesh elements;
-    elements.positions.assign(r->mesh.positions.begin(), r->mesh.positions.begin() + r->element_vertices);
-    elements.faces.assign(r->mesh.faces.begin(), r->mesh.faces.begin() + r->element_faces);
+    const tri_mesh elements = r->elements();
     const triangle_bvh base(pc->base);
     std::vector<double> dist(elements.positions.size());
     pool.parallel_for(0, elements.num_vertices(), [&](index_t v) {

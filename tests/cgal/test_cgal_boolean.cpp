@@ -143,9 +143,7 @@ TEST_CASE("mesh_boolean: texture elements joined with and engraved into their ba
     auto r = map_geometric_tiles(base, *map, *set, o, pool);
     INFO((r ? std::string() : r.error().to_string()));
     REQUIRE(r);
-    tri_mesh elements;
-    elements.positions.assign(r->mesh.positions.begin(), r->mesh.positions.begin() + r->element_vertices);
-    elements.faces.assign(r->mesh.faces.begin(), r->mesh.faces.begin() + r->element_faces);
+    const tri_mesh elements = r->elements();
     const double ve = volume(elements), vb = volume(map->base);
     REQUIRE(ve > 0);
     auto out = mesh_boolean(map->base, elements, op);

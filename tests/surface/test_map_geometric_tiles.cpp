@@ -55,13 +55,6 @@ const std::vector<gm_case>& gm_cases() {
   return all;
 }
 
-tri_mesh gm_elements(const map_geometric_tiles_result& r) {
-  tri_mesh e;
-  e.positions.assign(r.mesh.positions.begin(), r.mesh.positions.begin() + r.element_vertices);
-  e.faces.assign(r.mesh.faces.begin(), r.mesh.faces.begin() + r.element_faces);
-  return e;
-}
-
 struct gm_report {
   index_t components = 0, crossing_polycube_edges = 0, crossing_quad_borders = 0;
 };
@@ -70,7 +63,7 @@ struct gm_report {
 // base; counts the elements whose vertices lie over several charts (they cross a polycube edge) or
 // several quads of one chart
 gm_report gm_check_elements(const gm_case& c, const map_geometric_tiles_result& r) {
-  const tri_mesh e = gm_elements(r);
+  const tri_mesh e = r.elements();
   REQUIRE(e.num_faces() > 0);
   INFO(c.name << ": " << e.num_vertices() << " element vertices, " << e.num_faces() << " faces");
   CHECK(boundary_edges(e).empty());
@@ -156,12 +149,12 @@ TEST_CASE(
       // no two faces cross: the tiles are clipped exactly at the shell's texture-space tetrahedra. Midpoint
       // refinement of the same tiles lets one ring tube on the torus cross itself near a polycube corner
       // (docs/surface.md, "crossing faces"): the test can fail
-      const index_t crossings = gm_crossing_pairs(gm_elements(*r));
+      const index_t crossings = gm_crossing_pairs(r->elements());
       CHECK(crossings == 0);
       o.mapping.clip = shell_clip::midpoint;
       auto mid = map_geometric_tiles(c.mesh, c.map, ring_tile_set(), o, pool);
       REQUIRE(mid);
-      const index_t before = gm_crossing_pairs(gm_elements(*mid));
+      const index_t before = gm_crossing_pairs(mid->elements());
       WARN(c.name << ": crossing face pairs " << before << " (midpoint) -> " << crossings << " (exact); faces "
                   << mid->element_faces << " -> " << r->element_faces);
       if (std::string(c.name) == "torus") CHECK(before > 0);
@@ -371,7 +364,7 @@ TEST_CASE("geometric tiles on a real mesh: exact clipping leaves no crossing fac
   auto exact = map_geometric_tiles(c.map.base, c.map, ring_tile_set(), o, pool);
   REQUIRE(mid);
   REQUIRE(exact);
-  const index_t before = gm_crossing_pairs(gm_elements(*mid)), after = gm_crossing_pairs(gm_elements(*exact));
+  const index_t before = gm_crossing_pairs(mid->elements()), after = gm_crossing_pairs(exact->elements());
   WARN("handle: crossing face pairs " << before << " (midpoint) -> " << after << " (exact)");
   CHECK(after == 0);
   gm_check_elements(c, *exact);

@@ -65,6 +65,8 @@ struct map_geometric_tiles_result {
   tri_mesh mesh;
   /// Vertices and faces of the elements (the leading part of `mesh`).
   index_t element_vertices = 0, element_faces = 0;
+  /// The elements alone: a copy of the leading part of `mesh`. O(element vertices + faces).
+  [[nodiscard]] tri_mesh elements() const { return detail::leading_part(mesh, element_vertices, element_faces); }
   /// H used, in base-mesh units.
   double height = 0;
   /// The polycube's tile size T in base-mesh units.

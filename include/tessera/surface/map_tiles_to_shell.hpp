@@ -85,12 +85,23 @@ struct shell_map_options {
   bool with_base = false;
 };
 
+namespace detail {
+/// The first `nv` vertices and `nf` faces of `m` (a mapping's elements, before an appended base).
+inline tri_mesh leading_part(const tri_mesh& m, index_t nv, index_t nf) {
+  tri_mesh e;
+  e.positions.assign(m.positions.begin(), m.positions.begin() + nv);
+  e.faces.assign(m.faces.begin(), m.faces.begin() + nf);
+  return e;
+}
+}  // namespace detail
 /// Output of map_tiles_to_shell.
 struct shell_map_result {
   /// The mapped elements (vertices and faces first), then the base mesh when with_base.
   tri_mesh mesh;
   /// Vertices and faces of the elements (the leading part of `mesh`).
   index_t element_vertices = 0, element_faces = 0;
+  /// The elements alone: a copy of the leading part of `mesh`. O(element vertices + faces).
+  [[nodiscard]] tri_mesh elements() const { return detail::leading_part(mesh, element_vertices, element_faces); }
   /// Tile vertices over all quads, and how many of them were welded to a vertex of a neighbouring quad.
   index_t tile_vertices = 0, welded_vertices = 0;
   /// Tile faces dropped because welding merged two of their corners.
