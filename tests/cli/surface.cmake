@@ -72,11 +72,6 @@ if(TESSERA_HAS_CGAL)
                              --threads 2 --stats)
     set_tests_properties("cli: geo-wang map boolean ${_op}" PROPERTIES FIXTURES_REQUIRED geo_tiles3)
   endforeach()
-  # midpoint refinement lets ring tubes cross near polycube corners: refused, with the way out
-  tessera_cli_test(NAME "cli: geo-wang map boolean crossing elements" CODE 1 REGEX "B intersects itself: [0-9]+ pairs"
-                   COMMAND geo-wang map --tiles ${TESSERA_CLI_OUT}/geometry/tiles3 --mesh ${_pcdata}/torus.obj
-                           --out ${_pc}/never.obj --tiles-across 6 --seed 3 --boolean union)
-  set_tests_properties("cli: geo-wang map boolean crossing elements" PROPERTIES FIXTURES_REQUIRED geo_tiles3)
   tessera_cli_test(NAME "cli: geo-wang map boolean and with-base" CODE 1 REGEX "give --with-base or --boolean"
                    COMMAND geo-wang map --tiles ${TESSERA_CLI_OUT}/geometry/tiles3 --mesh ${_pcdata}/torus.obj
                            --out ${_pc}/never.obj --boolean union --with-base)
