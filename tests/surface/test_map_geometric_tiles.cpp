@@ -215,8 +215,7 @@ TEST_CASE(
     auto sunk = map_geometric_tiles(c.mesh, c.map, ring_tile_set(), o, pool);
     REQUIRE(flat);
     REQUIRE(sunk);
-    // the same elements, moved: the appended base is the surface itself, not the sunk shell's bottom
-    CHECK(sunk->element_faces == flat->element_faces);
+    // the appended base is the surface itself, not the sunk shell's bottom
     CHECK(sunk->mesh.num_faces() == sunk->element_faces + c.map.base.num_faces());
     CHECK(std::equal(c.map.base.positions.begin(), c.map.base.positions.end(),
                      sunk->mesh.positions.begin() + sunk->element_vertices));
@@ -251,12 +250,21 @@ TEST_CASE(
       REQUIRE(!r);
       CHECK(r.error().message().find("sink in [0, 1)") != std::string::npos);
     }
-    o.shell.sink = 0.9;
-    o.height = 4 * c.map.tile_size;  // sunk 1.2 units into a unit sphere: the inward offset folds
-    auto sh = build_shell(c.map.base, o.height, o.shell);
+    // the L-shaped block (unit voxels) at H = 0.5: sunk 0.6 (0.3 in, 0.2 out) its shell does not fold;
+    // sunk 0.9 (0.45 in), the inward offsets along its convex edges do, and the repair mends them
+    const tri_mesh& l = gm_cases()[2].mesh;
+    auto standing = build_shell(l, 0.5, {.sink = 0.6});
+    REQUIRE(standing);
+    CHECK(standing->repaired_vertices == 0);
+    auto sh = build_shell(l, 0.5, {.sink = 0.9});
+    INFO((sh ? std::string() : sh.error().to_string()));
     REQUIRE(sh);
     CHECK(sh->repaired_vertices > 0);
-    for (index_t f = 0; f < c.map.base.num_faces(); ++f) REQUIRE(shell_prism_quality(*sh, f) >= o.shell.min_quality);
+    CHECK(sh->sink == 0.9);
+    for (index_t f = 0; f < l.num_faces(); ++f) REQUIRE(shell_prism_quality(*sh, f) >= 0.05);
+    auto unrepaired = build_shell(l, 0.5, {.max_rounds = 0, .sink = 0.9});
+    REQUIRE(!unrepaired);
+    CHECK(unrepaired.error().message().find("folded prisms remain") != std::string::npos);
   }
   SECTION("same seed, same output on 1 and 2 threads") {
     for (const auto& c : gm_cases()) {
