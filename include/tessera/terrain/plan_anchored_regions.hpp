@@ -56,6 +56,19 @@ struct anchored_synthesis_options {
   /// stay in their placement: 85 instead of 78 % continuous edges on the real DEM of docs/terrain.md
   /// with max_stretch 1.05).
   bool breadth_first = true;
+  /// Rounds of as-rigid-as-possible relaxation of each grown region round the faces it left
+  /// stretched by more than relax_above (detail/relax_anchored_region.hpp: only vertices inside a
+  /// placement move, so continuity is unchanged), 0 to 64; 0: none.
+  int relax_iterations = 3;
+  /// Faces stretched by more than this are relaxed, in [1, 2].
+  double relax_above = 1.2;
+  /// The vertices within this many side-steps of such a face move, 1 to 16.
+  int relax_rings = 1;
+  /// Passes round the faces still stretched beyond relax_above, each with wider rings, 1 to 8.
+  int relax_passes = 3;
+  /// After the relaxation (relax_iterations > 0), a face still stretched by more than this becomes
+  /// a placement of its own (a congruent copy; seams round it), in [1, 2]; max_stretch or more: none.
+  double relaxed_max_stretch = 1.25;
 };
 
 /// Mean edge lengths covered by one exemplar width when texels_per_unit is automatic.
@@ -106,6 +119,18 @@ inline result<anchored_regions> plan_anchored_regions(const terrain_mesh& mesh, 
     return status::invalid_argument(detail::cat("margin must be >= 0, got ", opts.margin));
   if (!(opts.max_stretch >= 1 && opts.max_stretch <= 2))
     return status::invalid_argument(detail::cat("max_stretch must be in [1, 2], got ", opts.max_stretch));
+  if (!(opts.relax_iterations >= 0 && opts.relax_iterations <= 64))
+    return status::invalid_argument(
+        detail::cat("relax_iterations must be 0 (no relaxation) to 64, got ", opts.relax_iterations));
+  if (!(opts.relax_above >= 1 && opts.relax_above <= 2))
+    return status::invalid_argument(detail::cat("relax_above must be in [1, 2], got ", opts.relax_above));
+  if (!(opts.relax_passes >= 1 && opts.relax_passes <= 8))
+    return status::invalid_argument(detail::cat("relax_passes must be 1 to 8, got ", opts.relax_passes));
+  if (!(opts.relaxed_max_stretch >= 1 && opts.relaxed_max_stretch <= 2))
+    return status::invalid_argument(
+        detail::cat("relaxed_max_stretch must be in [1, 2], got ", opts.relaxed_max_stretch));
+  if (!(opts.relax_rings >= 1 && opts.relax_rings <= 16))
+    return status::invalid_argument(detail::cat("relax_rings must be 1 to 16, got ", opts.relax_rings));
   if (auto s = validate_terrain_mesh(mesh); !s) return s;
   anchored_regions p;
   const index_t nf = mesh.num_faces();
