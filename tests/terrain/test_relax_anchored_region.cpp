@@ -78,10 +78,11 @@ TEST_CASE(
     "[terrain][anchored][relax]") {
   const auto mesh = terrain_test::prepared_terrain(64, 1, 14);
   const index_t W = 128;
-  const tessera::anchored_synthesis_options off{.seed = 3, .relax_iterations = 0};
+  // the growth joins faces up to 2 in all three (as the relaxation's does by default)
+  const tessera::anchored_synthesis_options off{.seed = 3, .max_stretch = 2, .relax_iterations = 0};
   tessera::anchored_synthesis_options relax_only = off, relax = off;
   relax_only.relax_iterations = relax.relax_iterations = 3;
-  relax_only.relaxed_max_stretch = relax_only.max_stretch;  // no settling: the relaxation alone
+  relax_only.relaxed_max_stretch = 2;  // no settling: the relaxation alone
   const grown a = grow(mesh, off, W), b = grow(mesh, relax_only, W), c = grow(mesh, relax, W);
   REQUIRE(a.total.hot == 0);
   REQUIRE(b.total.hot > 0);
@@ -90,9 +91,10 @@ TEST_CASE(
   REQUIRE(c.total.settled > 0);
   const double worst_a = max_stretch_of(mesh, a), worst_b = max_stretch_of(mesh, b), worst_c = max_stretch_of(mesh, c);
   INFO("max stretch: grown " << worst_a << ", relaxed " << worst_b << ", settled " << worst_c);
-  REQUIRE(worst_a > 1.3);  // the curved relief closes loops stretched
+  REQUIRE(worst_a > 1.5);  // the curved relief closes loops stretched
   REQUIRE(worst_b < worst_a);
   REQUIRE(worst_c <= relax.relaxed_max_stretch * (1 + 1e-6));
+  REQUIRE(relax.relaxed_max_stretch == 1.3);  // the default
   // the 95th percentile falls too
   auto p95 = [&](const grown& g) {
     std::vector<double> s;
@@ -133,7 +135,7 @@ TEST_CASE(
                fc = static_cast<double>(cont_c) / static_cast<double>(shared);
   INFO("continuous: grown " << fa << ", settled " << fc);
   REQUIRE(fc < fa);
-  REQUIRE(fc > fa - 0.01);
+  REQUIRE(fc > fa - 0.02);
 }
 
 TEST_CASE("relaxation: nothing moves on developable ground", "[terrain][anchored][relax]") {

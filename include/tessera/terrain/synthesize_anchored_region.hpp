@@ -13,7 +13,8 @@
 //            On curved ground unfolding does not close up round a vertex (the angle defect, Gauss):
 //            when the third corner already has a coordinate in the placement, the face takes it and
 //            is then not quite congruent; it joins only if its stretch (texture_stretch.hpp) stays
-//            at most max_stretch (default 1.55), else it is a seam (another neighbour's placement,
+//            at most max_stretch (default 1.55; with the relaxation relax_join_stretch, 2), else it
+//            is a seam (another neighbour's placement,
 //            or a new placement)
 //   order    the paper's growth over face adjacency inside the region, from the region's seed
 //            face: each face taken up is placed and adds its unplaced neighbours of the same region
@@ -34,15 +35,17 @@
 //            an axis along which it fits is kept, keep_fitting_axis), so the seam is a translation
 //            along one axis (none at all where the face only failed max_stretch); sides between
 //            placements (and between regions) are seams the renderer blends
-//   relax    after the growth (relax_iterations > 0), the faces it left stretched beyond relax_above
+//   relax    after the growth (relax_iterations > 0, the default; the growth then joins faces up to
+//            relax_join_stretch, so more loops close), the faces it left stretched beyond relax_above
 //            are relaxed with the vertices round them (detail/relax_anchored_region.hpp: bounded
 //            as-rigid-as-possible steps that spread a loop's mismatch over its neighbours, move
 //            every placement's coordinate of a vertex alike and so change no edge's continuity,
-//            keep the coordinates in the exemplar and every face within max_stretch)
-//   settle   then a face still stretched beyond relaxed_max_stretch becomes a placement of its own:
+//            keep the coordinates in the exemplar and every face within the growth's bound)
+//   settle   then a face still stretched beyond min(max_stretch, relaxed_max_stretch) becomes a
+//            placement of its own:
 //            congruent, unfolded across its first side that continues its placement (exactly, as
 //            a restart), shifted into the exemplar only if it leaves it. So every face ends within
-//            relaxed_max_stretch (when below max_stretch), at the price of the seams round those faces
+//            min(max_stretch, relaxed_max_stretch), at the price of the seams round those faces
 //
 // Coordinates are exemplar pixels at level 0 measured from the exemplar's centre; a face at
 // pyramid level l uses uv * scale(l), the same picture pre-filtered by the level.
@@ -83,7 +86,7 @@ struct anchored_atlas {
 struct anchored_region_stats {
   /// Faces placed, placements made, restarts, deferred faces, faces larger than their level image.
   index_t faces = 0, patches = 0, restarts = 0, deferred = 0, oversized = 0;
-  /// Faces the growth left stretched beyond relax_above (or relaxed_max_stretch if smaller), free
+  /// Faces the growth left stretched beyond relax_above (or the final bound if smaller), free
   /// vertices of the relaxation (summed over its passes), faces made placements of their own after it.
   index_t hot = 0, relaxed = 0, settled = 0;
 };
@@ -246,14 +249,18 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
   auto& table = scr.table;
   auto& corners = scr.corners;  // per i: table entries of its corners
   auto& lpatch = scr.patch;     // per i: placement (-1 unplaced, -2 waiting)
-  const double tpu = plan.texels_per_unit, max_stretch = opts.max_stretch;
+  const bool relax = opts.relax_iterations > 0;
+  // with the relaxation, the growth joins faces up to relax_join_stretch (loops close: continuity),
+  // and the faces left beyond the final bound are settled after it
+  const double tpu = plan.texels_per_unit,
+               max_stretch = relax ? std::max(opts.max_stretch, opts.relax_join_stretch) : opts.max_stretch;
+  const double final_stretch = std::min(opts.max_stretch, opts.relaxed_max_stretch);
   queue.clear();
   table.reset(nvertices);
   corners.resize(nfaces);
   lpatch.assign(nfaces, -1);
   std::int32_t patches = 0;
-  const bool relax = opts.relax_iterations > 0;
-  const double hot_above = std::min(opts.relax_above, opts.relaxed_max_stretch);
+  const double hot_above = std::min(opts.relax_above, final_stretch);
   auto& hot = scr.hot;
   hot.clear();
   const std::int32_t seed_face = plan.seed[detail::to_size(region)];
@@ -426,12 +433,12 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
       atlas.uv[detail::to_size(begin[detail::to_size(i)])] =
           to_uv({table.coord(ce[0]), table.coord(ce[1]), table.coord(ce[2])});
     }
-    if (opts.relaxed_max_stretch < max_stretch) {
+    if (final_stretch < max_stretch) {
       const std::int32_t first_own = patches;
       auto settle = [&](std::int32_t i) {
         const auto li = detail::to_size(i);
         if (lpatch[li] >= first_own ||
-            detail::anchored_within(geo[li], atlas.uv[detail::to_size(begin[li])], opts.relaxed_max_stretch))
+            detail::anchored_within(geo[li], atlas.uv[detail::to_size(begin[li])], final_stretch))
           return;
         int side = -1;
         for (int k = 0; k < 3 && side < 0; ++k) {
