@@ -62,7 +62,7 @@ struct anchored_synthesis_options {
   /// faces it left stretched by more than relax_above (detail/relax_anchored_region.hpp: every
   /// placement's coordinate of a vertex moves alike, so no edge's continuity changes), then the
   /// settling of relaxed_max_stretch; 0 to 64, 0: neither (the growth alone, within max_stretch).
-  /// The defaults (3 rounds, 1 ring, 6 passes, 1.2, joining up to 2, settling beyond 1.25) were
+  /// The defaults (3 rounds, 1 ring, 3 passes, 1.2, joining up to 2, settling beyond 1.3) were
   /// measured in docs/terrain.md, "Slope stretch".
   int relax_iterations = 3;
   /// Faces stretched by more than this are relaxed, in [1, 2].
@@ -70,14 +70,14 @@ struct anchored_synthesis_options {
   /// The vertices within this many side-steps of such a face move, 1 to 16.
   int relax_rings = 1;
   /// Passes round the faces still stretched beyond relax_above, each with wider rings, 1 to 8.
-  int relax_passes = 6;
+  int relax_passes = 3;
   /// With the relaxation (relax_iterations > 0), the growth joins a face to a placement up to this
   /// stretch (if more than max_stretch), in [1, 2]: more loops close (more continuous edges), the
   /// relaxation spreads their mismatch and the settling cuts what is left beyond the final bound.
   double relax_join_stretch = 2;
   /// After the relaxation, a face still stretched by more than min(max_stretch, this) becomes a
   /// placement of its own (a congruent copy; seams round it), in [1, 2]: no face ends beyond it.
-  double relaxed_max_stretch = 1.25;
+  double relaxed_max_stretch = 1.3;
 };
 
 /// Mean edge lengths covered by one exemplar width when texels_per_unit is automatic.
