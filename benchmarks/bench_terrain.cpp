@@ -6,7 +6,8 @@
 // the measured time to rendering the same frame with plain tiled mapping (timed in the same run).
 //
 // Ground-anchored sessions (issue 18): BM_SessionFirstFrame (a fresh terrain_session's first
-// update; counter caller_cpu_ms, the CPU time of the calling thread alone, next to the process's), BM_SessionIncremental (the camera moving 1 % of its view distance per frame, back and
+// update; counter caller_cpu_ms, the CPU time of the calling thread alone, next to the process's;
+// with and without the relaxation of the grown regions, the same-run ratio), BM_SessionIncremental (the camera moving 1 % of its view distance per frame, back and
 // forth; the overview camera with every face in view, and the grazing one) with counters stable (faces visible in consecutive frames with unchanged coordinates),
 // continuous (shared edges), jump (largest level jump), resynth (faces re-synthesized per frame)
 // and bytes_per_face (session memory); BM_MemcpyFaceOutput, a memcpy of the per-face corner
@@ -288,16 +289,19 @@ double thread_cpu_ms() {
   return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
 }
 
-/// Session options: level 0 up to where a texel covers a pixel of the overview camera (as the CLI).
-tessera::result<tessera::terrain_session> make_session(const tessera::terrain_mesh& mesh) {
-  auto s = tessera::make_terrain_session(mesh, exemplar_side, exemplar_side, {});
-  if (!s) return s;
+/// Session options: level 0 up to where a texel covers a pixel of the overview camera (as the CLI);
+/// `relax` false turns the relaxation of the grown regions off (relax_iterations = 0).
+tessera::result<tessera::terrain_session> make_session(const tessera::terrain_mesh& mesh, bool relax = true) {
   tessera::terrain_session_options o;
+  if (!relax) o.synthesis.relax_iterations = 0;
+  auto s = tessera::make_terrain_session(mesh, exemplar_side, exemplar_side, o);
+  if (!s) return s;
   const double focal = 0.5 * static_cast<double>(frame_h) * moved_camera(mesh, 0).projection[1][1];
   o.near_distance = std::max(s->near_distance(), focal / s->regions().texels_per_unit);
   return tessera::make_terrain_session(mesh, exemplar_side, exemplar_side, o);
 }
 
+/// Range 0: faces; range 1: 1 the default relaxation of the grown regions, 0 none.
 void BM_SessionFirstFrame(benchmark::State& state) {
   scene* s = scene_or_skip(state, state.range(0));
   if (!s) return;
@@ -305,7 +309,7 @@ void BM_SessionFirstFrame(benchmark::State& state) {
   double caller_ms = 0;  // CPU time of the calling thread alone (the process's minus it: the worker's)
   for (auto _ : state) {
     state.PauseTiming();
-    auto session = make_session(s->mesh);
+    auto session = make_session(s->mesh, state.range(1) != 0);
     state.ResumeTiming();
     if (!session) return (void)failed(state, session.error());
     const double t0 = thread_cpu_ms();
@@ -323,19 +327,22 @@ void BM_SessionFirstFrame(benchmark::State& state) {
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * s->proj.num_visible());
 }
 BENCHMARK(BM_SessionFirstFrame)
-    ->Arg(100000)
-    ->Arg(1000000)
+    ->Args({100000, 0})
+    ->Args({100000, 1})
+    ->Args({1000000, 0})
+    ->Args({1000000, 1})
     ->Iterations(5)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->MeasureProcessCPUTime();
 
 /// Range 0: faces; range 1: 0 the overview camera (every face in view), 1 the grazing one (faces
-/// entering and leaving the view and changing level every frame).
+/// entering and leaving the view and changing level every frame); range 2: 1 the default
+/// relaxation of the grown regions, 0 none.
 void BM_SessionIncremental(benchmark::State& state) {
   scene* s = scene_or_skip(state, state.range(0));
   if (!s) return;
-  auto session = make_session(s->mesh);
+  auto session = make_session(s->mesh, state.range(2) != 0);
   if (!session) return (void)failed(state, session.error());
   const auto preset = state.range(1) == 0 ? tessera::camera_preset::overview : tessera::camera_preset::grazing;
   // 40 frames moving 1 % of the view distance each, forth then back
@@ -368,10 +375,11 @@ void BM_SessionIncremental(benchmark::State& state) {
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * s->proj.num_visible());
 }
 BENCHMARK(BM_SessionIncremental)
-    ->Args({100000, 0})
-    ->Args({1000000, 0})
-    ->Args({100000, 1})
-    ->Args({1000000, 1})
+    ->Args({100000, 0, 1})
+    ->Args({1000000, 0, 1})
+    ->Args({100000, 1, 1})
+    ->Args({1000000, 1, 0})
+    ->Args({1000000, 1, 1})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->MeasureProcessCPUTime();

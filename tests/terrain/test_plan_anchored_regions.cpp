@@ -71,6 +71,14 @@ TEST_CASE("plan_anchored_regions: bad options and meshes are refused with a reas
   REQUIRE(msg(8, 8, {.margin = -1}).find("margin") != std::string::npos);
   REQUIRE(msg(8, 8, {.max_stretch = 0.99}).find("max_stretch") != std::string::npos);
   REQUIRE(msg(8, 8, {.max_stretch = NAN}).find("max_stretch") != std::string::npos);
+  REQUIRE(msg(8, 8, {.relax_iterations = -1}).find("relax_iterations must be 0 (no relaxation) to 64, got -1") !=
+          std::string::npos);
+  REQUIRE(msg(8, 8, {.relax_iterations = 65}).find("relax_iterations") != std::string::npos);
+  REQUIRE(msg(8, 8, {.relax_above = 0.9}).find("relax_above must be in [1, 2]") != std::string::npos);
+  REQUIRE(msg(8, 8, {.relax_above = NAN}).find("relax_above") != std::string::npos);
+  REQUIRE(msg(8, 8, {.relax_rings = 0}).find("relax_rings must be 1 to 16") != std::string::npos);
+  REQUIRE(msg(8, 8, {.relax_passes = 9}).find("relax_passes must be 1 to 8") != std::string::npos);
+  REQUIRE(msg(8, 8, {.relaxed_max_stretch = 2.5}).find("relaxed_max_stretch must be in [1, 2]") != std::string::npos);
   mesh.faces[3][1] = 100000;
   REQUIRE(msg(8, 8, {}).find("face 3") != std::string::npos);
   const tessera::terrain_mesh empty;

@@ -154,6 +154,15 @@ inline bool anchored_unfold(const anchored_face_geometry& g, int k, vec2 ta, vec
   return true;
 }
 
+/// Whether the squared singular values of a 2 x 2 map J, the roots of x^2 - q x + d2 with q =
+/// |J|_F^2 and d2 = det J^2, both lie in [1 / m^2, m^2] (stretch at most m, texture_stretch.hpp).
+inline bool anchored_singular_within(double q, double d2, double max_stretch) noexcept {
+  const double hi = max_stretch * max_stretch, lo = 1 / hi;
+  // a monic quadratic with real roots has both in [lo, hi] iff its vertex q / 2 lies in [lo, hi]
+  // and it is >= 0 at both ends
+  return q <= 2 * hi && q >= 2 * lo && hi * hi - q * hi + d2 >= 0 && lo * lo - q * lo + d2 >= 0;
+}
+
 /// Whether texture corners `uv` (u0 v0 u1 v1 u2 v2, level-0 texels) on face g are stretched by at
 /// most max_stretch (>= 1; texture_stretch.hpp's measure), without a square root: both squared
 /// singular values of J, the roots of x^2 - |J|_F^2 x + det J^2, in [1 / m^2, m^2] (see the file
@@ -171,10 +180,7 @@ inline bool anchored_within(const anchored_face_geometry& g, const std::array<fl
                     (u2 * u2 + v2 * v2) * g.len2[0]) *
                    r;
   const double d2 = det_t * det_t * (r * g.area2) * (r * g.area2);  // det T^2 / det G, det G = tpu^4 area2^2
-  const double hi = max_stretch * max_stretch, lo = 1 / hi;
-  // a monic quadratic with real roots has both in [lo, hi] iff its vertex q / 2 lies in [lo, hi]
-  // and it is >= 0 at both ends
-  return q <= 2 * hi && q >= 2 * lo && hi * hi - q * hi + d2 >= 0 && lo * lo - q * lo + d2 >= 0;
+  return anchored_singular_within(q, d2, max_stretch);
 }
 
 }  // namespace detail

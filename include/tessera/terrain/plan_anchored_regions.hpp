@@ -45,9 +45,11 @@ struct anchored_synthesis_options {
   /// A new placement keeps the unfolded coordinate along an axis that still fits (a one-dimensional seam).
   bool keep_fitting_axis = true;
   /// A face joins a neighbour's placement only if its texture there is stretched by at most this
-  /// (texture_stretch.hpp: 1 is congruent), in [1, 2]. Faces are unfolded congruently across their
+  /// (texture_stretch.hpp: 1 is congruent), in [1, 2]; with the relaxation on (the default) the
+  /// growth joins up to relax_join_stretch instead and this bounds every face at the end, with
+  /// relaxed_max_stretch. Faces are unfolded congruently across their
   /// neighbours; only a face closing a loop whose corners a placement already holds can be stretched.
-  /// The default is the smallest bound that keeps 95 % of the shared edges continuous on the
+  /// The default is the smallest bound that keeps, without the relaxation, 95 % of the shared edges continuous on the
   /// default relief, the 10^6-face grid and the real DEM of docs/terrain.md (a smaller one gives
   /// less stretch and more seams: 1.05 gives 78 to 91 % continuous edges; table there).
   double max_stretch = 1.55;
@@ -56,6 +58,26 @@ struct anchored_synthesis_options {
   /// stay in their placement: 85 instead of 78 % continuous edges on the real DEM of docs/terrain.md
   /// with max_stretch 1.05).
   bool breadth_first = true;
+  /// Rounds of as-rigid-as-possible relaxation per pass, after a region has grown, round the
+  /// faces it left stretched by more than relax_above (detail/relax_anchored_region.hpp: every
+  /// placement's coordinate of a vertex moves alike, so no edge's continuity changes), then the
+  /// settling of relaxed_max_stretch; 0 to 64, 0: neither (the growth alone, within max_stretch).
+  /// The defaults (3 rounds, 1 ring, 3 passes, 1.2, joining up to 2, settling beyond 1.3) were
+  /// measured in docs/terrain.md, "Slope stretch".
+  int relax_iterations = 3;
+  /// Faces stretched by more than this are relaxed, in [1, 2].
+  double relax_above = 1.2;
+  /// The vertices within this many side-steps of such a face move, 1 to 16.
+  int relax_rings = 1;
+  /// Passes round the faces still stretched beyond relax_above, each with wider rings, 1 to 8.
+  int relax_passes = 3;
+  /// With the relaxation (relax_iterations > 0), the growth joins a face to a placement up to this
+  /// stretch (if more than max_stretch), in [1, 2]: more loops close (more continuous edges), the
+  /// relaxation spreads their mismatch and the settling cuts what is left beyond the final bound.
+  double relax_join_stretch = 2;
+  /// After the relaxation, a face still stretched by more than min(max_stretch, this) becomes a
+  /// placement of its own (a congruent copy; seams round it), in [1, 2]: no face ends beyond it.
+  double relaxed_max_stretch = 1.3;
 };
 
 /// Mean edge lengths covered by one exemplar width when texels_per_unit is automatic.
@@ -106,6 +128,20 @@ inline result<anchored_regions> plan_anchored_regions(const terrain_mesh& mesh, 
     return status::invalid_argument(detail::cat("margin must be >= 0, got ", opts.margin));
   if (!(opts.max_stretch >= 1 && opts.max_stretch <= 2))
     return status::invalid_argument(detail::cat("max_stretch must be in [1, 2], got ", opts.max_stretch));
+  if (!(opts.relax_iterations >= 0 && opts.relax_iterations <= 64))
+    return status::invalid_argument(
+        detail::cat("relax_iterations must be 0 (no relaxation) to 64, got ", opts.relax_iterations));
+  if (!(opts.relax_above >= 1 && opts.relax_above <= 2))
+    return status::invalid_argument(detail::cat("relax_above must be in [1, 2], got ", opts.relax_above));
+  if (!(opts.relax_passes >= 1 && opts.relax_passes <= 8))
+    return status::invalid_argument(detail::cat("relax_passes must be 1 to 8, got ", opts.relax_passes));
+  if (!(opts.relax_join_stretch >= 1 && opts.relax_join_stretch <= 2))
+    return status::invalid_argument(detail::cat("relax_join_stretch must be in [1, 2], got ", opts.relax_join_stretch));
+  if (!(opts.relaxed_max_stretch >= 1 && opts.relaxed_max_stretch <= 2))
+    return status::invalid_argument(
+        detail::cat("relaxed_max_stretch must be in [1, 2], got ", opts.relaxed_max_stretch));
+  if (!(opts.relax_rings >= 1 && opts.relax_rings <= 16))
+    return status::invalid_argument(detail::cat("relax_rings must be 1 to 16, got ", opts.relax_rings));
   if (auto s = validate_terrain_mesh(mesh); !s) return s;
   anchored_regions p;
   const index_t nf = mesh.num_faces();

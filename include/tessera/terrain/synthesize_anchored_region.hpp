@@ -13,7 +13,8 @@
 //            On curved ground unfolding does not close up round a vertex (the angle defect, Gauss):
 //            when the third corner already has a coordinate in the placement, the face takes it and
 //            is then not quite congruent; it joins only if its stretch (texture_stretch.hpp) stays
-//            at most max_stretch (default 1.55), else it is a seam (another neighbour's placement,
+//            at most max_stretch (default 1.55; with the relaxation relax_join_stretch, 2), else it
+//            is a seam (another neighbour's placement,
 //            or a new placement)
 //   order    the paper's growth over face adjacency inside the region, from the region's seed
 //            face: each face taken up is placed and adds its unplaced neighbours of the same region
@@ -34,6 +35,17 @@
 //            an axis along which it fits is kept, keep_fitting_axis), so the seam is a translation
 //            along one axis (none at all where the face only failed max_stretch); sides between
 //            placements (and between regions) are seams the renderer blends
+//   relax    after the growth (relax_iterations > 0, the default; the growth then joins faces up to
+//            relax_join_stretch, so more loops close), the faces it left stretched beyond relax_above
+//            are relaxed with the vertices round them (detail/relax_anchored_region.hpp: bounded
+//            as-rigid-as-possible steps that spread a loop's mismatch over its neighbours, move
+//            every placement's coordinate of a vertex alike and so change no edge's continuity,
+//            keep the coordinates in the exemplar and every face within the growth's bound)
+//   settle   then a face still stretched beyond min(max_stretch, relaxed_max_stretch) becomes a
+//            placement of its own:
+//            congruent, unfolded across its first side that continues its placement (exactly, as
+//            a restart), shifted into the exemplar only if it leaves it. So every face ends within
+//            min(max_stretch, relaxed_max_stretch), at the price of the seams round those faces
 //
 // Coordinates are exemplar pixels at level 0 measured from the exemplar's centre; a face at
 // pyramid level l uses uv * scale(l), the same picture pre-filtered by the level.
@@ -50,6 +62,8 @@
 #include "../core/random.hpp"
 #include "../core/status.hpp"
 #include "../core/vec.hpp"
+#include "detail/anchored_vertex_table.hpp"
+#include "detail/relax_anchored_region.hpp"
 #include "detail/stack_growth.hpp"
 #include "anchored_region_geometry.hpp"
 #include "plan_anchored_regions.hpp"
@@ -72,6 +86,9 @@ struct anchored_atlas {
 struct anchored_region_stats {
   /// Faces placed, placements made, restarts, deferred faces, faces larger than their level image.
   index_t faces = 0, patches = 0, restarts = 0, deferred = 0, oversized = 0;
+  /// Faces the growth left stretched beyond relax_above (or the final bound if smaller), free
+  /// vertices of the relaxation (summed over its passes), faces made placements of their own after it.
+  index_t hot = 0, relaxed = 0, settled = 0;
 };
 
 /// Empties `atlas` for `plan` over a mesh of `faces` faces (no region grown).
@@ -142,53 +159,17 @@ inline tri_uv anchored_face_coords(const terrain_mesh& mesh, const anchored_fram
   return t;
 }
 
-/// The coordinate of each vertex in each placement of the region being grown. Vertices are
-/// numbered in the region (anchored_face_geometry::vertices); a vertex has a short list of entries
-/// (placement, coordinate), usually one (more where it lies on a seam between placements), linked
-/// from `head`. Entries are numbered in insertion order, their coordinates (double) stored densely.
-/// Kept per thread between calls.
-class anchored_vertex_table {
- public:
-  /// Empties the table for `vertices` region vertices.
-  void reset(std::size_t vertices) {
-    head_.assign(vertices, -1);
-    coords_.clear();
-    patch_.clear();
-    next_.clear();
-  }
-  /// The entry of region vertex v in placement p, or -1.
-  [[nodiscard]] std::int32_t find(std::int32_t v, std::int32_t p) const noexcept {
-    for (std::int32_t e = head_[to_size(v)]; e >= 0; e = next_[to_size(e)])
-      if (patch_[to_size(e)] == p) return e;
-    return -1;
-  }
-  /// Inserts (v, p) (not yet present) with coordinate c; returns its entry.
-  std::int32_t insert(std::int32_t v, std::int32_t p, vec2 c) {
-    const auto e = static_cast<std::int32_t>(coords_.size());
-    coords_.push_back(c);
-    patch_.push_back(p);
-    next_.push_back(head_[to_size(v)]);
-    head_[to_size(v)] = e;
-    return e;
-  }
-  /// The coordinate of entry e.
-  [[nodiscard]] const vec2& coord(std::int32_t e) const noexcept { return coords_[to_size(e)]; }
-
- private:
-  std::vector<std::int32_t> head_, patch_, next_;
-  std::vector<vec2> coords_;
-};
-
 /// What growing a region needs besides the atlas, kept per thread between calls (regions grow in
 /// parallel; allocating it per region would cost more than growing a small one): the order's
 /// queue (or stack) and waiting list, the vertex table, the region's geometry when the caller has
 /// none gathered, and per face of the region its placement and the table entries of its corners
 /// (their coordinates in its placement).
 struct anchored_scratch {
-  std::vector<std::int32_t> order, deferred, patch;
+  std::vector<std::int32_t> order, deferred, patch, hot;
   std::vector<std::array<std::int32_t, 3>> corners;
   std::vector<anchored_face_geometry> geometry;
   anchored_vertex_table table;
+  anchored_relax_scratch relax;
   unsigned char touched = 0;  ///< keeps the reading of the geometry before the growth
 };
 inline anchored_scratch& anchored_thread_scratch() {
@@ -268,12 +249,20 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
   auto& table = scr.table;
   auto& corners = scr.corners;  // per i: table entries of its corners
   auto& lpatch = scr.patch;     // per i: placement (-1 unplaced, -2 waiting)
-  const double tpu = plan.texels_per_unit, max_stretch = opts.max_stretch;
+  const bool relax = opts.relax_iterations > 0;
+  // with the relaxation, the growth joins faces up to relax_join_stretch (loops close: continuity),
+  // and the faces left beyond the final bound are settled after it
+  const double tpu = plan.texels_per_unit,
+               max_stretch = relax ? std::max(opts.max_stretch, opts.relax_join_stretch) : opts.max_stretch;
+  const double final_stretch = std::min(opts.max_stretch, opts.relaxed_max_stretch);
   queue.clear();
   table.reset(nvertices);
   corners.resize(nfaces);
   lpatch.assign(nfaces, -1);
   std::int32_t patches = 0;
+  const double hot_above = std::min(opts.relax_above, final_stretch);
+  auto& hot = scr.hot;
+  hot.clear();
   const std::int32_t seed_face = plan.seed[detail::to_size(region)];
   std::size_t next_start = 0;
   auto fits = [&](const detail::tri_uv& t) {
@@ -291,6 +280,48 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
   auto corner_of = [&](std::int32_t n, std::int32_t v) {
     const auto& nv = geo[detail::to_size(n)].vertices;
     return nv[0] == v ? std::size_t{0} : nv[1] == v ? std::size_t{1} : std::size_t{2};
+  };
+  // a new placement for face i of the region: the face congruent, unfolded across its side `side`
+  // from the placed neighbour there (or, with side -1, in its own plane's world-anchored frame),
+  // then shifted into the exemplar; true if it is larger than the exemplar
+  auto new_placement = [&](std::int32_t i, int side) {
+    const auto li = detail::to_size(i);
+    const auto f = begin[li];
+    const anchored_face_geometry& shape = geo[li];
+    const auto& fv = shape.vertices;
+    const double half[2] = {hw, hh};
+    bool keep[2] = {false, false};
+    std::array<vec2, 3> c3;
+    bool have = false;
+    if (side >= 0) {
+      const std::int32_t n = shape.neighbors[detail::to_size(side)];
+      const auto& cn = corners[detail::to_size(n)];
+      have = detail::anchored_unfold(shape, side, table.coord(cn[corner_of(n, fv[detail::to_size(side)])]),
+                                     table.coord(cn[corner_of(n, fv[detail::to_size((side + 1) % 3)])]), tpu, true, c3);
+      if (have)
+        for (int axis = 0; axis < 2; ++axis)
+          keep[axis] = opts.keep_fitting_axis && detail::anchored_fits_axis(to_uv(c3), axis, half[axis]);
+    }
+    if (!have) {
+      const detail::anchored_frame own = detail::anchored_face_frame(mesh, plan, f);
+      for (std::size_t c = 0; c < 3; ++c)
+        c3[c] = detail::anchored_coord(own, mesh.position(mesh.faces[detail::to_size(f)][c]), tpu);
+    }
+    bool big = false;
+    for (int axis = 0; axis < 2; ++axis) {
+      if (keep[axis]) continue;
+      double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+      for (std::size_t c = 0; c < 3; ++c) lo = std::min(lo, c3[c][axis]), hi = std::max(hi, c3[c][axis]);
+      const double a = -half[axis] - lo, b = half[axis] - hi;  // feasible shifts [a, b]
+      if (b < a) big = true;
+      const double shift = b < a ? 0.5 * (a + b) : a + rng.uniform(f, axis) * (b - a);
+      for (std::size_t c = 0; c < 3; ++c) c3[c][axis] += shift;
+    }
+    auto& ce = corners[li];
+    for (std::size_t c = 0; c < 3; ++c) table.use(ce[c] = table.insert(fv[c], patches, c3[c]));
+    atlas.uv[detail::to_size(f)] = to_uv(c3);
+    lpatch[li] = patches++;
+    return big;
   };
   // §2.3 step (2) on the ground for face i of the region taken up: continue a placed neighbour's
   // placement, wait, or place anew
@@ -345,6 +376,8 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
       if (best_entries[2] < 0) best_entries[2] = table.insert(fv[kc], best_patch, best_c3[kc]);
       auto& ce = corners[li];
       for (std::size_t j = 0; j < 3; ++j) ce[(detail::to_size(best_side) + j) % 3] = best_entries[j];
+      for (const std::int32_t e : best_entries) table.use(e);
+      if (relax && !detail::anchored_within(shape, best_uv, hot_above)) hot.push_back(i);
     } else if (opts.defer_restarts && placed > 0 && !forced) {
       if (lpatch[li] == -1) {
         lpatch[li] = -2;
@@ -353,43 +386,8 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
       }
       return true;
     } else {
-      // a new placement: the face congruent, unfolded from its oldest placed neighbour (or, with
-      // none, in its own plane's world-anchored frame), then shifted into the exemplar
-      const double half[2] = {hw, hh};
-      bool keep[2] = {false, false};
-      std::array<vec2, 3> c3;
-      bool have = false;
-      if (oldest >= 0) {
-        const std::int32_t n = nb[detail::to_size(oldest)];
-        const auto& cn = corners[detail::to_size(n)];
-        have = detail::anchored_unfold(shape, oldest, table.coord(cn[corner_of(n, fv[detail::to_size(oldest)])]),
-                                       table.coord(cn[corner_of(n, fv[detail::to_size((oldest + 1) % 3)])]), tpu, true,
-                                       c3);
-        if (have)
-          for (int axis = 0; axis < 2; ++axis)
-            keep[axis] = opts.keep_fitting_axis && detail::anchored_fits_axis(to_uv(c3), axis, half[axis]);
-      }
-      if (!have) {
-        const detail::anchored_frame own = detail::anchored_face_frame(mesh, plan, f);
-        for (std::size_t c = 0; c < 3; ++c)
-          c3[c] = detail::anchored_coord(own, mesh.position(mesh.faces[detail::to_size(f)][c]), tpu);
-      }
-      bool big = false;
-      for (int axis = 0; axis < 2; ++axis) {
-        if (keep[axis]) continue;
-        double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-        for (std::size_t c = 0; c < 3; ++c) lo = std::min(lo, c3[c][axis]), hi = std::max(hi, c3[c][axis]);
-        const double a = -half[axis] - lo, b = half[axis] - hi;  // feasible shifts [a, b]
-        if (b < a) big = true;
-        const double shift = b < a ? 0.5 * (a + b) : a + rng.uniform(f, axis) * (b - a);
-        for (std::size_t c = 0; c < 3; ++c) c3[c][axis] += shift;
-      }
-      auto& ce = corners[li];
-      for (std::size_t c = 0; c < 3; ++c) ce[c] = table.insert(fv[c], patches, c3[c]);
-      atlas.uv[detail::to_size(f)] = to_uv(c3);
-      lpatch[li] = patches++;
+      st.oversized += new_placement(i, oldest) ? 1 : 0;
       st.restarts += oldest >= 0 ? 1 : 0;
-      st.oversized += big ? 1 : 0;
     }
     ++st.faces;
     for (int k = 0; k < 3; ++k) {
@@ -413,6 +411,48 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
     else
       detail::grow_by_stack(queue, deferred, place_face);
   }
+  // the relaxation round the faces left stretched (detail/relax_anchored_region.hpp); the faces
+  // round the moved vertices take their corners from the table again. Then a face still stretched
+  // beyond relaxed_max_stretch becomes a placement of its own, a congruent copy unfolded across
+  // its first side that continues its placement (a seam round it, nearly continuous there)
+  st.hot = static_cast<index_t>(hot.size());
+  if (relax && !hot.empty()) {
+    const detail::anchored_relax_region reg{geo, lpatch.data(), corners.data(), nfaces, nvertices};
+    const detail::anchored_relax_settings set{.iterations = opts.relax_iterations,
+                                              .rings = opts.relax_rings,
+                                              .passes = opts.relax_passes,
+                                              .above = opts.relax_above,
+                                              .max_stretch = max_stretch,
+                                              .half_w = hw,
+                                              .half_h = hh,
+                                              .texels_per_unit = tpu};
+    scr.relax.hot.assign(hot.begin(), hot.end());
+    st.relaxed = static_cast<index_t>(detail::relax_anchored_region(reg, table, set, scr.relax));
+    for (const std::int32_t i : scr.relax.changed) {
+      const auto& ce = corners[detail::to_size(i)];
+      atlas.uv[detail::to_size(begin[detail::to_size(i)])] =
+          to_uv({table.coord(ce[0]), table.coord(ce[1]), table.coord(ce[2])});
+    }
+    if (final_stretch < max_stretch) {
+      const std::int32_t first_own = patches;
+      auto settle = [&](std::int32_t i) {
+        const auto li = detail::to_size(i);
+        if (lpatch[li] >= first_own ||
+            detail::anchored_within(geo[li], atlas.uv[detail::to_size(begin[li])], final_stretch))
+          return;
+        int side = -1;
+        for (int k = 0; k < 3 && side < 0; ++k) {
+          const std::int32_t n = geo[li].neighbors[detail::to_size(k)];
+          if (n >= 0 && lpatch[detail::to_size(n)] == lpatch[li]) side = k;
+        }
+        st.oversized += new_placement(i, side) ? 1 : 0;
+        ++st.settled;
+      };
+      for (const std::int32_t i : hot) settle(i);
+      for (const std::int32_t i : scr.relax.changed) settle(i);
+    }
+  }
+  st.patches = patches;
   // placements and seams: a side is continuous when the neighbour is of this region and of the
   // same placement (every corner of a face in placement p is the table's entry (vertex, p), so both
   // shared corners have the same coordinates, bit for bit)
@@ -427,7 +467,6 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
     atlas.seam[fi] = bits;
   }
   atlas.region_done[detail::to_size(region)] = 1;
-  st.patches = patches;
   if (stats) *stats = st;
   return {};
 }
