@@ -168,8 +168,14 @@ int run_terrain_frames(const cli::arguments& args) {
   auto feather = args.number("--feather", anchor == "ground" ? 2.0 : 3.0, 0, 64);
   auto grid = args.integer("--grid", 128, 1, max_grid);
   auto relief = args.number("--height", 14.0, 0, 1e6);
-  for (const status* s : {&min_scale.error(), &levels.error(), &feather.error(), &grid.error(), &relief.error()})
+  // ground anchoring: the largest texture stretch a face may end with, and the relaxation rounds
+  auto max_stretch = args.number("--max-stretch", 1.3, 1, 2);
+  auto relax = args.integer("--relax", 3, 0, 64);
+  for (const status* s : {&min_scale.error(), &levels.error(), &feather.error(), &grid.error(), &relief.error(),
+                          &max_stretch.error(), &relax.error()})
     if (!s->ok()) return fail(*s);
+  if (anchor != "ground" && (args.has("--max-stretch") || args.has("--relax")))
+    return fail(status::invalid_argument("--max-stretch and --relax apply to --anchor ground only"));
   if (!(*min_scale > 0 && *min_scale <= 1))
     return fail(status::invalid_argument("--min-scale must be in (0, 1], got " + args.str("--min-scale")));
   tessera::thread_pool_executor pool(args.threads());
@@ -200,6 +206,11 @@ int run_terrain_frames(const cli::arguments& args) {
   result<tessera::terrain_session> session = status::invalid_argument("unused");
   if (anchor == "ground") {
     tessera::terrain_session_options so{.synthesis = {.seed = args.seed()}, .min_scale = *min_scale};
+    so.synthesis.relax_iterations = static_cast<int>(*relax);
+    if (args.has("--max-stretch")) {  // the final bound, with or without the relaxation
+      so.synthesis.max_stretch = *max_stretch;
+      so.synthesis.relaxed_max_stretch = *max_stretch;
+    }
     session = tessera::make_terrain_session(*mesh, exemplar->width(), exemplar->height(), so);
     if (!session) return fail(session.error());
     // level 0 (no pre-filter) up to where one texel covers one pixel of the first camera: focal
@@ -459,6 +470,12 @@ std::vector<cli::option_spec> terrain_options() {
       {"--anchor", "A",
        "screen (the paper: texture synthesized on the screen every frame; default) or ground (anchored to the "
        "ground, incremental: terrain_session)"},
+      {"--max-stretch", "S",
+       "--anchor ground: no face ends with its texture stretched by more than S, 1 (congruent) to 2 (default "
+       "1.3 with the relaxation, 1.55 without: a lower bound gives more seams)"},
+      {"--relax", "N",
+       "--anchor ground: rounds of as-rigid-as-possible relaxation round the faces the unfolding left stretched, "
+       "0 to 64 (default 3; 0: none)"},
       {"--path", "FILE", "camera path, one camera per line: ex ey ez tx ty tz fov (one frame each)"},
       {"--frames-out", "DIR",
        "write DIR/frame_0000.png and DIR/frame_0000.tsuv per camera; with --anchor, --path or --frames-out, "

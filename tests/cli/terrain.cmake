@@ -78,6 +78,19 @@ tessera_cli_test(NAME "cli: terrain ground-anchored fly-through"
   REGEX "^${_ground_line}\n${_ground_line}\n\\{\"frame\":2,[^\n]*\"stable_faces\":(0\\.9[5-9][0-9]*|1)[,}]"
   COMMAND terrain ${_small} --anchor ground --path ${_o}/terrain_path.txt --frames-out ${_o}/terrain_frames --stats
           --threads 2)
+# --max-stretch bounds the stretch every face ends with (float export may add a few 1e-6); --relax 0
+# turns the relaxation off
+string(REPLACE "\"stretch_max\":1(\\.[0-4][0-9]*|\\.5[0-5][0-9]*)?" "\"stretch_max\":1(\\.0[0-9]*|\\.1[0-4][0-9]*|\\.15(00[0-9]*)?)?"
+       _ground_115 "${_ground_line}")
+tessera_cli_test(NAME "cli: terrain ground-anchored max-stretch" REGEX "^${_ground_115}\n?$"
+  COMMAND terrain ${_small} --anchor ground --camera oblique --max-stretch 1.15 --out ${_o}/terrain_ground_115.png --stats)
+tessera_cli_test(NAME "cli: terrain ground-anchored without relaxation" REGEX "^${_ground_115}\n?$"
+  COMMAND terrain ${_small} --anchor ground --camera oblique --max-stretch 1.15 --relax 0
+          --out ${_o}/terrain_ground_norelax.png --stats)
+tessera_cli_test(NAME "cli: terrain max-stretch out of range" CODE 1 REGEX "--max-stretch expects a number in \\[1, 2\\]"
+  COMMAND terrain ${_small} --anchor ground --max-stretch 3 --out ${_o}/terrain_bad.png)
+tessera_cli_test(NAME "cli: terrain relax without ground anchoring" CODE 1 REGEX "apply to --anchor ground only"
+  COMMAND terrain ${_small} --anchor screen --relax 2 --out ${_o}/terrain_bad.png)
 tessera_cli_test(NAME "cli: terrain screen-space fly-through" REGEX "^${_frame_line}\n${_frame_line}\n${_frame_line}"
   COMMAND terrain ${_small} --anchor screen --path ${_o}/terrain_path.txt --frames-out ${_o}/terrain_frames_screen
           --stats)
