@@ -1,6 +1,9 @@
 // Shared small scenes for the terrain tests.
 #pragma once
 
+#include <array>
+#include <cmath>
+
 #include <tessera/core/random.hpp>
 #include <tessera/core/tri_mesh.hpp>
 #include <tessera/terrain/make_terrain.hpp>
@@ -13,6 +16,19 @@ namespace terrain_test {
 inline tessera::terrain_mesh prepared_terrain(tessera::index_t cells, std::uint64_t seed = 1, double height = 14) {
   auto m = tessera::make_terrain({.cells_x = cells, .cells_y = cells, .height = height, .seed = seed});
   return tessera::prepare_terrain_mesh(m.value()).value();
+}
+
+/// Developable ground, prepared: a flat 40 x 40 relief, the same tilted by 50 degrees, and bent round
+/// a cylinder of radius 30 (developable, though its triangulation is not quite: a cell's two
+/// triangles are not coplanar).
+inline std::array<tessera::terrain_mesh, 3> developable_reliefs() {
+  auto flat = tessera::make_terrain({.cells_x = 40, .cells_y = 40, .height = 0}).value();
+  auto tilted = flat, bent = flat;
+  const double c = std::cos(50 * 3.14159265358979 / 180), s = std::sin(50 * 3.14159265358979 / 180);
+  for (auto& p : tilted.positions) p = {p.x, p.y * c, p.y * s};
+  for (auto& p : bent.positions) p = {p.x, 30 * std::sin(p.y / 30), 30 * (1 - std::cos(p.y / 30))};
+  return {tessera::prepare_terrain_mesh(flat).value(), tessera::prepare_terrain_mesh(tilted).value(),
+          tessera::prepare_terrain_mesh(bent).value()};
 }
 
 inline tessera::terrain_camera preset_camera(const tessera::terrain_mesh& m, tessera::camera_preset p,

@@ -141,13 +141,7 @@ TEST_CASE(
 TEST_CASE("relaxation: nothing moves on developable ground", "[terrain][anchored][relax]") {
   // flat, tilted by 50 degrees, bent round a cylinder: the unfolding is congruent (to 0.5 % on the
   // cylinder), no face is stretched beyond relax_above, and the result is bit for bit the growth's
-  auto flat = tessera::make_terrain({.cells_x = 40, .cells_y = 40, .height = 0}).value();
-  auto tilted = flat, bent = flat;
-  const double c = std::cos(50 * 3.14159265358979 / 180), s = std::sin(50 * 3.14159265358979 / 180);
-  for (auto& p : tilted.positions) p = {p.x, p.y * c, p.y * s};
-  for (auto& p : bent.positions) p = {p.x, 30 * std::sin(p.y / 30), 30 * (1 - std::cos(p.y / 30))};
-  for (const auto* m : {&flat, &tilted, &bent}) {
-    const auto mesh = tessera::prepare_terrain_mesh(*m).value();
+  for (const auto& mesh : terrain_test::developable_reliefs()) {
     const grown a = grow(mesh, {.seed = 3, .relax_iterations = 0}, 128),
                 b = grow(mesh, {.seed = 3, .relax_above = 1.01, .relaxed_max_stretch = 1.01}, 128);
     REQUIRE(b.total.hot == 0);
