@@ -73,35 +73,30 @@ struct shell_options {
   double sink = 0;
 };
 
-namespace detail {
-/// Lowest tetrahedron quality of the prism over face f (see shell_options::min_quality).
-inline double shell_prism_quality(const tri_mesh& base, const std::vector<vec3>& dir, const std::vector<double>& h,
-                                  index_t f, double sink = 0) {
-  const auto& fv = base.faces[to_size(f)];
-  const prism_order o = sorted_prism_order(fv);
+/// Lowest quality of the three tetrahedra of the prism over face f of `s` (1 for an upright prism,
+/// <= 0 when one is inverted). Precondition: f in [0, F).
+/// Used by the fold repair of build_shell (shell_options::min_quality).
+inline double shell_prism_quality(const shell& s, index_t f) {
+  const auto& fv = s.base.faces[detail::to_size(f)];
+  const detail::prism_order o = detail::sorted_prism_order(fv);
   std::array<vec3, 6> c;
   double hbar = 0;
   for (int k = 0; k < 3; ++k) {
-    const auto v = to_size(fv[to_size(o.corner[to_size(k)])]);
-    c[to_size(k)] = base.positions[v] - (sink * h[v]) * dir[v];
-    c[to_size(k + 3)] = c[to_size(k)] + h[v] * dir[v];
-    hbar += h[v] / 3;
+    const index_t v = fv[detail::to_size(o.corner[detail::to_size(k)])];
+    const double h = s.heights[detail::to_size(v)];
+    c[detail::to_size(k)] = s.bottom(v);
+    c[detail::to_size(k + 3)] = c[detail::to_size(k)] + h * s.directions[detail::to_size(v)];
+    hbar += h / 3;
   }
   const double ref = norm(cross(c[1] - c[0], c[2] - c[0])) * hbar;
   if (!(ref > 0)) return 0;
   double q = 1e300;
-  for (const auto& t : prism_tets) {
-    const double v6 = tet_volume6(c[to_size(t[0])], c[to_size(t[1])], c[to_size(t[2])], c[to_size(t[3])]);
+  for (const auto& t : detail::prism_tets) {
+    const double v6 = detail::tet_volume6(c[detail::to_size(t[0])], c[detail::to_size(t[1])], c[detail::to_size(t[2])],
+                                          c[detail::to_size(t[3])]);
     q = std::min(q, (o.even ? v6 : -v6) / ref);
   }
   return q;
-}
-}  // namespace detail
-
-/// Lowest quality of the three tetrahedra of the prism over face f of `s` (1 for an upright prism,
-/// <= 0 when one is inverted). Precondition: f in [0, F).
-inline double shell_prism_quality(const shell& s, index_t f) {
-  return detail::shell_prism_quality(s.base, s.directions, s.heights, f, s.sink);
 }
 
 namespace detail {
@@ -112,16 +107,11 @@ inline vec3 shell_position_in_tet(const shell& s, index_t f, vec3 bary, double t
   const vec3 beta{bary[o.corner[0]], bary[o.corner[1]], bary[o.corner[2]]};
   const vec3 g = prism_top_weights(beta, t);
   tet = g[1] == 0 ? 0 : g[0] == 0 ? 1 : 2;
-  vec3 p = bary[0] * s.base.position(fv[0]) + bary[1] * s.base.position(fv[1]) + bary[2] * s.base.position(fv[2]);
+  vec3 p = bary[0] * s.bottom(fv[0]) + bary[1] * s.bottom(fv[1]) + bary[2] * s.bottom(fv[2]);
   for (int k = 0; k < 3; ++k) {
     const auto v = to_size(fv[to_size(o.corner[to_size(k)])]);
     p += (g[k] * s.heights[v]) * s.directions[v];
   }
-  if (s.sink != 0)  // the bottom of a sunk shell: its barycentric point, lowered (an affine map stays affine)
-    for (int k = 0; k < 3; ++k) {
-      const auto v = to_size(fv[to_size(k)]);
-      p -= (bary[k] * s.sink * s.heights[v]) * s.directions[v];
-    }
   return p;
 }
 }  // namespace detail
@@ -191,9 +181,8 @@ result<shell> build_shell(const M& base, double height, const shell_options& o =
   std::vector<char> repaired(nv, 0), marked(nv);
   std::vector<vec3> next;
   for (int round = 0;; ++round) {
-    exec.parallel_for(0, static_cast<index_t>(nf), [&](index_t f) {
-      quality[detail::to_size(f)] = detail::shell_prism_quality(s.base, s.directions, s.heights, f, s.sink);
-    });
+    exec.parallel_for(0, static_cast<index_t>(nf),
+                      [&](index_t f) { quality[detail::to_size(f)] = shell_prism_quality(s, f); });
     std::fill(marked.begin(), marked.end(), 0);
     bool any = false;
     for (std::size_t f = 0; f < nf; ++f)
