@@ -430,8 +430,7 @@ inline status synthesize_anchored_region(const terrain_mesh& mesh, const anchore
     st.relaxed = static_cast<index_t>(detail::relax_anchored_region(reg, table, set, scr.relax));
     for (const std::int32_t i : scr.relax.changed) {
       const auto& ce = corners[detail::to_size(i)];
-      atlas.uv[detail::to_size(begin[detail::to_size(i)])] =
-          to_uv({table.coord(ce[0]), table.coord(ce[1]), table.coord(ce[2])});
+      atlas.uv[detail::to_size(begin[detail::to_size(i)])] = table.face_uv(ce);
     }
     if (final_stretch < max_stretch) {
       const std::int32_t first_own = patches;

@@ -4,6 +4,7 @@
 // for bit on every shared corner however often a coordinate is moved.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -47,6 +48,17 @@ class anchored_vertex_table {
   }
   /// The coordinate of entry e.
   [[nodiscard]] const vec2& coord(std::int32_t e) const noexcept { return coords_[to_size(e)]; }
+  /// The corners of a face whose corners are entries `e`, rounded to float as the atlas holds them
+  /// (u0 v0 u1 v1 u2 v2); corner `moved` (0..2; -1 none) first displaced by d.
+  [[nodiscard]] std::array<float, 6> face_uv(const std::array<std::int32_t, 3>& e, int moved = -1,
+                                             vec2 d = {0, 0}) const noexcept {
+    std::array<float, 6> t;
+    for (std::size_t k = 0; k < 3; ++k) {
+      const vec2 c = static_cast<int>(k) == moved ? coord(e[k]) + d : coord(e[k]);
+      t[2 * k] = static_cast<float>(c.x), t[2 * k + 1] = static_cast<float>(c.y);
+    }
+    return t;
+  }
   /// Moves entry e to c (every face using it follows).
   void move(std::int32_t e, vec2 c) noexcept { coords_[to_size(e)] = c; }
   /// Counts one more face corner using entry e.

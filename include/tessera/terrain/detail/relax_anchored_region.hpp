@@ -253,13 +253,9 @@ inline std::size_t relax_anchored_pass(const anchored_relax_region& reg, anchore
       const double q = m[0] * m[0] + m[1] * m[1] + m[2] * m[2] + m[3] * m[3];
       if (anchored_singular_within(q, det * det, strict)) continue;
       if (!anchored_singular_within(q, det * det, set.max_stretch * (1 + anchored_relax_recheck))) return false;
-      std::array<float, 6> t;
-      for (std::size_t k = 0; k < 3; ++k) {
-        vec2 c = table.coord(reg.corners[to_size(rf.i)][k]);
-        if (static_cast<int>(k) == item[1]) c = c + d;
-        t[2 * k] = static_cast<float>(c.x), t[2 * k + 1] = static_cast<float>(c.y);
-      }
-      if (!anchored_within(reg.geo[to_size(rf.i)], t, set.max_stretch)) return false;
+      if (!anchored_within(reg.geo[to_size(rf.i)], table.face_uv(reg.corners[to_size(rf.i)], item[1], d),
+                           set.max_stretch))
+        return false;
     }
     return true;
   };
@@ -315,12 +311,8 @@ inline std::size_t relax_anchored_region(const anchored_relax_region& reg, ancho
     scr.hot.clear();
     for (const auto& rf : scr.faces) {
       scr.changed.push_back(rf.i);
-      std::array<float, 6> t;
-      for (std::size_t k = 0; k < 3; ++k) {
-        const vec2 q = table.coord(reg.corners[to_size(rf.i)][k]);
-        t[2 * k] = static_cast<float>(q.x), t[2 * k + 1] = static_cast<float>(q.y);
-      }
-      if (!anchored_within(reg.geo[to_size(rf.i)], t, set.above)) scr.hot.push_back(rf.i);
+      if (!anchored_within(reg.geo[to_size(rf.i)], table.face_uv(reg.corners[to_size(rf.i)]), set.above))
+        scr.hot.push_back(rf.i);
     }
   }
   return freed;
