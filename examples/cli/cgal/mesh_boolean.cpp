@@ -11,14 +11,12 @@ bool has_mesh_boolean() { return true; }
 tessera::result<tessera::tri_mesh> mesh_boolean(const tessera::tri_mesh& a, const tessera::tri_mesh& b,
                                                 std::string_view op, const tessera::progress& progress) {
   using tessera::boolean_op;
+  if (op != "union" && op != "difference" && op != "intersection")
+    return tessera::status::invalid_argument("a Boolean is union, difference or intersection");
   const boolean_op o = op == "union"        ? boolean_op::unite
                        : op == "difference" ? boolean_op::subtract
                                             : boolean_op::intersect;
-  if (op != "union" && op != "difference" && op != "intersection")
-    return tessera::status::invalid_argument("a Boolean is union, difference or intersection");
-  tessera::mesh_boolean_options opts;
-  opts.progress = progress;
-  return tessera::mesh_boolean(a, b, o, opts);
+  return tessera::mesh_boolean(a, b, o, {.progress = progress});
 }
 #else
 bool has_mesh_boolean() { return false; }
