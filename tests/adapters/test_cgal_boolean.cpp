@@ -86,6 +86,18 @@ TEST_CASE("mesh_boolean: inputs corefinement cannot take return a clear status",
   require_error(mesh_boolean(a, open, boolean_op::unite), status_code::invalid_argument, "B is not closed: 3 edges");
   // crossing itself: two overlapping boxes in one mesh
   require_error(mesh_boolean(joined(a, b), b, boolean_op::unite), status_code::invalid_argument, "A intersects itself");
+  // a zero-area face: a box flattened to z = 0 (every face degenerate)
+  require_error(mesh_boolean(box({0, 0, 0}, {2, 2, 0}), b, boolean_op::unite), status_code::invalid_argument,
+                "is degenerate (zero area)");
+  // huge and tiny coordinates: exact constructions scale
+  auto huge =
+      mesh_boolean(box({0, 0, 0}, {2e12, 2e12, 2e12}), box({1e12, 1e12, 1e12}, {3e12, 3e12, 3e12}), boolean_op::unite);
+  REQUIRE(huge);
+  CHECK(volume(*huge) == Approx(15e36).epsilon(1e-12));
+  auto tiny =
+      mesh_boolean(box({0, 0, 0}, {2e-9, 2e-9, 2e-9}), box({1e-9, 1e-9, 1e-9}, {3e-9, 3e-9, 3e-9}), boolean_op::unite);
+  REQUIRE(tiny);
+  CHECK(volume(*tiny) == Approx(15e-27).epsilon(1e-12));
   // inside out
   tri_mesh flipped = b;
   for (auto& f : flipped.faces) std::swap(f[1], f[2]);

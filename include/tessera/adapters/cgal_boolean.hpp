@@ -121,6 +121,11 @@ inline status check_boolean_input(const cgal_mesh& m, std::string_view what, con
   if (o.check_self_intersections) {
     std::vector<std::pair<cgal_mesh::Face_index, cgal_mesh::Face_index>> pairs;
     PMP::self_intersections(m, std::back_inserter(pairs));
+    // CGAL reports a degenerate face (zero area) as a pair of the face with itself
+    for (const auto& [f, g] : pairs)
+      if (f == g)
+        return status::invalid_argument(cat(what, ": face ", static_cast<std::size_t>(f),
+                                            " is degenerate (zero area); a Boolean needs proper triangles"));
     if (!pairs.empty())
       return status::invalid_argument(
           cat(what, " intersects itself: ", pairs.size(), " pairs of faces cross (first: faces ",
@@ -162,7 +167,8 @@ inline tri_mesh from_cgal_mesh(const cgal_mesh& m) {
 /// The Boolean `op` of the solids bounded by `a` and `b` (see the file comment), computed by CGAL's
 /// corefinement with exact constructions and rounded to double at the end. Neither input is modified.
 /// Errors (invalid_argument, naming "A" or "B"): a mesh validate_mesh refuses, an empty one, one that is
-/// not manifold or not consistently oriented (the face), not closed (the open edges), crossing itself
+/// not manifold or not consistently oriented (the face), not closed (the open edges), with a zero-area
+/// face (the face), crossing itself
 /// (the pairs of faces), not bounding a volume; when the result is not a manifold surface (the inputs
 /// touch along an edge or at a vertex without overlapping: sink elements into the base,
 /// shell_options::sink); cancelled by the progress; internal_error when CGAL throws
