@@ -352,6 +352,68 @@ TEST_CASE("polycube repair: two charts of one axis meeting at a vertex are named
   CHECK(r.error().message().find("joined through vertex " + std::to_string(centre)) != std::string::npos);
 }
 
+TEST_CASE("polycube repair: a label meeting itself at a vertex is freed by a local relabelling") {
+  // a cube, 8 x 8 squares per face; on the top, a +Y tongue (squares x 4-5, y 4-7, joined to the +Y
+  // side) and a +X / -Y island below it (x 2-3, y 3 and y 2): the top chart's faces around the vertex
+  // (4, 4) form two fans, between the tongue's corner square and the island's
+  auto l = label_voxels(shapes::cube(), 8);
+  index_t centre = -1;
+  for (index_t v = 0; v < l.m.num_vertices(); ++v)
+    if (distance(l.m.position(v), {0.5, 0.5, 1}) < 1e-12) centre = v;
+  REQUIRE(centre >= 0);
+  for (index_t f = 0; f < l.m.num_faces(); ++f) {
+    const vec3 c = (l.m.position(l.m.face_vertex(f, 0)) + l.m.position(l.m.face_vertex(f, 1)) +
+                    l.m.position(l.m.face_vertex(f, 2))) /
+                   3.0;
+    if (c.z < 0.999) continue;
+    const int i = static_cast<int>(c.x * 8), j = static_cast<int>(c.y * 8);
+    if (i >= 4 && i < 6 && j >= 4) l.lab[detail::to_size(f)] = 2;  // +Y
+    if (i >= 2 && i < 4 && j == 3) l.lab[detail::to_size(f)] = 0;  // +X
+    if (i >= 2 && i < 4 && j == 2) l.lab[detail::to_size(f)] = 3;  // -Y
+  }
+  auto cs = detail::find_polycube_charts(l.m, l.nb, l.lab);
+  const auto pinch = detail::find_pinched_vertex(l.m, l.nb, cs);
+  REQUIRE(pinch[1] == centre);
+  const index_t top = pinch[0];
+  CHECK(cs.chart_label[detail::to_size(top)] == 4);
+  // (the island's corner faces are pinned faces, found first by find_label_problem)
+  const detail::polycube_label_problem p{detail::polycube_label_problem::pinched, top, -1, centre};
+  CHECK(p.to_status().message().find("chart " + std::to_string(top) + " meets itself") != std::string::npos);
+  CHECK(p.to_status().message().find("at vertex " + std::to_string(centre)) != std::string::npos);
+
+  const detail::vertex_face_table vf(l.m);
+  std::vector<index_t> ring(vf.of(centre).begin(), vf.of(centre).end());
+  CHECK(ring.size() == 6);
+  const auto problems = detail::label_problems_near(l.m, l.nb, vf, l.lab, ring);
+  CHECK(problems > 0);
+  std::vector<std::array<double, 6>> data(l.lab.size());
+  for (index_t f = 0; f < l.m.num_faces(); ++f)
+    for (int k = 0; k < 6; ++k)
+      data[detail::to_size(f)][detail::to_size(k)] =
+          1 - dot(normalized(face_area_normal(l.m, f)), label_direction(static_cast<polycube_label>(k)));
+  auto lab = l.lab;
+  std::vector<std::uint8_t> barred(lab.size(), 0);
+  REQUIRE(detail::repair_pinched_vertex(l.m, l.nb, vf, cs, data, lab, barred, top, centre));
+  CHECK(lab != l.lab);
+  std::size_t changed = 0;
+  for (std::size_t f = 0; f < lab.size(); ++f) {
+    CHECK((lab[f] != l.lab[f]) == (barred[f] != 0));
+    if (lab[f] != l.lab[f]) {
+      ++changed;
+      CHECK(barred[f] == 1u << l.lab[f]);  // its old label is barred from the pinned-face repair
+    }
+  }
+  CHECK(changed <= 8);  // local: a few faces at the vertex, not a chart
+  cs = detail::find_polycube_charts(l.m, l.nb, lab);
+  CHECK(detail::find_pinched_vertex(l.m, l.nb, cs)[1] != centre);
+  CHECK(detail::label_problems_near(l.m, l.nb, vf, lab, ring) < problems);
+  // the whole repair loop leaves no label meeting itself anywhere
+  lab = l.lab;
+  const auto after = detail::repair_polycube_labels(l.m, l.nb, data, lab, 200);
+  CHECK(after.kind != detail::polycube_label_problem::pinched);
+  CHECK(detail::find_pinched_vertex(l.m, l.nb, detail::find_polycube_charts(l.m, l.nb, lab))[0] < 0);
+}
+
 TEST_CASE("polycube refinement: chords are split, the mesh stays closed, input indices are kept") {
   // a cube with 4 x 4 squares per face; on the top, the squares (2, 0), (3, 0) and (3, 1) take the +X
   // label: the diagonal of square (2, 1), from (2, 1) to (3, 2), then joins two vertices of the

@@ -35,9 +35,6 @@ TESSERA_NAMESPACE_BEGIN
 namespace detail {
 /// A deformed face is axis-aligned when its unit normal's dot with a label direction exceeds 1 minus this.
 inline constexpr double axis_aligned_cos_slack = 1e-9;
-/// Fidelity cost added to a face's label when the deformation fails on its chart and the chart is
-/// relabelled: more than any fidelity cost (at most the face's normalized area, about 1).
-inline constexpr double relabel_tabu_cost = 100;
 /// Multiples of polycube_options::compactness tried in turn by build_polycube_map until one gives a
 /// valid polycube (the first is the option itself).
 inline constexpr double compactness_schedule[] = {1, 4, 3, 8, 2, 0.5};
@@ -146,8 +143,9 @@ result<polycube_map> build_polycube_attempt(const tri_mesh& input, const face_ad
     if (refine_first) refine();
     auto problem = detail::repair_polycube_labels(base, nb, data, *lab, options.max_repair_iterations);
     // a face pinned onto another chart that no relabelling frees: split the chords, then repair again
-    if (problem.kind == detail::polycube_label_problem::pinned_face && options.refine) {
-      refine();
+    // (a few times: the repair after a split may pin another face)
+    for (int k = 0; k < 4 && problem.kind == detail::polycube_label_problem::pinned_face && options.refine; ++k) {
+      if (split_chart_chords(base, nb, *lab, data, origin) == 0) break;
       problem = detail::repair_polycube_labels(base, nb, data, *lab, options.max_repair_iterations);
     }
     // a relabelling the repair cannot make valid ends the rounds with the previous round's failure

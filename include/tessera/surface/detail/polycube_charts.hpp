@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdint>
 #include <numeric>
+#include <span>
 #include <vector>
 
 #include "../../core/config.hpp"
@@ -17,6 +18,11 @@
 
 TESSERA_NAMESPACE_BEGIN
 namespace detail {
+
+/// Fidelity cost added to a face's old label when the relabel rounds change it (a chart the
+/// deformation fails on, a folded face): more than any fidelity cost (at most the face's normalized
+/// area, about 1), so later repairs do not bring it back.
+inline constexpr double relabel_tabu_cost = 100;
 
 struct polycube_chart_set {
   std::vector<index_t> face_chart;
@@ -141,9 +147,34 @@ inline std::vector<index_t> chart_euler(const tri_mesh&, const std::vector<std::
   return chi;
 }
 
+/// The first (vertex order) vertex where the faces of one label form several fans: more than two of
+/// that label's boundary edges end there, so a chart meets itself or another chart of its label there.
+/// Returns {a chart of that label at the vertex, vertex}, or -1s.
+inline std::array<index_t, 2> find_pinched_vertex(const tri_mesh& m, const std::vector<std::array<index_t, 3>>& nb,
+                                                  const polycube_chart_set& cs) {
+  auto lab = [&](std::size_t f) { return cs.chart_label[to_size(cs.face_chart[f])]; };
+  // per vertex and label: boundary edge ends
+  std::vector<std::array<std::uint8_t, 6>> ends(cs.vertex_charts.size(), std::array<std::uint8_t, 6>{});
+  for (std::size_t f = 0; f < cs.face_chart.size(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const index_t g = nb[f][to_size(k)];
+      if (g < 0 || lab(to_size(g)) == lab(f)) continue;
+      for (int e = 0; e < 2; ++e) {
+        auto& n = ends[to_size(m.faces[f][to_size((k + e) % 3)])][lab(f)];
+        n = static_cast<std::uint8_t>(std::min(n + 1, 255));
+      }
+    }
+  for (std::size_t v = 0; v < ends.size(); ++v)
+    for (int l = 0; l < 6; ++l)
+      if (ends[v][to_size(l)] > 2)
+        for (index_t c : cs.vertex_charts[v])
+          if (cs.chart_label[to_size(c)] == l) return {c, static_cast<index_t>(v)};
+  return {-1, -1};
+}
+
 /// What is wrong with a labelling (first problem found, in a fixed order), or kind none.
 struct polycube_label_problem {
-  enum kind_t { none, opposite, genus, island, few_corners, corner_axes, pinned_face } kind = none;
+  enum kind_t { none, opposite, genus, island, few_corners, corner_axes, pinned_face, pinched } kind = none;
   index_t chart = -1, other = -1, vertex = -1;
   [[nodiscard]] status to_status() const {
     switch (kind) {
@@ -152,6 +183,10 @@ struct polycube_label_problem {
         return status::not_converged(cat("polycube: charts ", chart, " and ", other,
                                          " are adjacent with opposite labels (their planes would coincide)"));
       case genus: return status::not_converged(cat("polycube: chart ", chart, " has a handle (genus > 0): not planar"));
+      case pinched:
+        return status::not_converged(cat("polycube: chart ", chart,
+                                         " meets itself or another chart of its direction at vertex ", vertex,
+                                         ": a polycube face there would not be simple"));
       case island:
         return status::not_converged(cat("polycube: chart ", chart, " is an island inside chart ", other,
                                          " (its boundary has no polycube corner)"));
@@ -198,6 +233,8 @@ inline polycube_label_problem find_label_problem(const tri_mesh& m, const std::v
   for (index_t c : order)
     if (cs.chart_neighbors[to_size(c)].size() == 1 && nc > 1)
       return {polycube_label_problem::island, c, cs.chart_neighbors[to_size(c)][0], -1};
+  if (const auto pinch = find_pinched_vertex(m, nb, cs); pinch[0] >= 0)
+    return {polycube_label_problem::pinched, pinch[0], -1, pinch[1]};
   const auto chi = chart_euler(m, nb, cs);
   // boundary loops per chart are not counted directly: chi = 2 - 2g - b, and b >= 1, so chi > 1 never
   // happens and g > 0 shows as chi <= 2 - 2 - b. A chart of genus 0 has chi = 2 - b, where b is at most
@@ -286,6 +323,139 @@ inline void relabel_chart(const polycube_chart_set& cs, index_t c, const std::ve
     if (cs.face_chart[f] == c) lab[f] = static_cast<std::uint8_t>(best);
 }
 
+/// Faces of each vertex (CSR: faces[start[v] .. start[v + 1]]).
+struct vertex_face_table {
+  std::vector<index_t> start, faces;
+  vertex_face_table(const tri_mesh& m) : start(to_size(m.num_vertices()) + 1, 0) {
+    for (const auto& f : m.faces)
+      for (index_t v : f) ++start[to_size(v) + 1];
+    std::partial_sum(start.begin(), start.end(), start.begin());
+    faces.resize(to_size(start.back()));
+    auto next = start;
+    for (std::size_t f = 0; f < m.faces.size(); ++f)
+      for (index_t v : m.faces[f]) faces[to_size(next[to_size(v)]++)] = static_cast<index_t>(f);
+  }
+  [[nodiscard]] std::span<const index_t> of(index_t v) const {
+    return {faces.data() + start[to_size(v)], faces.data() + start[to_size(v) + 1]};
+  }
+};
+
+/// Runs of the faces around v: maximal sets joined across edges at v whose faces satisfy same(f, g).
+template <class Same>
+std::vector<std::vector<index_t>> face_runs_at(const tri_mesh& m, const std::vector<std::array<index_t, 3>>& nb,
+                                               std::span<const index_t> ring, index_t v, Same same) {
+  std::vector<std::size_t> run(ring.size());
+  std::iota(run.begin(), run.end(), std::size_t{0});
+  auto find = [&](std::size_t x) {
+    while (run[x] != x) x = run[x] = run[run[x]];
+    return x;
+  };
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const auto& fv = m.faces[to_size(ring[i])];
+    for (int k = 0; k < 3; ++k) {
+      if (fv[to_size(k)] != v && fv[to_size((k + 1) % 3)] != v) continue;  // not an edge at v
+      const index_t g = nb[to_size(ring[i])][to_size(k)];
+      const auto j = to_size(std::find(ring.begin(), ring.end(), g) - ring.begin());
+      if (g >= 0 && j < ring.size() && same(ring[i], g)) run[find(std::max(i, j))] = find(std::min(i, j));
+    }
+  }
+  std::vector<std::vector<index_t>> runs(ring.size());
+  for (std::size_t i = 0; i < ring.size(); ++i) runs[find(i)].push_back(ring[i]);
+  std::erase_if(runs, [](const auto& r) { return r.empty(); });
+  return runs;
+}
+
+/// How many local label problems lie around the vertices of `faces`: a label in two runs around a
+/// vertex, a face whose three vertices all touch one other label, adjacent opposite labels (each
+/// counted once per vertex it is seen from).
+inline std::size_t label_problems_near(const tri_mesh& m, const std::vector<std::array<index_t, 3>>& nb,
+                                       const vertex_face_table& vf, const std::vector<std::uint8_t>& lab,
+                                       const std::vector<index_t>& faces) {
+  auto touches = [&](index_t u, index_t f, int l) {
+    for (index_t g : vf.of(u))
+      if (g != f && lab[to_size(g)] == l) return true;
+    return false;
+  };
+  std::vector<index_t> verts;
+  for (index_t f : faces) verts.insert(verts.end(), m.faces[to_size(f)].begin(), m.faces[to_size(f)].end());
+  std::sort(verts.begin(), verts.end());
+  verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
+  std::size_t problems = 0;
+  for (index_t v : verts) {
+    const auto ring = vf.of(v);
+    const auto runs =
+        face_runs_at(m, nb, ring, v, [&](index_t f, index_t g) { return lab[to_size(f)] == lab[to_size(g)]; });
+    for (std::size_t i = 0; i < runs.size(); ++i)
+      for (std::size_t j = i + 1; j < runs.size(); ++j)
+        problems += lab[to_size(runs[i][0])] == lab[to_size(runs[j][0])];
+    for (index_t f : ring) {
+      for (index_t g : nb[to_size(f)]) problems += g >= 0 && (lab[to_size(g)] ^ 1) == lab[to_size(f)];
+      const auto& fv = m.faces[to_size(f)];
+      for (int l = 0; l < 6; ++l)
+        problems += l != lab[to_size(f)] && touches(fv[0], f, l) && touches(fv[1], f, l) && touches(fv[2], f, l);
+    }
+  }
+  return problems;
+}
+
+/// Frees vertex v where chart c meets itself. The faces around v form fans of c separated by gaps of
+/// other charts; a gap may take c's label or a fan the label of a gap face beside it, each grown by up
+/// to `max_rings` rings of the faces it relabels until it lowers the count of local label problems
+/// around it (pinches, pinned faces, opposite neighbours). Of those, the change of smallest summed
+/// fidelity cost is applied, and the labels it took are marked in `barred` (bit l of a face: label l),
+/// which the pinned-face repair does not give back. Returns false when there is none.
+inline bool repair_pinched_vertex(const tri_mesh& m, const std::vector<std::array<index_t, 3>>& nb,
+                                  const vertex_face_table& vf, const polycube_chart_set& cs,
+                                  const std::vector<std::array<double, 6>>& data, std::vector<std::uint8_t>& lab,
+                                  std::vector<std::uint8_t>& barred, index_t c, index_t v, int max_rings = 3) {
+  const auto ring = vf.of(v);
+  const int lc = cs.chart_label[to_size(c)];
+  auto in_c = [&](index_t f) { return lab[to_size(f)] == lc; };
+  const auto runs = face_runs_at(m, nb, ring, v, [&](index_t f, index_t g) { return in_c(f) == in_c(g); });
+  std::vector<index_t> best;
+  int best_label = -1;
+  double best_cost = 0;
+  auto consider = [&](std::vector<index_t> region, int l) {
+    const bool grow_c = in_c(region[0]);  // a fan grows into c, a gap into the other charts
+    for (int r = 0; r <= max_rings; ++r) {
+      double cost = 0;
+      for (index_t f : region) cost += data[to_size(f)][to_size(l)] - data[to_size(f)][lab[to_size(f)]];
+      if (!best.empty() && cost >= best_cost) return;
+      auto trial = lab;
+      for (index_t f : region) trial[to_size(f)] = static_cast<std::uint8_t>(l);
+      if (label_problems_near(m, nb, vf, trial, region) < label_problems_near(m, nb, vf, lab, region)) {
+        best = region, best_label = l, best_cost = cost;
+        return;
+      }
+      const auto n = region.size();
+      for (std::size_t i = 0; i < n; ++i)
+        for (index_t g : nb[to_size(region[i])])
+          if (g >= 0 && in_c(g) == grow_c && lab[to_size(g)] != l &&
+              std::find(region.begin(), region.end(), g) == region.end())
+            region.push_back(g);
+    }
+  };
+  for (const auto& r : runs) {
+    if (!in_c(r[0])) {
+      consider(r, lc);
+      continue;
+    }
+    std::array<bool, 6> tried{};
+    for (index_t f : r)  // a fan takes the label of a gap face beside it
+      for (index_t g : nb[to_size(f)])
+        if (g >= 0 && !in_c(g) && std::find(ring.begin(), ring.end(), g) != ring.end() && !tried[lab[to_size(g)]]) {
+          tried[lab[to_size(g)]] = true;
+          consider(r, lab[to_size(g)]);
+        }
+  }
+  if (best.empty()) return false;
+  for (index_t f : best) {
+    barred[to_size(f)] |= static_cast<std::uint8_t>(1u << lab[to_size(f)]);
+    lab[to_size(f)] = static_cast<std::uint8_t>(best_label);
+  }
+  return true;
+}
+
 /// Flip-driven relabelling: each of `faces` (folded in the deformation) that borders another chart
 /// takes the label of a neighbouring face of another chart with the smallest fidelity cost that is not
 /// opposite to any of its neighbours' labels; its old label then costs `tabu` more. Decisions read
@@ -342,24 +512,38 @@ inline std::vector<index_t> grow_face_region(const std::vector<std::array<index_
 inline polycube_label_problem repair_polycube_labels(const tri_mesh& m, const std::vector<std::array<index_t, 3>>& nb,
                                                      const std::vector<std::array<double, 6>>& data,
                                                      std::vector<std::uint8_t>& lab, int max_iterations) {
+  const vertex_face_table vf(m);
+  std::vector<std::uint8_t> barred(lab.size(), 0);  // bit l: a pinch repair took label l from the face
   for (int it = 0;; ++it) {
     const auto cs = find_polycube_charts(m, nb, lab);
     const auto p = find_label_problem(m, nb, cs);
     if (p.kind == polycube_label_problem::none || it >= max_iterations) return p;
     switch (p.kind) {
       case polycube_label_problem::pinned_face: {
-        const auto dl = cs.chart_label[to_size(p.other)];
-        // take the other chart's label unless it is opposite to a neighbour of the face
-        bool ok = true;
-        for (index_t g : nb[to_size(p.vertex)])
-          if (g >= 0 && (lab[to_size(g)] ^ 1) == dl) ok = false;
-        if (ok) {
-          lab[to_size(p.vertex)] = dl;
-        } else {
-          return p;
+        // the face takes the other chart's label, else the cheapest label of a face beside it; never
+        // its own, one a repair took from it, or one opposite to a neighbour's
+        const auto f = to_size(p.vertex);
+        auto usable = [&](int l) {
+          if (l == lab[f] || (barred[f] >> l & 1)) return false;
+          for (index_t g : nb[f])
+            if (g >= 0 && (lab[to_size(g)] ^ 1) == l) return false;
+          return true;
+        };
+        int to = cs.chart_label[to_size(p.other)];
+        if (!usable(to)) {
+          to = -1;
+          for (index_t g : nb[f])
+            if (g >= 0 && usable(lab[to_size(g)]) && (to < 0 || data[f][lab[to_size(g)]] < data[f][to_size(to)]))
+              to = lab[to_size(g)];
         }
+        if (to < 0) return p;
+        lab[f] = static_cast<std::uint8_t>(to);
         break;
       }
+      case polycube_label_problem::pinched:
+        if (!repair_pinched_vertex(m, nb, vf, cs, data, lab, barred, p.chart, p.vertex))
+          return p;  // no local change frees it
+        break;
       case polycube_label_problem::island:
         for (std::size_t f = 0; f < lab.size(); ++f)
           if (cs.face_chart[f] == p.chart) lab[f] = cs.chart_label[to_size(p.other)];
