@@ -66,6 +66,9 @@ int run(const cli::arguments& args) {
     return cli::fail(args, status::invalid_argument("--tile expects a number > 0, got '" + args.str("--tile") + "'"));
   o.tile_size = *tile;
   o.tiles_across = static_cast<index_t>(*across);
+  auto retries = args.integer("--distortion-retries", 0, 0, 5);
+  if (!retries) return cli::fail(args, retries.error());
+  o.distortion_retries = static_cast<int>(*retries);
   auto mesh = read_mesh(*in);
   if (!mesh) return cli::fail(args, mesh.error());
   result<std::vector<std::uint8_t>> labels_in = std::vector<std::uint8_t>{};
@@ -123,6 +126,8 @@ const cli::registrar reg{[] {
                   {"--out", "FILE", "polycube-deformed mesh, in the input's order (the refined base's when refined)"},
                   {"--tile", "W", "tile size in mesh units"},
                   {"--tiles-across", "N", "tiles across the largest bounding-box extent (default 8)"},
+                  {"--distortion-retries", "N",
+                   "after the first valid map, try N more labellings (0-5) and keep the least distorted"},
                   {"--labels-in", "FILE", "start from these face labels (one 0..5 per line: +X -X +Y -Y +Z -Z)"},
                   {"--labels-out", "FILE", "write the face labels"},
                   {"--quads-out", "FILE", "write the quad layout as an OBJ quad mesh"},

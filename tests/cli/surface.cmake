@@ -37,6 +37,11 @@ tessera_cli_test(NAME "cli: polycube negative tile" CODE 1 REGEX "--tile expects
                  COMMAND polycube --mesh ${_pcdata}/torus.obj --out ${_pc}/never.obj --tile -1)
 tessera_cli_test(NAME "cli: polycube tile and tiles-across" CODE 1 REGEX "not both"
                  COMMAND polycube --mesh ${_pcdata}/torus.obj --out ${_pc}/never.obj --tile 1 --tiles-across 3)
+tessera_cli_test(NAME "cli: polycube distortion retries"
+                 REGEX "\"quads\":[1-9][0-9]*,\"flipped_faces\":0,.*\"valid\":true"
+                 COMMAND polycube --mesh ${_pcdata}/torus.obj --out ${_pc}/torus_pc_best.obj --tiles-across 8 --distortion-retries 2 --stats)
+tessera_cli_test(NAME "cli: polycube distortion retries out of range" CODE 1 REGEX "--distortion-retries"
+                 COMMAND polycube --mesh ${_pcdata}/torus.obj --out ${_pc}/never.obj --distortion-retries 9)
 tessera_cli_test(NAME "cli: polycube missing mesh" CODE 1 REGEX "missing required option --in"
                  COMMAND polycube --out ${_pc}/never.obj)
 

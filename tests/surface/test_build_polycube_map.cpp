@@ -8,6 +8,7 @@
 #include <tessera/core/executor.hpp>
 #include <tessera/core/mesh_view.hpp>
 #include <tessera/surface/build_polycube_map.hpp>
+#include <tessera/surface/polycube_distortion.hpp>
 
 #include "check_map.hpp"
 #include "shapes.hpp"
@@ -327,6 +328,41 @@ TEST_CASE("polycube repair: relabel rounds and compactness retries are bounded a
   REQUIRE(b);
   CHECK(a->labels == b->labels);
   CHECK(a->polycube == b->polycube);
+}
+
+TEST_CASE("polycube repair: a chart is never turned to face the other way unless allowed") {
+  // the top of a cube borders +-X and +-Y: every label but its own and -Z is opposite to a neighbour
+  auto l = label_voxels(shapes::cube(), 2);
+  std::vector<std::array<double, 6>> data(l.lab.size(), std::array<double, 6>{1, 1, 1, 1, 1, 1});
+  index_t top = 0;
+  while (l.cs.chart_label[detail::to_size(top)] != 4) ++top;
+  auto lab = l.lab;
+  CHECK(!detail::relabel_chart(l.cs, top, data, lab, false, false));
+  CHECK(lab == l.lab);  // nothing changed
+  REQUIRE(detail::relabel_chart(l.cs, top, data, lab, false, true));
+  for (std::size_t f = 0; f < lab.size(); ++f) CHECK(lab[f] == (l.cs.face_chart[f] == top ? 5 : l.lab[f]));
+}
+
+TEST_CASE("polycube: distortion retries keep the least distorted of several valid maps") {
+  polycube_options o;
+  o.tiles_across = 6;
+  const auto torus = shapes::torus(1.0, 0.45, 48, 20);
+  const auto first = build_polycube_map(torus, o);
+  o.distortion_retries = 5;
+  const auto best = build_polycube_map(torus, o);
+  REQUIRE(first);
+  REQUIRE(best);
+  check_polycube(*best);
+  const auto d0 = polycube_distortion(*first), d1 = polycube_distortion(*best);
+  CHECK(d1.area_distortion + d1.angle_distortion <= d0.area_distortion + d0.angle_distortion);
+  thread_pool_executor pool(3);  // the same choice on any number of threads
+  const auto again = build_polycube_map(torus, o, pool);
+  REQUIRE(again);
+  CHECK(again->polycube == best->polycube);
+  o.distortion_retries = -1;
+  const auto bad = build_polycube_map(torus, o);
+  REQUIRE(!bad);
+  CHECK(bad.error().message().find("distortion_retries") != std::string::npos);
 }
 
 TEST_CASE("polycube repair: two charts of one axis meeting at a vertex are named by that vertex") {

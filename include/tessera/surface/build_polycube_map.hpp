@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -28,6 +29,7 @@
 #include "detail/polycube_embed.hpp"
 #include "detail/polycube_labeling.hpp"
 #include "detail/polycube_refine.hpp"
+#include "polycube_distortion.hpp"
 #include "polycube_map.hpp"
 
 TESSERA_NAMESPACE_BEGIN
@@ -161,7 +163,19 @@ result<polycube_map> build_polycube_attempt(const tri_mesh& input, const face_ad
       const auto cs = detail::find_polycube_charts(base, nb, *lab);
       for (std::size_t f = 0; f < data.size(); ++f)
         if (cs.face_chart[f] == bad) data[f][(*lab)[f]] += detail::relabel_tabu_cost;
-      detail::relabel_chart(cs, bad, data, *lab, false);
+      // a chart no other label fits (its neighbours take every other axis) gives up its border
+      // faces to its neighbours instead, one ring more per round it does so
+      if (!detail::relabel_chart(cs, bad, data, *lab, false, false)) {
+        std::vector<index_t> border;
+        for (std::size_t f = 0; f < data.size(); ++f)
+          if (cs.face_chart[f] == bad)
+            for (index_t g : nb[f])
+              if (g >= 0 && cs.face_chart[detail::to_size(g)] != bad) {
+                border.push_back(static_cast<index_t>(f));
+                break;
+              }
+        if (!detail::relabel_folded_faces(nb, border, detail::relabel_tabu_cost, data, *lab)) return r;
+      }
     } else if (folded.empty()) {
       return r;
     } else {
@@ -193,16 +207,16 @@ result<polycube_map> build_polycube_map(const M& mesh, const polycube_options& o
   auto t = polycube_tile_size(mesh, options);
   if (!t) return t.error();
   if (options.max_expansion_cycles < 0 || options.max_repair_iterations < 0 || options.untangle_iterations < 0 ||
-      options.max_relabel_rounds < 0 || options.max_compactness_retries < 0 || !(options.compactness >= 0) ||
-      !(options.opposite_penalty >= 1 && options.opposite_penalty <= 2) ||
+      options.max_relabel_rounds < 0 || options.max_compactness_retries < 0 || options.distortion_retries < 0 ||
+      !(options.compactness >= 0) || !(options.opposite_penalty >= 1 && options.opposite_penalty <= 2) ||
       !(options.min_area_ratio >= 0 && options.min_area_ratio < 1))
     return status::invalid_argument(detail::cat(
         "polycube_options: max_expansion_cycles, max_repair_iterations, untangle_iterations, "
-        "max_relabel_rounds and max_compactness_retries must be >= 0, compactness >= 0, opposite_penalty in "
-        "[1, 2] and min_area_ratio in [0, 1); got ",
+        "max_relabel_rounds, max_compactness_retries and distortion_retries must be >= 0, compactness >= 0, "
+        "opposite_penalty in [1, 2] and min_area_ratio in [0, 1); got ",
         options.max_expansion_cycles, ", ", options.max_repair_iterations, ", ", options.untangle_iterations, ", ",
-        options.max_relabel_rounds, ", ", options.max_compactness_retries, ", ", options.compactness, ", ",
-        options.opposite_penalty, ", ", options.min_area_ratio));
+        options.max_relabel_rounds, ", ", options.max_compactness_retries, ", ", options.distortion_retries, ", ",
+        options.compactness, ", ", options.opposite_penalty, ", ", options.min_area_ratio));
   auto m = to_tri_mesh(mesh);
   if (!m) return m.error();
   tri_mesh base = detail::polycube_base_copy(*m);
@@ -216,17 +230,27 @@ result<polycube_map> build_polycube_map(const M& mesh, const polycube_options& o
     return r;
   }
   // the labelling's compactness decides most failures on scanned meshes: retry with other multiples
+  // with distortion_retries, the valid maps of the next multiples compete: the least distorted is kept
   result<polycube_map> first = status::internal_error("polycube: no attempt");
+  std::optional<polycube_map> best;
+  double best_score = 0;
   const int tries =
       std::min<int>(options.max_compactness_retries, static_cast<int>(std::size(detail::compactness_schedule)) - 1);
-  for (int k = 0; k <= tries; ++k) {
+  for (int k = 0, more = -1; k <= tries && more != 0; ++k) {
     polycube_options o = options;
     o.compactness = options.compactness * detail::compactness_schedule[detail::to_size(k)];
     auto r = detail::build_polycube_attempt(base, adj, o, *t, exec);
     if (!r && options.refine) r = detail::build_polycube_attempt(base, adj, o, *t, exec, true);
-    if (r || k == 0) first = std::move(r);
-    if (first) return first;
+    more = more < 0 ? (best || r ? options.distortion_retries : -1) : more - 1;
+    if (k == 0 && !r) first = r.error();
+    if (!r) continue;
+    const auto d = polycube_distortion(*r);
+    if (!best || d.area_distortion + d.angle_distortion < best_score) {
+      best_score = d.area_distortion + d.angle_distortion;
+      best = std::move(*r);
+    }
   }
+  if (best) return std::move(*best);
   return status::not_converged(detail::cat(first.error().message(), " (also tried compactness x",
                                            detail::compactness_schedule[1], " .. x",
                                            detail::compactness_schedule[detail::to_size(tries)], ": none valid)"));

@@ -171,6 +171,10 @@ struct polycube_options {
   int untangle_iterations = 300;    ///< smoothing rounds that unflip faces after the final solve
   int max_relabel_rounds = 24;      ///< relabellings of a chart whose deformation fails, then a new solve
   int max_compactness_retries = 5;  ///< further attempts at other compactness multiples (x4, x3, x8, x2, x0.5)
+  /// After the first valid map, up to this many further compactness multiples (within
+  /// max_compactness_retries) are tried as well and the least distorted valid map (smallest sum of
+  /// area and angle distortion, polycube_distortion.hpp) is returned: slower, often less distorted.
+  int distortion_retries = 0;
   /// Degeneracy bound of the verification: a face whose normalized area ratio (its share of the polycube
   /// area over its share of the base area) is below this counts as collapsed and the map is refused
   /// (0 accepts any positive area).

@@ -296,9 +296,10 @@ inline polycube_label_problem find_label_problem(const tri_mesh& m, const std::v
 
 /// Relabels all faces of chart c to the label minimizing their summed fidelity cost among the labels
 /// of its neighbour charts that are neither its own nor opposite to any neighbour it would touch
-/// (ties: smallest label). Falls back to the best label of another axis.
-inline void relabel_chart(const polycube_chart_set& cs, index_t c, const std::vector<std::array<double, 6>>& data,
-                          std::vector<std::uint8_t>& lab, bool to_neighbor_only) {
+/// (ties: smallest label). Falls back to the best label of another axis, then (with allow_opposite)
+/// to any other label. Returns false, changing nothing, when no label qualifies.
+inline bool relabel_chart(const polycube_chart_set& cs, index_t c, const std::vector<std::array<double, 6>>& data,
+                          std::vector<std::uint8_t>& lab, bool to_neighbor_only, bool allow_opposite = true) {
   const auto cs_ = to_size(c);
   const int own = cs.chart_label[cs_];
   std::array<bool, 6> allowed{};
@@ -314,13 +315,16 @@ inline void relabel_chart(const polycube_chart_set& cs, index_t c, const std::ve
   for (int pass = 0; pass < 3 && best < 0; ++pass)
     for (int l = 0; l < 6; ++l) {
       const auto ls = to_size(l);
-      if (l == own) continue;
+      if (l == own || (!allow_opposite && l == (own ^ 1))) continue;
       if (pass == 0 && (!allowed[ls] || forbidden[ls])) continue;
       if (pass == 1 && (to_neighbor_only ? !allowed[ls] : forbidden[ls])) continue;
+      if (pass == 2 && !allow_opposite) continue;
       if (best < 0 || cost[ls] < cost[to_size(best)]) best = l;
     }
+  if (best < 0) return false;
   for (std::size_t f = 0; f < lab.size(); ++f)
     if (cs.face_chart[f] == c) lab[f] = static_cast<std::uint8_t>(best);
+  return true;
 }
 
 /// Faces of each vertex (CSR: faces[start[v] .. start[v + 1]]).
