@@ -62,23 +62,32 @@ void BM_build_polycube(benchmark::State& st) {
   thread_pool_executor pool(static_cast<int>(st.range(1)));
   polycube_options o;
   o.tiles_across = 8;
+  o.distortion_retries = static_cast<int>(st.range(2));
   index_t quads = 0;
+  double area = 0, angle = 0;
   for (auto _ : st) {
     auto r = build_polycube_map(m, o, pool);
-    if (!r)
+    if (!r) {
       st.SkipWithError(r.error().to_string().c_str());
-    else
+    } else {
       quads = static_cast<index_t>(r->layout.quads.size());
+      const auto d = polycube_distortion(*r);
+      area = d.area_distortion, angle = d.angle_distortion;
+    }
   }
   st.counters["faces"] = static_cast<double>(m.num_faces());
   st.counters["quads"] = static_cast<double>(quads);
+  st.counters["area_distortion"] = area;
+  st.counters["angle_distortion"] = angle;
 }
+// {faces, threads, distortion_retries}
 BENCHMARK(BM_build_polycube)
-    ->Args({2000, 1})
-    ->Args({10000, 1})
-    ->Args({10000, 2})
-    ->Args({40000, 2})
-    ->Args({80000, 2})
+    ->Args({2000, 1, 0})
+    ->Args({10000, 1, 0})
+    ->Args({10000, 2, 0})
+    ->Args({10000, 2, 5})
+    ->Args({40000, 2, 0})
+    ->Args({80000, 2, 0})
     ->Unit(benchmark::kMillisecond);
 
 void BM_projection_round_trip(benchmark::State& st) {
