@@ -33,19 +33,22 @@ PolycubeMap.build(V, F) or load a saved one with PolycubeMap.load(path).)doc")
       .def_static(
           "build",
           [](const py::array& vertices, const py::array& faces, double tile_size, std::int64_t tiles_across,
-             double compactness, int threads) {
+             double compactness, int distortion_retries, int threads) {
             const tri_mesh mesh = mesh_from_arrays(vertices, faces, "mesh");
             polycube_options o;
             o.tile_size = tile_size;
             o.tiles_across = tiles_across;
             o.compactness = compactness;
+            o.distortion_retries = distortion_retries;
             return value_or_raise(
                 with_executor(threads, [&](auto& exec) { return build_polycube_map(mesh, o, exec); }));
           },
           py::arg("vertices"), py::arg("faces"), py::arg("tile_size") = 0.0, py::arg("tiles_across") = 8,
-          py::arg("compactness") = 1.0, py::arg("threads") = 0,
+          py::arg("compactness") = 1.0, py::arg("distortion_retries") = 0, py::arg("threads") = 0,
           R"doc(Builds the polycube map of a closed, manifold triangle mesh (V float64 n x 3, F int32/int64 m x 3).
 tile_size in mesh units, or 0 to put tiles_across tiles across the largest bounding-box extent.
+distortion_retries > 0 tries that many more labellings after the first valid map and keeps the least
+distorted (slower).
 Deterministic for any thread count. Releases the GIL. Raises InvalidArgument for an open or
 degenerate mesh, naming the problem.)doc")
       .def_static(

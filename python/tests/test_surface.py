@@ -43,6 +43,14 @@ def test_save_load_round_trip(sphere_map, tmp_path):
         tessera.PolycubeMap.load(str(tmp_path / "junk.polycube"))
 
 
+def test_distortion_retries(sphere_map):
+    v, f = uv_sphere()
+    best = tessera.PolycubeMap.build(v, f, tiles_across=4, distortion_retries=2)
+    assert best.num_quads > 0 and best.labels.shape == (len(f),)
+    with pytest.raises(tessera.Error, match="distortion_retries"):
+        tessera.PolycubeMap.build(v, f, tiles_across=4, distortion_retries=-1)
+
+
 def test_bad_input():
     v, f = uv_sphere()
     with pytest.raises(tessera.Error):
