@@ -180,6 +180,17 @@ labelled label_voxels(const std::set<shapes::voxel>& vox, int s) {
   l.cs = detail::find_polycube_charts(l.m, l.nb, l.lab);
   return l;
 }
+
+/// The vertex at `p` (to 1e-12), or -1.
+index_t vertex_at(const tri_mesh& m, vec3 p) {
+  for (index_t v = 0; v < m.num_vertices(); ++v)
+    if (distance(m.position(v), p) < 1e-12) return v;
+  return -1;
+}
+
+vec3 centroid(const tri_mesh& m, index_t f) {
+  return (m.position(m.face_vertex(f, 0)) + m.position(m.face_vertex(f, 1)) + m.position(m.face_vertex(f, 2))) / 3.0;
+}
 }  // namespace
 
 TEST_CASE("polycube repair: edge paths run from corner to corner") {
@@ -369,14 +380,10 @@ TEST_CASE("polycube repair: two charts of one axis meeting at a vertex are named
   auto l = label_voxels(shapes::cube(), 2);
   // on the top face, the squares at (0, 1) and (1, 0) take label +X: the two +Z squares left meet at
   // the face centre only
-  index_t centre = -1;
-  for (index_t v = 0; v < l.m.num_vertices(); ++v)
-    if (distance(l.m.position(v), {0.5, 0.5, 1}) < 1e-12) centre = v;
+  const index_t centre = vertex_at(l.m, {0.5, 0.5, 1});
   REQUIRE(centre >= 0);
   for (index_t f = 0; f < l.m.num_faces(); ++f) {
-    const vec3 c = (l.m.position(l.m.face_vertex(f, 0)) + l.m.position(l.m.face_vertex(f, 1)) +
-                    l.m.position(l.m.face_vertex(f, 2))) /
-                   3.0;
+    const vec3 c = centroid(l.m, f);
     if (c.z > 0.999 && (c.x < 0.5) != (c.y < 0.5)) l.lab[detail::to_size(f)] = 0;
   }
   const auto cs = detail::find_polycube_charts(l.m, l.nb, l.lab);
@@ -393,14 +400,10 @@ TEST_CASE("polycube repair: a label meeting itself at a vertex is freed by a loc
   // side) and a +X / -Y island below it (x 2-3, y 3 and y 2): the top chart's faces around the vertex
   // (4, 4) form two fans, between the tongue's corner square and the island's
   auto l = label_voxels(shapes::cube(), 8);
-  index_t centre = -1;
-  for (index_t v = 0; v < l.m.num_vertices(); ++v)
-    if (distance(l.m.position(v), {0.5, 0.5, 1}) < 1e-12) centre = v;
+  const index_t centre = vertex_at(l.m, {0.5, 0.5, 1});
   REQUIRE(centre >= 0);
   for (index_t f = 0; f < l.m.num_faces(); ++f) {
-    const vec3 c = (l.m.position(l.m.face_vertex(f, 0)) + l.m.position(l.m.face_vertex(f, 1)) +
-                    l.m.position(l.m.face_vertex(f, 2))) /
-                   3.0;
+    const vec3 c = centroid(l.m, f);
     if (c.z < 0.999) continue;
     const int i = static_cast<int>(c.x * 8), j = static_cast<int>(c.y * 8);
     if (i >= 4 && i < 6 && j >= 4) l.lab[detail::to_size(f)] = 2;  // +Y
@@ -456,9 +459,7 @@ TEST_CASE("polycube refinement: chords are split, the mesh stays closed, input i
   // boundary between the top chart and the +X chart while both its faces stay on the top: a chord
   auto l = label_voxels(shapes::cube(), 4);
   for (index_t f = 0; f < l.m.num_faces(); ++f) {
-    const vec3 c = (l.m.position(l.m.face_vertex(f, 0)) + l.m.position(l.m.face_vertex(f, 1)) +
-                    l.m.position(l.m.face_vertex(f, 2))) /
-                   3.0;
+    const vec3 c = centroid(l.m, f);
     if (c.z > 0.999 && ((c.x > 0.5 && c.y < 0.25) || (c.x > 0.75 && c.y < 0.5))) l.lab[detail::to_size(f)] = 0;
   }
   const tri_mesh m0 = l.m;
@@ -496,9 +497,7 @@ TEST_CASE("polycube refinement: chords are split, the mesh stays closed, input i
 
 TEST_CASE("polycube verification: a degenerate map (a face squeezed to nothing) is refused, naming the chart") {
   const auto m = shapes::voxel_surface(shapes::cube(), 2);
-  index_t centre = -1;  // the vertex at the centre of the top face
-  for (index_t v = 0; v < m.num_vertices(); ++v)
-    if (distance(m.position(v), {0.5, 0.5, 1}) < 1e-12) centre = v;
+  const index_t centre = vertex_at(m, {0.5, 0.5, 1});  // the centre of the top face
   REQUIRE(centre >= 0);
   auto deformed = m;
   deformed.positions[detail::to_size(centre)] = {0.5, 0.2, 1};  // still inside: a valid polycube

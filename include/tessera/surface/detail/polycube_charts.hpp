@@ -425,9 +425,16 @@ inline bool repair_pinched_vertex(const tri_mesh& m, const std::vector<std::arra
       double cost = 0;
       for (index_t f : region) cost += data[to_size(f)][to_size(l)] - data[to_size(f)][lab[to_size(f)]];
       if (!best.empty() && cost >= best_cost) return;
-      auto trial = lab;
-      for (index_t f : region) trial[to_size(f)] = static_cast<std::uint8_t>(l);
-      if (label_problems_near(m, nb, vf, trial, region) < label_problems_near(m, nb, vf, lab, region)) {
+      // tried in place and put back (a copy of the labels per trial would cost O(F))
+      const auto problems = label_problems_near(m, nb, vf, lab, region);
+      std::vector<std::uint8_t> old(region.size());
+      for (std::size_t i = 0; i < region.size(); ++i) {
+        old[i] = lab[to_size(region[i])];
+        lab[to_size(region[i])] = static_cast<std::uint8_t>(l);
+      }
+      const auto after = label_problems_near(m, nb, vf, lab, region);
+      for (std::size_t i = 0; i < region.size(); ++i) lab[to_size(region[i])] = old[i];
+      if (after < problems) {
         best = region, best_label = l, best_cost = cost;
         return;
       }
