@@ -408,6 +408,23 @@ class basic_quilt_engine {
     return n;
   }
 
+  // True when one partner of thread piece `cin` spans it along the thread (up to thread_cover_cells)
+  // and lies on the same line: the piece would add nothing (it reaches the new region only by
+  // rounding at the window's side), and merging it can only fail.
+  [[nodiscard]] bool thread_covered(const texture_element& cin,
+                                    const std::vector<std::pair<index_t, std::size_t>>& mine) const {
+    const vec3 x = cin.box.extent();
+    const int along = x.x >= x.y ? 0 : 1, side = 1 - along;
+    const double tol = thread_cover_cells * cell_;
+    for (const auto& pr : mine) {
+      const aabb& b = elems_[pr.second].box;
+      if (b.min[along] <= cin.box.min[along] + tol && b.max[along] >= cin.box.max[along] - tol &&
+          std::abs(b.center()[side] - cin.box.center()[side]) <= corr_)
+        return true;
+    }
+    return false;
+  }
+
   // True when some alive element's XY box holds the cell's centre (something stands there).
   [[nodiscard]] bool covered(index_t c) const {
     const vec3 p{domain_.x0 + (double(c % cols_) + 0.5) * cell_, domain_.y0 + (double(c / cols_) + 0.5) * cell_, 0};
@@ -587,6 +604,10 @@ class basic_quilt_engine {
             ++stats_.elements_skipped;
             continue;
           }
+          if (mp.thread_pieces && thread_covered(cin, mine)) {  // the thread stands there already
+            ++stats_.elements_skipped;
+            continue;
+          }
           texture_element cur = std::move(cin);
           std::vector<std::size_t> consumed;
           for (const auto& pr : mine) {
@@ -661,6 +682,8 @@ class basic_quilt_engine {
   /// A long element narrower across than this share of its length is a thread: windows cut it only
   /// across its length.
   static constexpr double long_lateral_share = 0.5;
+  /// A thread piece spanned by a partner to within this fraction of a cell at both ends is skipped.
+  static constexpr double thread_cover_cells = 0.01;
   /// Constrained quilting moves an element that reaches at most this many element diameters across a
   /// tile side back inside (then checks it like any other).
   static constexpr double nudge_diameters = 0.35;
