@@ -2,7 +2,7 @@
 // exemplar kind, a 24 x 24 quilt and a 6 x 6 plane of a 16-tile set are measured against the exemplar
 // (geometry/texture_quality.hpp) and rendered; one markdown row per output goes to stdout (the
 // quality table of docs/geometry.md).
-//   example_53_geometric_quality [OUT_DIR] [KIND|all] [before]   KIND: rings (default), chain_mail,
+//   example_53_geometric_quality [OUT_DIR] [KIND|all] [before|nofill|nothreads]   KIND: rings (default), chain_mail,
 //                                                                 beads, stones, pebbles, weave
 // `before` runs the earlier rules (every corresponding pair merged, no cell retried, nothing moved
 // back inside a tile, eq. 4 alone, free strip elements only wholly inside the strip), for the before/after table and its same-run speed ratio.
@@ -58,7 +58,8 @@ void row(const char* what, const std::string& kind, const texture_quality_compar
       static_cast<long long>(v.nonmanifold_edges), static_cast<long long>(v.intersecting_pairs), ms);
 }
 
-int run_kind(const std::string& dir, const std::string& kind, bool before, bool no_fill, thread_pool_executor& pool) {
+int run_kind(const std::string& dir, const std::string& kind, bool before, bool no_fill, bool no_threads,
+             thread_pool_executor& pool) {
   const auto exemplar = make_kind(kind);
   if (!exemplar) return std::fprintf(stderr, "%s\n", exemplar.error().to_string().c_str()), 1;
   const auto prepared = prepare_quilt_exemplar(*exemplar);
@@ -72,6 +73,7 @@ int run_kind(const std::string& dir, const std::string& kind, bool before, bool 
   mesh_quilt_options qo{.seed = 7};
   if (before) qo.merge_whole = true, qo.cell_retries = 0, qo.nudge_inside = false;
   if (before || no_fill) qo.fill_holes = false;
+  if (before || no_threads) qo.thread_joins = false;
   const auto q = mesh_quilt(*prepared, size, size, qo, pool);
   const double quilt_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   if (!q) return std::fprintf(stderr, "%s\n", q.error().to_string().c_str()), 1;
@@ -80,9 +82,10 @@ int run_kind(const std::string& dir, const std::string& kind, bool before, bool 
   if (!qc || !qv) return std::fprintf(stderr, "quilt: measuring failed\n"), 1;
   row("quilt 24 x 24", kind, *qc, false, *qv, quilt_ms);
   if (auto s = write_mesh_preview(dir + "/quality_" + kind +
-                                      (before    ? "_before"
-                                       : no_fill ? "_nofill"
-                                                 : "") +
+                                      (before       ? "_before"
+                                       : no_fill    ? "_nofill"
+                                       : no_threads ? "_nothreads"
+                                                    : "") +
                                       "_quilt.png",
                                   q->mesh, view, pool);
       !s)
@@ -114,9 +117,10 @@ int run_kind(const std::string& dir, const std::string& kind, bool before, bool 
   row("tiles 6 x 6", kind, *pc, true, *pv, set_ms);
   view.grid_spacing = w;
   if (auto s = write_mesh_preview(dir + "/quality_" + kind +
-                                      (before    ? "_before"
-                                       : no_fill ? "_nofill"
-                                                 : "") +
+                                      (before       ? "_before"
+                                       : no_fill    ? "_nofill"
+                                       : no_threads ? "_nothreads"
+                                                    : "") +
                                       "_plane.png",
                                   *plane, view, pool);
       !s)
@@ -131,6 +135,8 @@ int main(int argc, char** argv) {
   // "before": the rules of the first quality table; "nofill": today's rules without hole filling
   const bool before = argc > 3 && std::string(argv[3]) == "before";
   const bool no_fill = argc > 3 && std::string(argv[3]) == "nofill";
+  // "nothreads": today's rules without the thread joins (mesh_quilt_options::thread_joins)
+  const bool no_threads = argc > 3 && std::string(argv[3]) == "nothreads";
   std::vector<std::string> kinds{which};
   if (which == "all") kinds = {"rings", "chain_mail", "beads", "stones", "pebbles", "weave"};
   tessera::thread_pool_executor pool;
@@ -139,6 +145,6 @@ int main(int argc, char** argv) {
       "(exemplar) | spacing outside spread %% (exemplar) | open/non-manifold/intersecting | ms |\n"
       "|---|---|---|---|---|---|---|---|---|---|\n");
   for (const auto& k : kinds)
-    if (run_kind(dir, k, before, no_fill, pool) != 0) return 1;
+    if (run_kind(dir, k, before, no_fill, no_threads, pool) != 0) return 1;
   return 0;
 }

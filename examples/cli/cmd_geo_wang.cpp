@@ -109,6 +109,7 @@ int build(const cli::arguments& args) {
         .add("merge_fail_cut", set->stats.merge_fail_cut)
         .add("merge_fail_loops", set->stats.merge_fail_loops)
         .add("merge_fail_check", set->stats.merge_fail_check)
+        .add("merges_plane_cut", set->stats.merges_plane_cut)
         .add("open_edges_inside", sum.open_edges_inside)
         .add("nonmanifold_edges", sum.nonmanifold_edges)
         .add("intersecting_pairs", sum.intersecting_pairs)

@@ -56,6 +56,7 @@ int run(const cli::arguments& args) {
         .add("merge_fail_cut", r->stats.merge_fail_cut)
         .add("merge_fail_loops", r->stats.merge_fail_loops)
         .add("merge_fail_check", r->stats.merge_fail_check)
+        .add("merges_plane_cut", r->stats.merges_plane_cut)
         .add("icp_iterations", r->stats.icp_iterations)
         .add("icp_discarded", r->stats.icp_discarded)
         .add("open_edges_inside", rep->open_edges_inside)

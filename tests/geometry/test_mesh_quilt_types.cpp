@@ -10,17 +10,18 @@ namespace {
 // every counter a distinct value: k, k+1, ... in declaration order
 tessera::mesh_quilt_stats numbered(index_t k) {
   tessera::mesh_quilt_stats s;
-  for (index_t* f : {&s.patches, &s.elements_added, &s.elements_merged, &s.elements_dropped, &s.merges_attempted,
-                     &s.merges_succeeded, &s.icp_iterations, &s.icp_discarded, &s.merge_fail_correspondence,
-                     &s.merge_fail_deform, &s.merge_fail_cut, &s.merge_fail_loops, &s.merge_fail_check,
-                     &s.elements_skipped, &s.cells_retried, &s.elements_nudged, &s.elements_filled})
+  for (index_t* f :
+       {&s.patches, &s.elements_added, &s.elements_merged, &s.elements_dropped, &s.merges_attempted,
+        &s.merges_succeeded, &s.icp_iterations, &s.icp_discarded, &s.merge_fail_correspondence, &s.merge_fail_deform,
+        &s.merge_fail_cut, &s.merge_fail_loops, &s.merge_fail_check, &s.merges_plane_cut, &s.elements_skipped,
+        &s.cells_retried, &s.elements_nudged, &s.elements_filled})
     *f = k++;
   return s;
 }
 }  // namespace
 
 TEST_CASE("mesh_quilt_types: stats += sums every counter and nothing else", "[mesh_quilt_types]") {
-  static_assert(sizeof(tessera::mesh_quilt_stats) == 17 * sizeof(index_t), "a new counter must be summed too");
+  static_assert(sizeof(tessera::mesh_quilt_stats) == 18 * sizeof(index_t), "a new counter must be summed too");
   auto a = numbered(1);
   const auto b = numbered(100);
   a += b;
@@ -38,10 +39,11 @@ TEST_CASE("mesh_quilt_types: stats += sums every counter and nothing else", "[me
   CHECK(a.merge_fail_cut == 121);
   CHECK(a.merge_fail_loops == 123);
   CHECK(a.merge_fail_check == 125);
-  CHECK(a.elements_skipped == 127);
-  CHECK(a.cells_retried == 129);
-  CHECK(a.elements_nudged == 131);
-  CHECK(a.elements_filled == 133);
+  CHECK(a.merges_plane_cut == 127);
+  CHECK(a.elements_skipped == 129);
+  CHECK(a.cells_retried == 131);
+  CHECK(a.elements_nudged == 133);
+  CHECK(a.elements_filled == 135);
   const tessera::mesh_quilt_stats zero;
   a += zero;
   CHECK(a.merge_fail_check == 125);

@@ -42,6 +42,14 @@ struct mesh_quilt_options {
   /// one closed element only deforms it (docs/geometry.md, quality table). Long elements (threads)
   /// are merged either way: that is how a clipped thread continues.
   bool merge_whole = false;
+  /// Threads (long elements narrower than half their length): a patch cuts them only across their
+  /// length (its sides along a thread would slice it lengthwise into a ribbon; a thread belongs to
+  /// the patch that holds its middle line), and two pieces of one thread are joined across a plane
+  /// in their overlap, tried at up to five places, before the graph-cut merge of §3.3.6, whose
+  /// correspondences then leave out the pieces' flat caps (`stats.merges_plane_cut`; docs/geometry.md,
+  /// "Woven threads"). false: as before (the weave's quilts and planes covered 0.66-0.68 of the
+  /// exemplar's area).
+  bool thread_joins = true;
   /// How many times a cell whose element was dropped (it hit another element or a tile side) is
   /// handed back to the seed search, to be tried with another translation (0 = never).
   int cell_retries = 1;
@@ -129,6 +137,7 @@ inline mesh_quilt_params to_params(const mesh_quilt_options& o, bool constrained
           .constrained = constrained,
           .rules = o.rules,
           .merge_whole = o.merge_whole,
+          .thread_joins = o.thread_joins,
           .cell_retries = o.cell_retries,
           .nudge_inside = o.nudge_inside,
           .occupancy_aware = o.occupancy_aware,

@@ -36,6 +36,9 @@ struct mesh_quilt_stats {
   /// leaving the tile, open or non-manifold edges).
   index_t merge_fail_correspondence = 0, merge_fail_deform = 0, merge_fail_cut = 0, merge_fail_loops = 0,
           merge_fail_check = 0;
+  /// Of the merges that succeeded, those of two thread pieces joined across a plane
+  /// (mesh_quilt_options::thread_joins).
+  index_t merges_plane_cut = 0;
   /// Exemplar elements left out because a whole output element already stands where they
   /// correspond (merging two copies of one closed element only deforms it; see merge_whole).
   index_t elements_skipped = 0;
@@ -61,6 +64,7 @@ struct mesh_quilt_stats {
     merge_fail_cut += o.merge_fail_cut;
     merge_fail_loops += o.merge_fail_loops;
     merge_fail_check += o.merge_fail_check;
+    merges_plane_cut += o.merges_plane_cut;
     elements_skipped += o.elements_skipped;
     cells_retried += o.cells_retried;
     elements_nudged += o.elements_nudged;

@@ -56,7 +56,9 @@ struct axis_strip_set {
 /// faces ±c, where a is the horizontal axis of one and b of the other, so a new strip must fit each
 /// earlier strip of another axis at the four tile corners in both roles (strips_fit(new, earlier
 /// turned) and strips_fit(earlier, new turned)). Windows already used by any axis are avoided while
-/// half the windows remain. Errors: invalid_argument naming the axis when no window fits.
+/// half the windows remain. A strip is taken only when every later axis keeps some window
+/// (strip_lookahead) that fits it and the strips taken before. Errors: invalid_argument naming the
+/// axis when no window fits.
 template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
 status choose_axis_strips(const quilt_exemplar& src, const axis_color_counts& n, const strip_params& sp,
                           std::uint64_t seed, axis_strip_set& out) {
@@ -70,15 +72,34 @@ status choose_axis_strips(const quilt_exemplar& src, const axis_color_counts& n,
     hs.reserve(to_size(n[to_size(a)]));
     vs.reserve(to_size(n[to_size(a)]));
   }
+  // s (of axis a) and t (of another axis) fit at the corners of the faces they share, in both roles
+  const auto pair_fits = [&](const edge_strip& s, const edge_strip& s_turned, const edge_strip& t,
+                             const edge_strip& t_turned) {
+    return strips_fit(s, t_turned, sp) && strips_fit(t, s_turned, sp);
+  };
+  strip_lookahead ahead(src, true, sp, cands);
   for (int a = 0; a < 3; ++a)
     for (int c = 0; c < n[to_size(a)]; ++c) {
       const auto fits = [&](const edge_strip& s) {
         const edge_strip turned = quarter_turn(s);
         for (int b = 0; b < a; ++b)
           for (std::size_t k = 0; k < out.horizontal[to_size(b)].size(); ++k)
-            if (!strips_fit(s, out.vertical[to_size(b)][k], sp) ||
-                !strips_fit(out.horizontal[to_size(b)][k], turned, sp))
-              return false;
+            if (!pair_fits(s, turned, out.horizontal[to_size(b)][k], out.vertical[to_size(b)][k])) return false;
+        // lookahead: every later axis with colours keeps some window that fits all strips so far and s
+        // (in a lattice of crossing threads, strips of different phases leave none)
+        for (int b = a + 1; b < 3; ++b) {
+          if (n[to_size(b)] == 0) continue;
+          const bool some = ahead.any([&](const edge_strip& t) {
+            const edge_strip t_turned = quarter_turn(t);
+            if (!pair_fits(s, turned, t, t_turned)) return false;
+            for (int x = 0; x <= a; ++x)
+              for (std::size_t k = 0; k < out.horizontal[to_size(x)].size(); ++k)
+                if (x != b && !pair_fits(out.horizontal[to_size(x)][k], out.vertical[to_size(x)][k], t, t_turned))
+                  return false;
+            return true;
+          });
+          if (!some) return false;
+        }
         return true;
       };
       edge_strip s;

@@ -37,12 +37,26 @@ struct merge_side {
 
 /// §3.3.4 of paper 000: each vertex of `from` corresponds to its closest point on `to` when that
 /// lies within the correspondence radius (`radius2` is its square).
+/// With `to_mesh` (the mesh of `to`), a pair counts only when the vertex normal of `from` and the
+/// face normal of `to` agree to at least `min_cos`: the flat caps of clipped thread pieces then
+/// correspond to nothing, instead of pulling the other piece's walls into a neck (§3.3.5).
 inline std::vector<element_correspondence> find_correspondences(const tri_mesh& from, const triangle_bvh& to,
-                                                                double radius2) {
+                                                                double radius2, const tri_mesh* to_mesh = nullptr,
+                                                                double min_cos = 0) {
   std::vector<element_correspondence> out;
+  const std::vector<vec3> vn = to_mesh ? vertex_normals(from) : std::vector<vec3>{};
   for (index_t v = 0; v < from.num_vertices(); ++v) {
     const auto h = to.closest_point(from.positions[to_size(v)], radius2);
-    if (h.face >= 0) out.push_back({v, h.face, h.bary, h.point});
+    if (h.face < 0) continue;
+    if (to_mesh) {
+      const auto& f = to_mesh->faces[to_size(h.face)];
+      const vec3 a = to_mesh->positions[to_size(f[0])], b = to_mesh->positions[to_size(f[1])],
+                 c = to_mesh->positions[to_size(f[2])];
+      const vec3 n = cross(b - a, c - a);
+      const double len = norm(n);
+      if (!(len > 0) || dot(vn[to_size(v)], n) < min_cos * len) continue;
+    }
+    out.push_back({v, h.face, h.bary, h.point});
   }
   return out;
 }

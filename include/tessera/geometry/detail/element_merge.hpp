@@ -32,6 +32,7 @@
 #include "../mesh_quilt_types.hpp"
 #include "element_correspondence.hpp"
 #include "element_seam.hpp"
+#include "plane_cut_join.hpp"
 #include "mesh_clip.hpp"
 #include "triangle_geometry.hpp"
 
@@ -57,6 +58,9 @@ struct merge_params {
   /// overlap of §3.3.6 is old and patch; the new region is patch but not old.
   std::function<bool(vec3)> is_old, in_patch;
   merge_rules rules = merge_rules::tessera;
+  /// Two pieces of one thread (a long element clipped by patches): joined first across a plane
+  /// (plane_cut_join.hpp), and their caps take no part in the correspondences of the graph-cut merge.
+  bool thread_pieces = false;
 };
 
 /// What merge_pair decided, for tests and diagnostics: terminal links per face (+1 SOURCE, -1 SINK,
@@ -73,12 +77,20 @@ struct merge_trace {
 struct merge_counters {
   index_t attempted = 0, merged = 0;
   index_t fail_correspondence = 0, fail_deform = 0, fail_cut = 0, fail_loops = 0, fail_check = 0;
+  index_t plane_cut = 0;  ///< of the merged, thread pieces joined across a plane
 };
 
 /// Fewer correspondences than this (a triangle's worth) cannot place C_in against C_T (§3.3.4).
 inline constexpr std::size_t min_merge_correspondences = 3;
 /// Dist(v, other element) of eq. 8 is searched up to this many correspondence radii, capped there.
 inline constexpr double eq8_distance_radii = 4;
+/// Thread pieces: the gap between the two cut planes, in correspondence radii (the ladder joining
+/// the cut loops spans it), and the largest sideways offset of two pieces, in correspondence radii.
+inline constexpr double plane_cut_gap_radii = 0.5, plane_cut_offset_radii = 1.0;
+/// Thread pieces: a vertex corresponds only to a face whose normal is within 60 degrees of its own,
+/// so that the flat caps of clipped pieces correspond to nothing (they would pull the other piece's
+/// walls into a neck).
+inline constexpr double thread_normal_cos = 0.5;
 /// The weak keep/remove preference of free faces in the element cuts (see dual_graph_cut).
 inline constexpr double cut_bias_weight = 0.05;
 
@@ -292,8 +304,27 @@ std::optional<texture_element> merge_pair(const texture_element& ct, const textu
                                           merge_counters& stats, merge_trace* trace = nullptr) {
   ++stats.attempted;
   const double corr2 = p.corr_dist * p.corr_dist;
+  if (p.thread_pieces) {  // §3.3.6 with the cut placed across the thread
+    texture_element cin_b = cin;
+    cin_b.border = ct.border | cin.border;
+    std::optional<texture_element> out =
+        join_across_plane(ct, held_vertices(ct, p.domain), cin, held_vertices(cin_b, p.domain),
+                          {.domain = p.domain,
+                           .gap = plane_cut_gap_radii * p.corr_dist,
+                           .max_offset = plane_cut_offset_radii * p.corr_dist},
+                          [&](const texture_element& e) { return merged_element_valid(e, p); });
+    if (out) {
+      if (trace) ++trace->seams;
+      out->update_box();
+      ++stats.plane_cut;
+      ++stats.merged;
+      return out;
+    }
+  }
   // §3.3.4: C_T's vertices correspond to their closest points on C_in
-  const std::vector<element_correspondence> corr = find_correspondences(ct.mesh, triangle_bvh(cin.mesh), corr2);
+  const std::vector<element_correspondence> corr =
+      p.thread_pieces ? find_correspondences(ct.mesh, triangle_bvh(cin.mesh), corr2, &cin.mesh, thread_normal_cos)
+                      : find_correspondences(ct.mesh, triangle_bvh(cin.mesh), corr2);
   if (corr.size() < min_merge_correspondences) {
     ++stats.fail_correspondence;
     return std::nullopt;

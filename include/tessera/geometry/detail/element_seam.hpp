@@ -150,9 +150,10 @@ void stitch_loops(tri_mesh& m, const std::vector<index_t>& a, std::vector<index_
 /// Smooths the `rings` vertex rings around `seam` (ids in out.mesh): Gauss-Seidel sweeps of
 /// uniform-Laplacian smoothing, v = average(neighbours) + delta, with delta = 0 on the seam itself and
 /// the original uniform Laplacian coordinate elsewhere (details kept). Fixed vertices and the border
-/// vertices of `domain` (§3.3.5) stay put. O(sweeps * ring size).
+/// vertices of `domain` (§3.3.5) stay put; `rings` < 0 smooths nothing. O(sweeps * ring size).
 template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
 void smooth_seam(texture_element& out, const std::vector<index_t>& seam_vertices, const xy_rect& domain, int rings) {
+  if (rings < 0) return;
   const std::size_t nv = out.mesh.positions.size();
   std::vector<std::vector<index_t>> nbr(nv);
   for (const auto& f : out.mesh.faces)

@@ -51,6 +51,7 @@ struct mesh_quilt_params {
   bool constrained = false;
   merge_rules rules = merge_rules::tessera;
   bool merge_whole = false;
+  bool thread_joins = true;
   int cell_retries = 1;
   bool nudge_inside = true;
   bool occupancy_aware = false;
@@ -407,6 +408,23 @@ class basic_quilt_engine {
     return n;
   }
 
+  // True when one partner of thread piece `cin` spans it along the thread (up to thread_cover_cells)
+  // and lies on the same line: the piece would add nothing (it reaches the new region only by
+  // rounding at the window's side), and merging it can only fail.
+  [[nodiscard]] bool thread_covered(const texture_element& cin,
+                                    const std::vector<std::pair<index_t, std::size_t>>& mine) const {
+    const vec3 x = cin.box.extent();
+    const int along = x.x >= x.y ? 0 : 1, side = 1 - along;
+    const double tol = thread_cover_cells * cell_;
+    for (const auto& pr : mine) {
+      const aabb& b = elems_[pr.second].box;
+      if (b.min[along] <= cin.box.min[along] + tol && b.max[along] >= cin.box.max[along] - tol &&
+          std::abs(b.center()[side] - cin.box.center()[side]) <= corr_)
+        return true;
+    }
+    return false;
+  }
+
   // True when some alive element's XY box holds the cell's centre (something stands there).
   [[nodiscard]] bool covered(index_t c) const {
     const vec3 p{domain_.x0 + (double(c % cols_) + 0.5) * cell_, domain_.y0 + (double(c / cols_) + 0.5) * cell_, 0};
@@ -543,8 +561,25 @@ class basic_quilt_engine {
       for (vec3& q : moved.positions) q += t;
       std::vector<texture_element> pieces;
       if (ex_.is_long(e)) {
-        const xy_rect clip{std::max(w.x0, inset.x0), std::max(w.y0, inset.y0), std::min(w.x1, inset.x1),
-                           std::min(w.y1, inset.y1)};
+        xy_rect clip{std::max(w.x0, inset.x0), std::max(w.y0, inset.y0), std::min(w.x1, inset.x1),
+                     std::min(w.y1, inset.y1)};
+        if (p_.thread_joins) {
+          // a thread is cut only across its length: the window's sides along it would slice it
+          // lengthwise into a ribbon; it belongs to the window that holds its middle line
+          const vec3 x = box.extent(), c = box.center();
+          const int along = x.x >= x.y ? 0 : 1;
+          if (x[1 - along] < long_lateral_share * x[along]) {
+            const double lo = along == 0 ? w.y0 : w.x0, hi = along == 0 ? w.y1 : w.x1;
+            if (c[1 - along] < lo || c[1 - along] >= hi) continue;
+            if (along == 0) {
+              clip.y0 = inset.y0;
+              clip.y1 = inset.y1;
+            } else {
+              clip.x0 = inset.x0;
+              clip.x1 = inset.x1;
+            }
+          }
+        }
         pieces = clipped(moved, clip);
       } else {
         texture_element el;
@@ -554,6 +589,7 @@ class basic_quilt_engine {
         pieces.push_back(std::move(el));
       }
       auto it = partners.find(e);
+      mp.thread_pieces = p_.thread_joins && ex_.is_long(e);
       for (auto& cin : pieces) {
         std::vector<std::pair<index_t, std::size_t>> mine;
         if (it != partners.end())
@@ -565,6 +601,10 @@ class basic_quilt_engine {
         if (!mine.empty()) {
           if (!reaches_new) continue;
           if (!p_.merge_whole && !ex_.is_long(e)) {  // a whole element stands there already
+            ++stats_.elements_skipped;
+            continue;
+          }
+          if (mp.thread_pieces && thread_covered(cin, mine)) {  // the thread stands there already
             ++stats_.elements_skipped;
             continue;
           }
@@ -580,6 +620,7 @@ class basic_quilt_engine {
             stats_.merge_fail_cut += mc.fail_cut;
             stats_.merge_fail_loops += mc.fail_loops;
             stats_.merge_fail_check += mc.fail_check;
+            stats_.merges_plane_cut += mc.plane_cut;
             if (!merged) break;
             cur = std::move(*merged);
             consumed.push_back(pr.second);
@@ -638,6 +679,11 @@ class basic_quilt_engine {
   /// Long elements (threads) are clipped this fraction of a cell inside the domain, so that their
   /// caps lie strictly inside it.
   static constexpr double long_clip_inset_cells = 1e-6;
+  /// A long element narrower across than this share of its length is a thread: windows cut it only
+  /// across its length.
+  static constexpr double long_lateral_share = 0.5;
+  /// A thread piece spanned by a partner to within this fraction of a cell at both ends is skipped.
+  static constexpr double thread_cover_cells = 0.01;
   /// Constrained quilting moves an element that reaches at most this many element diameters across a
   /// tile side back inside (then checks it like any other).
   static constexpr double nudge_diameters = 0.35;

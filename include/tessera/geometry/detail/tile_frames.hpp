@@ -172,8 +172,49 @@ bool pick_strip(const quilt_exemplar& src, bool horizontal, std::uint64_t key, i
   return false;
 }
 
+/// The lookahead of the strip choice looks at most this many windows of the other orientation (as
+/// many as pick_strip cuts).
+inline constexpr std::size_t strip_lookahead_windows = 400;
+
+/// The windows of `cands` that the strip choice looks ahead to, extracted on demand: the first
+/// strip_lookahead_windows by crossing elements (most first, then window order).
+class strip_lookahead {
+ public:
+  strip_lookahead(const quilt_exemplar& src, bool horizontal, const strip_params& sp,
+                  const std::vector<strip_candidate>& cands)
+      : src_(src), horizontal_(horizontal), sp_(sp), cands_(cands) {
+    for (std::size_t i = 0; i < cands.size(); ++i) order_.push_back(i);
+    std::stable_sort(order_.begin(), order_.end(),
+                     [&](std::size_t x, std::size_t y) { return cands[x].crossing > cands[y].crossing; });
+    order_.resize(std::min(order_.size(), strip_lookahead_windows));
+    strips_.resize(order_.size());
+    state_.assign(order_.size(), 0);
+  }
+  /// True when some window's strip passes `fits`.
+  template <class Fits>
+  bool any(Fits&& fits) {
+    for (std::size_t k = 0; k < order_.size(); ++k) {
+      if (state_[k] == 0) state_[k] = extract_strip(src_, horizontal_, sp_, cands_[order_[k]], strips_[k]) ? 1 : 2;
+      if (state_[k] == 1 && fits(strips_[k])) return true;
+    }
+    return false;
+  }
+
+ private:
+  const quilt_exemplar& src_;
+  bool horizontal_;
+  strip_params sp_;
+  const std::vector<strip_candidate>& cands_;
+  std::vector<std::size_t> order_;
+  std::vector<edge_strip> strips_;
+  std::vector<unsigned char> state_;  // 0 not extracted, 1 extracted, 2 cannot be cut
+};
+
 /// The strips of a planar set (§3.1): nh horizontal strips, then nv vertical strips that fit every
-/// horizontal one at all four tile corners (strips_fit).
+/// horizontal one at all four tile corners (strips_fit). A horizontal strip is taken only when some
+/// vertical window (strip_lookahead) fits it and the horizontal strips taken before: in a lattice of
+/// crossing threads (weave) two horizontal strips cut at different phases leave no vertical strip
+/// that fits both, and the choice used to fail there.
 template <class Deferred = void>  // compiled only where used (see docs/architecture.md)
 status choose_strips(const quilt_exemplar& src, int horizontal_colors, int vertical_colors, const strip_params& sp,
                      std::uint64_t seed, std::vector<edge_strip>& hs, std::vector<edge_strip>& vs) {
@@ -183,14 +224,22 @@ status choose_strips(const quilt_exemplar& src, int horizontal_colors, int verti
   std::vector<const edge_strip*> mine;
   hs.reserve(static_cast<std::size_t>(horizontal_colors));
   vs.reserve(static_cast<std::size_t>(vertical_colors));
+  strip_lookahead ahead(src, false, sp, vc);
   for (int c = 0; c < horizontal_colors; ++c) {
     edge_strip s;
-    if (!pick_strip(
-            src, true, 1, c, hc, mine, sp, rng, [](const edge_strip&) { return true; }, s))
-      return status::invalid_argument(
-          detail::cat("geometric wang tiles: no horizontal edge strip of width ", sp.tile_size, " and height ",
-                      2 * sp.half_height, " avoids elements crossing the tile corners (", hc.size(),
-                      " candidate windows); try another tile_size, edge_height or corner_margin"));
+    const auto leaves_a_vertical = [&](const edge_strip& h) {
+      return ahead.any([&](const edge_strip& v) {
+        if (!strips_fit(h, v, sp)) return false;
+        for (const edge_strip& earlier : hs)
+          if (!strips_fit(earlier, v, sp)) return false;
+        return true;
+      });
+    };
+    if (!pick_strip(src, true, 1, c, hc, mine, sp, rng, leaves_a_vertical, s))
+      return status::invalid_argument(detail::cat(
+          "geometric wang tiles: no horizontal edge strip of width ", sp.tile_size, " and height ", 2 * sp.half_height,
+          " avoids elements crossing the tile corners and leaves a vertical strip that fits it there (", hc.size(),
+          " candidate windows); try another tile_size, edge_height or corner_margin"));
     hs.push_back(std::move(s));
     mine.push_back(&hs.back());
   }
