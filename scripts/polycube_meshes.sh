@@ -8,7 +8,7 @@ set -euo pipefail
 build=${1:-build}
 out=${2:-$build/polycube_meshes}
 meshes="anchor_dense armadillo bear blobby bones bull camel couplingdown cow dino elephant elk fandisk femur hand
-handle homer knot1 rotor_small triceratops turbine"
+handle homer knot1 rotor_small triceratops turbine bunny00 joint eight part 3torus double-torus-example"
 mkdir -p "$out"
 if [ ! -f "$out/.fetched" ]; then
   tmp=$(mktemp -d)
