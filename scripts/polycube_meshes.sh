@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Real closed meshes for the polycube table of docs/surface.md: fetches Debian's libcgal-demo package
-# (CGAL 5.5's data directory; the meshes are not committed), extracts the closed meshes of genus 0-3
-# with 2k-80k faces listed below, and runs `tessera polycube --stats` on each at two tile counts.
+# (CGAL 5.5's data directory; the meshes are not committed), extracts the closed meshes of genus 0-4
+# with 23 to 75k faces listed below, and runs `tessera polycube --stats` on each at two tile counts.
 #   scripts/polycube_meshes.sh [BUILD_DIR (default build)] [OUT_DIR (default BUILD_DIR/polycube_meshes)]
 # Needs apt-get (run `apt-get update` once first) and a built `tessera` (target tessera_cli).
 set -euo pipefail
