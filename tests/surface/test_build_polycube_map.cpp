@@ -191,6 +191,16 @@ index_t vertex_at(const tri_mesh& m, vec3 p) {
 vec3 centroid(const tri_mesh& m, index_t f) {
   return (m.position(m.face_vertex(f, 0)) + m.position(m.face_vertex(f, 1)) + m.position(m.face_vertex(f, 2))) / 3.0;
 }
+
+/// Gives each face on the cube's top (z = 1) the label `label_of(centroid x, y)` returns (-1: keep).
+template <class LabelOf>
+void relabel_top(labelled& l, LabelOf label_of) {
+  for (index_t f = 0; f < l.m.num_faces(); ++f) {
+    const vec3 c = centroid(l.m, f);
+    if (const int k = c.z > 0.999 ? label_of(c.x, c.y) : -1; k >= 0)
+      l.lab[detail::to_size(f)] = static_cast<std::uint8_t>(k);
+  }
+}
 }  // namespace
 
 TEST_CASE("polycube repair: edge paths run from corner to corner") {
@@ -382,10 +392,7 @@ TEST_CASE("polycube repair: two charts of one axis meeting at a vertex are named
   // the face centre only
   const index_t centre = vertex_at(l.m, {0.5, 0.5, 1});
   REQUIRE(centre >= 0);
-  for (index_t f = 0; f < l.m.num_faces(); ++f) {
-    const vec3 c = centroid(l.m, f);
-    if (c.z > 0.999 && (c.x < 0.5) != (c.y < 0.5)) l.lab[detail::to_size(f)] = 0;
-  }
+  relabel_top(l, [](double x, double y) { return (x < 0.5) != (y < 0.5) ? 0 : -1; });
   const auto cs = detail::find_polycube_charts(l.m, l.nb, l.lab);
   index_t bad = -1, pinch = -1;
   auto r = detail::polycube_classes(l.m, cs.face_chart, cs.chart_label, 2, &bad, &pinch);
@@ -402,14 +409,13 @@ TEST_CASE("polycube repair: a label meeting itself at a vertex is freed by a loc
   auto l = label_voxels(shapes::cube(), 8);
   const index_t centre = vertex_at(l.m, {0.5, 0.5, 1});
   REQUIRE(centre >= 0);
-  for (index_t f = 0; f < l.m.num_faces(); ++f) {
-    const vec3 c = centroid(l.m, f);
-    if (c.z < 0.999) continue;
-    const int i = static_cast<int>(c.x * 8), j = static_cast<int>(c.y * 8);
-    if (i >= 4 && i < 6 && j >= 4) l.lab[detail::to_size(f)] = 2;  // +Y
-    if (i >= 2 && i < 4 && j == 3) l.lab[detail::to_size(f)] = 0;  // +X
-    if (i >= 2 && i < 4 && j == 2) l.lab[detail::to_size(f)] = 3;  // -Y
-  }
+  relabel_top(l, [](double x, double y) {
+    const int i = static_cast<int>(x * 8), j = static_cast<int>(y * 8);
+    if (i >= 4 && i < 6 && j >= 4) return 2;  // +Y
+    if (i >= 2 && i < 4 && j == 3) return 0;  // +X
+    if (i >= 2 && i < 4 && j == 2) return 3;  // -Y
+    return -1;
+  });
   auto cs = detail::find_polycube_charts(l.m, l.nb, l.lab);
   const auto pinch = detail::find_pinched_vertex(l.m, l.nb, cs);
   REQUIRE(pinch[1] == centre);
@@ -458,10 +464,7 @@ TEST_CASE("polycube refinement: chords are split, the mesh stays closed, input i
   // label: the diagonal of square (2, 1), from (2, 1) to (3, 2), then joins two vertices of the
   // boundary between the top chart and the +X chart while both its faces stay on the top: a chord
   auto l = label_voxels(shapes::cube(), 4);
-  for (index_t f = 0; f < l.m.num_faces(); ++f) {
-    const vec3 c = centroid(l.m, f);
-    if (c.z > 0.999 && ((c.x > 0.5 && c.y < 0.25) || (c.x > 0.75 && c.y < 0.5))) l.lab[detail::to_size(f)] = 0;
-  }
+  relabel_top(l, [](double x, double y) { return (x > 0.5 && y < 0.25) || (x > 0.75 && y < 0.5) ? 0 : -1; });
   const tri_mesh m0 = l.m;
   tri_mesh m = l.m;
   auto nb = l.nb;
