@@ -165,16 +165,12 @@ result<polycube_map> build_polycube_attempt(const tri_mesh& input, const face_ad
         if (cs.face_chart[f] == bad) data[f][(*lab)[f]] += detail::relabel_tabu_cost;
       // a chart no other label fits (its neighbours take every other axis) gives up its border
       // faces to its neighbours instead, one ring more per round it does so
+      // (relabel_folded_faces changes only the chart's faces that border another chart)
       if (!detail::relabel_chart(cs, bad, data, *lab, false, false)) {
-        std::vector<index_t> border;
+        std::vector<index_t> faces;
         for (std::size_t f = 0; f < data.size(); ++f)
-          if (cs.face_chart[f] == bad)
-            for (index_t g : nb[f])
-              if (g >= 0 && cs.face_chart[detail::to_size(g)] != bad) {
-                border.push_back(static_cast<index_t>(f));
-                break;
-              }
-        if (!detail::relabel_folded_faces(nb, border, detail::relabel_tabu_cost, data, *lab)) return r;
+          if (cs.face_chart[f] == bad) faces.push_back(static_cast<index_t>(f));
+        if (!detail::relabel_folded_faces(nb, faces, detail::relabel_tabu_cost, data, *lab)) return r;
       }
     } else if (folded.empty()) {
       return r;
@@ -231,19 +227,23 @@ result<polycube_map> build_polycube_map(const M& mesh, const polycube_options& o
   }
   // the labelling's compactness decides most failures on scanned meshes: retry with other multiples
   // with distortion_retries, the valid maps of the next multiples compete: the least distorted is kept
-  result<polycube_map> first = status::internal_error("polycube: no attempt");
+  status first;  // the first attempt's failure
   std::optional<polycube_map> best;
   double best_score = 0;
   const int tries =
       std::min<int>(options.max_compactness_retries, static_cast<int>(std::size(detail::compactness_schedule)) - 1);
+  // more: attempts left after the first valid map (-1 until there is one)
   for (int k = 0, more = -1; k <= tries && more != 0; ++k) {
     polycube_options o = options;
     o.compactness = options.compactness * detail::compactness_schedule[detail::to_size(k)];
     auto r = detail::build_polycube_attempt(base, adj, o, *t, exec);
     if (!r && options.refine) r = detail::build_polycube_attempt(base, adj, o, *t, exec, true);
-    more = more < 0 ? (best || r ? options.distortion_retries : -1) : more - 1;
-    if (k == 0 && !r) first = r.error();
-    if (!r) continue;
+    more = more >= 0 ? more - 1 : r ? options.distortion_retries : -1;
+    if (!r) {
+      if (k == 0) first = r.error();
+      continue;
+    }
+    if (options.distortion_retries == 0) return r;  // nothing to compare: no distortion figures needed
     const auto d = polycube_distortion(*r);
     if (!best || d.area_distortion + d.angle_distortion < best_score) {
       best_score = d.area_distortion + d.angle_distortion;
@@ -251,7 +251,7 @@ result<polycube_map> build_polycube_map(const M& mesh, const polycube_options& o
     }
   }
   if (best) return std::move(*best);
-  return status::not_converged(detail::cat(first.error().message(), " (also tried compactness x",
+  return status::not_converged(detail::cat(first.message(), " (also tried compactness x",
                                            detail::compactness_schedule[1], " .. x",
                                            detail::compactness_schedule[detail::to_size(tries)], ": none valid)"));
 }

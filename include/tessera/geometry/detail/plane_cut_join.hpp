@@ -16,8 +16,6 @@
 #include <functional>
 #include <optional>
 #include <vector>
-#include <cstdio>
-#include <cstdlib>
 
 #include "../../core/config.hpp"
 #include "../../core/tri_mesh.hpp"

@@ -402,8 +402,8 @@ inline std::size_t label_problems_near(const tri_mesh& m, const std::vector<std:
   return problems;
 }
 
-/// Frees vertex v where chart c meets itself. The faces around v form fans of c separated by gaps of
-/// other charts; a gap may take c's label or a fan the label of a gap face beside it, each grown by up
+/// Frees vertex v where the faces of chart c's label form several fans (find_pinched_vertex),
+/// separated by gaps of other labels; a gap may take c's label or a fan the label of a gap face beside it, each grown by up
 /// to `max_rings` rings of the faces it relabels until it lowers the count of local label problems
 /// around it (pinches, pinned faces, opposite neighbours). Of those, the change of smallest summed
 /// fidelity cost is applied, and the labels it took are marked in `barred` (bit l of a face: label l),
