@@ -2,6 +2,9 @@
 # Real closed meshes for the polycube table of docs/surface.md: fetches Debian's libcgal-demo package
 # (CGAL 5.5's data directory; the meshes are not committed), extracts the closed meshes of genus 0-4
 # with 23 to 75k faces listed below, and runs `tessera polycube --stats` on each at two tile counts.
+# With OpenSCAD installed (`apt-get install openscad`, optional), CAD parts are added: OpenSCAD's own
+# examples 001-005 (genus 5, CC0, /usr/share/openscad/examples/Old) and scripts/meshes/three_holes.scad
+# (genus 3), exported as OFF.
 #   scripts/polycube_meshes.sh [BUILD_DIR (default build)] [OUT_DIR (default BUILD_DIR/polycube_meshes)]
 # Needs apt-get (run `apt-get update` once first) and a built `tessera` (target tessera_cli).
 set -euo pipefail
@@ -10,6 +13,7 @@ out=${2:-$build/polycube_meshes}
 meshes="anchor_dense armadillo bear blobby bones bull camel couplingdown cow dino elephant elk fandisk femur hand
 handle homer knot1 rotor_small triceratops turbine bunny00 joint eight part 3torus double-torus-example"
 mkdir -p "$out"
+out=$(cd "$out" && pwd)
 if [ ! -f "$out/.fetched" ]; then
   tmp=$(mktemp -d)
   (cd "$tmp" && apt-get download libcgal-demo >/dev/null)
@@ -21,6 +25,15 @@ if [ ! -f "$out/.fetched" ]; then
   mv "$tmp"/data/meshes/*.off "$out/"
   rm -rf "$tmp"
   touch "$out/.fetched"
+fi
+if command -v openscad >/dev/null; then
+  here=$(cd "$(dirname "$0")" && pwd)
+  for m in example001 example002 example003 example004 example005; do
+    [ -f "$out/$m.off" ] || (cd /usr/share/openscad/examples/Old && openscad -q -o "$out/$m.off" "$m.scad")
+    meshes="$meshes $m"
+  done
+  [ -f "$out/three_holes.off" ] || openscad -q -o "$out/three_holes.off" "$here/meshes/three_holes.scad"
+  meshes="$meshes three_holes"
 fi
 for m in $meshes; do
   for n in 8 16; do

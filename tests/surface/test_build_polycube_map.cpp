@@ -7,6 +7,7 @@
 
 #include <tessera/core/executor.hpp>
 #include <tessera/core/mesh_view.hpp>
+#include <tessera/io/mesh_file.hpp>
 #include <tessera/surface/build_polycube_map.hpp>
 #include <tessera/surface/polycube_distortion.hpp>
 
@@ -522,4 +523,65 @@ TEST_CASE("polycube verification: a degenerate map (a face squeezed to nothing) 
   o.min_area_ratio = 0;  // any positive area: the automatic map of the cube is still valid
   o.tile_size = 0.5;
   CHECK(build_polycube_map(m, o));
+}
+
+TEST_CASE("polycube refinement: a chart without interior vertices gets some for its cuts") {
+  // the L-shaped top of the voxel L at one square per unit has its reflex corner's cut run along
+  // interior vertices; the boundary-spanning edges of its charts are the edges a CAD mesh has only
+  const auto l = label_voxels(shapes::l_shape(), 1);
+  tri_mesh m = l.m;
+  auto nb = l.nb;
+  auto lab = l.lab;
+  const auto cs0 = detail::find_polycube_charts(m, nb, lab);
+  std::vector<index_t> charts(cs0.chart_label.size());
+  for (std::size_t c = 0; c < charts.size(); ++c) charts[c] = static_cast<index_t>(c);
+  auto spanning = [&](const tri_mesh& mm, const std::vector<std::array<index_t, 3>>& n,
+                      const std::vector<std::uint8_t>& lb) {
+    const auto cs = detail::find_polycube_charts(mm, n, lb);
+    index_t count = 0;
+    for (std::size_t f = 0; f < mm.faces.size(); ++f)
+      for (std::size_t k = 0; k < 3; ++k) {
+        const auto g = detail::to_size(n[f][k]);
+        if (cs.face_chart[g] != cs.face_chart[f]) continue;
+        if (cs.vertex_charts[detail::to_size(mm.faces[f][k])].size() >= 2 &&
+            cs.vertex_charts[detail::to_size(mm.faces[f][(k + 1) % 3])].size() >= 2)
+          ++count;
+      }
+    return count;
+  };
+  REQUIRE(spanning(m, nb, lab) > 0);  // every vertex of a one-square-per-unit voxel face is on its boundary
+  std::vector<std::array<double, 6>> data(lab.size(), std::array<double, 6>{1, 2, 3, 4, 5, 6});
+  std::vector<index_t> origin;
+  const index_t splits = detail::split_boundary_spanning_edges(m, nb, lab, data, origin, charts);
+  REQUIRE(splits > 0);
+  CHECK(spanning(m, nb, lab) == 0);
+  CHECK(m.num_faces() == l.m.num_faces() + 2 * splits);
+  CHECK(nb == face_adjacency(m).neighbor);
+  CHECK(validate_polycube_input(m));
+  CHECK(detail::find_polycube_charts(m, nb, lab).chart_label == cs0.chart_label);
+  // only the charts named are split
+  tri_mesh m2 = l.m;
+  auto nb2 = l.nb;
+  auto lab2 = l.lab;
+  std::vector<index_t> origin2;
+  data.assign(lab2.size(), std::array<double, 6>{1, 2, 3, 4, 5, 6});
+  const index_t one = detail::split_boundary_spanning_edges(m2, nb2, lab2, data, origin2, {0});
+  CHECK(one > 0);
+  CHECK(one < splits);
+  for (index_t f = 0; f < m2.num_faces(); ++f)
+    if (origin2[detail::to_size(f)] != f) CHECK(cs0.face_chart[detail::to_size(origin2[detail::to_size(f)])] == 0);
+}
+
+TEST_CASE("polycube: a CAD part (genus 5) whose flat-shaded faces have no interior vertices") {
+  // OpenSCAD's example001 (a sphere less three cylinders, CC0, Debian's openscad package): the
+  // walls of its holes are triangulated between their two boundary loops, so the cuts of their charts
+  // into rectangles find no interior vertex to run along until the boundary-spanning edges are split
+  const auto m = read_mesh(std::string(TESSERA_TEST_DATA_DIR) + "/surface/openscad_example001.off");
+  REQUIRE(m);
+  polycube_options o;
+  o.tiles_across = 16;
+  const auto r = build_polycube_map(*m, o);
+  REQUIRE(r);
+  CHECK(r->refined());
+  CHECK(check_polycube(*r) == 2 - 2 * 5);
 }

@@ -50,13 +50,16 @@ inline tri_mesh polycube_base_copy(const tri_mesh& m) {
 /// Steps (3) to (5) for a valid labelling. On failure, `bad_chart` names the chart to relabel when
 /// the failure is one chart's (an edge cycle, a collapsed edge, a boundary that does not turn as a
 /// polycube face), else -1; `folded` receives the faces still folded after the untangling, or the faces
-/// around a vertex where two charts of one axis meet.
+/// around a vertex where two charts of one axis meet; `uncut`, when given, the charts a cut into
+/// rectangles could not be laid across (no interior vertices to run along).
 template <Executor E>
 result<polycube_map> deform_polycube(tri_mesh base, const std::vector<std::array<index_t, 3>>& nb,
                                      const std::vector<std::uint8_t>& lab, double t, const polycube_options& o, E& exec,
-                                     index_t& bad_chart, std::vector<index_t>& folded) {
+                                     index_t& bad_chart, std::vector<index_t>& folded,
+                                     std::vector<index_t>* uncut = nullptr) {
   bad_chart = -1;
   folded.clear();
+  if (uncut) uncut->clear();
   const auto cs = find_polycube_charts(base, nb, lab);
   const std::size_t nc = cs.chart_label.size();
   std::vector<int> axis_of(nc);
@@ -109,7 +112,7 @@ result<polycube_map> deform_polycube(tri_mesh base, const std::vector<std::array
     return status::not_converged(cat("polycube: chart ", c, " is not a polycube face: ", why));
   }
   std::vector<std::uint8_t> cut;
-  if (auto s = embed_polycube<E>(base, cs, classes, paths, loops, t, true, pos, &cut); !s) return s;
+  if (auto s = embed_polycube<E>(base, cs, classes, paths, loops, t, true, pos, &cut, uncut); !s) return s;
   if (untangle_polycube(base, pos, cs.face_chart, cs.chart_label, {&classes[0], &classes[1], &classes[2]}, t,
                         o.untangle_iterations, &cut) > 0)
     folded = polycube_flipped_faces(base, pos, cs.face_chart, cs.chart_label, t);
@@ -117,18 +120,26 @@ result<polycube_map> deform_polycube(tri_mesh base, const std::vector<std::array
   return assemble_polycube_map(std::move(base), lab, std::move(pos), t, o.min_area_ratio, exec,
                                folded.empty() ? &folded : nullptr);
 }
+/// How build_polycube_attempt refines the base mesh (with polycube_options::refine).
+enum class polycube_attempt { plain, refine_first, split_uncut };
+
 /// One automatic attempt at a given compactness: label, then label -> repair -> deform rounds; a
 /// failure of one chart relabels it, and its faces' old label costs more from then on (so the repair
 /// cannot bring it back), then runs again (bounded by max_relabel_rounds). With options.refine, the
 /// chords of each round's repaired labelling are split before the deformation, and also when the
 /// repair cannot free a pinned face by relabelling (detail/polycube_refine.hpp; relabelling comes
-/// first: it smooths the chart boundary), or with `refine_first` before every repair (the chords of
-/// the graph cut's labels are then split instead of relabelled: another labelling, tried second). The working mesh only grows; the map's face_origin names the
-/// input face of each of its faces.
+/// first: it smooths the chart boundary), or with polycube_attempt::refine_first before every repair
+/// (the chords of the graph cut's labels are then split instead of relabelled: another labelling,
+/// tried second), or with polycube_attempt::split_uncut also where a chart has no interior vertices
+/// for its cuts (split_boundary_spanning_edges, once; tried last, and only when `saw_uncut` was set
+/// by an earlier attempt: it changes the maps of meshes valid without it). The working mesh only
+/// grows; the map's face_origin names the input face of each of its faces.
 template <Executor E>
 result<polycube_map> build_polycube_attempt(const tri_mesh& input, const face_adjacency_result& adj,
                                             const polycube_options& options, double t, E& exec,
-                                            bool refine_first = false) {
+                                            polycube_attempt kind = polycube_attempt::plain,
+                                            bool* saw_uncut = nullptr) {
+  const bool refine_first = kind == polycube_attempt::refine_first;
   const auto en = detail::make_polycube_energy(input, adj.neighbor, options, exec);
   auto lab = detail::alpha_expansion_labels(en, options.max_expansion_cycles);
   if (!lab) return lab.error();
@@ -140,6 +151,7 @@ result<polycube_map> build_polycube_attempt(const tri_mesh& input, const face_ad
     if (options.refine) split_chart_chords(base, nb, *lab, data, origin);
   };
   std::size_t stall = 0, last_folded = std::numeric_limits<std::size_t>::max();
+  bool split_for_cuts = false;  // whether charts got interior vertices for their cuts
   status last;
   for (int round = 0;; ++round) {
     if (refine_first) refine();
@@ -154,11 +166,19 @@ result<polycube_map> build_polycube_attempt(const tri_mesh& input, const face_ad
     if (problem.kind != detail::polycube_label_problem::none) return round == 0 ? problem.to_status() : last;
     refine();
     index_t bad = -1;
-    std::vector<index_t> folded;
-    auto r = detail::deform_polycube(base, nb, *lab, t, options, exec, bad, folded);
+    std::vector<index_t> folded, uncut;
+    auto r = detail::deform_polycube(base, nb, *lab, t, options, exec, bad, folded, &uncut);
     if (r) r->face_origin = origin;
+    if (!r && !uncut.empty() && saw_uncut) *saw_uncut = true;
     if (r || round >= options.max_relabel_rounds) return r;
     last = r.error();
+    // a chart meshed without interior vertices (CAD faces) cannot be cut into rectangles: its
+    // boundary-spanning edges are split once, and the same labelling deformed again
+    if (kind == polycube_attempt::split_uncut && !uncut.empty() && options.refine && !split_for_cuts &&
+        split_boundary_spanning_edges(base, nb, *lab, data, origin, uncut) > 0) {
+      split_for_cuts = true;
+      continue;
+    }
     if (bad >= 0) {
       const auto cs = detail::find_polycube_charts(base, nb, *lab);
       for (std::size_t f = 0; f < data.size(); ++f)
@@ -187,6 +207,22 @@ result<polycube_map> build_polycube_attempt(const tri_mesh& input, const face_ad
     }
   }
 }
+/// The attempts of build_polycube_attempt at one compactness, in turn until one is valid: plain, then
+/// (with options.refine) refine_first, then split_uncut when an attempt met a chart without interior
+/// vertices for its cuts. Returns the first valid map, else the failure of the last attempt but
+/// split_uncut's (the refined labelling's: the most informative).
+template <Executor E>
+result<polycube_map> build_polycube_attempts(const tri_mesh& input, const face_adjacency_result& adj,
+                                             const polycube_options& options, double t, E& exec) {
+  bool uncut = false;
+  auto r = build_polycube_attempt(input, adj, options, t, exec, polycube_attempt::plain, &uncut);
+  if (r || !options.refine) return r;
+  r = build_polycube_attempt(input, adj, options, t, exec, polycube_attempt::refine_first, &uncut);
+  if (r || !uncut) return r;
+  if (auto s = build_polycube_attempt(input, adj, options, t, exec, polycube_attempt::split_uncut)) return s;
+  return r;
+}
+
 }  // namespace detail
 
 /// Builds the polycube map of `mesh` automatically (see the file comment). The map keeps the input's
@@ -217,14 +253,8 @@ result<polycube_map> build_polycube_map(const M& mesh, const polycube_options& o
   if (!m) return m.error();
   tri_mesh base = detail::polycube_base_copy(*m);
   const auto adj = face_adjacency(base);
-  if (options.compactness == 0 || options.max_compactness_retries == 0) {
-    auto r = detail::build_polycube_attempt(base, adj, options, *t, exec);
-    if (!r && options.refine) {
-      auto s = detail::build_polycube_attempt(base, adj, options, *t, exec, true);
-      if (s) return s;
-    }
-    return r;
-  }
+  if (options.compactness == 0 || options.max_compactness_retries == 0)
+    return detail::build_polycube_attempts(base, adj, options, *t, exec);
   // the labelling's compactness decides most failures on scanned meshes: retry with other multiples
   // with distortion_retries, the valid maps of the next multiples compete: the least distorted is kept
   status first;  // the first attempt's failure
@@ -236,8 +266,7 @@ result<polycube_map> build_polycube_map(const M& mesh, const polycube_options& o
   for (int k = 0, more = -1; k <= tries && more != 0; ++k) {
     polycube_options o = options;
     o.compactness = options.compactness * detail::compactness_schedule[detail::to_size(k)];
-    auto r = detail::build_polycube_attempt(base, adj, o, *t, exec);
-    if (!r && options.refine) r = detail::build_polycube_attempt(base, adj, o, *t, exec, true);
+    auto r = detail::build_polycube_attempts(base, adj, o, *t, exec);
     more = more >= 0 ? more - 1 : r ? options.distortion_retries : -1;
     if (!r) {
       if (k == 0) first = r.error();

@@ -205,13 +205,15 @@ void spread_path(const polycube_edge_path& p, const polycube_path_pins& pp, std:
 /// Cuts every non-convex chart into rectangles (see the file comment). `ring` holds each vertex's
 /// neighbours; `fixed` marks the vertices whose position is final (corners and path vertices on entry;
 /// cut vertices are added). A cut that finds no path of free interior vertices is left out (Tutte may
-/// then fold faces near that corner, and the verification names them). Returns the number of cuts.
+/// then fold faces near that corner, and the verification names them); `uncut`, when given, receives
+/// those charts (sorted, once each). Returns the number of cuts.
 template <class Free>
 index_t cut_charts_into_rectangles(const tri_mesh& m, const polycube_chart_set& cs,
                                    const std::vector<polycube_edge_path>& paths,
                                    const std::vector<std::vector<std::vector<chart_loop_side>>>& loops,
                                    const std::vector<std::vector<index_t>>& ring, double t, polycube_path_pins& pp,
-                                   std::vector<vec3>& pos, std::vector<std::uint8_t>& fixed, Free&& is_free) {
+                                   std::vector<vec3>& pos, std::vector<std::uint8_t>& fixed, Free&& is_free,
+                                   std::vector<index_t>* uncut = nullptr) {
   const double eps = 1e-6 * t;
   const auto nv = to_size(m.num_vertices());
   index_t cuts = 0;
@@ -350,7 +352,11 @@ index_t cut_charts_into_rectangles(const tri_mesh& m, const polycube_chart_set& 
           from[to_size(v)] = -1;
         }
         std::fill(on_line.begin(), on_line.end(), std::uint8_t{0});
-        if (cut.size() < 2) continue;
+        if (cut.size() < 2) {
+          if (uncut && (uncut->empty() || uncut->back() != static_cast<index_t>(c)))
+            uncut->push_back(static_cast<index_t>(c));
+          continue;
+        }
         std::reverse(cut.begin(), cut.end());  // r ... target
         // pin the target on its path, then spread the cut from r to the hit point by arc length
         if (slot != 0 && slot != pv.size() - 1) {

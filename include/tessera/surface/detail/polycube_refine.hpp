@@ -9,6 +9,7 @@
 // keeps one half of input face f) and `face_origin` names the input face of every face.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -20,25 +21,23 @@
 TESSERA_NAMESPACE_BEGIN
 namespace detail {
 
-/// Splits every chord of the labelling `lab` (see the file comment) at its midpoint, in place: `m`,
-/// its face adjacency `nb`, the labels, the per-face label costs `data` (halved between the two halves)
-/// and `face_origin` (empty on entry: identity) follow. Returns the number of edges split. A split adds
-/// no chord (the new vertex lies inside the chart), so the loop ends after at most as many splits as
-/// there were chords. O(F + splits).
-inline index_t split_chart_chords(tri_mesh& m, std::vector<std::array<index_t, 3>>& nb, std::vector<std::uint8_t>& lab,
-                                  std::vector<std::array<double, 6>>& data, std::vector<index_t>& face_origin) {
+/// Splits at its midpoint, in place, every edge inside one chart for which `splits_edge(chart, a, b)`
+/// holds (u and w: its end vertices, a and b: the charts around them, sorted); `m`, its face adjacency `nb`, the
+/// labels, the per-face label costs `data` (halved between the two halves) and `face_origin` (empty on
+/// entry: identity) follow. A new vertex lies inside its chart (its charts: that one alone). Returns
+/// the number of edges split. O(F + splits).
+template <class SplitsEdge>
+index_t split_chart_edges(tri_mesh& m, std::vector<std::array<index_t, 3>>& nb, std::vector<std::uint8_t>& lab,
+                          std::vector<std::array<double, 6>>& data, std::vector<index_t>& face_origin,
+                          SplitsEdge&& splits_edge) {
   const auto cs = find_polycube_charts(m, nb, lab);
   auto vc = cs.vertex_charts;
   std::vector<index_t> chart = cs.face_chart;
   auto chord = [&](std::size_t f, int k) {
     const index_t g = nb[f][to_size(k)];
     if (g < 0 || chart[to_size(g)] != chart[f]) return false;
-    const auto& a = vc[to_size(m.faces[f][to_size(k)])];
-    const auto& b = vc[to_size(m.faces[f][to_size((k + 1) % 3)])];
-    if (a.size() < 2 || b.size() < 2) return false;
-    for (index_t d : a)
-      if (d != chart[f] && std::binary_search(b.begin(), b.end(), d)) return true;
-    return false;
+    const index_t u = m.faces[f][to_size(k)], w = m.faces[f][to_size((k + 1) % 3)];
+    return splits_edge(chart[f], u, w, vc[to_size(u)], vc[to_size(w)]);
   };
   index_t splits = 0;
   for (std::size_t f = 0; f < m.faces.size(); ++f)
@@ -90,6 +89,35 @@ inline index_t split_chart_chords(tri_mesh& m, std::vector<std::array<index_t, 3
       ++splits;
     }
   return splits;
+}
+
+/// Splits every chord of the labelling `lab` (see the file comment) at its midpoint (split_chart_edges).
+/// A split adds no chord (the new vertex lies inside the chart), so the loop ends after at most as many
+/// splits as there were chords.
+inline index_t split_chart_chords(tri_mesh& m, std::vector<std::array<index_t, 3>>& nb, std::vector<std::uint8_t>& lab,
+                                  std::vector<std::array<double, 6>>& data, std::vector<index_t>& face_origin) {
+  return split_chart_edges(
+      m, nb, lab, data, face_origin,
+      [](index_t c, index_t, index_t, const std::vector<index_t>& a, const std::vector<index_t>& b) {
+        if (a.size() < 2 || b.size() < 2) return false;
+        for (index_t d : a)
+          if (d != c && std::binary_search(b.begin(), b.end(), d)) return true;
+        return false;
+      });
+}
+
+/// Splits every edge inside one of `charts` (sorted) whose two end vertices both lie on the chart's
+/// boundary, at its midpoint (split_chart_edges): a chart meshed without interior vertices (a CAD face
+/// triangulated between its boundary loops) then has some, connected across it, for the cuts into
+/// rectangles (polycube_chart_cuts.hpp) to run along. Returns the number of edges split.
+inline index_t split_boundary_spanning_edges(tri_mesh& m, std::vector<std::array<index_t, 3>>& nb,
+                                             std::vector<std::uint8_t>& lab, std::vector<std::array<double, 6>>& data,
+                                             std::vector<index_t>& face_origin, const std::vector<index_t>& charts) {
+  return split_chart_edges(
+      m, nb, lab, data, face_origin,
+      [&](index_t c, index_t, index_t, const std::vector<index_t>& a, const std::vector<index_t>& b) {
+        return a.size() >= 2 && b.size() >= 2 && std::binary_search(charts.begin(), charts.end(), c);
+      });
 }
 
 }  // namespace detail
