@@ -345,6 +345,7 @@ int map(const cli::arguments& args) {
     cli::json_line()
         .add("map_ms", ms)
         .add("height", r->height)
+        .add("height_lowered", r->height_lowered)
         .add("quads", static_cast<index_t>(pc->layout.quads.size()))
         .add("tiles_used", r->tiling.tiles_used)
         .add("vertices", r->mesh.num_vertices())
@@ -421,7 +422,8 @@ const cli::registrar reg_map{[] {
         "(tessera polycube --out; its grid from --tile W, else the coarsest grid its planes lie on)"},
        {"--tile", "W", "quad size in base-mesh units (builds the polycube map; default: 8 tiles across)"},
        {"--tiles-across", "N", "build the polycube map with N tiles across the largest extent (default 8)"},
-       {"--height", "H", "shell height in base-mesh units (default: the tiles' own proportions)"},
+       {"--height", "H",
+        "shell height in base-mesh units (default: the tiles' own proportions, lowered where the shell folds)"},
        {"--with-base", "", "append the base mesh to the output"},
        {"--boolean", "OP",
         "union (one solid, e.g. for 3D printing), difference (the elements engraved into the base) or "

@@ -120,6 +120,15 @@ index_t gm_crossing_pairs(const tri_mesh& e) {
       [&](index_t, index_t) { ++n; });
   return n;
 }
+
+/// Checks that `r` failed with `code` and a message containing `text`.
+template <class R>
+void fails(const R& r, status_code code, const std::string& text) {
+  REQUIRE(!r);
+  INFO(r.error().to_string());
+  CHECK(r.error().code() == code);
+  CHECK(r.error().message().find(text) != std::string::npos);
+}
 }  // namespace
 
 TEST_CASE(
@@ -286,12 +295,6 @@ TEST_CASE(
   SECTION("bad input returns a clear status") {
     const auto& c = gm_cases()[0];  // sphere
     const auto& set = ring_tile_set();
-    auto fails = [](const auto& r, status_code code, const std::string& text) {
-      REQUIRE(!r);
-      INFO(r.error().to_string());
-      CHECK(r.error().code() == code);
-      CHECK(r.error().message().find(text) != std::string::npos);
-    };
     // a planar set; an incomplete three-axis set; a set whose colours do not fit the colouring
     geometric_tile_set planar = set;
     planar.axis_colors = {0, 0, 0};
@@ -342,6 +345,45 @@ TEST_CASE(
     stop.progress.callback = [](double, std::string_view stage) { return stage != "shell"; };
     fails(map_geometric_tiles(c.mesh, c.map, set, stop), status_code::cancelled, "cancel");
   }
+}
+
+TEST_CASE(
+    "geometric tiles on a surface: the default height is lowered where the shell folds but an explicit one is not",
+    "[map_geometric_tiles]") {
+  const auto& c = gm_cases()[1];  // torus
+  const auto& set = ring_tile_set();
+  const auto [z0, z1] = detail::tile_set_height_range(set);
+  const double own = (z1 - z0) / set.tile_size * c.map.tile_size;
+  // the lowest of the heights own * 1.25^i at which the shell folds beyond its repair
+  double fold = own;
+  while (build_shell(c.map.base, fold) && fold < 1e3 * own) fold *= 1.25;
+  REQUIRE(!build_shell(c.map.base, fold));
+  REQUIRE(build_shell(c.map.base, fold * auto_height_step * auto_height_step));
+  // a set whose own proportions ask for that height
+  geometric_tile_set tall = set;
+  for (auto& t : tall.tiles)
+    for (auto& p : t.positions) p.z *= fold / own;
+  map_geometric_tiles_options o;
+  o.seed = 3;
+  o.mapping.clip = shell_clip::exact;  // midpoint splitting cannot follow a shell this high within its budget
+  auto r = map_geometric_tiles(c.mesh, c.map, tall, o);
+  INFO((r ? std::string() : r.error().to_string()));
+  REQUIRE(r);
+  CHECK(r->height_lowered >= 1);
+  CHECK(r->height_lowered <= 2);
+  CHECK(r->height == Approx(fold * std::pow(auto_height_step, r->height_lowered)).epsilon(1e-12));
+  CHECK(boundary_edges(r->elements()).empty());
+  // the same height asked for explicitly is refused
+  fails(map_geometric_tiles(c.mesh, c.map, tall, {.height = fold}), status_code::invalid_argument, "too large");
+  // far too tall: lowered auto_height_tries times, then refused, saying so
+  for (auto& t : tall.tiles)
+    for (auto& p : t.positions) p.z *= 100;
+  fails(map_geometric_tiles(c.mesh, c.map, tall), status_code::invalid_argument, "lowered 6 times");
+  // the set's own height is kept where the shell does not fold
+  auto kept = map_geometric_tiles(c.mesh, c.map, set, {.seed = 3});
+  REQUIRE(kept);
+  CHECK(kept->height_lowered == 0);
+  CHECK(kept->height == Approx(own).epsilon(1e-12));
 }
 
 // A real mesh: CGAL's "handle" (genus 1, 1165 vertices; scripts/polycube_meshes.sh fetches it from Debian's

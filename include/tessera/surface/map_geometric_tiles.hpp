@@ -40,10 +40,16 @@
 
 TESSERA_NAMESPACE_BEGIN
 
+/// Factor by which map_geometric_tiles lowers its default shell height when the shell folds there.
+inline constexpr double auto_height_step = 0.8;
+/// Most times map_geometric_tiles lowers its default shell height (0.8^6 = 0.26 of the tiles' own).
+inline constexpr int auto_height_tries = 6;
+
 /// Options of map_geometric_tiles.
 struct map_geometric_tiles_options {
   /// Shell height H in base-mesh units, > 0; 0 (the default): keep the tiles' proportions (see the
-  /// file comment). The texture's height range always fills [0, H].
+  /// file comment), lowered in steps of auto_height_step (at most auto_height_tries times) where the
+  /// shell folds beyond its repair at that height. The texture's height range always fills [0, H].
   double height = 0;
   /// Seed of the grid-edge colouring (color_polycube_edges); unused when a colouring is passed.
   std::uint64_t seed = 0;
@@ -69,6 +75,9 @@ struct map_geometric_tiles_result {
   [[nodiscard]] tri_mesh elements() const { return detail::leading_part(mesh, element_vertices, element_faces); }
   /// H used, in base-mesh units.
   double height = 0;
+  /// Times the default height (options.height 0) was lowered because the shell folded (0: the tiles'
+  /// own proportions were kept).
+  int height_lowered = 0;
   /// The polycube's tile size T in base-mesh units.
   double tile_size = 0;
   /// Which tile each quad carries (and how it is placed); tiling.tiles_used counts distinct tiles.
@@ -140,7 +149,7 @@ inline std::pair<double, double> tile_set_height_range(const geometric_tile_set&
 /// (negative enclosed volume); `map` built over another mesh; options.height negative or not finite;
 /// a set without height (all tiles flat) or without vertices; the errors of assign_polycube_tiles (a
 /// planar set, an incomplete one, colours that do not fit its axes), build_shell (H too large for the
-/// shell everywhere), map_tiles_to_shell (tile vertices outside their square); cancelled by the progress.
+/// shell; with the default height, after lowering it auto_height_tries times), map_tiles_to_shell (tile vertices outside their square); cancelled by the progress.
 /// O(tile vertices · log F + F · repair rounds).
 template <Mesh M, TileColoring C, Executor E = serial_executor>
 result<map_geometric_tiles_result> map_geometric_tiles(const M& mesh, const polycube_map& map,
@@ -166,10 +175,24 @@ result<map_geometric_tiles_result> map_geometric_tiles(const M& mesh, const poly
   auto tiling = assign_polycube_tiles(map, set, coloring);
   if (!tiling) return tiling.error();
   const double T = map.tile_size;
-  const double H = o.height > 0 ? o.height : (z1 - z0) / set.tile_size * T;
+  double H = o.height > 0 ? o.height : (z1 - z0) / set.tile_size * T;
   if (!o.progress.report(0, "shell")) return status::cancelled();
   auto sh = build_shell(map.base, H, o.shell, exec);
-  if (!sh) return sh.error();
+  // the tiles' own proportions are a default, not a request: where the shell folds beyond repair
+  // (a sharp concave edge closer than H), a lower shell is tried; a height the caller asked for is not
+  int lowered = 0;
+  for (; !sh && o.height == 0 && sh.error().code() == status_code::invalid_argument && lowered < auto_height_tries;
+       ++lowered) {
+    if (!o.progress.report(0, "shell")) return status::cancelled();
+    H *= auto_height_step;
+    sh = build_shell(map.base, H, o.shell, exec);
+  }
+  if (!sh)
+    return o.height == 0 && lowered > 0
+               ? status(sh.error().code(),
+                        detail::cat(sh.error().message(), " (the tiles' own height ",
+                                    H / std::pow(auto_height_step, lowered), " lowered ", lowered, " times)"))
+               : sh.error();
   if (!o.progress.report(0, "mapping")) return status::cancelled();
   // each (tile, placement) transformed once: quad-local (u, v) from the placement, h in mesh units
   const auto& Q = tiling->quads;
@@ -210,6 +233,7 @@ result<map_geometric_tiles_result> map_geometric_tiles(const M& mesh, const poly
   r.element_vertices = mapped->element_vertices;
   r.element_faces = mapped->element_faces;
   r.height = H;
+  r.height_lowered = lowered;
   r.tile_size = T;
   r.tiling = std::move(*tiling);
   r.quads = mapped->quads;
