@@ -214,8 +214,10 @@ class basic_quilt_engine {
       if (q && q->density > 0) {
         target_density = q->density;
         const texture_quality_options qo;
-        const double in = std::max(qo.margin_diameters * ref->diameter, 1.25 * ref->nn_median);
-        if (!p_.constrained && 2 * in < std::min(domain_.width(), domain_.height()))
+        double in = std::max(qo.margin_diameters * ref->diameter, 1.25 * ref->nn_median);
+        // constrained: the part of the tile filling may reach (off the border band)
+        if (p_.constrained) in = p_.fill_border_margin;
+        if (2 * in < std::min(domain_.width(), domain_.height()))
           count_win = {domain_.x0 + in, domain_.y0 + in, domain_.x1 - in, domain_.y1 - in};
       }
     }
