@@ -55,6 +55,7 @@ int build(const cli::arguments& args) {
   o.edge_height = *edge;
   o.quilt.seed = args.seed();
   o.quilt.fill_holes = !args.has("--no-fill-holes");
+  o.quilt.fill_relax = !args.has("--no-fill-relax");
   thread_pool_executor pool(args.threads());
   result<geometric_tile_set> set = status::internal_error("not run");
   const double ms = cli::median_ms(args.repeat(), [&] { set = build_geometric_wang_tiles(*ex, o, pool); });
@@ -101,6 +102,7 @@ int build(const cli::arguments& args) {
         .add("elements_merged", set->stats.elements_merged)
         .add("elements_dropped", set->stats.elements_dropped)
         .add("elements_filled", set->stats.elements_filled)
+        .add("elements_relaxed", set->stats.elements_relaxed)
         .add("frame_merges_attempted", set->frame_merges_attempted)
         .add("frame_merged", set->frame_merged)
         .add("frame_dropped", set->frame_dropped)
@@ -383,6 +385,8 @@ const cli::registrar reg_build{[] {
                   {"--tile", "W", "tile size in exemplar units"},
                   {"--edge-height", "H", "edge strip height h_E (default 1.5 x element size)"},
                   {"--no-fill-holes", "", "leave the holes where elements were dropped (no single-element filling)"},
+                  {"--no-fill-relax", "",
+                   "fill holes as they stand until the covered area is reached (no size classes, no neighbours moved)"},
                   {"--out", "DIR", "output directory: tile_<index>.obj and tiles.json"}},
                  build};
   return c;

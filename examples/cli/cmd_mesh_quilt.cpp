@@ -29,6 +29,7 @@ int run(const cli::arguments& args) {
   o.seed = args.seed();
   o.lambda = *lambda;
   o.fill_holes = !args.has("--no-fill-holes");
+  o.fill_relax = !args.has("--no-fill-relax");
   thread_pool_executor pool(args.threads());
   result<mesh_quilt_result> r = status::internal_error("not run");
   const double ms = cli::median_ms(args.repeat(), [&] { r = mesh_quilt(*ex, size->first, size->second, o, pool); });
@@ -49,6 +50,7 @@ int run(const cli::arguments& args) {
         .add("elements_merged", r->stats.elements_merged)
         .add("elements_dropped", r->stats.elements_dropped)
         .add("elements_filled", r->stats.elements_filled)
+        .add("elements_relaxed", r->stats.elements_relaxed)
         .add("merges_attempted", r->stats.merges_attempted)
         .add("merges_succeeded", r->stats.merges_succeeded)
         .add("merge_fail_correspondence", r->stats.merge_fail_correspondence)
@@ -72,15 +74,18 @@ int run(const cli::arguments& args) {
 }
 
 const cli::registrar reg{[] {
-  cli::command c{"mesh-quilt",
-                 "grow a larger geometric texture from an exemplar mesh (mesh quilting)",
-                 "tessera mesh-quilt --exemplar E.obj --size WxH --out O.obj [options]",
-                 {{"--exemplar", "FILE", "exemplar mesh of closed elements (.obj, .off, .ply)"},
-                  {"--size", "WxH", "output extent in exemplar units (W alone: W x W; the older X,Y is accepted)"},
-                  {"--out", "FILE", "output mesh"},
-                  {"--lambda", "L", "weight of the normal term of the matching cost (default 1)"},
-                  {"--no-fill-holes", "", "leave the holes where elements were dropped (no single-element filling)"}},
-                 run};
+  cli::command c{
+      "mesh-quilt",
+      "grow a larger geometric texture from an exemplar mesh (mesh quilting)",
+      "tessera mesh-quilt --exemplar E.obj --size WxH --out O.obj [options]",
+      {{"--exemplar", "FILE", "exemplar mesh of closed elements (.obj, .off, .ply)"},
+       {"--size", "WxH", "output extent in exemplar units (W alone: W x W; the older X,Y is accepted)"},
+       {"--out", "FILE", "output mesh"},
+       {"--lambda", "L", "weight of the normal term of the matching cost (default 1)"},
+       {"--no-fill-holes", "", "leave the holes where elements were dropped (no single-element filling)"},
+       {"--no-fill-relax", "",
+        "fill holes as they stand until the covered area is reached (no size classes, no neighbours moved)"}},
+      run};
   return c;
 }()};
 

@@ -14,14 +14,14 @@ tessera::mesh_quilt_stats numbered(index_t k) {
        {&s.patches, &s.elements_added, &s.elements_merged, &s.elements_dropped, &s.merges_attempted,
         &s.merges_succeeded, &s.icp_iterations, &s.icp_discarded, &s.merge_fail_correspondence, &s.merge_fail_deform,
         &s.merge_fail_cut, &s.merge_fail_loops, &s.merge_fail_check, &s.merges_plane_cut, &s.elements_skipped,
-        &s.cells_retried, &s.elements_nudged, &s.elements_filled})
+        &s.cells_retried, &s.elements_nudged, &s.elements_filled, &s.elements_relaxed})
     *f = k++;
   return s;
 }
 }  // namespace
 
 TEST_CASE("mesh_quilt_types: stats += sums every counter and nothing else", "[mesh_quilt_types]") {
-  static_assert(sizeof(tessera::mesh_quilt_stats) == 18 * sizeof(index_t), "a new counter must be summed too");
+  static_assert(sizeof(tessera::mesh_quilt_stats) == 19 * sizeof(index_t), "a new counter must be summed too");
   auto a = numbered(1);
   const auto b = numbered(100);
   a += b;
@@ -44,6 +44,7 @@ TEST_CASE("mesh_quilt_types: stats += sums every counter and nothing else", "[me
   CHECK(a.cells_retried == 131);
   CHECK(a.elements_nudged == 133);
   CHECK(a.elements_filled == 135);
+  CHECK(a.elements_relaxed == 137);
   const tessera::mesh_quilt_stats zero;
   a += zero;
   CHECK(a.merge_fail_check == 125);

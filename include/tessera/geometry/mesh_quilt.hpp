@@ -67,6 +67,15 @@ struct mesh_quilt_options {
   /// element whose footprint fits with the exemplar's clearance, never intersecting or leaving a tile.
   /// Three-axis geometric tile sets turn it off (their tiles go onto surfaces; docs/geometry.md).
   bool fill_holes = true;
+  /// Hole filling follows the exemplar's element sizes and density (docs/geometry.md): a hole gets an
+  /// element of the largest size class the output lacks against the exemplar's, its free neighbours
+  /// (not frame elements, not elements merged across a patch seam, none in a tile's border band)
+  /// pushed apart by at most a quarter of an element diameter when it does not fit as it stands
+  /// (only when the exemplar's element sizes vary: a lattice keeps its spacing); once the output
+  /// holds the exemplar's element density, only holes that would leave an empty cell are filled.
+  /// false: elements are drawn from the larger half of those that fit a hole as it stands, until the
+  /// exemplar's covered share is reached.
+  bool fill_relax = true;
   /// Constrained quilting: holes are not filled by elements reaching within this distance of the
   /// domain's sides. Geometric tile sets use half the edge strip height (h_E / 2): there a tile's
   /// elements must agree with the strip the neighbouring tile shares, and on a surface two tiles meet
@@ -142,6 +151,7 @@ inline mesh_quilt_params to_params(const mesh_quilt_options& o, bool constrained
           .nudge_inside = o.nudge_inside,
           .occupancy_aware = o.occupancy_aware,
           .fill_holes = o.fill_holes,
+          .fill_relax = o.fill_relax,
           .fill_border_margin = o.fill_border_margin};
 }
 }  // namespace detail

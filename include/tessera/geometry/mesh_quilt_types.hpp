@@ -49,6 +49,8 @@ struct mesh_quilt_stats {
   index_t elements_nudged = 0;
   /// Exemplar elements placed one by one into the holes left after the patches (fill_holes).
   index_t elements_filled = 0;
+  /// Elements moved a little apart to make room for a filled one (fill_relax).
+  index_t elements_relaxed = 0;
   /// Adds every counter of `o`.
   mesh_quilt_stats& operator+=(const mesh_quilt_stats& o) {
     patches += o.patches;
@@ -69,6 +71,7 @@ struct mesh_quilt_stats {
     cells_retried += o.cells_retried;
     elements_nudged += o.elements_nudged;
     elements_filled += o.elements_filled;
+    elements_relaxed += o.elements_relaxed;
     return *this;
   }
 };

@@ -63,12 +63,63 @@ class coverage_raster {
     return {x0_ + (static_cast<double>(i) + 0.5) * h_, y0_ + (static_cast<double>(j) + 0.5) * h_, 0};
   }
 
-  void add_mesh(const tri_mesh& m) {
-    for (const vec3& p : m.positions) cover(pixel_of(p.x - x0_), pixel_of(p.y - y0_));
+  /// Covers the pixels of `m`'s XY projection; `owner` >= 0 is recorded in those no other owner holds.
+  void add_mesh(const tri_mesh& m, index_t owner = -1) {
+    if (owner >= 0 && owners_.empty()) owners_.assign(covered_.size(), -1);
+    auto mark = [&](index_t i, index_t j) {
+      if (i < 0 || j < 0 || i >= w_ || j >= rows_) return;
+      set(i, j);
+      if (owner >= 0 && owners_[to_size(j * w_ + i)] < 0) owners_[to_size(j * w_ + i)] = owner;
+    };
+    for (const vec3& p : m.positions) mark(pixel_of(p.x - x0_), pixel_of(p.y - y0_));
     for_each_covered_pixel(
-        m, grid_, [&](std::size_t i, std::size_t j) { set(static_cast<index_t>(i), static_cast<index_t>(j)); });
+        m, grid_, [&](std::size_t i, std::size_t j) { mark(static_cast<index_t>(i), static_cast<index_t>(j)); });
+  }
+  /// The owner recorded at pixel (i, j) (-1: none, or off the raster).
+  [[nodiscard]] index_t owner(index_t i, index_t j) const noexcept {
+    if (owners_.empty() || i < 0 || j < 0 || i >= w_ || j >= rows_) return -1;
+    return owners_[to_size(j * w_ + i)];
+  }
+  /// Uncovers the pixels within `b` (XY) that `owner` holds (an element moved away).
+  void remove_owner(index_t owner, const aabb& b) {
+    if (owners_.empty()) return;
+    const index_t i0 = std::max<index_t>(0, pixel_of(b.min.x - x0_) - 1),
+                  i1 = std::min<index_t>(w_ - 1, pixel_of(b.max.x - x0_) + 1),
+                  j0 = std::max<index_t>(0, pixel_of(b.min.y - y0_) - 1),
+                  j1 = std::min<index_t>(rows_ - 1, pixel_of(b.max.y - y0_) + 1);
+    for (index_t j = j0; j <= j1; ++j)
+      for (index_t i = i0; i <= i1; ++i)
+        if (owners_[to_size(j * w_ + i)] == owner) {
+          owners_[to_size(j * w_ + i)] = -1;
+          if (covered_[to_size(j * w_ + i)] != 0 && i >= ci0_ && i <= ci1_ && j >= cj0_ && j <= cj1_) --counted_;
+          covered_[to_size(j * w_ + i)] = 0;
+        }
+  }
+  /// True when a pixel within `r` of `p` (XY) is held by an owner other than those `ignore` accepts.
+  template <class Ignore>
+  [[nodiscard]] bool owned_near(vec3 p, double r, Ignore&& ignore) const {
+    const double fx = (p.x - x0_) / h_, fy = (p.y - y0_) / h_, rr = r / h_;
+    for (index_t j = pixel_of_unit(fy - rr); j <= pixel_of_unit(fy + rr); ++j)
+      for (index_t i = pixel_of_unit(fx - rr); i <= pixel_of_unit(fx + rr); ++i) {
+        const double dx = static_cast<double>(i) + 0.5 - fx, dy = static_cast<double>(j) + 0.5 - fy;
+        const index_t o = owner(i, j);
+        if (o >= 0 && dx * dx + dy * dy <= rr * rr && !ignore(o)) return true;
+      }
+    return false;
   }
 
+  /// True when no covered pixel's centre lies in the square of half-side `a` about `c` (XY) and the
+  /// square stays on the raster.
+  [[nodiscard]] bool square_free(vec3 c, double a) const {
+    const double fx = (c.x - x0_) / h_, fy = (c.y - y0_) / h_, aa = a / h_;
+    const index_t i0 = pixel_of_unit(std::ceil(fx - aa - 0.5)), i1 = pixel_of_unit(std::floor(fx + aa - 0.5)),
+                  j0 = pixel_of_unit(std::ceil(fy - aa - 0.5)), j1 = pixel_of_unit(std::floor(fy + aa - 0.5));
+    if (i0 < 0 || j0 < 0 || i1 >= w_ || j1 >= rows_) return false;
+    for (index_t j = j0; j <= j1; ++j)
+      for (index_t i = i0; i <= i1; ++i)
+        if (covered(i, j)) return false;
+    return true;
+  }
   /// True when no covered pixel's centre lies within `r` of `c` and the disc stays on the raster.
   [[nodiscard]] bool disc_free(vec3 c, double r) const {
     const double fx = (c.x - x0_) / h_, fy = (c.y - y0_) / h_, rr = r / h_;
@@ -99,13 +150,15 @@ class coverage_raster {
   double x0_, y0_, h_;
   index_t w_, rows_;
   std::vector<unsigned char> covered_;
+  std::vector<index_t> owners_;  // per pixel, when add_mesh was given owners (else empty)
   index_t ci0_ = 0, cj0_ = 0, ci1_ = -1, cj1_ = -1, counted_ = 0;  // the window count_in() counts
 };
 
 /// Exact Euclidean distance (in pixels) from every pixel centre to the nearest covered pixel centre
-/// (Felzenszwalb & Huttenlocher's two passes of lower envelopes of parabolas); pixels beyond the
-/// raster count as covered, so a hole is never centred against the raster's edge.
-inline std::vector<float> distance_to_covered(const coverage_raster& r) {
+/// (Felzenszwalb & Huttenlocher's two passes of lower envelopes of parabolas). With `outside_covered`
+/// the pixels beyond the raster count as covered, so a hole is never centred against the raster's
+/// edge; without, a raster with nothing covered is far (1e10 pixels) everywhere.
+inline std::vector<float> distance_to_covered(const coverage_raster& r, bool outside_covered = true) {
   const index_t w = r.width(), h = r.height();
   constexpr double inf = 1e20;  // far (finite: differences of two stay defined)
   // the raster padded by one covered pixel on every side
@@ -113,7 +166,8 @@ inline std::vector<float> distance_to_covered(const coverage_raster& r) {
   std::vector<double> f(to_size(pw * ph), inf);
   for (index_t j = 0; j < ph; ++j)
     for (index_t i = 0; i < pw; ++i)
-      if (i == 0 || j == 0 || i == pw - 1 || j == ph - 1 || r.covered(i - 1, j - 1)) f[to_size(j * pw + i)] = 0;
+      if (i == 0 || j == 0 || i == pw - 1 || j == ph - 1 ? outside_covered : r.covered(i - 1, j - 1))
+        f[to_size(j * pw + i)] = 0;
   std::vector<double> line, out;
   std::vector<index_t> v;
   std::vector<double> z;
@@ -203,6 +257,17 @@ inline double footprint_radius(const texture_element& e) {
   double r = 0;
   for (const vec3& p : e.mesh.positions) r = std::max(r, std::hypot(p.x - c.x, p.y - c.y));
   return r;
+}
+
+/// Area of an element's XY projection, as the upward-facing triangles' XY areas add up (exact for a
+/// closed element every vertical line meets at most twice, as a stone).
+inline double projected_area(const tri_mesh& m) {
+  double a = 0;
+  for (const auto& f : m.faces) {
+    const vec3 p = m.positions[to_size(f[0])], q = m.positions[to_size(f[1])], r = m.positions[to_size(f[2])];
+    a += std::max(0.0, 0.5 * ((q.x - p.x) * (r.y - p.y) - (q.y - p.y) * (r.x - p.x)));
+  }
+  return a;
 }
 
 /// The empty margin the exemplar keeps around its elements, as hole filling measures it: for each

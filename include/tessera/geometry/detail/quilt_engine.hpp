@@ -26,8 +26,10 @@
 #include "../mesh_quilt_types.hpp"
 #include "../mesh_elements.hpp"
 #include "../quilt_exemplar.hpp"
+#include "../texture_quality.hpp"
 #include "element_merge.hpp"
 #include "hole_fill.hpp"
+#include "hole_relax.hpp"
 #include "mesh_clip.hpp"
 #include "triangle_geometry.hpp"
 
@@ -56,6 +58,7 @@ struct mesh_quilt_params {
   bool nudge_inside = true;
   bool occupancy_aware = false;
   bool fill_holes = true;
+  bool fill_relax = true;
   double fill_border_margin = 0;
 };
 
@@ -138,11 +141,21 @@ class basic_quilt_engine {
   /// After run() (an extension of §3.3): places single exemplar elements (not long ones) into the
   /// holes the patches left where their elements were dropped. The holes are the local maxima of the
   /// distance to the elements' XY projections (hole_fill.hpp), largest first; each gets an exemplar
-  /// element drawn among those whose footprint, plus the exemplar's clearance between elements,
-  /// fits, centred there with its exemplar orientation and height; one that would
-  /// intersect an element, or leave a constrained domain, is not placed. Up to hole_passes passes (the
-  /// distances are recomputed after each), fewer when a pass places nothing. Random draws are keyed
-  /// by (seed, stream, pass, hole), so the result is deterministic.
+  /// element centred there with its exemplar orientation and height; one that would intersect an
+  /// element, or leave a constrained domain, is not placed. Up to hole_passes passes (the distances
+  /// are recomputed after each), fewer when a pass places nothing; filling stops when the exemplar's
+  /// covered share is reached. Random draws are keyed by (seed, stream, pass, hole), so the result
+  /// is deterministic.
+  ///
+  /// With fill_relax (the default), the exemplar's elements are split into hole_size_classes classes
+  /// of footprint radius, and a hole gets an element of the largest class the output holds fewer of
+  /// than the exemplar's density asks for (or whose elements bring at least the covered area each
+  /// element still to come should bring), its movable neighbours (added whole or filled: not frame
+  /// elements, not elements merged across a patch seam) pushed apart by up to hole_push_diameters
+  /// element diameters when it does not fit as it stands (hole_relax.hpp). Once the output's
+  /// element count reaches the exemplar's density, only holes that hold an empty square of
+  /// hole_empty_diameters are filled. Without, each hole gets an element drawn from the larger half
+  /// of those whose footprint, plus the exemplar's clearance between elements, fits as it stands.
   status fill_holes(const progress& prog) {
     if (!p_.fill_holes) return {};
     std::vector<std::pair<double, index_t>> fits;  // (footprint radius, exemplar element), smallest first
@@ -164,8 +177,51 @@ class basic_quilt_engine {
     const double clearance = std::max(hole_min_clearance_diameters * d,
                                       exemplar_clearance(ex_.elements(), is_long, h, d, hole_clearance_quantile)) +
                              h;
-    // filling stops where the exemplar's covered share is reached: the holes left are the smallest
+    const bool relax = p_.fill_relax;
+    // neighbours are pushed only when the exemplar's element sizes vary: a lattice of equal elements
+    // keeps its spacing (pushed, the beads quilt had 14 % of its spacings outside the exemplar's
+    // spread, from 0 %)
+    const double max_push =
+        relax && fits.back().first >= hole_relax_size_spread * fits.front().first ? hole_push_diameters * d : 0.0;
+    // relaxation: size classes (upper footprint radius of each; the exemplar's share of its elements
+    // and their mean projected area in each)
+    const std::vector<double> bounds = relax ? size_class_bounds(fits) : std::vector<double>{};
+    std::vector<double> class_share(bounds.size(), 0), class_area(bounds.size(), 0);
+    if (relax) {
+      std::vector<double> n(bounds.size(), 0);
+      for (const auto& f : fits) {
+        const std::size_t k = class_of(bounds, f.first);
+        class_share[k] += 1.0 / static_cast<double>(fits.size());
+        class_area[k] += projected_area(ex_.elements()[to_size(f.second)].mesh);
+        n[k] += 1;
+      }
+      for (std::size_t k = 0; k < n.size(); ++k) class_area[k] = n[k] > 0 ? class_area[k] / n[k] : 0.0;
+    }
+    // filling stops where the exemplar's covered share is reached (on this raster, as the output's
+    // is counted): the holes left are the smallest
     const double target = exemplar_coverage(ex_.elements(), h, d);
+    // with relaxation, the element count stops it too, at the exemplar's density as its likeness
+    // figure reads it (texture_quality.hpp, the figure the output is measured by; no count limit when
+    // that cannot be measured). The output is counted where that figure reads a texture:
+    // unconstrained, inside the domain inset as far as the figure insets it (a quilt's outer edges are
+    // open); constrained, in the whole tile, an element with fixed vertices (a frame element cut at a
+    // tile side, whose other part is the neighbouring tile's) counting as half.
+    double target_density = std::numeric_limits<double>::infinity();
+    xy_rect count_win = domain_;
+    if (relax) {
+      const auto ref = quality_reference(ex_.mesh());
+      const auto q = ref ? measure_texture_quality(ex_.mesh(), *ref) : result<texture_quality>(ref.error());
+      if (q && q->density > 0) {
+        target_density = q->density;
+        const texture_quality_options qo;
+        double in = std::max(qo.margin_diameters * ref->diameter, 1.25 * ref->nn_median);
+        // constrained: the part of the tile filling may reach (off the border band)
+        if (p_.constrained) in = p_.fill_border_margin;
+        if (2 * in < std::min(domain_.width(), domain_.height()))
+          count_win = {domain_.x0 + in, domain_.y0 + in, domain_.x1 - in, domain_.y1 - in};
+      }
+    }
+    const double target_count = target_density * count_win.width() * count_win.height();
     const counter_rng rng(p_.seed, p_.stream);
     bool reached = false;
     for (int pass = 0; pass < hole_passes && !reached; ++pass) {
@@ -173,27 +229,65 @@ class basic_quilt_engine {
       coverage_raster r(grid);
       r.count_in(domain_);
       for (std::size_t i = 0; i < elems_.size(); ++i)
-        if (alive_[i]) r.add_mesh(elems_[i].mesh);
+        if (alive_[i]) r.add_mesh(elems_[i].mesh, static_cast<index_t>(i));
       if (r.counted_share() >= target) break;
-      const auto sites =
-          hole_sites(distance_to_covered(r), w, rows, static_cast<float>((fits.front().first + clearance) / h));
+      // the output's (not long) elements by size class, and how many each class lacks
+      std::vector<double> lack(bounds.size(), 0);
+      double count = 0;
+      if (relax) {
+        for (std::size_t k = 0; k < bounds.size(); ++k) lack[k] = class_share[k] * target_count;
+        for (std::size_t i = 0; i < elems_.size(); ++i) {
+          const vec3 c = elems_[i].box.center();
+          if (!alive_[i] || !count_win.contains({c.x, c.y, 0})) continue;
+          const double fr = footprint_radius(elems_[i]);
+          if (fr > hole_long_footprint_factor * fits.back().first) continue;  // a thread piece or the like
+          const double n = p_.constrained && elems_[i].has_fixed() ? 0.5 : 1.0;
+          lack[class_of(bounds, fr)] -= n;
+          count += n;
+        }
+      }
+      const double min_site = std::max(h, fits.front().first + clearance - max_push);
+      const auto sites = hole_sites(distance_to_covered(r), w, rows, static_cast<float>(min_site / h));
       index_t placed = 0;
       for (const hole_site& s : sites) {
+        // past the exemplar's density, only holes that hold an empty square as wide as
+        // texture_quality's empty cells are filled
+        const bool capped = relax && count >= target_count;
+        if (capped && static_cast<double>(s.radius) * h < 0.5 * hole_empty_diameters * d) break;
         const vec3 c = r.centre(s.i, s.j);
+        if (capped && !r.square_free(c, 0.5 * hole_empty_diameters * d)) continue;
         if (!domain_.contains(c)) continue;
-        const auto room = static_cast<double>(s.radius) * h - clearance;
+        if (!r.disc_free(c, min_site - h)) continue;  // an element placed since stands there
+        const auto room = static_cast<double>(s.radius) * h - clearance + max_push;
         const auto n_fit = static_cast<std::size_t>(
             std::upper_bound(fits.begin(), fits.end(), std::pair{room, std::numeric_limits<index_t>::max()}) -
             fits.begin());
         if (n_fit == 0) continue;
         const auto site = static_cast<std::uint64_t>(s.j * w + s.i);
-        for (int t = 0; t < hole_tries; ++t) {
-          // the larger half of the elements that fit: small ones fit nearly everywhere, and filling
-          // with them would add more elements than the covered area calls for
-          const std::size_t first = n_fit / 2;
-          const auto& [re, e] = fits[first + to_size(rng.below(n_fit - first, 3, static_cast<std::uint64_t>(pass), site,
-                                                               static_cast<std::uint64_t>(t)))];
-          if (!r.disc_free(c, re + clearance)) continue;  // an element placed since covers part of it
+        // the draws: without relaxation, from the larger half of the elements that fit (small ones
+        // fit nearly everywhere, and filling with them would add more elements than the covered area
+        // calls for); with, from the largest class that lacks elements, then the next
+        std::vector<std::pair<std::size_t, std::size_t>> ranges;  // [first, last) of fits to draw from
+        if (!relax) {
+          for (int t = 0; t < hole_tries; ++t) ranges.push_back({n_fit / 2, n_fit});
+        } else {
+          // the covered area each element still to come should bring, on average: a class whose
+          // elements bring that much is drawn from even when the output holds enough of them (the
+          // patches drop large elements more often than small ones, so the covered area lags)
+          const double to_come = std::max(1.0, (target_count - count) * domain_.width() * domain_.height() /
+                                                   (count_win.width() * count_win.height()));
+          const double wanted = (target - r.counted_share()) * domain_.width() * domain_.height() / to_come;
+          for (std::size_t k = bounds.size(); k-- > 0;) {
+            if (!capped && lack[k] <= 0 && class_area[k] < wanted) continue;
+            const std::size_t lo = class_begin(fits, bounds, k), hi = std::min(n_fit, class_begin(fits, bounds, k + 1));
+            for (int t = 0; t < hole_tries_per_class && lo < hi; ++t) ranges.push_back({lo, hi});
+          }
+        }
+        for (std::size_t t = 0; t < ranges.size(); ++t) {
+          const auto [lo, hi] = ranges[t];
+          const auto& [re, e] = fits[lo + to_size(rng.below(hi - lo, 3, static_cast<std::uint64_t>(pass), site,
+                                                            static_cast<std::uint64_t>(t)))];
+          if (!relax && !r.disc_free(c, re + clearance)) continue;  // an element placed since covers part of it
           if (p_.constrained && std::min({c.x - domain_.x0, domain_.x1 - c.x, c.y - domain_.y0, domain_.y1 - c.y}) <
                                     re + p_.fill_border_margin)
             continue;  // in the band where a tile's elements must agree with its neighbour's strip
@@ -204,13 +298,14 @@ class basic_quilt_engine {
           for (vec3& q : el.mesh.positions) q += shift;
           el.fixed.assign(el.mesh.positions.size(), 0);
           el.update_box();
-          bool inside = true;
-          if (p_.constrained)
-            for (const vec3& q : el.mesh.positions)
-              inside = inside && strictly_inside(domain_, q, 2 * inside_margin_fraction * cell_);
-          if (!inside || intersects_alive(el, {})) continue;
-          r.add_mesh(el.mesh);
-          push(std::move(el));
+          if (p_.constrained && !all_strictly_inside(el.mesh, 2 * inside_margin_fraction * cell_)) continue;
+          if (relax ? !place_relaxed(el, c, r, h, clearance, max_push) : intersects_alive(el, {})) continue;
+          r.add_mesh(el.mesh, static_cast<index_t>(elems_.size()));
+          if (relax && count_win.contains(c)) {
+            lack[class_of(bounds, re)] -= 1;
+            count += 1;
+          }
+          push(std::move(el), true);
           ++stats_.elements_filled;
           ++placed;
           reached = r.counted_share() >= target;
@@ -353,15 +448,120 @@ class basic_quilt_engine {
   }
 
  private:
-  void push(texture_element e) {
+  // `movable`: hole filling may move the element a little (hole_relax.hpp): added whole or filled,
+  // not a frame element nor one merged across a patch seam
+  void push(texture_element e, bool movable = false) {
     elems_.push_back(std::move(e));
     alive_.push_back(1);
+    movable_.push_back(movable && !elems_.back().has_fixed() ? 1 : 0);
     bvh_.emplace_back();
     normals_.emplace_back();
   }
   const triangle_bvh& bvh_of(std::size_t i) {
     if (!bvh_[i]) bvh_[i].emplace(elems_[i].mesh);
     return *bvh_[i];
+  }
+
+  [[nodiscard]] bool all_strictly_inside(const tri_mesh& m, double margin) const {
+    return std::all_of(m.positions.begin(), m.positions.end(),
+                       [&](const vec3& q) { return strictly_inside(domain_, q, margin); });
+  }
+
+  // Hole filling with relaxation: the upper footprint radius of each of hole_size_classes classes
+  // (quantiles of the exemplar's, smallest first; the last class is open above).
+  [[nodiscard]] static std::vector<double> size_class_bounds(const std::vector<std::pair<double, index_t>>& fits) {
+    std::vector<double> b;
+    for (int k = 1; k < hole_size_classes; ++k)
+      b.push_back(fits[to_size(k) * fits.size() / to_size(hole_size_classes)].first);
+    b.push_back(std::numeric_limits<double>::infinity());
+    return b;
+  }
+  // the class of footprint radius `fr`: the first whose bound lies above it
+  [[nodiscard]] static std::size_t class_of(const std::vector<double>& bounds, double fr) {
+    return std::min<std::size_t>(
+        bounds.size() - 1,
+        static_cast<std::size_t>(std::upper_bound(bounds.begin(), bounds.end(), fr) - bounds.begin()));
+  }
+  // the index in `fits` (sorted) of class k's first element (fits.size() past the last class)
+  [[nodiscard]] static std::size_t class_begin(const std::vector<std::pair<double, index_t>>& fits,
+                                               const std::vector<double>& bounds, std::size_t k) {
+    if (k == 0) return 0;
+    if (k >= bounds.size()) return fits.size();
+    return static_cast<std::size_t>(
+        std::upper_bound(fits.begin(), fits.end(), std::pair{bounds[k - 1], std::numeric_limits<index_t>::max()}) -
+        fits.begin());
+  }
+
+  // Places `el` (centred at `c`) when its movable neighbours can make room (relax_pushes: each keeps
+  // `clearance` from it, moving at most `max_push`); a moved element must keep a pixel of room from
+  // every other element in `r`, stay off a tile's border band, and intersect nothing. Commits the
+  // moves (in `r` too); the caller adds `el`.
+  bool place_relaxed(const texture_element& el, vec3 c, coverage_raster& r, double h, double clearance,
+                     double max_push) {
+    std::vector<std::size_t> near;
+    std::vector<relax_neighbour> nb;
+    const double reach = clearance + h;
+    for (std::size_t i = 0; i < elems_.size(); ++i) {
+      if (!alive_[i]) continue;
+      const aabb& b = elems_[i].box;
+      if (b.min.x > el.box.max.x + reach || b.max.x < el.box.min.x - reach || b.min.y > el.box.max.y + reach ||
+          b.max.y < el.box.min.y - reach)
+        continue;
+      near.push_back(i);
+      nb.push_back({&elems_[i].mesh, b.center(), movable_[i] != 0});
+    }
+    const auto shifts = relax_pushes(el.mesh, c, nb, h, clearance, max_push);
+    if (!shifts) return false;
+    std::vector<std::size_t> moved;
+    std::vector<texture_element> moved_el;
+    const double band = p_.fill_border_margin + 2 * inside_margin_fraction * cell_;
+    const double gap = std::max(h, hole_min_clearance_diameters * ex_.element_diameter());
+    for (std::size_t k = 0; k < near.size(); ++k) {
+      const vec3 sh = (*shifts)[k];
+      if (sh.x == 0 && sh.y == 0) continue;
+      const std::size_t i = near[k];
+      if (p_.constrained && !all_strictly_inside(elems_[i].mesh, band)) return false;  // in the band: stays
+      texture_element m;
+      m.mesh = elems_[i].mesh;
+      for (vec3& q : m.mesh.positions) q += sh;
+      m.fixed = elems_[i].fixed;
+      m.border = elems_[i].border;
+      m.update_box();
+      if (p_.constrained && !all_strictly_inside(m.mesh, band)) return false;
+      moved.push_back(i);
+      moved_el.push_back(std::move(m));
+    }
+    if (moved.empty()) return !intersects_alive(el, {});
+    auto is_moved = [&](index_t o) {
+      return std::find(moved.begin(), moved.end(), static_cast<std::size_t>(o)) != moved.end();
+    };
+    for (std::size_t k = 0; k < moved.size(); ++k)
+      for (const vec3& q : moved_el[k].mesh.positions)
+        if (r.owned_near(q, gap, is_moved)) return false;  // pushed against an element that stays
+    // nothing intersects: the new element and the moved ones against what stays and each other
+    if (intersects_alive(el, moved)) return false;
+    std::vector<triangle_bvh> mb;
+    for (const auto& m : moved_el) mb.emplace_back(m.mesh);
+    const triangle_bvh eb(el.mesh);
+    for (std::size_t k = 0; k < moved.size(); ++k) {
+      if (intersects_alive(moved_el[k], moved)) return false;
+      bool hit = false;
+      auto any = [&](index_t, index_t) { hit = true; };
+      if (boxes_overlap(moved_el[k].box, el.box)) for_each_intersecting_pair(mb[k], eb, any);
+      for (std::size_t l = k + 1; l < moved.size() && !hit; ++l)
+        if (boxes_overlap(moved_el[k].box, moved_el[l].box)) for_each_intersecting_pair(mb[k], mb[l], any);
+      if (hit) return false;
+    }
+    for (std::size_t k = 0; k < moved.size(); ++k) {
+      const std::size_t i = moved[k];
+      r.remove_owner(static_cast<index_t>(i), elems_[i].box);
+      elems_[i] = std::move(moved_el[k]);
+      bvh_[i].emplace(std::move(mb[k]));
+      normals_[i].clear();
+      r.add_mesh(elems_[i].mesh, static_cast<index_t>(i));
+      ++stats_.elements_relaxed;
+    }
+    return true;
   }
 
   [[nodiscard]] index_t cell_of(vec3 p) const {
@@ -661,7 +861,7 @@ class basic_quilt_engine {
           if (!ex_.is_long(e)) dropped_cells_.push_back(cell_of({c.x, c.y, 0}));
           continue;
         }
-        push(std::move(cin));
+        push(std::move(cin), true);
         ++stats_.elements_added;
       }
     }
@@ -696,6 +896,18 @@ class basic_quilt_engine {
   static constexpr index_t hole_raster_max_pixels = index_t{1} << 24;
   static constexpr double hole_min_clearance_diameters = 0.04, hole_clearance_quantile = 0.25;
   static constexpr int hole_tries = 4, hole_passes = 3;
+  /// Hole filling with relaxation: size classes (quantiles of the exemplar's footprint radii), draws
+  /// per class and hole (hole_tries in all), the farthest a neighbour moves (element diameters), and
+  /// output elements with a footprint above this factor times the exemplar's largest are not counted
+  /// (pieces of long elements).
+  static constexpr int hole_size_classes = 4, hole_tries_per_class = 2;
+  static constexpr double hole_push_diameters = 0.25, hole_long_footprint_factor = 1.5;
+  /// Neighbours are pushed only when the exemplar's largest footprint radius is at least this many
+  /// times its smallest (elements of one size: a lattice, whose spacing moving would break).
+  static constexpr double hole_relax_size_spread = 1.25;
+  /// Past the exemplar's density, holes are still filled where an empty square this many element
+  /// diameters wide is centred (texture_quality's empty cells are 1.5 diameters wide).
+  static constexpr double hole_empty_diameters = 1.5;
 
   const quilt_exemplar& ex_;
   xy_rect domain_;
@@ -709,6 +921,7 @@ class basic_quilt_engine {
   std::vector<index_t> dropped_cells_;  // cells of the elements the current patch dropped
   std::vector<texture_element> elems_;
   std::vector<unsigned char> alive_;
+  std::vector<unsigned char> movable_;  // see push()
   std::vector<std::optional<triangle_bvh>> bvh_;
   std::vector<std::vector<vec3>> normals_;
   mesh_quilt_stats stats_;
