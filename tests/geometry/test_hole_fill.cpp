@@ -28,6 +28,29 @@ std::vector<texture_element> ring_lattice(int n, double s) {
     }
   return out;
 }
+/// The stone exemplar (seed 7) quilted over size x size with options `a` and with `b`, each quilt's
+/// quality against the exemplar (every step required to succeed).
+struct stone_quilts {
+  tri_mesh stones;
+  quilt_exemplar ex;
+  mesh_quilt_result a, b;
+  texture_quality_comparison qa, qb;
+};
+stone_quilts quilt_stones(double size, const mesh_quilt_options& a, const mesh_quilt_options& b) {
+  auto stones = make_stone_exemplar({.seed = 7});
+  REQUIRE(stones.ok());
+  auto ex = prepare_quilt_exemplar(*stones);
+  REQUIRE(ex.ok());
+  auto qa = mesh_quilt(*ex, size, size, a);
+  auto qb = mesh_quilt(*ex, size, size, b);
+  REQUIRE(qa.ok());
+  REQUIRE(qb.ok());
+  auto ca = compare_texture_quality(*stones, qa->mesh, {0, 0, size, size});
+  auto cb = compare_texture_quality(*stones, qb->mesh, {0, 0, size, size});
+  REQUIRE(ca.ok());
+  REQUIRE(cb.ok());
+  return {std::move(*stones), std::move(*ex), std::move(*qa), std::move(*qb), std::move(*ca), std::move(*cb)};
+}
 }  // namespace
 
 TEST_CASE("hole fill: the distance transform is the exact distance to the nearest covered pixel", "[hole_fill]") {
@@ -120,22 +143,13 @@ TEST_CASE("hole fill: relaxation pushes a neighbour straight away by the clearan
 TEST_CASE("hole fill: a small stone quilt has the exemplar's density and covered area within 5 %", "[hole_fill]") {
   // issue 17's goal on a small case: filling by size class with relaxation brings both ratios to
   // 1.00 +- 0.05 (filling as holes stand, fill_relax = false, overshoots the density: small elements)
-  const auto stones = make_stone_exemplar({.seed = 7});
-  REQUIRE(stones.ok());
-  const auto ex = prepare_quilt_exemplar(*stones);
-  REQUIRE(ex.ok());
-  const double size = 14;
   mesh_quilt_options o{.seed = 7};
   mesh_quilt_options old = o;
   old.fill_relax = false;
-  const auto a = mesh_quilt(*ex, size, size, o);
-  const auto b = mesh_quilt(*ex, size, size, old);
-  REQUIRE(a.ok());
-  REQUIRE(b.ok());
-  const auto qa = compare_texture_quality(*stones, a->mesh, {0, 0, size, size});
-  const auto qb = compare_texture_quality(*stones, b->mesh, {0, 0, size, size});
-  REQUIRE(qa.ok());
-  REQUIRE(qb.ok());
+  const auto q = quilt_stones(14, o, old);
+  const auto* a = &q.a;
+  const auto* qa = &q.qa;
+  const auto* qb = &q.qb;
   INFO("density " << qb->density_ratio << " -> " << qa->density_ratio << ", covered area " << qb->coverage_ratio
                   << " -> " << qa->coverage_ratio << ", empty cells " << qb->output.empty_cell_rate << " -> "
                   << qa->output.empty_cell_rate << " (exemplar " << qa->exemplar.empty_cell_rate << "), filled "
@@ -152,24 +166,17 @@ TEST_CASE("hole fill: a small stone quilt has the exemplar's density and covered
 }
 
 TEST_CASE("hole fill: a stone quilt keeps no holes, no intersections, and is deterministic", "[hole_fill]") {
-  const auto stones = make_stone_exemplar({.seed = 7});
-  REQUIRE(stones.ok());
-  const auto ex = prepare_quilt_exemplar(*stones);
-  REQUIRE(ex.ok());
   const double size = 10;
   mesh_quilt_options with{.seed = 7};
   mesh_quilt_options without = with;
   without.fill_holes = false;
-  const auto a = mesh_quilt(*ex, size, size, with);
-  const auto b = mesh_quilt(*ex, size, size, without);
-  REQUIRE(a.ok());
-  REQUIRE(b.ok());
+  const auto q = quilt_stones(size, with, without);
+  const auto* a = &q.a;
+  const auto* b = &q.b;
+  const auto* qa = &q.qa;
+  const auto* qb = &q.qb;
   CHECK(a->stats.elements_filled > 0);
   CHECK(b->stats.elements_filled == 0);
-  const auto qa = compare_texture_quality(*stones, a->mesh, {0, 0, size, size});
-  const auto qb = compare_texture_quality(*stones, b->mesh, {0, 0, size, size});
-  REQUIRE(qa.ok());
-  REQUIRE(qb.ok());
   INFO("coverage " << qb->coverage_ratio << " -> " << qa->coverage_ratio << ", empty cells "
                    << qb->output.empty_cell_rate << " -> " << qa->output.empty_cell_rate);
   CHECK(qa->coverage_ratio > qb->coverage_ratio);
@@ -181,7 +188,7 @@ TEST_CASE("hole fill: a stone quilt keeps no holes, no intersections, and is det
   CHECK(check->nonmanifold_edges == 0);
   // the same on a pool of threads
   thread_pool_executor pool(2);
-  const auto c = mesh_quilt(*ex, size, size, with, pool);
+  const auto c = mesh_quilt(q.ex, size, size, with, pool);
   REQUIRE(c.ok());
   REQUIRE(c->mesh.positions == a->mesh.positions);
   REQUIRE(c->mesh.faces == a->mesh.faces);
