@@ -369,6 +369,10 @@ int map(const cli::arguments& args) {
     std::printf("wrote %s (%zu quads, %lld tiles used, %lld element faces, H = %g)\n", out->c_str(),
                 pc->layout.quads.size(), static_cast<long long>(r->tiling.tiles_used),
                 static_cast<long long>(r->element_faces), r->height);
+    if (r->height_lowered > 0)
+      std::printf("note: the shell folds at the tiles' own height %g; H lowered to %g (%g^%d)\n",
+                  r->height / std::pow(auto_height_step, r->height_lowered), r->height, auto_height_step,
+                  r->height_lowered);
   }
   return 0;
 }
