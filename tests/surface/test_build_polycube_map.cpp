@@ -585,3 +585,22 @@ TEST_CASE("polycube: a CAD part (genus 5) whose flat-shaded faces have no interi
   CHECK(r->refined());
   CHECK(check_polycube(*r) == 2 - 2 * 5);
 }
+
+TEST_CASE("polycube: a CAD plate with three holes (genus 3) whose cuts would press faces onto their line") {
+  // scripts/meshes/plate_three_holes.scad (OpenSCAD, CC0): the top and bottom are triangulated between
+  // their four boundary loops only. The cuts from the corners of two holes side by side run along one
+  // line; the shortest vertex paths between them would close faces onto it, so their edges to the
+  // line are split (polycube_uncut::edges) until a path is free; without that 5 faces stay folded
+  const auto m = read_mesh(std::string(TESSERA_TEST_DATA_DIR) + "/surface/openscad_plate_three_holes.off");
+  REQUIRE(m);
+  for (int n : {8, 16}) {
+    INFO(n << " tiles across");
+    polycube_options o;
+    o.tiles_across = n;
+    const auto r = build_polycube_map(*m, o);
+    INFO((r ? std::string() : r.error().to_string()));
+    REQUIRE(r);
+    CHECK(r->refined());
+    CHECK(check_polycube(*r) == 2 - 2 * 3);
+  }
+}

@@ -40,6 +40,8 @@ inline constexpr double axis_aligned_cos_slack = 1e-9;
 /// Multiples of polycube_options::compactness tried in turn by build_polycube_map until one gives a
 /// valid polycube (the first is the option itself).
 inline constexpr double compactness_schedule[] = {1, 4, 3, 8, 2, 0.5};
+/// Rounds of an attempt that split edges so that the cuts into rectangles find a path.
+inline constexpr int max_cut_splits = 3;
 inline tri_mesh polycube_base_copy(const tri_mesh& m) {
   tri_mesh b;
   b.positions = m.positions;
@@ -50,16 +52,16 @@ inline tri_mesh polycube_base_copy(const tri_mesh& m) {
 /// Steps (3) to (5) for a valid labelling. On failure, `bad_chart` names the chart to relabel when
 /// the failure is one chart's (an edge cycle, a collapsed edge, a boundary that does not turn as a
 /// polycube face), else -1; `folded` receives the faces still folded after the untangling, or the faces
-/// around a vertex where two charts of one axis meet; `uncut`, when given, the charts a cut into
-/// rectangles could not be laid across (no interior vertices to run along).
+/// around a vertex where two charts of one axis meet; `uncut`, when given, what the cuts into
+/// rectangles could not do (polycube_uncut).
 template <Executor E>
 result<polycube_map> deform_polycube(tri_mesh base, const std::vector<std::array<index_t, 3>>& nb,
                                      const std::vector<std::uint8_t>& lab, double t, const polycube_options& o, E& exec,
                                      index_t& bad_chart, std::vector<index_t>& folded,
-                                     std::vector<index_t>* uncut = nullptr) {
+                                     polycube_uncut* uncut = nullptr) {
   bad_chart = -1;
   folded.clear();
-  if (uncut) uncut->clear();
+  if (uncut) *uncut = {};
   const auto cs = find_polycube_charts(base, nb, lab);
   const std::size_t nc = cs.chart_label.size();
   std::vector<int> axis_of(nc);
@@ -130,10 +132,12 @@ enum class polycube_attempt { plain, refine_first, split_uncut };
 /// repair cannot free a pinned face by relabelling (detail/polycube_refine.hpp; relabelling comes
 /// first: it smooths the chart boundary), or with polycube_attempt::refine_first before every repair
 /// (the chords of the graph cut's labels are then split instead of relabelled: another labelling,
-/// tried second), or with polycube_attempt::split_uncut also where a chart has no interior vertices
-/// for its cuts (split_boundary_spanning_edges, once; tried last, and only when `saw_uncut` was set
-/// by an earlier attempt: it changes the maps of meshes valid without it). The working mesh only
-/// grows; the map's face_origin names the input face of each of its faces.
+/// tried second), or with polycube_attempt::split_uncut also where a cut into rectangles finds no
+/// path (polycube_uncut: boundary-spanning edges, or the edges of the faces a path would press onto
+/// its line; up to max_cut_splits rounds; build_polycube_map tries it last, after every compactness
+/// multiple failed, since it changes maps that are valid without it); `saw_uncut` is set when a
+/// deformation met such a cut. The working mesh only grows; the map's face_origin names the input
+/// face of each of its faces.
 template <Executor E>
 result<polycube_map> build_polycube_attempt(const tri_mesh& input, const face_adjacency_result& adj,
                                             const polycube_options& options, double t, E& exec,
@@ -151,7 +155,7 @@ result<polycube_map> build_polycube_attempt(const tri_mesh& input, const face_ad
     if (options.refine) split_chart_chords(base, nb, *lab, data, origin);
   };
   std::size_t stall = 0, last_folded = std::numeric_limits<std::size_t>::max();
-  bool split_for_cuts = false;  // whether charts got interior vertices for their cuts
+  int splits_for_cuts = 0;  // rounds that split edges for the cuts into rectangles
   status last;
   for (int round = 0;; ++round) {
     if (refine_first) refine();
@@ -166,18 +170,24 @@ result<polycube_map> build_polycube_attempt(const tri_mesh& input, const face_ad
     if (problem.kind != detail::polycube_label_problem::none) return round == 0 ? problem.to_status() : last;
     refine();
     index_t bad = -1;
-    std::vector<index_t> folded, uncut;
+    std::vector<index_t> folded;
+    polycube_uncut uncut;
     auto r = detail::deform_polycube(base, nb, *lab, t, options, exec, bad, folded, &uncut);
     if (r) r->face_origin = origin;
     if (!r && !uncut.empty() && saw_uncut) *saw_uncut = true;
     if (r || round >= options.max_relabel_rounds) return r;
     last = r.error();
-    // a chart meshed without interior vertices (CAD faces) cannot be cut into rectangles: its
-    // boundary-spanning edges are split once, and the same labelling deformed again
-    if (kind == polycube_attempt::split_uncut && !uncut.empty() && options.refine && !split_for_cuts &&
-        split_boundary_spanning_edges(base, nb, *lab, data, origin, uncut) > 0) {
-      split_for_cuts = true;
-      continue;
+    // a cut into rectangles that found no path: a chart meshed without interior vertices (CAD faces)
+    // gets its boundary-spanning edges split, a path that would press faces onto the cut's line the
+    // edges of those faces; then the same labelling is deformed again (a few times at most)
+    if (kind == polycube_attempt::split_uncut && !uncut.empty() && options.refine && splits_for_cuts < max_cut_splits) {
+      std::sort(uncut.edges.begin(), uncut.edges.end());
+      const index_t n = split_boundary_spanning_edges(base, nb, *lab, data, origin, uncut.charts) +
+                        split_listed_edges(base, nb, *lab, data, origin, uncut.edges);
+      if (n > 0) {
+        ++splits_for_cuts;
+        continue;
+      }
     }
     if (bad >= 0) {
       const auto cs = detail::find_polycube_charts(base, nb, *lab);
@@ -208,19 +218,17 @@ result<polycube_map> build_polycube_attempt(const tri_mesh& input, const face_ad
   }
 }
 /// The attempts of build_polycube_attempt at one compactness, in turn until one is valid: plain, then
-/// (with options.refine) refine_first, then split_uncut when an attempt met a chart without interior
-/// vertices for its cuts. Returns the first valid map, else the failure of the last attempt but
-/// split_uncut's (the refined labelling's: the most informative).
+/// (with options.refine) refine_first; or, with `split`, split_uncut alone. `uncut` is set when an
+/// attempt met a cut into rectangles that found no path. Returns the first valid map, else the last
+/// attempt's failure (refine_first's: the refined labelling's, the most informative).
 template <Executor E>
 result<polycube_map> build_polycube_attempts(const tri_mesh& input, const face_adjacency_result& adj,
-                                             const polycube_options& options, double t, E& exec) {
-  bool uncut = false;
+                                             const polycube_options& options, double t, E& exec, bool split,
+                                             bool& uncut) {
+  if (split) return build_polycube_attempt(input, adj, options, t, exec, polycube_attempt::split_uncut);
   auto r = build_polycube_attempt(input, adj, options, t, exec, polycube_attempt::plain, &uncut);
   if (r || !options.refine) return r;
-  r = build_polycube_attempt(input, adj, options, t, exec, polycube_attempt::refine_first, &uncut);
-  if (r || !uncut) return r;
-  if (auto s = build_polycube_attempt(input, adj, options, t, exec, polycube_attempt::split_uncut)) return s;
-  return r;
+  return build_polycube_attempt(input, adj, options, t, exec, polycube_attempt::refine_first, &uncut);
 }
 
 }  // namespace detail
@@ -253,33 +261,39 @@ result<polycube_map> build_polycube_map(const M& mesh, const polycube_options& o
   if (!m) return m.error();
   tri_mesh base = detail::polycube_base_copy(*m);
   const auto adj = face_adjacency(base);
-  if (options.compactness == 0 || options.max_compactness_retries == 0)
-    return detail::build_polycube_attempts(base, adj, options, *t, exec);
-  // the labelling's compactness decides most failures on scanned meshes: retry with other multiples
-  // with distortion_retries, the valid maps of the next multiples compete: the least distorted is kept
+  // the labelling's compactness decides most failures on scanned meshes: retry with other multiples;
+  // with distortion_retries, the valid maps of the next multiples compete: the least distorted is kept.
+  // Only when no multiple gives a valid map and a cut into rectangles found no path, the multiples are
+  // tried again with the edges split that block the cuts (it changes maps that are valid without)
+  const int tries = options.compactness == 0
+                        ? 0
+                        : std::min<int>(options.max_compactness_retries,
+                                        static_cast<int>(std::size(detail::compactness_schedule)) - 1);
   status first;  // the first attempt's failure
   std::optional<polycube_map> best;
   double best_score = 0;
-  const int tries =
-      std::min<int>(options.max_compactness_retries, static_cast<int>(std::size(detail::compactness_schedule)) - 1);
-  // more: attempts left after the first valid map (-1 until there is one)
-  for (int k = 0, more = -1; k <= tries && more != 0; ++k) {
-    polycube_options o = options;
-    o.compactness = options.compactness * detail::compactness_schedule[detail::to_size(k)];
-    auto r = detail::build_polycube_attempts(base, adj, o, *t, exec);
-    more = more >= 0 ? more - 1 : r ? options.distortion_retries : -1;
-    if (!r) {
-      if (k == 0) first = r.error();
-      continue;
-    }
-    if (options.distortion_retries == 0) return r;  // nothing to compare: no distortion figures needed
-    const auto d = polycube_distortion(*r);
-    if (!best || d.area_distortion + d.angle_distortion < best_score) {
-      best_score = d.area_distortion + d.angle_distortion;
-      best = std::move(*r);
+  bool uncut = false;
+  for (int pass = 0; pass < 2 && !best && (pass == 0 || (uncut && options.refine)); ++pass) {
+    // more: attempts left after the first valid map (-1 until there is one)
+    for (int k = 0, more = -1; k <= tries && more != 0; ++k) {
+      polycube_options o = options;
+      o.compactness = options.compactness * detail::compactness_schedule[detail::to_size(k)];
+      auto r = detail::build_polycube_attempts(base, adj, o, *t, exec, pass == 1, uncut);
+      more = more >= 0 ? more - 1 : r ? options.distortion_retries : -1;
+      if (!r) {
+        if (k == 0 && pass == 0) first = r.error();
+        continue;
+      }
+      if (options.distortion_retries == 0) return r;  // nothing to compare: no distortion figures needed
+      const auto d = polycube_distortion(*r);
+      if (!best || d.area_distortion + d.angle_distortion < best_score) {
+        best_score = d.area_distortion + d.angle_distortion;
+        best = std::move(*r);
+      }
     }
   }
   if (best) return std::move(*best);
+  if (tries == 0) return first;
   return status::not_converged(detail::cat(first.message(), " (also tried compactness x",
                                            detail::compactness_schedule[1], " .. x",
                                            detail::compactness_schedule[detail::to_size(tries)], ": none valid)"));

@@ -175,6 +175,16 @@ inline std::vector<polycube_plane_order> chart_facing_orders(
   return out;
 }
 
+/// What the cuts into rectangles could not do, for the refinement of the next try
+/// (polycube_refine.hpp): charts where a cut found no path of free interior vertices at all (their
+/// boundary-spanning edges are split), and edges whose split frees a path that the line-face rule
+/// blocked (an interior vertex and a vertex of the cut's line, smaller index first).
+struct polycube_uncut {
+  std::vector<index_t> charts;
+  std::vector<std::array<index_t, 2>> edges;
+  [[nodiscard]] bool empty() const { return charts.empty() && edges.empty(); }
+};
+
 /// Placement of the vertices of the polycube edge paths: each path's vertices spread by the base
 /// mesh's arc length between pins (its corners, and the ends of the cuts that reach it).
 struct polycube_path_pins {
@@ -206,14 +216,14 @@ void spread_path(const polycube_edge_path& p, const polycube_path_pins& pp, std:
 /// neighbours; `fixed` marks the vertices whose position is final (corners and path vertices on entry;
 /// cut vertices are added). A cut that finds no path of free interior vertices is left out (Tutte may
 /// then fold faces near that corner, and the verification names them); `uncut`, when given, receives
-/// those charts (sorted, once each). Returns the number of cuts.
+/// what would let it through (polycube_uncut). Returns the number of cuts.
 template <class Free>
 index_t cut_charts_into_rectangles(const tri_mesh& m, const polycube_chart_set& cs,
                                    const std::vector<polycube_edge_path>& paths,
                                    const std::vector<std::vector<std::vector<chart_loop_side>>>& loops,
                                    const std::vector<std::vector<index_t>>& ring, double t, polycube_path_pins& pp,
                                    std::vector<vec3>& pos, std::vector<std::uint8_t>& fixed, Free&& is_free,
-                                   std::vector<index_t>* uncut = nullptr) {
+                                   polycube_uncut* uncut = nullptr) {
   const double eps = 1e-6 * t;
   const auto nv = to_size(m.num_vertices());
   index_t cuts = 0;
@@ -307,56 +317,81 @@ index_t cut_charts_into_rectangles(const tri_mesh& m, const polycube_chart_set& 
           const auto& rx = ring[to_size(x)];
           return std::find(rx.begin(), rx.end(), y) != rx.end();
         };
-        auto closes_line_face = [&](index_t v, index_t w) {
+        // the vertices x of the line with which a cut step v -> w would close a face onto the line,
+        // (v, w, x) or (w, x, y) with y on the line too (not at the target), each passed to `visit`
+        // until it returns true
+        auto line_partners = [&](index_t v, index_t w, auto&& visit) {
           for (index_t x : ring[to_size(w)]) {
             if (!on_line[to_size(x)] || x == v) continue;
-            if (adjacent(x, v)) return true;  // face (v, w, x)
-            if (w == target) continue;
-            for (index_t y : ring[to_size(w)])
-              if (y != x && on_line[to_size(y)] && adjacent(x, y)) return true;  // face (w, x, y)
+            bool closes = adjacent(x, v);
+            if (w != target)
+              for (index_t y : ring[to_size(w)]) closes = closes || (y != x && on_line[to_size(y)] && adjacent(x, y));
+            if (closes && visit(x)) return true;
           }
           return false;
         };
-        // Dijkstra over free interior vertices of chart c, from r to target
-        auto usable = [&](index_t v, index_t w) {
-          if (w == target) return !closes_line_face(v, w);
-          const auto& vc = cs.vertex_charts[to_size(w)];
-          return vc.size() == 1 && vc[0] == static_cast<index_t>(c) && !fixed[to_size(w)] && !closes_line_face(v, w);
-        };
-        std::vector<index_t> touched;
-        using item = std::pair<double, index_t>;
-        std::priority_queue<item, std::vector<item>, std::greater<>> queue;
-        dist[to_size(r)] = 0;
-        touched.push_back(r);
-        queue.push({0.0, r});
-        while (!queue.empty()) {
-          const auto [dv, v] = queue.top();
-          queue.pop();
-          if (dv > dist[to_size(v)] || v == target) continue;
-          for (index_t w : ring[to_size(v)]) {
-            if (!usable(v, w)) continue;
-            const double nd = dv + distance(m.position(v), m.position(w));
-            if (nd < dist[to_size(w)]) {
-              if (std::isinf(dist[to_size(w)])) touched.push_back(w);
-              dist[to_size(w)] = nd;
-              from[to_size(w)] = v;
-              queue.push({nd, w});
+        auto closes_line_face = [&](index_t v, index_t w) { return line_partners(v, w, [](index_t) { return true; }); };
+        // Dijkstra over free interior vertices of chart c, from r to target (the cut, r last), with or
+        // without the line-face rule
+        auto shortest = [&](bool line_rule) {
+          auto usable = [&](index_t v, index_t w) {
+            if (line_rule && closes_line_face(v, w)) return false;
+            if (w == target) return true;
+            const auto& vc = cs.vertex_charts[to_size(w)];
+            return vc.size() == 1 && vc[0] == static_cast<index_t>(c) && !fixed[to_size(w)];
+          };
+          std::vector<index_t> touched;
+          using item = std::pair<double, index_t>;
+          std::priority_queue<item, std::vector<item>, std::greater<>> queue;
+          dist[to_size(r)] = 0;
+          touched.push_back(r);
+          queue.push({0.0, r});
+          while (!queue.empty()) {
+            const auto [dv, v] = queue.top();
+            queue.pop();
+            if (dv > dist[to_size(v)] || v == target) continue;
+            for (index_t w : ring[to_size(v)]) {
+              if (!usable(v, w)) continue;
+              const double nd = dv + distance(m.position(v), m.position(w));
+              if (nd < dist[to_size(w)]) {
+                if (std::isinf(dist[to_size(w)])) touched.push_back(w);
+                dist[to_size(w)] = nd;
+                from[to_size(w)] = v;
+                queue.push({nd, w});
+              }
             }
           }
-        }
-        std::vector<index_t> cut;
-        if (!std::isinf(dist[to_size(target)]))
-          for (index_t v = target; v >= 0; v = v == r ? -1 : from[to_size(v)]) cut.push_back(v);
-        for (index_t v : touched) {
-          dist[to_size(v)] = std::numeric_limits<double>::infinity();
-          from[to_size(v)] = -1;
+          std::vector<index_t> path;
+          if (!std::isinf(dist[to_size(target)]))
+            for (index_t v = target; v >= 0; v = v == r ? -1 : from[to_size(v)]) path.push_back(v);
+          for (index_t v : touched) {
+            dist[to_size(v)] = std::numeric_limits<double>::infinity();
+            from[to_size(v)] = -1;
+          }
+          return path;
+        };
+        std::vector<index_t> cut = shortest(true);
+        if (cut.size() < 2 && uncut) {
+          // blocked by the line-face rule: the edges from a cut vertex to the line's vertices of the
+          // faces it would collapse are split for the next try; with no path at all, the chart's
+          // boundary-spanning edges
+          const auto free_path = shortest(false);
+          const std::size_t before = uncut->edges.size();
+          for (std::size_t k = 0; k + 1 < free_path.size(); ++k) {
+            const index_t w = free_path[k], v = free_path[k + 1];  // v precedes w on the way from r
+            const index_t inner = w == target ? v : w;             // the end that is not on a chart side
+            if (inner == r) continue;
+            line_partners(v, w, [&](index_t x) {
+              uncut->edges.push_back({std::min(inner, x), std::max(inner, x)});
+              return false;
+            });
+          }
+          if (uncut->edges.size() == before &&
+              (uncut->charts.empty() || uncut->charts.back() != static_cast<index_t>(c)))
+            uncut->charts.push_back(static_cast<index_t>(c));
         }
         std::fill(on_line.begin(), on_line.end(), std::uint8_t{0});
-        if (cut.size() < 2) {
-          if (uncut && (uncut->empty() || uncut->back() != static_cast<index_t>(c)))
-            uncut->push_back(static_cast<index_t>(c));
-          continue;
-        }
+        if (cut.size() < 2) continue;
         std::reverse(cut.begin(), cut.end());  // r ... target
         // pin the target on its path, then spread the cut from r to the hit point by arc length
         if (slot != 0 && slot != pv.size() - 1) {

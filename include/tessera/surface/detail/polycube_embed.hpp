@@ -33,14 +33,14 @@ inline constexpr double embed_max_weight = 1e2;
 
 /// Places edge and interior vertices (see the file comment); `pos` holds the planes' coordinates on
 /// entry (from polycube_axis_solve with fixed planes) and is updated in place. `cut_vertices`, when
-/// given, receives a mark per vertex on a cut (held by the untangling); `uncut_charts`, the charts a
-/// cut could not be laid across (cut_charts_into_rectangles).
+/// given, receives a mark per vertex on a cut (held by the untangling); `uncut`, what the cuts could
+/// not do (cut_charts_into_rectangles).
 template <class Dep>
 status embed_polycube(const tri_mesh& m, const polycube_chart_set& cs, const std::array<polycube_axis_classes, 3>& cl,
                       const std::vector<polycube_edge_path>& paths,
                       const std::vector<std::vector<std::vector<chart_loop_side>>>& loops, double t, bool cut_charts,
                       std::vector<vec3>& pos, std::vector<std::uint8_t>* cut_vertices = nullptr,
-                      std::vector<index_t>* uncut_charts = nullptr) {
+                      polycube_uncut* uncut = nullptr) {
   using real = dependent_t<double, Dep>;
   using sparse = Eigen::SparseMatrix<real>;
   using vector = Eigen::Matrix<real, Eigen::Dynamic, 1>;
@@ -90,7 +90,7 @@ status embed_polycube(const tri_mesh& m, const polycube_chart_set& cs, const std
     std::vector<std::vector<index_t>> ring(nv);
     for (std::size_t v = 0; v < nv; ++v)
       for (const auto& e : nbr[v]) ring[v].push_back(e.first);
-    cut_charts_into_rectangles(m, cs, paths, loops, ring, t, pp, pos, fixed, is_free, uncut_charts);
+    cut_charts_into_rectangles(m, cs, paths, loops, ring, t, pp, pos, fixed, is_free, uncut);
   }
   if (cut_vertices) {
     cut_vertices->assign(nv, 0);

@@ -120,5 +120,18 @@ inline index_t split_boundary_spanning_edges(tri_mesh& m, std::vector<std::array
       });
 }
 
+/// Splits the edges `edges` (each {smaller, larger} end vertex, sorted) that lie inside one chart, at
+/// their midpoints (split_chart_edges). Returns the number of edges split.
+inline index_t split_listed_edges(tri_mesh& m, std::vector<std::array<index_t, 3>>& nb, std::vector<std::uint8_t>& lab,
+                                  std::vector<std::array<double, 6>>& data, std::vector<index_t>& face_origin,
+                                  const std::vector<std::array<index_t, 2>>& edges) {
+  if (edges.empty()) return 0;
+  return split_chart_edges(
+      m, nb, lab, data, face_origin,
+      [&](index_t, index_t u, index_t w, const std::vector<index_t>&, const std::vector<index_t>&) {
+        return std::binary_search(edges.begin(), edges.end(), std::array<index_t, 2>{std::min(u, w), std::max(u, w)});
+      });
+}
+
 }  // namespace detail
 TESSERA_NAMESPACE_END
