@@ -3,8 +3,8 @@
 # (CGAL 5.5's data directory; the meshes are not committed), extracts the closed meshes of genus 0-4
 # with 23 to 75k faces listed below, and runs `tessera polycube --stats` on each at two tile counts.
 # With OpenSCAD installed (`apt-get install openscad`, optional), CAD parts are added: OpenSCAD's own
-# examples 001-005 (genus 5, CC0, /usr/share/openscad/examples/Old) and scripts/meshes/three_holes.scad
-# (genus 3), exported as OFF.
+# examples 001-005 (genus 5, CC0, /usr/share/openscad/examples/Old) and scripts/meshes/*.scad (genus 3),
+# exported as OFF.
 #   scripts/polycube_meshes.sh [BUILD_DIR (default build)] [OUT_DIR (default BUILD_DIR/polycube_meshes)]
 # Needs apt-get (run `apt-get update` once first) and a built `tessera` (target tessera_cli).
 set -euo pipefail
@@ -32,8 +32,10 @@ if command -v openscad >/dev/null; then
     [ -f "$out/$m.off" ] || (cd /usr/share/openscad/examples/Old && openscad -q -o "$out/$m.off" "$m.scad")
     meshes="$meshes $m"
   done
-  [ -f "$out/three_holes.off" ] || openscad -q -o "$out/three_holes.off" "$here/meshes/three_holes.scad"
-  meshes="$meshes three_holes"
+  for m in three_holes plate_three_holes; do
+    [ -f "$out/$m.off" ] || openscad -q -o "$out/$m.off" "$here/meshes/$m.scad"
+    meshes="$meshes $m"
+  done
 fi
 for m in $meshes; do
   for n in 8 16; do
