@@ -175,7 +175,8 @@ result<map_geometric_tiles_result> map_geometric_tiles(const M& mesh, const poly
   auto tiling = assign_polycube_tiles(map, set, coloring);
   if (!tiling) return tiling.error();
   const double T = map.tile_size;
-  double H = o.height > 0 ? o.height : (z1 - z0) / set.tile_size * T;
+  const double requested = o.height > 0 ? o.height : (z1 - z0) / set.tile_size * T;
+  double H = requested;
   if (!o.progress.report(0, "shell")) return status::cancelled();
   auto sh = build_shell(map.base, H, o.shell, exec);
   // the tiles' own proportions are a default, not a request: where the shell folds beyond repair
@@ -188,11 +189,9 @@ result<map_geometric_tiles_result> map_geometric_tiles(const M& mesh, const poly
     sh = build_shell(map.base, H, o.shell, exec);
   }
   if (!sh)
-    return o.height == 0 && lowered > 0
-               ? status(sh.error().code(),
-                        detail::cat(sh.error().message(), " (the tiles' own height ",
-                                    H / std::pow(auto_height_step, lowered), " lowered ", lowered, " times)"))
-               : sh.error();
+    return lowered > 0 ? status(sh.error().code(), detail::cat(sh.error().message(), " (the tiles' own height ",
+                                                               requested, " lowered ", lowered, " times)"))
+                       : sh.error();
   if (!o.progress.report(0, "mapping")) return status::cancelled();
   // each (tile, placement) transformed once: quad-local (u, v) from the placement, h in mesh units
   const auto& Q = tiling->quads;
