@@ -38,6 +38,7 @@ int run(const cli::arguments& args) {
   if (!el) return cli::fail(args, el.error());
   if (!grid) return cli::fail(args, grid.error());
   o.azimuth_degrees = *az, o.elevation_degrees = *el, o.grid_spacing = *grid;
+  o.wireframe = args.has("--wire");
   if (args.has("--size")) {
     auto sz = args.size("--size");
     if (!sz) return cli::fail(args, sz.error());
@@ -86,6 +87,7 @@ const cli::registrar reg({
                 {"--azimuth", "DEG", "camera azimuth around +Z (overrides the view)"},
                 {"--elevation", "DEG", "camera elevation, 90 = top (overrides the view)"},
                 {"--size", "WxH", "image size (default 800x600)", {"--image-size"}},
+                {"--wire", "", "draw the triangles' edges"},
                 {"--tile", "W", "draw the borders of W x W tiles (in mesh units) over the mesh", {"--grid"}},
                 {"--labels", "FILE",
                  "colour faces by polycube chart label (tessera polycube --labels-out: +X red, -X purple, "

@@ -74,6 +74,7 @@
 #include "surface/polycube_projection.hpp"
 #include "surface/polycube_tiling.hpp"
 #include "surface/quad_layout.hpp"
+#include "surface/remesh_isotropic.hpp"
 
 // terrain (paper 003)
 #include "terrain/anchored_region_geometry.hpp"

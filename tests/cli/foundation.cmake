@@ -42,7 +42,7 @@ tessera_cli_test(NAME "cli: convert ply to off" REGEX "OFF cannot hold the uvs"
 set_tests_properties("cli: convert ply to off" PROPERTIES FIXTURES_REQUIRED foundation_ply)
 # every command answers --help with its usage line (exit 0)
 foreach(_cmd info convert sample synth quilt "wang build" "wang tile" fabric catmap terrain exemplar mesh-quilt
-        "geo-wang build" "geo-wang tile" render)
+        "geo-wang build" "geo-wang tile" render remesh)
   separate_arguments(_words UNIX_COMMAND "${_cmd}")
   tessera_cli_test(NAME "cli: ${_cmd} --help" REGEX "usage: tessera ${_cmd}" COMMAND ${_words} --help)
 endforeach()

@@ -29,6 +29,26 @@ set_tests_properties("cli: render labels of another mesh" PROPERTIES FIXTURES_RE
 tessera_cli_test(NAME "cli: render labels file missing" CODE 1 REGEX "no_such\\.labels"
                  COMMAND render --in ${_pcdata}/torus.obj --labels ${_pc}/no_such.labels --out ${_pc}/never.png)
 
+# tessera remesh: the CAD plate's slivers become even triangles (its creases kept), then its polycube;
+# the result drawn with its triangles
+tessera_cli_test(NAME "cli: remesh CAD plate"
+                 REGEX "\"remesh_ms\":[0-9.e+-]+,\"faces_in\":664,\"faces\":[1-9][0-9]+,\"edge_length\":0\\.9375,\"feature_edges\":[1-9][0-9]*,.*\"min_angle\":(1[5-9]|[2-5][0-9])[0-9.e+-]*,"
+                 COMMAND remesh ${_pcdata}/openscad_plate_three_holes.off --out ${_pc}/plate_rm.obj --stats)
+set_tests_properties("cli: remesh CAD plate" PROPERTIES FIXTURES_SETUP remesh_plate)
+tessera_cli_test(NAME "cli: polycube of the remeshed plate" REGEX "\"genus\":3,.*\"refined\":false,\"valid\":true"
+                 COMMAND polycube --in ${_pc}/plate_rm.obj --out ${_pc}/plate_rm_pc.obj --tiles-across 8 --threads 2 --stats)
+tessera_cli_test(NAME "cli: render --wire" REGEX "wrote .*plate_rm\\.png"
+                 COMMAND render --in ${_pc}/plate_rm.obj --wire --out ${_pc}/plate_rm.png --size 160x120)
+set_tests_properties("cli: polycube of the remeshed plate" "cli: render --wire" PROPERTIES FIXTURES_REQUIRED remesh_plate)
+tessera_cli_test(NAME "cli: remesh open mesh" CODE 1 REGEX "remesh: mesh: is not closed"
+                 COMMAND remesh --in ${_pcdata}/open_cube.obj --out ${_pc}/never.obj)
+tessera_cli_test(NAME "cli: remesh edge and edges-across" CODE 1 REGEX "not both"
+                 COMMAND remesh --in ${_pcdata}/torus.obj --out ${_pc}/never.obj --edge 0.1 --edges-across 8)
+tessera_cli_test(NAME "cli: remesh edge too short" CODE 1 REGEX "would need about .* faces, more than max_faces"
+                 COMMAND remesh --in ${_pcdata}/torus.obj --out ${_pc}/never.obj --edge 1e-6)
+tessera_cli_test(NAME "cli: remesh feature angle out of range" CODE 1 REGEX "--feature-angle expects"
+                 COMMAND remesh --in ${_pcdata}/torus.obj --out ${_pc}/never.obj --feature-angle 200)
+
 tessera_cli_test(NAME "cli: polycube open mesh" CODE 1 REGEX "not closed"
                  COMMAND polycube --mesh ${_pcdata}/open_cube.obj --out ${_pc}/never.obj)
 tessera_cli_test(NAME "cli: polycube tile too large" CODE 1 REGEX "larger than the mesh"

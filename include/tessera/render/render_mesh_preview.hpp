@@ -42,6 +42,8 @@ struct mesh_preview_options {
   /// Unit RGB of the background.
   std::array<float, 3> background{1.0f, 1.0f, 1.0f};
   bool tint_elements = true;  ///< vary the colour slightly per connected component
+  /// Darken the pixels within about a pixel of a triangle's edge (shows a mesh's triangles).
+  bool wireframe = false;
   /// Overlay the grid lines x = k * grid_spacing, y = k * grid_spacing (k integer) on the base plane
   /// z = grid_height over the mesh's XY bounds: tile borders of a tiled plane. 0 = no grid.
   double grid_spacing = 0;
@@ -71,6 +73,24 @@ inline std::array<float, 3> tint(std::array<float, 3> c, index_t id) {
 /// grid spacing, a grid finer than 4096 lines over the mesh, a grid line width outside 1 to 64.
 /// O(F + pixels); rasterization runs through `exec` (same image for every executor).
 namespace detail {
+/// 0.35 for a pixel within 0.75 pixels of an edge of its triangle (screen vertices sv, face fc,
+/// barycentrics b: the distance to the edge opposite corner i is b_i times twice the area over that
+/// edge's length), else 1.
+inline float wire_factor(const std::vector<raster_vertex>& sv, const std::array<index_t, 3>& fc,
+                         const std::array<float, 3>& b) {
+  const raster_vertex& p0 = sv[to_size(fc[0])];
+  const raster_vertex& p1 = sv[to_size(fc[1])];
+  const raster_vertex& p2 = sv[to_size(fc[2])];
+  const double area2 = std::abs((p1.x - p0.x) * (p2.y - p0.y) - (p2.x - p0.x) * (p1.y - p0.y));
+  const raster_vertex* q[3] = {&p0, &p1, &p2};
+  for (int i = 0; i < 3; ++i) {
+    const raster_vertex& a = *q[(i + 1) % 3];
+    const raster_vertex& c = *q[(i + 2) % 3];
+    const double len = std::hypot(c.x - a.x, c.y - a.y);
+    if (len > 0 && b[to_size(i)] * area2 / len < 0.75) return 0.35f;
+  }
+  return 1.0f;
+}
 /// render_mesh_preview with the unit RGB of face fi at barycentrics b given by surface(m, fi, b) (or
 /// the options' colour and tint when `surface` is null).
 template <Mesh M, Executor E, class Surface>
@@ -161,7 +181,8 @@ result<image_buffer<std::uint8_t, 3>> render_preview_with(const M& mesh, const m
         col = (*surface)(m, fi, bary_at[px]);
       else if (o.tint_elements)
         col = detail::tint(o.color, comp[detail::to_size(fi)]);
-      for (int c = 0; c < 3; ++c) out[c] = to8(col[detail::to_size(c)] * static_cast<float>(shade));
+      const float edge = o.wireframe ? detail::wire_factor(sv, fc, bary_at[px]) : 1.0f;
+      for (int c = 0; c < 3; ++c) out[c] = to8(col[detail::to_size(c)] * static_cast<float>(shade) * edge);
     }
   if (o.grid_spacing > 0) {
     auto line = [&](vec3 a, vec3 b) {

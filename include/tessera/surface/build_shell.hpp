@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "../core/config.hpp"
@@ -19,6 +20,7 @@
 #include "../core/status.hpp"
 #include "../core/tri_mesh.hpp"
 #include "../core/vec.hpp"
+#include "../geometry/detail/triangle_geometry.hpp"
 #include "detail/shell_prism.hpp"
 #include "polycube_map.hpp"
 
@@ -72,6 +74,23 @@ struct shell_options {
   /// tighter than the sunk depth. 0 (the default): the shell stands on the surface.
   double sink = 0;
 };
+
+namespace detail {
+/// Below this smallest angle (degrees) a face next to a fold is called a sliver in the refusal.
+inline constexpr double shell_sliver_angle = 5;
+/// "" or a hint that the faces at the marked (folded) vertices are slivers (CAD output), which
+/// fold any offset.
+inline std::string sliver_hint(const tri_mesh& base, const std::vector<char>& marked) {
+  double worst = 180;
+  for (const auto& f : base.faces)
+    if (marked[to_size(f[0])] != 0 || marked[to_size(f[1])] != 0 || marked[to_size(f[2])] != 0)
+      worst = std::min(worst, smallest_angle_degrees(base.positions[to_size(f[0])], base.positions[to_size(f[1])],
+                                                     base.positions[to_size(f[2])]));
+  if (!(worst < shell_sliver_angle)) return {};
+  return cat(" (its faces there include slivers, smallest angle ", worst,
+             " degrees: remesh the base first, remesh_isotropic or `tessera remesh`)");
+}
+}  // namespace detail
 
 /// Lowest quality of the three tetrahedra of the prism over face f of `s` (1 for an upright prism,
 /// <= 0 when one is inverted). Precondition: f in [0, F).
@@ -205,10 +224,10 @@ result<shell> build_shell(const M& base, double height, const shell_options& o =
       if (round >= o.smoothing_rounds) {
         s.heights[v] *= o.height_step;
         if (s.heights[v] < o.min_height_ratio * height)
-          return status::invalid_argument(detail::cat("shell: height ", height,
-                                                      " is too large for the shell: the offset folds near vertex ", v,
-                                                      " (a concave or strongly curved region) even at ",
-                                                      o.min_height_ratio, " of that height; use a smaller height"));
+          return status::invalid_argument(
+              detail::cat("shell: height ", height, " is too large for the shell: the offset folds near vertex ", v,
+                          " (a concave or strongly curved region) even at ", o.min_height_ratio,
+                          " of that height; use a smaller height", detail::sliver_hint(s.base, marked)));
       }
     }
     s.directions.swap(next);
