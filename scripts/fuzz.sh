@@ -16,7 +16,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 seconds=${1:-60}
 shift || true
 targets=("$@")
-if ((${#targets[@]} == 0)); then targets=(png obj off ply tile_manifest tile_dir tsuv patch_model); fi
+if ((${#targets[@]} == 0)); then targets=(png obj off ply tile_manifest tile_dir tsuv patch_model remesh); fi
 build=${TESSERA_FUZZ_BUILD_DIR:-$root/build-fuzz}
 nice_level=${TESSERA_FUZZ_NICE:-10}
 cxx=${CXX:-}
