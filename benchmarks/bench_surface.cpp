@@ -1,6 +1,6 @@
 // Benchmarks of the surface family (paper 000 §4): automatic polycube construction against mesh size
 // (tori of 2k to 80k faces, 8 tiles across, 1 and 2 threads), the projection round trip, and the
-// distortion figures. Same-run baseline: face adjacency of the same mesh (one sort of its 3F sides),
+// distortion figures, and the isotropic remeshing. Same-run baseline: face adjacency of the same mesh (one sort of its 3F sides),
 // so the construction reads as a multiple of the cheapest whole-mesh pass. Shell mapping: see below.
 #include <benchmark/benchmark.h>
 
@@ -24,6 +24,7 @@
 #include <tessera/surface/map_wang_tiles_to_surface.hpp>
 #include <tessera/surface/polycube_distortion.hpp>
 #include <tessera/surface/polycube_projection.hpp>
+#include <tessera/surface/remesh_isotropic.hpp>
 
 using namespace tessera;
 
@@ -89,6 +90,30 @@ BENCHMARK(BM_build_polycube)
     ->Args({40000, 2, 0})
     ->Args({80000, 2, 0})
     ->Unit(benchmark::kMillisecond);
+
+// Isotropic remeshing of the torus (its faces stretched 1 : 3 around Z) into about as many even
+// triangles (surface area 4 pi^2 R r; an equilateral triangle of side L has sqrt(3) / 4 L^2), 10 rounds;
+// baseline: face adjacency of the same torus.
+void BM_remesh_isotropic(benchmark::State& st) {
+  const auto& m = torus(static_cast<int>(st.range(0)));
+  const double area = 4 * 3.14159265358979323846 * 3.14159265358979323846 * 2 * 0.8;
+  remesh_options o;
+  o.edge_length = std::sqrt(area / (static_cast<double>(m.num_faces()) * std::sqrt(3.0) / 4));
+  index_t faces = 0;
+  double min_angle = 0;
+  for (auto _ : st) {
+    auto r = remesh_isotropic(m, o);
+    if (!r) {
+      st.SkipWithError(r.error().to_string().c_str());
+    } else {
+      faces = r->mesh.num_faces(), min_angle = r->stats.min_angle;
+    }
+  }
+  st.counters["faces_in"] = static_cast<double>(m.num_faces());
+  st.counters["faces"] = static_cast<double>(faces);
+  st.counters["min_angle"] = min_angle;
+}
+BENCHMARK(BM_remesh_isotropic)->Arg(10000)->Arg(80000)->Unit(benchmark::kMillisecond);
 
 void BM_projection_round_trip(benchmark::State& st) {
   static const polycube_map map = *build_polycube_map(torus(10000), polycube_options{0, 8});
