@@ -6,7 +6,8 @@
 // surface. Edges whose faces meet at a dihedral angle above `feature_angle` are creases: never
 // flipped, split along themselves, collapsed only along themselves, their vertices relaxed along
 // the crease and projected onto the input's creases; where creases meet or turn sharply the vertex
-// is a corner and stays where it is.
+// is a corner and stays where it is. Each round ends with (5) flips that remove slivers left along
+// bent creases (a face of three crease vertices), and relaxation never makes a sliver.
 //
 // Why it is here: the polycube map and the shell map follow the base mesh's worst triangles. CAD
 // output (OpenSCAD, STL exports) triangulates each flat or ruled face between its boundary loops
@@ -239,9 +240,33 @@ inline void remesh_equalize_valences(remesh_mesh& m, double min_area2, index_t& 
   }
 }
 
+/// A relaxation move that leaves a face with a smaller angle than this (degrees), and smaller than
+/// before, is not taken.
+inline constexpr double remesh_sliver_angle = 10;
+
+/// Step 5 (not in Botsch & Kobbelt): an edge of a face with an angle below remesh_sliver_angle is
+/// flipped where that raises the smallest angle of its two faces (three vertices of a bent crease
+/// make such a face; no valence flip or move removes it).
+inline void remesh_flip_slivers(remesh_mesh& m, double min_area2, index_t& flips) {
+  for (const auto& e : remesh_edges(m)) {
+    const index_t a = e[0], b = e[1];
+    const index_t f = m.face_with_side(a, b), g = m.face_with_side(b, a);
+    if (f < 0 || g < 0) continue;
+    const index_t c = m.opposite(f, a, b), d = m.opposite(g, a, b);
+    auto angle = [&](index_t x, index_t y, index_t z) {
+      return smallest_angle_degrees(m.pos[to_size(x)], m.pos[to_size(y)], m.pos[to_size(z)]);
+    };
+    const double before = std::min(angle(a, b, c), angle(b, a, d));
+    if (!(before < remesh_sliver_angle)) continue;
+    if (std::min(angle(a, d, c), angle(d, b, c)) <= before || !m.can_flip(a, b, min_area2)) continue;
+    m.flip(a, b);
+    ++flips;
+  }
+}
+
 /// Step 4: tangential relaxation (toward the neighbours' centroid in the tangent plane, or along
 /// the crease) and projection onto the input (its surface, or its creases); a move that would turn
-/// or flatten a face is not taken. Gauss-Seidel in vertex order, so deterministic.
+/// or flatten a face, or make a sliver of it, is not taken. Gauss-Seidel in vertex order, so deterministic.
 inline void remesh_relax_and_project(remesh_mesh& m, const triangle_bvh& surface, const crease_grid& creases,
                                      double edge, double min_area2) {
   for (index_t v = 0; v < static_cast<index_t>(m.pos.size()); ++v) {
@@ -276,6 +301,13 @@ inline void remesh_relax_and_project(remesh_mesh& m, const triangle_bvh& surface
                          tri[2] == v ? target : m.pos[to_size(tri[2])]};
       const vec3 after = cross(q[1] - q[0], q[2] - q[0]);
       if (squared_norm(after) <= min_area2 || dot(normalized(before), normalized(after)) < remesh_min_normal_cos) {
+        ok = false;
+        break;
+      }
+      // nor may it make a sliver (a smooth vertex projected against a crease next to a corner)
+      const double angle = smallest_angle_degrees(q[0], q[1], q[2]);
+      if (angle < remesh_sliver_angle &&
+          angle < smallest_angle_degrees(m.pos[to_size(tri[0])], m.pos[to_size(tri[1])], m.pos[to_size(tri[2])])) {
         ok = false;
         break;
       }
@@ -369,6 +401,7 @@ result<remesh_result> remesh_isotropic(const M& mesh, const remesh_options& opt 
     detail::remesh_collapse_short(m, lo, hi, min_area2, st.collapses);
     detail::remesh_equalize_valences(m, min_area2, st.flips);
     detail::remesh_relax_and_project(m, surface, creases, L, min_area2);
+    detail::remesh_flip_slivers(m, min_area2, st.flips);
   }
   out.mesh = m.compact();
   if (auto s = validate_polycube_input(out.mesh, "remesh: result"); !s)
