@@ -20,7 +20,6 @@
 #include "../core/status.hpp"
 #include "../core/tri_mesh.hpp"
 #include "../core/vec.hpp"
-#include "../geometry/detail/triangle_geometry.hpp"
 #include "detail/shell_prism.hpp"
 #include "polycube_map.hpp"
 

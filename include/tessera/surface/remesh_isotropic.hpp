@@ -31,7 +31,6 @@
 #include "../core/tri_mesh.hpp"
 #include "../core/vec.hpp"
 #include "../geometry/bvh.hpp"
-#include "../geometry/detail/triangle_geometry.hpp"
 #include "detail/remesh_ops.hpp"
 #include "polycube_map.hpp"
 

@@ -28,17 +28,6 @@ inline constexpr double plane_distance_snap = 1e-12;
 /// parallel (coplanar test or apart).
 inline constexpr double parallel_planes_tolerance = 1e-30;
 
-/// Smallest interior angle of triangle (a, b, c), in degrees (0 for a degenerate one).
-inline double smallest_angle_degrees(vec3 a, vec3 b, vec3 c) noexcept {
-  const vec3 p[3] = {a, b, c};
-  double worst = 180;
-  for (int k = 0; k < 3; ++k) {
-    const vec3 u = normalized(p[(k + 1) % 3] - p[k]), v = normalized(p[(k + 2) % 3] - p[k]);
-    worst = std::min(worst, std::acos(std::clamp(dot(u, v), -1.0, 1.0)) * (180 / 3.14159265358979323846));
-  }
-  return worst;
-}
-
 /// Closest point on triangle (a, b, c) to p, with barycentric coordinates (Ericson, RTCD 5.1.5).
 struct triangle_closest {
   vec3 point;
