@@ -25,12 +25,10 @@ TESSERA_NAMESPACE_BEGIN
 /// Smallest interior angle of triangle (a, b, c), in degrees (0 for a degenerate one).
 inline double smallest_angle_degrees(vec3 a, vec3 b, vec3 c) noexcept {
   const vec3 p[3] = {a, b, c};
-  double worst = 180;
-  for (int k = 0; k < 3; ++k) {
-    const vec3 u = normalized(p[(k + 1) % 3] - p[k]), v = normalized(p[(k + 2) % 3] - p[k]);
-    worst = std::min(worst, std::acos(std::clamp(dot(u, v), -1.0, 1.0)) * (180 / 3.14159265358979323846));
-  }
-  return worst;
+  double largest_cos = -1;  // the smallest angle has the largest cosine: one acos
+  for (int k = 0; k < 3; ++k)
+    largest_cos = std::max(largest_cos, dot(normalized(p[(k + 1) % 3] - p[k]), normalized(p[(k + 2) % 3] - p[k])));
+  return std::acos(std::min(largest_cos, 1.0)) * (180 / 3.14159265358979323846);
 }
 
 /// Owning triangle mesh. Plain data: `positions`, `faces` (three vertex indices, counter-clockwise

@@ -279,7 +279,9 @@ inline void remesh_relax_and_project(remesh_mesh& m, const triangle_bvh& surface
       q = (1.0 / static_cast<double>(ring.size())) * q;
       const vec3 n = m.vertex_normal(v);
       const vec3 moved = q + dot(n, p - q) * n;
-      const auto hit = surface.closest_point(moved);
+      // the move is within about an edge of the surface: a bounded search prunes most of the BVH
+      auto hit = surface.closest_point(moved, 4 * edge * edge);
+      if (hit.face < 0) hit = surface.closest_point(moved);
       target = hit.face >= 0 ? hit.point : moved;
     } else {
       std::array<index_t, 2> line{-1, -1};

@@ -90,7 +90,8 @@ class remesh_mesh {
     n.erase(std::unique(n.begin(), n.end()), n.end());
     return n;
   }
-  [[nodiscard]] index_t valence(index_t v) const { return static_cast<index_t>(neighbours(v).size()); }
+  /// Neighbours of v: on a closed manifold mesh as many as the faces around it.
+  [[nodiscard]] index_t valence(index_t v) const { return static_cast<index_t>(vf_[to_size(v)].size()); }
 
   [[nodiscard]] vec3 area_normal(const std::array<index_t, 3>& t) const {
     return cross(pos[to_size(t[1])] - pos[to_size(t[0])], pos[to_size(t[2])] - pos[to_size(t[0])]);
