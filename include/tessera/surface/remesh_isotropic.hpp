@@ -265,9 +265,10 @@ inline void remesh_flip_slivers(remesh_mesh& m, double min_area2, index_t& flips
 
 /// Step 4: tangential relaxation (toward the neighbours' centroid in the tangent plane, or along
 /// the crease) and projection onto the input (its surface, or its creases); a move that would turn
-/// or flatten a face, or make a sliver of it, is not taken. Gauss-Seidel in vertex order, so deterministic.
+/// or flatten a face, or make a sliver of it, is not taken. With `relax` false only the projection
+/// (after the last round: midpoints of the last collapses, moves refused as slivers). Gauss-Seidel in vertex order, so deterministic.
 inline void remesh_relax_and_project(remesh_mesh& m, const triangle_bvh& surface, const crease_grid& creases,
-                                     double edge, double min_area2) {
+                                     double edge, double min_area2, bool relax = true) {
   for (index_t v = 0; v < static_cast<index_t>(m.pos.size()); ++v) {
     if (!m.vertex_alive(v) || m.kind[to_size(v)] == remesh_vertex_kind::corner) continue;
     const vec3 p = m.pos[to_size(v)];
@@ -278,7 +279,7 @@ inline void remesh_relax_and_project(remesh_mesh& m, const triangle_bvh& surface
       for (index_t w : ring) q = q + m.pos[to_size(w)];
       q = (1.0 / static_cast<double>(ring.size())) * q;
       const vec3 n = m.vertex_normal(v);
-      const vec3 moved = q + dot(n, p - q) * n;
+      const vec3 moved = relax ? q + dot(n, p - q) * n : p;
       // the move is within about an edge of the surface: a bounded search prunes most of the BVH
       auto hit = surface.closest_point(moved, 4 * edge * edge);
       if (hit.face < 0) hit = surface.closest_point(moved);
@@ -291,7 +292,7 @@ inline void remesh_relax_and_project(remesh_mesh& m, const triangle_bvh& surface
       if (count != 2) continue;
       const vec3 u = m.pos[to_size(line[0])], w = m.pos[to_size(line[1])];
       const vec3 t = normalized(w - u);
-      target = creases.project(p + dot(t, 0.5 * (u + w) - p) * t, 2 * edge);
+      target = creases.project(relax ? p + dot(t, 0.5 * (u + w) - p) * t : p, 2 * edge);
     }
     if (!is_finite(target) || target == p) continue;
     bool ok = true;
@@ -306,6 +307,7 @@ inline void remesh_relax_and_project(remesh_mesh& m, const triangle_bvh& surface
         break;
       }
       // nor may it make a sliver (a smooth vertex projected against a crease next to a corner)
+      if (!relax) continue;
       const double angle = smallest_angle_degrees(q[0], q[1], q[2]);
       if (angle < remesh_sliver_angle &&
           angle < smallest_angle_degrees(m.pos[to_size(tri[0])], m.pos[to_size(tri[1])], m.pos[to_size(tri[2])])) {
@@ -317,20 +319,35 @@ inline void remesh_relax_and_project(remesh_mesh& m, const triangle_bvh& surface
   }
 }
 
-/// Marks the input's creases and classifies its vertices (smooth, crease, corner).
+/// A chain of sharp edges shorter than this is not a crease.
+inline constexpr index_t remesh_min_crease_edges = 3;
+
+/// Marks the input's creases (chains of at least remesh_min_crease_edges sharp edges) and classifies its vertices (smooth, crease, corner).
 template <class Mesh_>
 std::vector<std::array<vec3, 2>> remesh_mark_features(remesh_mesh& m, const Mesh_& input, double feature_angle) {
   const double cos_limit = std::cos(feature_angle * 3.14159265358979323846 / 180);
   std::vector<int> feature_degree(m.pos.size(), 0);
   std::vector<std::array<vec3, 2>> segments;
+  // candidates, as a "mesh" of degenerate faces (v0, v1, v1) whose components are the crease chains
+  tri_mesh sharp;
+  sharp.positions.resize(m.pos.size());
   for (const auto& e : mesh_edges(input)) {
     if (e.faces.size() != 2) continue;
     const vec3 n0 = normalized(face_area_normal(input, e.faces[0][0])),
                n1 = normalized(face_area_normal(input, e.faces[1][0]));
-    if (dot(n0, n1) > cos_limit) continue;
-    m.set_feature(e.v0, e.v1);
-    ++feature_degree[to_size(e.v0)], ++feature_degree[to_size(e.v1)];
-    segments.push_back({m.pos[to_size(e.v0)], m.pos[to_size(e.v1)]});
+    if (dot(n0, n1) <= cos_limit) sharp.faces.push_back({e.v0, e.v1, e.v1});
+  }
+  // chains of fewer than remesh_min_crease_edges edges are noise of a scan (a sliver's own normal),
+  // not creases: kept, they would pin the sliver's vertices as corners
+  const auto chains = connected_components(sharp);
+  std::vector<index_t> chain_edges(to_size(chains.count), 0);
+  for (index_t c : chains.face_component) ++chain_edges[to_size(c)];
+  for (std::size_t i = 0; i < sharp.faces.size(); ++i) {
+    if (chain_edges[to_size(chains.face_component[i])] < remesh_min_crease_edges) continue;
+    const index_t v0 = sharp.faces[i][0], v1 = sharp.faces[i][1];
+    m.set_feature(v0, v1);
+    ++feature_degree[to_size(v0)], ++feature_degree[to_size(v1)];
+    segments.push_back({m.pos[to_size(v0)], m.pos[to_size(v1)]});
   }
   for (index_t v = 0; v < static_cast<index_t>(m.pos.size()); ++v) {
     const int d = feature_degree[to_size(v)];
@@ -404,6 +421,8 @@ result<remesh_result> remesh_isotropic(const M& mesh, const remesh_options& opt 
     detail::remesh_relax_and_project(m, surface, creases, L, min_area2);
     detail::remesh_flip_slivers(m, min_area2, st.flips);
   }
+  // the last collapses' midpoints and the moves refused as slivers are put back onto the input
+  if (opt.iterations > 0) detail::remesh_relax_and_project(m, surface, creases, L, min_area2, false);
   out.mesh = m.compact();
   if (auto s = validate_polycube_input(out.mesh, "remesh: result"); !s)
     return status::internal_error(detail::cat(s.message(), " (a remeshing bug: please report it)"));
