@@ -36,6 +36,11 @@ def main(out="."):
     tessera.write_png(os.path.join(out, "surface_polycube.png"),
                       tessera.render_mesh_preview(pc.polycube_positions, pc.faces, 400, 400,
                                                   elevation_degrees=30))
+    # a UV sphere has slivers at its poles: remeshed, its triangles are even (no creases on a sphere)
+    V2, F2, stats = tessera.remesh(V, F, edges_across=16, feature_angle=180)
+    print(f"remeshed: {len(F)} -> {len(F2)} triangles, smallest angle {stats['min_angle_input']:.1f} -> "
+          f"{stats['min_angle']:.1f} degrees")
+    tessera.write_mesh(os.path.join(out, "surface_remeshed.obj"), V2, F2)
     path = os.path.join(out, "sphere.polycube")
     pc.save(path)
     back = tessera.PolycubeMap.load(path)

@@ -1,5 +1,6 @@
-// python/src/surface.cpp: tessera's surface family: the polycube map of a closed triangle mesh (its
-// charts, polycube positions and quad layout as NumPy arrays), saved and loaded as a file.
+// python/src/surface.cpp: tessera's surface family: isotropic remeshing of a closed mesh, and the
+// polycube map of a closed triangle mesh (its charts, polycube positions and quad layout as NumPy
+// arrays), saved and loaded as a file.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -7,6 +8,7 @@
 #include <tessera/io/polycube_file.hpp>
 #include <tessera/surface/build_polycube_map.hpp>
 #include <tessera/surface/polycube_map.hpp>
+#include <tessera/surface/remesh_isotropic.hpp>
 
 #include "bindings.hpp"
 #include "common.hpp"
@@ -24,6 +26,39 @@ py::array_t<std::int64_t> index_array(const std::vector<index_t>& v) {
 }  // namespace
 
 void bind_surface(py::module_& m) {
+  m.def(
+      "remesh",
+      [](const py::array& vertices, const py::array& faces, double edge_length, int edges_across, double feature_angle,
+         int iterations) {
+        const tri_mesh mesh = mesh_from_arrays(vertices, faces, "mesh");
+        remesh_options o;
+        o.edge_length = edge_length, o.edges_across = edges_across, o.feature_angle = feature_angle;
+        o.iterations = iterations;
+        auto r = [&] {
+          py::gil_scoped_release nogil;
+          return remesh_isotropic(mesh, o);
+        }();
+        const remesh_result out = value_or_raise(std::move(r));
+        py::dict stats;
+        stats["edge_length"] = out.stats.edge_length;
+        stats["feature_edges"] = out.stats.feature_edges;
+        stats["splits"] = out.stats.splits;
+        stats["collapses"] = out.stats.collapses;
+        stats["flips"] = out.stats.flips;
+        stats["min_angle_input"] = out.stats.min_angle_input;
+        stats["min_angle"] = out.stats.min_angle;
+        stats["edge_length_rms"] = out.stats.edge_length_rms;
+        stats["max_deviation"] = out.stats.max_deviation;
+        return py::make_tuple(positions_array(out.mesh.positions), faces_array(out.mesh.faces), stats);
+      },
+      py::arg("vertices"), py::arg("faces"), py::arg("edge_length") = 0.0, py::arg("edges_across") = 64,
+      py::arg("feature_angle") = 40.0, py::arg("iterations") = 10,
+      R"doc(Isotropic remeshing of a closed, manifold, oriented triangle mesh (V float64 n x 3, F int m x 3) into
+even triangles of edge length about edge_length (0: the bounding box's longest side / edges_across),
+keeping edges whose faces meet at feature_angle degrees or more (180: none, for scans). Returns
+(V, F, stats) with stats min_angle_input, min_angle, edge_length_rms, max_deviation, ... CAD output
+(long faces beside slivers) remeshed this way gets better polycube maps and shells. Releases the GIL.
+Raises InvalidArgument for a refused mesh or option, naming it.)doc");
   py::class_<polycube_map>(
       m, "PolycubeMap",
       R"doc(A polycube map of a closed triangle mesh: every face labelled with one of the six axis directions

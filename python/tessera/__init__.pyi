@@ -245,6 +245,10 @@ class GeometricTileSet:
 
 # ---- surface ---------------------------------------------------------------------------------------
 
+def remesh(vertices: Vertices, faces: Faces, edge_length: float = 0.0, edges_across: int = 64,
+           feature_angle: float = 40.0, iterations: int = 10) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.int64], dict]:
+    """Isotropic remeshing (creases kept): (V, F, stats)."""
+
 class PolycubeMap:
     """The polycube map of a closed triangle mesh, with its quad layout."""
     @staticmethod

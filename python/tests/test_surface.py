@@ -59,3 +59,22 @@ def test_bad_input():
         tessera.PolycubeMap.build(v.astype(np.float32), f)
     with pytest.raises(ValueError):
         tessera.PolycubeMap.build(v, f + len(v))
+
+
+def test_remesh_keeps_the_surface_and_evens_the_triangles():
+    v, f = uv_sphere()  # slivers at the poles
+    v2, f2, stats = tessera.remesh(v, f, edges_across=12, feature_angle=180)
+    assert v2.dtype == np.float64 and f2.shape[1] == 3 and len(f2) > 0
+    assert stats["min_angle"] > stats["min_angle_input"] and stats["min_angle"] > 20
+    assert stats["feature_edges"] == 0 and stats["max_deviation"] < 1e-6
+    # closed: every edge used twice, and a polycube map can be built on it
+    e = np.sort(np.concatenate([f2[:, [0, 1]], f2[:, [1, 2]], f2[:, [2, 0]]]), axis=1)
+    _, counts = np.unique(e, axis=0, return_counts=True)
+    assert (counts == 2).all()
+    assert tessera.PolycubeMap.build(v2, f2, tiles_across=4).num_quads > 0
+    again = tessera.remesh(v, f, edges_across=12, feature_angle=180)
+    np.testing.assert_array_equal(again[0], v2)
+    with pytest.raises(tessera.Error, match="edges_across"):
+        tessera.remesh(v, f, edges_across=0)
+    with pytest.raises(tessera.Error):
+        tessera.remesh(v, f[:-3])  # open
