@@ -253,9 +253,7 @@ result<geometric_tile_set> build_geometric_wang_tiles(const quilt_exemplar& exem
       mesh_quilt_options qo = o.quilt;
       qo.progress = {};
       if (o.progress.token) qo.progress.token = o.progress.token;
-      // filling as holes stand (fill_relax off) keeps out of the strips' band, as before; with the
-      // relaxation it fills the band too, each element the exemplar's clearance from the tile sides
-      if (!qo.fill_relax) qo.fill_border_margin = std::max(qo.fill_border_margin, plan->sp.half_height);
+      qo.fill_border_margin = std::max(qo.fill_border_margin, plan->sp.half_height);
       // three-axis sets go onto surfaces, whose shell map follows a tile only within its chordal
       // tolerance: the tighter gaps of filled holes made elements cross there (the test sphere: 0 ->
       // 23 crossing face pairs), so they are quilted without hole filling (docs/surface.md)

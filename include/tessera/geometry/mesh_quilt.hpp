@@ -78,17 +78,15 @@ struct mesh_quilt_options {
   bool fill_relax = true;
   /// With fill_relax, where the output still holds more elements than the exemplar's density once
   /// the holes are filled (the patches drop large elements more often than small ones), one element
-  /// of the exemplar's largest size class takes the place of two or more smaller free ones (added
-  /// whole or filled; never frame elements or elements merged across a patch seam), when it
-  /// intersects nothing and the covered area moves towards the exemplar's (`stats.elements_replaced`;
-  /// docs/geometry.md). A tile set's strip source is quilted without it (large elements leave fewer
-  /// strip windows clear of the tile corners). false: filling only adds, as before.
+  /// of the exemplar's largest size class takes the place of two or more small free ones (added
+  /// whole or filled; never frame elements, elements merged across a patch seam or any in a tile's
+  /// border band), when they cover no more than it does and it intersects nothing
+  /// (`stats.elements_replaced`; docs/geometry.md). false: filling only adds, as before.
   bool fill_replace = true;
   /// Constrained quilting: holes are not filled by elements reaching within this distance of the
-  /// domain's sides (with fill_relax, filled and moved elements also keep the exemplar's clearance
-  /// from them: across a side stands the neighbouring tile). Geometric tile sets use half the edge
-  /// strip height (h_E / 2) when fill_relax is off, and 0 with it: the bands along a tile's sides
-  /// are then filled to the density of its core (docs/geometry.md).
+  /// domain's sides. Geometric tile sets use half the edge strip height (h_E / 2): there a tile's
+  /// elements must agree with the strip the neighbouring tile shares, and on a surface two tiles meet
+  /// at an angle across it (docs/geometry.md).
   double fill_border_margin = 0;
   /// Seed of the patch choices.
   std::uint64_t seed = 0;

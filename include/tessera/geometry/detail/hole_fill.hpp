@@ -251,54 +251,6 @@ inline std::vector<hole_site> hole_sites(const std::vector<float>& d, index_t w,
   return s;
 }
 
-/// Where hole filling counts the output's elements against the exemplar's density: element centres
-/// inside `outer` that lie within `band` of `sides` of its sides (0: the core, 1: the bands along the
-/// sides, 2: the corner squares, as texture_quality's tile regions; band 0: the whole of `outer`),
-/// `target` of them.
-struct count_zone {
-  xy_rect outer;
-  double band = 0;
-  int sides = 0;
-  double target = 0;
-  [[nodiscard]] bool contains(vec3 c) const noexcept {
-    if (!outer.contains(c)) return false;
-    const int n = (c.x - outer.x0 < band) + (outer.x1 - c.x < band) + (c.y - outer.y0 < band) + (outer.y1 - c.y < band);
-    return std::min(n, 2) == sides;
-  }
-  /// The zone's area.
-  [[nodiscard]] double area() const noexcept {
-    const double w = outer.width(), h = outer.height(), b = band, core = (w - 2 * b) * (h - 2 * b);
-    return sides == 0 ? core : (sides == 2 ? 4 * b * b : w * h - core - 4 * b * b);
-  }
-};
-
-/// The zone of `zones` that holds `c`; the first when none does.
-inline std::size_t zone_of(const std::vector<count_zone>& zones, vec3 c) {
-  for (std::size_t z = 0; z < zones.size(); ++z)
-    if (zones[z].contains(c)) return z;
-  return 0;
-}
-
-/// The counts hole filling aims at in each of `zones`, given what they hold (`counts`): a zone that
-/// holds its target or more keeps what it holds (filling only adds), and the others share what is
-/// left of the zones' total target in proportion to their own, so that the total stays the
-/// exemplar's density (a tile's corners, crowded by its frame, leave less to its core and bands).
-inline std::vector<double> zone_targets(const std::vector<count_zone>& zones, const std::vector<double>& counts) {
-  double total = 0, full = 0, open = 0;
-  for (std::size_t z = 0; z < zones.size(); ++z) {
-    total += zones[z].target;
-    if (counts[z] >= zones[z].target)
-      full += counts[z];
-    else
-      open += zones[z].target;
-  }
-  std::vector<double> t(zones.size());
-  for (std::size_t z = 0; z < zones.size(); ++z)
-    t[z] = counts[z] >= zones[z].target || !(open > 0) ? zones[z].target
-                                                       : zones[z].target * std::max(0.0, total - full) / open;
-  return t;
-}
-
 /// Radius of an element's XY footprint about the centre of its box: the farthest vertex.
 inline double footprint_radius(const texture_element& e) {
   const vec3 c = e.box.center();

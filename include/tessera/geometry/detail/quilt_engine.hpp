@@ -180,11 +180,6 @@ class basic_quilt_engine {
                                       exemplar_clearance(ex_.elements(), is_long, h, d, hole_clearance_quantile)) +
                              h;
     const bool relax = p_.fill_relax;
-    // constrained, with relaxation: a filled or moved element keeps the exemplar's clearance from the
-    // domain's sides too (across them stands the neighbouring tile); without, as before, it only stays
-    // strictly inside
-    const double side_gap =
-        relax ? std::max(clearance, 2 * inside_margin_fraction * cell_) : 2 * inside_margin_fraction * cell_;
     // neighbours are pushed only when the exemplar's element sizes vary: a lattice of equal elements
     // keeps its spacing (pushed, the beads quilt had 14 % of its spacings outside the exemplar's
     // spread, from 0 %)
@@ -229,25 +224,6 @@ class basic_quilt_engine {
       }
     }
     const double target_count = target_density * count_win.width() * count_win.height();
-    // constrained, with relaxation: the bands along the tile's sides and the corner squares that
-    // texture_quality's band and corner figures read (band_fraction of the side, at least
-    // fill_border_margin) are counted apart from the core, so that they keep the core's density: the
-    // narrow holes between the strips and the core get any size that fits while their zone lacks
-    // elements, and replacement thins a crowded zone. A zone crowded by the frame (the corners) leaves
-    // less to the others (zone_targets), so that the tile as a whole keeps the exemplar's density. An element with fixed vertices (a frame element cut at a tile
-    // side, whose other part is the neighbouring tile's) counts as half.
-    std::vector<count_zone> zones{{count_win, 0.0, 0, target_count}};
-    if (relax && p_.constrained && std::isfinite(target_density)) {
-      const double b = std::max(texture_quality_options{}.band_fraction * std::min(domain_.width(), domain_.height()),
-                                p_.fill_border_margin);
-      if (2 * b < std::min(domain_.width(), domain_.height())) {
-        zones.clear();
-        for (int sides = 0; sides <= 2; ++sides) {
-          zones.push_back({domain_, b, sides, 0});
-          zones.back().target = target_density * zones.back().area();
-        }
-      }
-    }
     const counter_rng rng(p_.seed, p_.stream);
     bool reached = false;
     for (int pass = 0; pass < hole_passes && !reached; ++pass) {
@@ -258,27 +234,21 @@ class basic_quilt_engine {
         if (alive_[i]) r.add_mesh(elems_[i].mesh, static_cast<index_t>(i));
       if (r.counted_share() >= target) break;
       // the output's (not long) elements by size class, and how many each class lacks
-      std::vector<std::vector<double>> lacks(zones.size(), std::vector<double>(bounds.size(), 0));
-      std::vector<double> counts(zones.size(), 0);
-      if (relax)
-        for (std::size_t z = 0; z < zones.size(); ++z) {
-          for (std::size_t k = 0; k < bounds.size(); ++k) lacks[z][k] = class_share[k] * zones[z].target;
-          counts[z] = tally(zones[z], bounds, hole_long_footprint_factor * fits.back().first, lacks[z]);
-        }
-      const std::vector<double> aims = zone_targets(zones, counts);
+      std::vector<double> lack(bounds.size(), 0);
+      double count = 0;
+      if (relax) {
+        for (std::size_t k = 0; k < bounds.size(); ++k) lack[k] = class_share[k] * target_count;
+        count = tally(count_win, bounds, hole_long_footprint_factor * fits.back().first, lack);
+      }
       const double min_site = std::max(h, fits.front().first + clearance - max_push);
       const auto sites = hole_sites(distance_to_covered(r), w, rows, static_cast<float>(min_site / h));
       index_t placed = 0;
       for (const hole_site& s : sites) {
         // past the exemplar's density, only holes that hold an empty square as wide as
         // texture_quality's empty cells are filled
+        const bool capped = relax && count >= target_count;
+        if (capped && static_cast<double>(s.radius) * h < 0.5 * hole_empty_diameters * d) break;
         const vec3 c = r.centre(s.i, s.j);
-        const std::size_t z = zone_of(zones, c);
-        const bool band = z > 0;  // a tile's band (above)
-        std::vector<double>& lack = lacks[z];
-        double& count = counts[z];
-        const bool capped = relax && count >= aims[z];
-        if (capped && static_cast<double>(s.radius) * h < 0.5 * hole_empty_diameters * d) continue;
         if (capped && !r.square_free(c, 0.5 * hole_empty_diameters * d)) continue;
         if (!domain_.contains(c)) continue;
         if (!r.disc_free(c, min_site - h)) continue;  // an element placed since stands there
@@ -298,16 +268,11 @@ class basic_quilt_engine {
           // the covered area each element still to come should bring, on average: a class whose
           // elements bring that much is drawn from even when the output holds enough of them (the
           // patches drop large elements more often than small ones, so the covered area lags)
-          double short_of = 0, zoned = 0;  // elements short of the targets, and the zones' area
-          for (std::size_t y = 0; y < zones.size(); ++y) {
-            short_of += zones[y].target - counts[y];
-            zoned += zones[y].area();
-          }
-          const double to_come = std::max(1.0, short_of * domain_.width() * domain_.height() / zoned);
+          const double to_come = std::max(1.0, (target_count - count) * domain_.width() * domain_.height() /
+                                                   (count_win.width() * count_win.height()));
           const double wanted = (target - r.counted_share()) * domain_.width() * domain_.height() / to_come;
           for (std::size_t k = bounds.size(); k-- > 0;) {
-            // in a tile's band, any size that fits while the band lacks elements
-            if (!capped && !band && lack[k] <= 0 && class_area[k] < wanted) continue;
+            if (!capped && lack[k] <= 0 && class_area[k] < wanted) continue;
             const std::size_t lo = class_begin(fits, bounds, k), hi = std::min(n_fit, class_begin(fits, bounds, k + 1));
             for (int t = 0; t < hole_tries_per_class && lo < hi; ++t) ranges.push_back({lo, hi});
           }
@@ -319,7 +284,7 @@ class basic_quilt_engine {
           if (!relax && !r.disc_free(c, re + clearance)) continue;  // an element placed since covers part of it
           if (p_.constrained && std::min({c.x - domain_.x0, domain_.x1 - c.x, c.y - domain_.y0, domain_.y1 - c.y}) <
                                     re + p_.fill_border_margin)
-            continue;  // in the band kept clear (fill_border_margin)
+            continue;  // in the band where a tile's elements must agree with its neighbour's strip
           const texture_element& src = ex_.elements()[to_size(e)];
           const vec3 shift{c.x - src.box.center().x, c.y - src.box.center().y, 0};
           texture_element el;
@@ -327,10 +292,10 @@ class basic_quilt_engine {
           for (vec3& q : el.mesh.positions) q += shift;
           el.fixed.assign(el.mesh.positions.size(), 0);
           el.update_box();
-          if (p_.constrained && !all_strictly_inside(el.mesh, side_gap)) continue;
-          if (relax ? !place_relaxed(el, c, r, h, clearance, max_push, side_gap) : intersects_alive(el, {})) continue;
+          if (p_.constrained && !all_strictly_inside(el.mesh, 2 * inside_margin_fraction * cell_)) continue;
+          if (relax ? !place_relaxed(el, c, r, h, clearance, max_push) : intersects_alive(el, {})) continue;
           r.add_mesh(el.mesh, static_cast<index_t>(elems_.size()));
-          if (relax && zones[z].contains(c)) {
+          if (relax && count_win.contains(c)) {
             lack[class_of(bounds, re)] -= 1;
             count += 1;
           }
@@ -345,7 +310,7 @@ class basic_quilt_engine {
       if (placed == 0) break;
     }
     if (relax && p_.fill_replace && max_push > 0)
-      return replace_small(fits, bounds, grid, clearance, zones, target, prog);
+      return replace_small(fits, bounds, grid, clearance, count_win, target_count, target, prog);
     return {};
   }
 
@@ -527,7 +492,7 @@ class basic_quilt_engine {
   // counted (constrained, an element with fixed vertices as half: its other part is the neighbouring
   // tile's) and taken off `lack` by size class; a footprint above `long_fr` is a thread piece or the
   // like and does not count.
-  [[nodiscard]] double tally(const count_zone& win, const std::vector<double>& bounds, double long_fr,
+  [[nodiscard]] double tally(const xy_rect& win, const std::vector<double>& bounds, double long_fr,
                              std::vector<double>& lack) const {
     double count = 0;
     for (std::size_t i = 0; i < elems_.size(); ++i) {
@@ -542,47 +507,44 @@ class basic_quilt_engine {
     return count;
   }
 
-  // After hole filling with relaxation (hole_replace.hpp): where the output holds more elements than
-  // the exemplar's density (zones: fill_holes), an element of the exemplar's largest size class takes
-  // the place of small free ones; below the exemplar's covered share (`target`, the output's counted
-  // in the zones) only where they cover less than it, above only where they cover more (up to
-  // hole_replace_loss times). Removable: movable elements (added whole or filled), below the largest
-  // size class, centred in a zone and, in a tile, off the band kept clear (fill_border_margin). Their places are the local
-  // maxima of the distance to every other element (hole_fill.hpp), those in the largest holes of
-  // the output as it stands first; an element drawn from the largest class whose footprint fits
-  // there with `clearance` displaces the removable ones nearer than `clearance`, when there are two
-  // or more, their area is within those bounds, and it intersects nothing else. Up to hole_passes
-  // passes.
+  // After hole filling with relaxation (hole_replace.hpp): while the output holds more elements than
+  // the exemplar's density in `count_win` (`target_count`), an element of the exemplar's largest size
+  // class takes the place of small free ones; below the exemplar's covered share (`target`, the
+  // output's counted in `count_win`) only where they cover less than it, above only where they cover
+  // more (up to hole_replace_loss times). Removable: movable elements (added whole or filled), of the
+  // lower half of the sizes, centred in `count_win` and, in a tile, off its border band. Their places
+  // are the local maxima of the distance to every other element (hole_fill.hpp), those in the largest
+  // holes of the output as it stands first; an element drawn from the largest class whose footprint
+  // fits there with `clearance` displaces the removable ones nearer than `clearance`, when there are
+  // two or more, their area is within those bounds, and it intersects nothing else. Up to hole_passes passes.
   status replace_small(const std::vector<std::pair<double, index_t>>& fits, const std::vector<double>& bounds,
-                       const xy_raster& grid, double clearance, const std::vector<count_zone>& zones, double target,
-                       const progress& prog) {
+                       const xy_raster& grid, double clearance, const xy_rect& count_win, double target_count,
+                       double target, const progress& prog) {
     const double h = grid.px;
     const auto w = static_cast<index_t>(grid.nx), rows = static_cast<index_t>(grid.ny);
     const double long_fr = hole_long_footprint_factor * fits.back().first;
-    const double small_fr = bounds[bounds.size() - 2];  // below the largest class
+    const double small_fr = bounds[bounds.size() / 2 - 1];  // the lower half of the sizes
     const std::size_t lo = class_begin(fits, bounds, bounds.size() - 1);
     if (lo >= fits.size()) return {};
     const double band = p_.fill_border_margin + 2 * inside_margin_fraction * cell_;
     const counter_rng rng(p_.seed, p_.stream);
     for (int pass = 0; pass < hole_passes; ++pass) {
       if (prog.cancelled()) return status::cancelled();
-      std::vector<double> counts(zones.size(), 0), lack(bounds.size(), 0);
-      for (std::size_t z = 0; z < zones.size(); ++z) counts[z] = tally(zones[z], bounds, long_fr, lack);
+      std::vector<double> lack(bounds.size(), 0);
+      double count = tally(count_win, bounds, long_fr, lack);
       coverage_raster all(grid), stay(grid);
-      all.count_in(zones.front().outer);  // the covered share where the elements are counted
+      all.count_in(count_win);  // the covered share where the elements are counted
       std::vector<unsigned char> removable(elems_.size(), 0);
       for (std::size_t i = 0; i < elems_.size(); ++i) {
         if (!alive_[i]) continue;
         all.add_mesh(elems_[i].mesh, static_cast<index_t>(i));
         const vec3 c = elems_[i].box.center();
-        removable[i] = movable_[i] && zones[zone_of(zones, c)].contains(c) && footprint_radius(elems_[i]) <= small_fr &&
+        removable[i] = movable_[i] && count_win.contains({c.x, c.y, 0}) && footprint_radius(elems_[i]) <= small_fr &&
                        (!p_.constrained || all_strictly_inside(elems_[i].mesh, band));
         if (!removable[i]) stay.add_mesh(elems_[i].mesh);
       }
-      auto pays = [&](std::size_t z) { return counts[z] > zones[z].target; };
-      bool any = false;
-      for (std::size_t z = 0; z < zones.size(); ++z) any = any || pays(z);
-      if (!any) break;
+      auto pays = [&] { return count > target_count; };
+      if (!pays()) break;
       // places: where the elements that stay leave room for the smallest of the largest class;
       // those in the largest holes of the output as it stands first
       const double min_site = fits[lo].first + clearance;
@@ -593,9 +555,8 @@ class basic_quilt_engine {
       });
       index_t replaced = 0;
       for (const hole_site& s : sites) {
+        if (!pays()) break;
         const vec3 c = all.centre(s.i, s.j);
-        const std::size_t z = zone_of(zones, c);
-        if (!zones[z].contains(c) || !pays(z)) continue;
         if (!domain_.contains(c) || !stay.disc_free(c, min_site - h)) continue;  // a large one placed since
         const double room = static_cast<double>(s.radius) * h - clearance;
         const auto hi = static_cast<std::size_t>(
@@ -608,7 +569,7 @@ class basic_quilt_engine {
                                                             static_cast<std::uint64_t>(t)))];
           if (p_.constrained && std::min({c.x - domain_.x0, domain_.x1 - c.x, c.y - domain_.y0, domain_.y1 - c.y}) <
                                     re + p_.fill_border_margin)
-            continue;  // in the band kept clear (fill_border_margin)
+            continue;  // in the band where a tile's elements must agree with its neighbour's strip
           const texture_element& src = ex_.elements()[to_size(e)];
           const vec3 shift{c.x - src.box.center().x, c.y - src.box.center().y, 0};
           texture_element el;
@@ -616,7 +577,7 @@ class basic_quilt_engine {
           for (vec3& q : el.mesh.positions) q += shift;
           el.fixed.assign(el.mesh.positions.size(), 0);
           el.update_box();
-          if (p_.constrained && !all_strictly_inside(el.mesh, std::max(clearance, band))) continue;
+          if (p_.constrained && !all_strictly_inside(el.mesh, 2 * inside_margin_fraction * cell_)) continue;
           std::vector<std::size_t> near;
           std::vector<replace_neighbour> nb;
           const double reach = clearance + h;
@@ -641,9 +602,8 @@ class basic_quilt_engine {
           for (std::size_t i : gone) {
             all.remove_owner(static_cast<index_t>(i), elems_[i].box);
             alive_[i] = 0;
-            counts[zone_of(zones, elems_[i].box.center())] -= 1;  // removable ones are counted whole
           }
-          counts[z] += 1;
+          count -= static_cast<double>(gone.size()) - 1;  // removable ones are counted whole
           all.add_mesh(el.mesh, static_cast<index_t>(elems_.size()));
           stay.add_mesh(el.mesh);
           stats_.elements_replaced += static_cast<index_t>(gone.size());
@@ -662,8 +622,8 @@ class basic_quilt_engine {
   // `clearance` from it, moving at most `max_push`); a moved element must keep a pixel of room from
   // every other element in `r`, stay off a tile's border band, and intersect nothing. Commits the
   // moves (in `r` too); the caller adds `el`.
-  bool place_relaxed(const texture_element& el, vec3 c, coverage_raster& r, double h, double clearance, double max_push,
-                     double side_gap) {
+  bool place_relaxed(const texture_element& el, vec3 c, coverage_raster& r, double h, double clearance,
+                     double max_push) {
     std::vector<std::size_t> near;
     std::vector<relax_neighbour> nb;
     const double reach = clearance + h;
@@ -680,7 +640,7 @@ class basic_quilt_engine {
     if (!shifts) return false;
     std::vector<std::size_t> moved;
     std::vector<texture_element> moved_el;
-    const double band = std::max(p_.fill_border_margin + 2 * inside_margin_fraction * cell_, side_gap);
+    const double band = p_.fill_border_margin + 2 * inside_margin_fraction * cell_;
     const double gap = std::max(h, hole_min_clearance_diameters * ex_.element_diameter());
     for (std::size_t k = 0; k < near.size(); ++k) {
       const vec3 sh = (*shifts)[k];
