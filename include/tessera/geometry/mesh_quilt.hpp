@@ -78,10 +78,12 @@ struct mesh_quilt_options {
   bool fill_relax = true;
   /// With fill_relax, where the output still holds more elements than the exemplar's density once
   /// the holes are filled (the patches drop large elements more often than small ones), one element
-  /// of the exemplar's largest size class takes the place of two or more small free ones (added
+  /// of the exemplar's largest size class takes the place of two or more smaller free ones (added
   /// whole or filled; never frame elements, elements merged across a patch seam or any in a tile's
-  /// border band), when they cover no more than it does and it intersects nothing
-  /// (`stats.elements_replaced`; docs/geometry.md). false: filling only adds, as before.
+  /// border band), when it intersects nothing and the covered area moves towards the exemplar's
+  /// (`stats.elements_replaced`; docs/geometry.md). A tile set's strip source is quilted without it
+  /// (large elements leave fewer strip windows clear of the tile corners). false: filling only adds,
+  /// as before.
   bool fill_replace = true;
   /// Constrained quilting: holes are not filled by elements reaching within this distance of the
   /// domain's sides. Geometric tile sets use half the edge strip height (h_E / 2): there a tile's

@@ -511,8 +511,8 @@ class basic_quilt_engine {
   // the exemplar's density in `count_win` (`target_count`), an element of the exemplar's largest size
   // class takes the place of small free ones; below the exemplar's covered share (`target`, the
   // output's counted in `count_win`) only where they cover less than it, above only where they cover
-  // more (up to hole_replace_loss times). Removable: movable elements (added whole or filled), of the
-  // lower half of the sizes, centred in `count_win` and, in a tile, off its border band. Their places
+  // more (up to hole_replace_loss times). Removable: movable elements (added whole or filled), below the
+  // largest size class, centred in `count_win` and, in a tile, off its border band. Their places
   // are the local maxima of the distance to every other element (hole_fill.hpp), those in the largest
   // holes of the output as it stands first; an element drawn from the largest class whose footprint
   // fits there with `clearance` displaces the removable ones nearer than `clearance`, when there are
@@ -523,7 +523,7 @@ class basic_quilt_engine {
     const double h = grid.px;
     const auto w = static_cast<index_t>(grid.nx), rows = static_cast<index_t>(grid.ny);
     const double long_fr = hole_long_footprint_factor * fits.back().first;
-    const double small_fr = bounds[bounds.size() / 2 - 1];  // the lower half of the sizes
+    const double small_fr = bounds[bounds.size() - 2];  // below the largest class
     const std::size_t lo = class_begin(fits, bounds, bounds.size() - 1);
     if (lo >= fits.size()) return {};
     const double band = p_.fill_border_margin + 2 * inside_margin_fraction * cell_;
