@@ -209,12 +209,14 @@ class basic_quilt_engine {
     // open); constrained, in the whole tile, an element with fixed vertices (a frame element cut at a
     // tile side, whose other part is the neighbouring tile's) counting as half.
     double target_density = std::numeric_limits<double>::infinity();
+    double ex_empty = 0;  // the exemplar's empty-cell rate, as texture_quality reads it
     xy_rect count_win = domain_;
     if (relax) {
       const auto ref = quality_reference(ex_.mesh());
       const auto q = ref ? measure_texture_quality(ex_.mesh(), *ref) : result<texture_quality>(ref.error());
       if (q && q->density > 0) {
         target_density = q->density;
+        ex_empty = q->empty_cell_rate;
         const texture_quality_options qo;
         double in = std::max(qo.margin_diameters * ref->diameter, 1.25 * ref->nn_median);
         // constrained: the part of the tile filling may reach (off the border band)
@@ -310,7 +312,7 @@ class basic_quilt_engine {
       if (placed == 0) break;
     }
     if (relax && p_.fill_replace && max_push > 0)
-      return replace_small(fits, bounds, grid, clearance, count_win, target_count, target, prog);
+      return replace_small(fits, bounds, grid, clearance, count_win, target_count, target, ex_empty, prog);
     return {};
   }
 
@@ -519,7 +521,7 @@ class basic_quilt_engine {
   // two or more, their area is within those bounds, and it intersects nothing else. Up to hole_passes passes.
   status replace_small(const std::vector<std::pair<double, index_t>>& fits, const std::vector<double>& bounds,
                        const xy_raster& grid, double clearance, const xy_rect& count_win, double target_count,
-                       double target, const progress& prog) {
+                       double target, double ex_empty, const progress& prog) {
     const double h = grid.px;
     const auto w = static_cast<index_t>(grid.nx), rows = static_cast<index_t>(grid.ny);
     const double long_fr = hole_long_footprint_factor * fits.back().first;
@@ -554,6 +556,22 @@ class basic_quilt_engine {
         return gap[to_size(a.j * w + a.i)] > gap[to_size(b.j * w + b.i)];
       });
       index_t replaced = 0;
+      // the empty squares an exchange may open: as many as the exemplar's empty-cell rate leaves to
+      // the output (its empty cells counted on a grid of hole_empty_diameters from the domain's corner)
+      const double cell = hole_empty_diameters * ex_.element_diameter();
+      double may_open = 0;
+      if (ex_empty > 0) {
+        const auto nx = static_cast<index_t>(domain_.width() / cell),
+                   ny = static_cast<index_t>(domain_.height() / cell);
+        index_t empty = 0;
+        for (index_t j = 0; j < ny; ++j)
+          for (index_t i = 0; i < nx; ++i)
+            empty += all.square_free({domain_.x0 + (double(i) + 0.5) * cell, domain_.y0 + (double(j) + 0.5) * cell, 0},
+                                     0.5 * cell)
+                         ? 1
+                         : 0;
+        may_open = ex_empty * static_cast<double>(nx * ny) - static_cast<double>(empty);
+      }
       for (const hole_site& s : sites) {
         if (!pays()) break;
         const vec3 c = all.centre(s.i, s.j);
@@ -599,16 +617,35 @@ class basic_quilt_engine {
           std::vector<std::size_t> gone;
           for (std::size_t k : out) gone.push_back(near[k]);
           if (intersects_alive(el, gone)) continue;
-          for (std::size_t i : gone) {
-            all.remove_owner(static_cast<index_t>(i), elems_[i].box);
-            alive_[i] = 0;
+          // tentatively: no empty square as wide as texture_quality's empty cells may open where a
+          // displaced one stood (squares about its centre, shifted by up to half their side)
+          const auto idx = static_cast<index_t>(elems_.size());
+          for (std::size_t i : gone) all.remove_owner(static_cast<index_t>(i), elems_[i].box);
+          all.add_mesh(el.mesh, idx);
+          bool opens = false;
+          const double half = 0.5 * cell;
+          for (std::size_t i = 0; i < gone.size() && !opens; ++i) {
+            const vec3 g = elems_[gone[i]].box.center();
+            for (int dy = -2; dy <= 2 && !opens; ++dy)
+              for (int dx = -2; dx <= 2 && !opens; ++dx)
+                opens = all.square_free(g + vec3{0.5 * half * dx, 0.5 * half * dy, 0}, half);
           }
+          if (opens && may_open >= 1) {
+            may_open -= 1;
+            opens = false;
+          }
+          if (opens) {  // undone
+            all.remove_owner(idx, el.box);
+            for (std::size_t i : gone) all.add_mesh(elems_[i].mesh, static_cast<index_t>(i));
+            continue;
+          }
+          for (std::size_t i : gone) alive_[i] = 0;
           count -= static_cast<double>(gone.size()) - 1;  // removable ones are counted whole
-          all.add_mesh(el.mesh, static_cast<index_t>(elems_.size()));
           stay.add_mesh(el.mesh);
           stats_.elements_replaced += static_cast<index_t>(gone.size());
           ++stats_.elements_filled;
           push(std::move(el), true);
+          removable.push_back(0);  // the large one stays
           ++replaced;
           break;
         }
