@@ -177,7 +177,7 @@ TEST_CASE("hole fill: a pebble quilt of mixed sizes gets the exemplar's density 
           "[hole_fill]") {
   // issue 17 on a small case: the patches hold more, smaller pebbles than the exemplar, and filling
   // that only adds leaves the density above 1.10; replacing small ones by large ones brings density
-  // and covered area within 5 % (1.00 / 1.01 here, 1.12 / 0.98 without, measured)
+  // and covered area within 5 % (0.99 / 1.01 here, 1.12 / 0.98 without, measured)
   auto pebbles = make_stone_exemplar({.min_radius = 0.2, .max_radius = 0.8, .coverage = 0.5, .seed = 3});
   REQUIRE(pebbles.ok());
   auto ex = prepare_quilt_exemplar(*pebbles);
@@ -211,12 +211,7 @@ TEST_CASE("hole fill: a pebble quilt of mixed sizes gets the exemplar's density 
   CHECK(check->intersecting_pairs == 0);
   CHECK(check->open_edges_inside == 0);
   CHECK(check->nonmanifold_edges == 0);
-  // the same on a pool of threads
-  thread_pool_executor pool(2);
-  const auto c = mesh_quilt(*ex, size, size, with, pool);
-  REQUIRE(c.ok());
-  REQUIRE(c->mesh.positions == a->mesh.positions);
-  REQUIRE(c->mesh.faces == a->mesh.faces);
+  // (the same on a pool of threads: the stone quilt's test below, which replaces elements too)
 }
 
 TEST_CASE("hole fill: a small stone quilt has the exemplar's density and covered area within 5 %", "[hole_fill]") {
@@ -255,6 +250,7 @@ TEST_CASE("hole fill: a stone quilt keeps no holes, no intersections, and is det
   const auto* qa = &q.qa;
   const auto* qb = &q.qb;
   CHECK(a->stats.elements_filled > 0);
+  CHECK(a->stats.elements_replaced > 0);  // so that the thread-pool run below covers replacement
   CHECK(b->stats.elements_filled == 0);
   INFO("coverage " << qb->coverage_ratio << " -> " << qa->coverage_ratio << ", empty cells "
                    << qb->output.empty_cell_rate << " -> " << qa->output.empty_cell_rate);
