@@ -518,7 +518,9 @@ class basic_quilt_engine {
   // are the local maxima of the distance to every other element (hole_fill.hpp), those in the largest
   // holes of the output as it stands first; an element drawn from the largest class whose footprint
   // fits there with `clearance` displaces the removable ones nearer than `clearance`, when there are
-  // two or more, their area is within those bounds, and it intersects nothing else. Up to hole_passes passes.
+  // two or more, their area is within those bounds, it intersects nothing else, and it opens no empty
+  // square of texture_quality's empty-cell size where a displaced one stood beyond what the
+  // exemplar's empty-cell rate (`ex_empty`) allows. Up to hole_passes passes.
   status replace_small(const std::vector<std::pair<double, index_t>>& fits, const std::vector<double>& bounds,
                        const xy_raster& grid, double clearance, const xy_rect& count_win, double target_count,
                        double target, double ex_empty, const progress& prog) {
