@@ -2,7 +2,7 @@
 // exemplar kind, a 24 x 24 quilt and a 6 x 6 plane of a 16-tile set are measured against the exemplar
 // (geometry/texture_quality.hpp) and rendered; one markdown row per output goes to stdout (the
 // quality table of docs/geometry.md).
-//   example_53_geometric_quality [OUT_DIR] [KIND|all] [before|nofill|nothreads|norelax]   KIND: rings (default), chain_mail,
+//   example_53_geometric_quality [OUT_DIR] [KIND|all] [before|nofill|nothreads|norelax|noreplace]   KIND: rings (default), chain_mail,
 //                                                                 beads, stones, pebbles, weave
 // `before` runs the earlier rules (every corresponding pair merged, no cell retried, nothing moved
 // back inside a tile, eq. 4 alone, free strip elements only wholly inside the strip), for the before/after table and its same-run speed ratio.
@@ -59,7 +59,7 @@ void row(const char* what, const std::string& kind, const texture_quality_compar
 }
 
 int run_kind(const std::string& dir, const std::string& kind, bool before, bool no_fill, bool no_threads, bool no_relax,
-             thread_pool_executor& pool) {
+             bool no_replace, thread_pool_executor& pool) {
   const auto exemplar = make_kind(kind);
   if (!exemplar) return std::fprintf(stderr, "%s\n", exemplar.error().to_string().c_str()), 1;
   const auto prepared = prepare_quilt_exemplar(*exemplar);
@@ -74,6 +74,7 @@ int run_kind(const std::string& dir, const std::string& kind, bool before, bool 
   if (before) qo.merge_whole = true, qo.cell_retries = 0, qo.nudge_inside = false;
   if (before || no_fill) qo.fill_holes = false;
   if (no_relax) qo.fill_relax = false;
+  if (no_relax || no_replace) qo.fill_replace = false;
   if (before || no_threads) qo.thread_joins = false;
   const auto q = mesh_quilt(*prepared, size, size, qo, pool);
   const double quilt_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -87,6 +88,7 @@ int run_kind(const std::string& dir, const std::string& kind, bool before, bool 
                                        : no_fill    ? "_nofill"
                                        : no_threads ? "_nothreads"
                                        : no_relax   ? "_norelax"
+                                       : no_replace ? "_noreplace"
                                                     : "") +
                                       "_quilt.png",
                                   q->mesh, view, pool);
@@ -123,6 +125,7 @@ int run_kind(const std::string& dir, const std::string& kind, bool before, bool 
                                        : no_fill    ? "_nofill"
                                        : no_threads ? "_nothreads"
                                        : no_relax   ? "_norelax"
+                                       : no_replace ? "_noreplace"
                                                     : "") +
                                       "_plane.png",
                                   *plane, view, pool);
@@ -142,6 +145,8 @@ int main(int argc, char** argv) {
   const bool no_threads = argc > 3 && std::string(argv[3]) == "nothreads";
   // "norelax": hole filling without the relaxation and size classes (mesh_quilt_options::fill_relax)
   const bool no_relax = argc > 3 && std::string(argv[3]) == "norelax";
+  // "noreplace": hole filling that only adds (mesh_quilt_options::fill_replace off)
+  const bool no_replace = argc > 3 && std::string(argv[3]) == "noreplace";
   std::vector<std::string> kinds{which};
   if (which == "all") kinds = {"rings", "chain_mail", "beads", "stones", "pebbles", "weave"};
   tessera::thread_pool_executor pool;
@@ -150,6 +155,6 @@ int main(int argc, char** argv) {
       "(exemplar) | spacing outside spread %% (exemplar) | open/non-manifold/intersecting | ms |\n"
       "|---|---|---|---|---|---|---|---|---|---|\n");
   for (const auto& k : kinds)
-    if (run_kind(dir, k, before, no_fill, no_threads, no_relax, pool) != 0) return 1;
+    if (run_kind(dir, k, before, no_fill, no_threads, no_relax, no_replace, pool) != 0) return 1;
   return 0;
 }

@@ -56,6 +56,7 @@ int build(const cli::arguments& args) {
   o.quilt.seed = args.seed();
   o.quilt.fill_holes = !args.has("--no-fill-holes");
   o.quilt.fill_relax = !args.has("--no-fill-relax");
+  o.quilt.fill_replace = !args.has("--no-fill-replace");
   thread_pool_executor pool(args.threads());
   result<geometric_tile_set> set = status::internal_error("not run");
   const double ms = cli::median_ms(args.repeat(), [&] { set = build_geometric_wang_tiles(*ex, o, pool); });
@@ -103,6 +104,7 @@ int build(const cli::arguments& args) {
         .add("elements_dropped", set->stats.elements_dropped)
         .add("elements_filled", set->stats.elements_filled)
         .add("elements_relaxed", set->stats.elements_relaxed)
+        .add("elements_replaced", set->stats.elements_replaced)
         .add("frame_merges_attempted", set->frame_merges_attempted)
         .add("frame_merged", set->frame_merged)
         .add("frame_dropped", set->frame_dropped)
@@ -378,21 +380,23 @@ int map(const cli::arguments& args) {
 }
 
 const cli::registrar reg_build{[] {
-  cli::command c{"geo-wang build",
-                 "build a complete set of geometric-texture Wang tiles (planar or three-axis) from an exemplar mesh",
-                 "tessera geo-wang build --exemplar E.obj --tile W --out DIR [--colors NH,NV | NX,NY,NZ] [options]",
-                 {{"--exemplar", "FILE", "exemplar mesh of closed elements"},
-                  {"--colors", "NH,NV|NX,NY,NZ",
-                   "two counts: a planar set, colours of horizontal (north/south) and vertical (east/west) "
-                   "edges; three: a three-axis set for polycube surfaces (2(nX^2nY^2+nX^2nZ^2+nY^2nZ^2) tiles), "
-                   "colours of edges along X, Y, Z; 1 to 4096 each (default 2,2)"},
-                  {"--tile", "W", "tile size in exemplar units"},
-                  {"--edge-height", "H", "edge strip height h_E (default 1.5 x element size)"},
-                  {"--no-fill-holes", "", "leave the holes where elements were dropped (no single-element filling)"},
-                  {"--no-fill-relax", "",
-                   "fill holes as they stand until the covered area is reached (no size classes, no neighbours moved)"},
-                  {"--out", "DIR", "output directory: tile_<index>.obj and tiles.json"}},
-                 build};
+  cli::command c{
+      "geo-wang build",
+      "build a complete set of geometric-texture Wang tiles (planar or three-axis) from an exemplar mesh",
+      "tessera geo-wang build --exemplar E.obj --tile W --out DIR [--colors NH,NV | NX,NY,NZ] [options]",
+      {{"--exemplar", "FILE", "exemplar mesh of closed elements"},
+       {"--colors", "NH,NV|NX,NY,NZ",
+        "two counts: a planar set, colours of horizontal (north/south) and vertical (east/west) "
+        "edges; three: a three-axis set for polycube surfaces (2(nX^2nY^2+nX^2nZ^2+nY^2nZ^2) tiles), "
+        "colours of edges along X, Y, Z; 1 to 4096 each (default 2,2)"},
+       {"--tile", "W", "tile size in exemplar units"},
+       {"--edge-height", "H", "edge strip height h_E (default 1.5 x element size)"},
+       {"--no-fill-holes", "", "leave the holes where elements were dropped (no single-element filling)"},
+       {"--no-fill-relax", "",
+        "fill holes as they stand until the covered area is reached (no size classes, no neighbours moved)"},
+       {"--no-fill-replace", "", "filling only adds: no small elements replaced by one of the largest size class"},
+       {"--out", "DIR", "output directory: tile_<index>.obj and tiles.json"}},
+      build};
   return c;
 }()};
 

@@ -30,6 +30,7 @@ int run(const cli::arguments& args) {
   o.lambda = *lambda;
   o.fill_holes = !args.has("--no-fill-holes");
   o.fill_relax = !args.has("--no-fill-relax");
+  o.fill_replace = !args.has("--no-fill-replace");
   thread_pool_executor pool(args.threads());
   result<mesh_quilt_result> r = status::internal_error("not run");
   const double ms = cli::median_ms(args.repeat(), [&] { r = mesh_quilt(*ex, size->first, size->second, o, pool); });
@@ -51,6 +52,7 @@ int run(const cli::arguments& args) {
         .add("elements_dropped", r->stats.elements_dropped)
         .add("elements_filled", r->stats.elements_filled)
         .add("elements_relaxed", r->stats.elements_relaxed)
+        .add("elements_replaced", r->stats.elements_replaced)
         .add("merges_attempted", r->stats.merges_attempted)
         .add("merges_succeeded", r->stats.merges_succeeded)
         .add("merge_fail_correspondence", r->stats.merge_fail_correspondence)
@@ -84,7 +86,8 @@ const cli::registrar reg{[] {
        {"--lambda", "L", "weight of the normal term of the matching cost (default 1)"},
        {"--no-fill-holes", "", "leave the holes where elements were dropped (no single-element filling)"},
        {"--no-fill-relax", "",
-        "fill holes as they stand until the covered area is reached (no size classes, no neighbours moved)"}},
+        "fill holes as they stand until the covered area is reached (no size classes, no neighbours moved)"},
+       {"--no-fill-replace", "", "filling only adds: no small elements replaced by one of the largest size class"}},
       run};
   return c;
 }()};

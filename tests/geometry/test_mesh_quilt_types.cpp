@@ -10,18 +10,20 @@ namespace {
 // every counter a distinct value: k, k+1, ... in declaration order
 tessera::mesh_quilt_stats numbered(index_t k) {
   tessera::mesh_quilt_stats s;
-  for (index_t* f :
-       {&s.patches, &s.elements_added, &s.elements_merged, &s.elements_dropped, &s.merges_attempted,
-        &s.merges_succeeded, &s.icp_iterations, &s.icp_discarded, &s.merge_fail_correspondence, &s.merge_fail_deform,
-        &s.merge_fail_cut, &s.merge_fail_loops, &s.merge_fail_check, &s.merges_plane_cut, &s.elements_skipped,
-        &s.cells_retried, &s.elements_nudged, &s.elements_filled, &s.elements_relaxed})
+  for (index_t* f : {&s.patches,           &s.elements_added,   &s.elements_merged,
+                     &s.elements_dropped,  &s.merges_attempted, &s.merges_succeeded,
+                     &s.icp_iterations,    &s.icp_discarded,    &s.merge_fail_correspondence,
+                     &s.merge_fail_deform, &s.merge_fail_cut,   &s.merge_fail_loops,
+                     &s.merge_fail_check,  &s.merges_plane_cut, &s.elements_skipped,
+                     &s.cells_retried,     &s.elements_nudged,  &s.elements_filled,
+                     &s.elements_relaxed,  &s.elements_replaced})
     *f = k++;
   return s;
 }
 }  // namespace
 
 TEST_CASE("mesh_quilt_types: stats += sums every counter and nothing else", "[mesh_quilt_types]") {
-  static_assert(sizeof(tessera::mesh_quilt_stats) == 19 * sizeof(index_t), "a new counter must be summed too");
+  static_assert(sizeof(tessera::mesh_quilt_stats) == 20 * sizeof(index_t), "a new counter must be summed too");
   auto a = numbered(1);
   const auto b = numbered(100);
   a += b;
@@ -45,6 +47,7 @@ TEST_CASE("mesh_quilt_types: stats += sums every counter and nothing else", "[me
   CHECK(a.elements_nudged == 133);
   CHECK(a.elements_filled == 135);
   CHECK(a.elements_relaxed == 137);
+  CHECK(a.elements_replaced == 139);
   const tessera::mesh_quilt_stats zero;
   a += zero;
   CHECK(a.merge_fail_check == 125);

@@ -176,6 +176,9 @@ result<wang_strip_plan> plan_wang_strips(const quilt_exemplar& exemplar, const g
     const double size = 2 * o.tile_size + 2 * he;
     mesh_quilt_options qo = o.quilt;
     if (three) qo.fill_holes = false;  // as the tiles' quilts of a three-axis set (below)
+    // the strips' source keeps its small elements: large ones in their place leave fewer strip windows
+    // that avoid elements across the tile corners (the pebbles' 16-tile set had none; docs/geometry.md)
+    qo.fill_replace = false;
     qo.progress = {};
     if (o.progress.token) qo.progress.token = o.progress.token;
     auto big = mesh_quilt(exemplar, size, size, qo, exec);

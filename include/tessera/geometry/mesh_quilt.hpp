@@ -76,6 +76,15 @@ struct mesh_quilt_options {
   /// false: elements are drawn from the larger half of those that fit a hole as it stands, until the
   /// exemplar's covered share is reached.
   bool fill_relax = true;
+  /// With fill_relax, where the output still holds more elements than the exemplar's density once
+  /// the holes are filled (the patches drop large elements more often than small ones), one element
+  /// of the exemplar's largest size class takes the place of two or more smaller free ones (added
+  /// whole or filled; never frame elements, elements merged across a patch seam or any in a tile's
+  /// border band), when it intersects nothing and the covered area moves towards the exemplar's
+  /// (`stats.elements_replaced`; docs/geometry.md). A tile set's strip source is quilted without it
+  /// (large elements leave fewer strip windows clear of the tile corners). false: filling only adds,
+  /// as before.
+  bool fill_replace = true;
   /// Constrained quilting: holes are not filled by elements reaching within this distance of the
   /// domain's sides. Geometric tile sets use half the edge strip height (h_E / 2): there a tile's
   /// elements must agree with the strip the neighbouring tile shares, and on a surface two tiles meet
@@ -152,6 +161,7 @@ inline mesh_quilt_params to_params(const mesh_quilt_options& o, bool constrained
           .occupancy_aware = o.occupancy_aware,
           .fill_holes = o.fill_holes,
           .fill_relax = o.fill_relax,
+          .fill_replace = o.fill_replace,
           .fill_border_margin = o.fill_border_margin};
 }
 }  // namespace detail

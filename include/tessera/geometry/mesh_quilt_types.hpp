@@ -51,6 +51,8 @@ struct mesh_quilt_stats {
   index_t elements_filled = 0;
   /// Elements moved a little apart to make room for a filled one (fill_relax).
   index_t elements_relaxed = 0;
+  /// Small elements removed where one larger exemplar element took their place (fill_replace).
+  index_t elements_replaced = 0;
   /// Adds every counter of `o`.
   mesh_quilt_stats& operator+=(const mesh_quilt_stats& o) {
     patches += o.patches;
@@ -72,6 +74,7 @@ struct mesh_quilt_stats {
     elements_nudged += o.elements_nudged;
     elements_filled += o.elements_filled;
     elements_relaxed += o.elements_relaxed;
+    elements_replaced += o.elements_replaced;
     return *this;
   }
 };

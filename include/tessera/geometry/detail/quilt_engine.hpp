@@ -30,6 +30,7 @@
 #include "element_merge.hpp"
 #include "hole_fill.hpp"
 #include "hole_relax.hpp"
+#include "hole_replace.hpp"
 #include "mesh_clip.hpp"
 #include "triangle_geometry.hpp"
 
@@ -59,6 +60,7 @@ struct mesh_quilt_params {
   bool occupancy_aware = false;
   bool fill_holes = true;
   bool fill_relax = true;
+  bool fill_replace = true;
   double fill_border_margin = 0;
 };
 
@@ -207,12 +209,14 @@ class basic_quilt_engine {
     // open); constrained, in the whole tile, an element with fixed vertices (a frame element cut at a
     // tile side, whose other part is the neighbouring tile's) counting as half.
     double target_density = std::numeric_limits<double>::infinity();
+    double ex_empty = 0;  // the exemplar's empty-cell rate, as texture_quality reads it
     xy_rect count_win = domain_;
     if (relax) {
       const auto ref = quality_reference(ex_.mesh());
       const auto q = ref ? measure_texture_quality(ex_.mesh(), *ref) : result<texture_quality>(ref.error());
       if (q && q->density > 0) {
         target_density = q->density;
+        ex_empty = q->empty_cell_rate;
         const texture_quality_options qo;
         double in = std::max(qo.margin_diameters * ref->diameter, 1.25 * ref->nn_median);
         // constrained: the part of the tile filling may reach (off the border band)
@@ -236,15 +240,7 @@ class basic_quilt_engine {
       double count = 0;
       if (relax) {
         for (std::size_t k = 0; k < bounds.size(); ++k) lack[k] = class_share[k] * target_count;
-        for (std::size_t i = 0; i < elems_.size(); ++i) {
-          const vec3 c = elems_[i].box.center();
-          if (!alive_[i] || !count_win.contains({c.x, c.y, 0})) continue;
-          const double fr = footprint_radius(elems_[i]);
-          if (fr > hole_long_footprint_factor * fits.back().first) continue;  // a thread piece or the like
-          const double n = p_.constrained && elems_[i].has_fixed() ? 0.5 : 1.0;
-          lack[class_of(bounds, fr)] -= n;
-          count += n;
-        }
+        count = tally(count_win, bounds, hole_long_footprint_factor * fits.back().first, lack);
       }
       const double min_site = std::max(h, fits.front().first + clearance - max_push);
       const auto sites = hole_sites(distance_to_covered(r), w, rows, static_cast<float>(min_site / h));
@@ -315,6 +311,8 @@ class basic_quilt_engine {
       }
       if (placed == 0) break;
     }
+    if (relax && p_.fill_replace && max_push > 0)
+      return replace_small(fits, bounds, grid, clearance, count_win, target_count, target, ex_empty, prog);
     return {};
   }
 
@@ -490,6 +488,173 @@ class basic_quilt_engine {
     return static_cast<std::size_t>(
         std::upper_bound(fits.begin(), fits.end(), std::pair{bounds[k - 1], std::numeric_limits<index_t>::max()}) -
         fits.begin());
+  }
+
+  // Hole filling with relaxation: the output's (not long) elements whose centre lies in `win`,
+  // counted (constrained, an element with fixed vertices as half: its other part is the neighbouring
+  // tile's) and taken off `lack` by size class; a footprint above `long_fr` is a thread piece or the
+  // like and does not count.
+  [[nodiscard]] double tally(const xy_rect& win, const std::vector<double>& bounds, double long_fr,
+                             std::vector<double>& lack) const {
+    double count = 0;
+    for (std::size_t i = 0; i < elems_.size(); ++i) {
+      const vec3 c = elems_[i].box.center();
+      if (!alive_[i] || !win.contains({c.x, c.y, 0})) continue;
+      const double fr = footprint_radius(elems_[i]);
+      if (fr > long_fr) continue;
+      const double n = p_.constrained && elems_[i].has_fixed() ? 0.5 : 1.0;
+      lack[class_of(bounds, fr)] -= n;
+      count += n;
+    }
+    return count;
+  }
+
+  // After hole filling with relaxation (hole_replace.hpp): while the output holds more elements than
+  // the exemplar's density in `count_win` (`target_count`), an element of the exemplar's largest size
+  // class takes the place of small free ones; below the exemplar's covered share (`target`, the
+  // output's counted in `count_win`) only where they cover less than it, above only where they cover
+  // more (up to hole_replace_loss times). Removable: movable elements (added whole or filled), below the
+  // largest size class, centred in `count_win` and, in a tile, off its border band. Their places
+  // are the local maxima of the distance to every other element (hole_fill.hpp), those in the largest
+  // holes of the output as it stands first; an element drawn from the largest class whose footprint
+  // fits there with `clearance` displaces the removable ones nearer than `clearance`, when there are
+  // two or more, their area is within those bounds, it intersects nothing else, and it opens no empty
+  // square of texture_quality's empty-cell size where a displaced one stood beyond what the
+  // exemplar's empty-cell rate (`ex_empty`) allows. Up to hole_passes passes.
+  status replace_small(const std::vector<std::pair<double, index_t>>& fits, const std::vector<double>& bounds,
+                       const xy_raster& grid, double clearance, const xy_rect& count_win, double target_count,
+                       double target, double ex_empty, const progress& prog) {
+    const double h = grid.px;
+    const auto w = static_cast<index_t>(grid.nx), rows = static_cast<index_t>(grid.ny);
+    const double long_fr = hole_long_footprint_factor * fits.back().first;
+    const double small_fr = bounds[bounds.size() - 2];  // below the largest class
+    const std::size_t lo = class_begin(fits, bounds, bounds.size() - 1);
+    if (lo >= fits.size()) return {};
+    const double band = p_.fill_border_margin + 2 * inside_margin_fraction * cell_;
+    const counter_rng rng(p_.seed, p_.stream);
+    for (int pass = 0; pass < hole_passes; ++pass) {
+      if (prog.cancelled()) return status::cancelled();
+      std::vector<double> lack(bounds.size(), 0);
+      double count = tally(count_win, bounds, long_fr, lack);
+      coverage_raster all(grid), stay(grid);
+      all.count_in(count_win);  // the covered share where the elements are counted
+      std::vector<unsigned char> removable(elems_.size(), 0);
+      for (std::size_t i = 0; i < elems_.size(); ++i) {
+        if (!alive_[i]) continue;
+        all.add_mesh(elems_[i].mesh, static_cast<index_t>(i));
+        const vec3 c = elems_[i].box.center();
+        removable[i] = movable_[i] && count_win.contains({c.x, c.y, 0}) && footprint_radius(elems_[i]) <= small_fr &&
+                       (!p_.constrained || all_strictly_inside(elems_[i].mesh, band));
+        if (!removable[i]) stay.add_mesh(elems_[i].mesh);
+      }
+      auto pays = [&] { return count > target_count; };
+      if (!pays()) break;
+      // places: where the elements that stay leave room for the smallest of the largest class;
+      // those in the largest holes of the output as it stands first
+      const double min_site = fits[lo].first + clearance;
+      auto sites = hole_sites(distance_to_covered(stay), w, rows, static_cast<float>(min_site / h));
+      const std::vector<float> gap = distance_to_covered(all);
+      std::stable_sort(sites.begin(), sites.end(), [&](const hole_site& a, const hole_site& b) {
+        return gap[to_size(a.j * w + a.i)] > gap[to_size(b.j * w + b.i)];
+      });
+      index_t replaced = 0;
+      // the empty squares an exchange may open: as many as the exemplar's empty-cell rate leaves to
+      // the output (its empty cells counted on a grid of hole_empty_diameters from the domain's corner)
+      const double cell = hole_empty_diameters * ex_.element_diameter();
+      double may_open = 0;
+      if (ex_empty > 0) {
+        const auto nx = static_cast<index_t>(domain_.width() / cell),
+                   ny = static_cast<index_t>(domain_.height() / cell);
+        index_t empty = 0;
+        for (index_t j = 0; j < ny; ++j)
+          for (index_t i = 0; i < nx; ++i)
+            empty += all.square_free({domain_.x0 + (double(i) + 0.5) * cell, domain_.y0 + (double(j) + 0.5) * cell, 0},
+                                     0.5 * cell)
+                         ? 1
+                         : 0;
+        may_open = ex_empty * static_cast<double>(nx * ny) - static_cast<double>(empty);
+      }
+      for (const hole_site& s : sites) {
+        if (!pays()) break;
+        const vec3 c = all.centre(s.i, s.j);
+        if (!domain_.contains(c) || !stay.disc_free(c, min_site - h)) continue;  // a large one placed since
+        const double room = static_cast<double>(s.radius) * h - clearance;
+        const auto hi = static_cast<std::size_t>(
+            std::upper_bound(fits.begin(), fits.end(), std::pair{room, std::numeric_limits<index_t>::max()}) -
+            fits.begin());
+        if (hi <= lo) continue;
+        const auto site = static_cast<std::uint64_t>(s.j * w + s.i);
+        for (int t = 0; t < hole_replace_tries; ++t) {
+          const auto& [re, e] = fits[lo + to_size(rng.below(hi - lo, 5, static_cast<std::uint64_t>(pass), site,
+                                                            static_cast<std::uint64_t>(t)))];
+          if (p_.constrained && std::min({c.x - domain_.x0, domain_.x1 - c.x, c.y - domain_.y0, domain_.y1 - c.y}) <
+                                    re + p_.fill_border_margin)
+            continue;  // in the band where a tile's elements must agree with its neighbour's strip
+          const texture_element& src = ex_.elements()[to_size(e)];
+          const vec3 shift{c.x - src.box.center().x, c.y - src.box.center().y, 0};
+          texture_element el;
+          el.mesh = src.mesh;
+          for (vec3& q : el.mesh.positions) q += shift;
+          el.fixed.assign(el.mesh.positions.size(), 0);
+          el.update_box();
+          if (p_.constrained && !all_strictly_inside(el.mesh, 2 * inside_margin_fraction * cell_)) continue;
+          std::vector<std::size_t> near;
+          std::vector<replace_neighbour> nb;
+          const double reach = clearance + h;
+          for (std::size_t i = 0; i < elems_.size(); ++i) {
+            const aabb& b = elems_[i].box;
+            if (!alive_[i] || b.min.x > el.box.max.x + reach || b.max.x < el.box.min.x - reach ||
+                b.min.y > el.box.max.y + reach || b.max.y < el.box.min.y - reach)
+              continue;
+            near.push_back(i);
+            nb.push_back({&elems_[i].mesh, projected_area(elems_[i].mesh), removable[i] != 0});
+          }
+          // below the exemplar's covered share the covered area may only grow; above, only shrink
+          // (by at most a factor hole_replace_loss of the element's own area)
+          const double a = projected_area(el.mesh);
+          const bool under = all.counted_share() < target;
+          const auto out =
+              displaced_neighbours(el.mesh, nb, h, clearance, under ? 0.0 : a, under ? a : hole_replace_loss * a);
+          if (out.empty()) continue;
+          std::vector<std::size_t> gone;
+          for (std::size_t k : out) gone.push_back(near[k]);
+          if (intersects_alive(el, gone)) continue;
+          // tentatively: no empty square as wide as texture_quality's empty cells may open where a
+          // displaced one stood (squares about its centre, shifted by up to half their side)
+          const auto idx = static_cast<index_t>(elems_.size());
+          for (std::size_t i : gone) all.remove_owner(static_cast<index_t>(i), elems_[i].box);
+          all.add_mesh(el.mesh, idx);
+          bool opens = false;
+          const double half = 0.5 * cell;
+          for (std::size_t i = 0; i < gone.size() && !opens; ++i) {
+            const vec3 g = elems_[gone[i]].box.center();
+            for (int dy = -2; dy <= 2 && !opens; ++dy)
+              for (int dx = -2; dx <= 2 && !opens; ++dx)
+                opens = all.square_free(g + vec3{0.5 * half * dx, 0.5 * half * dy, 0}, half);
+          }
+          if (opens && may_open >= 1) {
+            may_open -= 1;
+            opens = false;
+          }
+          if (opens) {  // undone
+            all.remove_owner(idx, el.box);
+            for (std::size_t i : gone) all.add_mesh(elems_[i].mesh, static_cast<index_t>(i));
+            continue;
+          }
+          for (std::size_t i : gone) alive_[i] = 0;
+          count -= static_cast<double>(gone.size()) - 1;  // removable ones are counted whole
+          stay.add_mesh(el.mesh);
+          stats_.elements_replaced += static_cast<index_t>(gone.size());
+          ++stats_.elements_filled;
+          push(std::move(el), true);
+          removable.push_back(0);  // the large one stays
+          ++replaced;
+          break;
+        }
+      }
+      if (replaced == 0) break;
+    }
+    return {};
   }
 
   // Places `el` (centred at `c`) when its movable neighbours can make room (relax_pushes: each keeps
@@ -908,6 +1073,10 @@ class basic_quilt_engine {
   /// Past the exemplar's density, holes are still filled where an empty square this many element
   /// diameters wide is centred (texture_quality's empty cells are 1.5 diameters wide).
   static constexpr double hole_empty_diameters = 1.5;
+  /// Replacement (replace_small): draws of a large element per place; past the exemplar's covered
+  /// share, the small elements it displaces may cover up to this many times its own area.
+  static constexpr int hole_replace_tries = 4;
+  static constexpr double hole_replace_loss = 1.5;
 
   const quilt_exemplar& ex_;
   xy_rect domain_;
