@@ -226,9 +226,8 @@ inline void remesh_collapse_short(remesh_mesh& m, double lo, double hi, double m
 inline void remesh_equalize_valences(remesh_mesh& m, double min_area2, index_t& flips) {
   for (const auto& e : remesh_edges(m)) {
     const index_t a = e[0], b = e[1];
-    const index_t f = m.face_with_side(a, b), g = m.face_with_side(b, a);
-    if (f < 0 || g < 0) continue;
-    const index_t c = m.opposite(f, a, b), d = m.opposite(g, a, b);
+    const auto [f, g, c, d] = m.quad(a, b);
+    if (f < 0) continue;
     const index_t va = m.valence(a), vb = m.valence(b), vc = m.valence(c), vd = m.valence(d);
     auto dev = [](index_t x) { return (x - 6) * (x - 6); };
     const index_t before = dev(va) + dev(vb) + dev(vc) + dev(vd);
@@ -249,9 +248,8 @@ inline constexpr double remesh_sliver_angle = 10;
 inline void remesh_flip_slivers(remesh_mesh& m, double min_area2, index_t& flips) {
   for (const auto& e : remesh_edges(m)) {
     const index_t a = e[0], b = e[1];
-    const index_t f = m.face_with_side(a, b), g = m.face_with_side(b, a);
-    if (f < 0 || g < 0) continue;
-    const index_t c = m.opposite(f, a, b), d = m.opposite(g, a, b);
+    const auto [f, g, c, d] = m.quad(a, b);
+    if (f < 0) continue;
     auto angle = [&](index_t x, index_t y, index_t z) {
       return smallest_angle_degrees(m.pos[to_size(x)], m.pos[to_size(y)], m.pos[to_size(z)]);
     };

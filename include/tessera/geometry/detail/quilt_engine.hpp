@@ -284,17 +284,9 @@ class basic_quilt_engine {
           const auto& [re, e] = fits[lo + to_size(rng.below(hi - lo, 3, static_cast<std::uint64_t>(pass), site,
                                                             static_cast<std::uint64_t>(t)))];
           if (!relax && !r.disc_free(c, re + clearance)) continue;  // an element placed since covers part of it
-          if (p_.constrained && std::min({c.x - domain_.x0, domain_.x1 - c.x, c.y - domain_.y0, domain_.y1 - c.y}) <
-                                    re + p_.fill_border_margin)
-            continue;  // in the band where a tile's elements must agree with its neighbour's strip
-          const texture_element& src = ex_.elements()[to_size(e)];
-          const vec3 shift{c.x - src.box.center().x, c.y - src.box.center().y, 0};
-          texture_element el;
-          el.mesh = src.mesh;
-          for (vec3& q : el.mesh.positions) q += shift;
-          el.fixed.assign(el.mesh.positions.size(), 0);
-          el.update_box();
-          if (p_.constrained && !all_strictly_inside(el.mesh, 2 * inside_margin_fraction * cell_)) continue;
+          auto candidate = fill_candidate(e, re, c);
+          if (!candidate) continue;
+          texture_element& el = *candidate;
           if (relax ? !place_relaxed(el, c, r, h, clearance, max_push) : intersects_alive(el, {})) continue;
           r.add_mesh(el.mesh, static_cast<index_t>(elems_.size()));
           if (relax && count_win.contains(c)) {
@@ -460,6 +452,23 @@ class basic_quilt_engine {
     return *bvh_[i];
   }
 
+  /// Exemplar element e (bounding radius re) centred at c for hole filling, or nothing where it may
+  /// not go: in a tile, within its radius plus the margin of the band where a tile's elements must
+  /// agree with its neighbour's strip, or not strictly inside the tile.
+  [[nodiscard]] std::optional<texture_element> fill_candidate(index_t e, double re, vec3 c) const {
+    if (p_.constrained &&
+        std::min({c.x - domain_.x0, domain_.x1 - c.x, c.y - domain_.y0, domain_.y1 - c.y}) < re + p_.fill_border_margin)
+      return std::nullopt;
+    const texture_element& src = ex_.elements()[to_size(e)];
+    const vec3 shift{c.x - src.box.center().x, c.y - src.box.center().y, 0};
+    texture_element el;
+    el.mesh = src.mesh;
+    for (vec3& q : el.mesh.positions) q += shift;
+    el.fixed.assign(el.mesh.positions.size(), 0);
+    el.update_box();
+    if (p_.constrained && !all_strictly_inside(el.mesh, 2 * inside_margin_fraction * cell_)) return std::nullopt;
+    return el;
+  }
   [[nodiscard]] bool all_strictly_inside(const tri_mesh& m, double margin) const {
     return std::all_of(m.positions.begin(), m.positions.end(),
                        [&](const vec3& q) { return strictly_inside(domain_, q, margin); });
@@ -587,17 +596,9 @@ class basic_quilt_engine {
         for (int t = 0; t < hole_replace_tries; ++t) {
           const auto& [re, e] = fits[lo + to_size(rng.below(hi - lo, 5, static_cast<std::uint64_t>(pass), site,
                                                             static_cast<std::uint64_t>(t)))];
-          if (p_.constrained && std::min({c.x - domain_.x0, domain_.x1 - c.x, c.y - domain_.y0, domain_.y1 - c.y}) <
-                                    re + p_.fill_border_margin)
-            continue;  // in the band where a tile's elements must agree with its neighbour's strip
-          const texture_element& src = ex_.elements()[to_size(e)];
-          const vec3 shift{c.x - src.box.center().x, c.y - src.box.center().y, 0};
-          texture_element el;
-          el.mesh = src.mesh;
-          for (vec3& q : el.mesh.positions) q += shift;
-          el.fixed.assign(el.mesh.positions.size(), 0);
-          el.update_box();
-          if (p_.constrained && !all_strictly_inside(el.mesh, 2 * inside_margin_fraction * cell_)) continue;
+          auto candidate = fill_candidate(e, re, c);
+          if (!candidate) continue;
+          texture_element& el = *candidate;
           std::vector<std::size_t> near;
           std::vector<replace_neighbour> nb;
           const double reach = clearance + h;

@@ -80,6 +80,16 @@ class remesh_mesh {
       if (v != a && v != b) return v;
     return -1;
   }
+  /// The two faces of edge (a, b), f holding side a -> b and g side b -> a, and their third corners c
+  /// and d; f = -1 when the edge has not two faces.
+  struct edge_quad {
+    index_t f = -1, g = -1, c = -1, d = -1;
+  };
+  [[nodiscard]] edge_quad quad(index_t a, index_t b) const {
+    const index_t f = face_with_side(a, b), g = face_with_side(b, a);
+    if (f < 0 || g < 0) return {};
+    return {f, g, opposite(f, a, b), opposite(g, a, b)};
+  }
   /// The vertices joined to v by an edge, sorted.
   [[nodiscard]] std::vector<index_t> neighbours(index_t v) const {
     std::vector<index_t> n;
