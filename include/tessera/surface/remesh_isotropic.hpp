@@ -207,7 +207,7 @@ inline void remesh_collapse_short(remesh_mesh& m, double lo, double hi, double m
     index_t done = 0;
     for (const auto& e : remesh_sorted_edges(m, false, [&](double d2) { return d2 < lo * lo; })) {
       index_t a = e[0], b = e[1];
-      if (!m.vertex_alive(a) || !m.vertex_alive(b) || m.face_with_side(a, b) < 0) continue;
+      if (!m.vertex_alive(a) || !m.vertex_alive(b)) continue;  // can_collapse checks the edge
       if (!(squared_norm(m.pos[to_size(a)] - m.pos[to_size(b)]) < lo * lo)) continue;
       const auto ka = m.kind[to_size(a)], kb = m.kind[to_size(b)];
       if (ka == remesh_vertex_kind::corner && kb == remesh_vertex_kind::corner) continue;
@@ -296,17 +296,14 @@ inline void remesh_relax_and_project(remesh_mesh& m, const triangle_bvh& surface
     bool ok = true;
     for (index_t f : m.faces_of(v)) {
       const auto& tri = m.faces[to_size(f)];
-      const vec3 before = m.area_normal(tri);
-      const vec3 q[3] = {tri[0] == v ? target : m.pos[to_size(tri[0])], tri[1] == v ? target : m.pos[to_size(tri[1])],
-                         tri[2] == v ? target : m.pos[to_size(tri[2])]};
-      const vec3 after = cross(q[1] - q[0], q[2] - q[0]);
-      if (squared_norm(after) <= min_area2 || dot(normalized(before), normalized(after)) < remesh_min_normal_cos) {
+      const auto q = m.moved_face(tri, v, v, target, min_area2);
+      if (!q) {
         ok = false;
         break;
       }
       // nor may it make a sliver (a smooth vertex projected against a crease next to a corner)
       if (!relax) continue;
-      const double angle = smallest_angle_degrees(q[0], q[1], q[2]);
+      const double angle = smallest_angle_degrees((*q)[0], (*q)[1], (*q)[2]);
       if (angle < remesh_sliver_angle &&
           angle < smallest_angle_degrees(m.pos[to_size(tri[0])], m.pos[to_size(tri[1])], m.pos[to_size(tri[2])])) {
         ok = false;

@@ -452,6 +452,20 @@ class basic_quilt_engine {
     return *bvh_[i];
   }
 
+  /// The live elements whose boxes come within `reach` of `box` in x and y, in index order.
+  [[nodiscard]] std::vector<std::size_t> alive_near(const aabb& box, double reach) const {
+    std::vector<std::size_t> near;
+    for (std::size_t i = 0; i < elems_.size(); ++i) {
+      const aabb& b = elems_[i].box;
+      if (alive_[i] && b.min.x <= box.max.x + reach && b.max.x >= box.min.x - reach && b.min.y <= box.max.y + reach &&
+          b.max.y >= box.min.y - reach)
+        near.push_back(i);
+    }
+    return near;
+  }
+  /// In a tile, how far a filled, moved or removed element keeps from the tile's sides: the band where
+  /// a tile's elements must agree with its neighbour's strip, plus the inside margin.
+  [[nodiscard]] double fill_band() const { return p_.fill_border_margin + 2 * inside_margin_fraction * cell_; }
   /// Exemplar element e (bounding radius re) centred at c for hole filling, or nothing where it may
   /// not go: in a tile, within its radius plus the margin of the band where a tile's elements must
   /// agree with its neighbour's strip, or not strictly inside the tile.
@@ -539,7 +553,7 @@ class basic_quilt_engine {
     const double small_fr = bounds[bounds.size() - 2];  // below the largest class
     const std::size_t lo = class_begin(fits, bounds, bounds.size() - 1);
     if (lo >= fits.size()) return {};
-    const double band = p_.fill_border_margin + 2 * inside_margin_fraction * cell_;
+    const double band = fill_band();
     const counter_rng rng(p_.seed, p_.stream);
     for (int pass = 0; pass < hole_passes; ++pass) {
       if (prog.cancelled()) return status::cancelled();
@@ -599,17 +613,9 @@ class basic_quilt_engine {
           auto candidate = fill_candidate(e, re, c);
           if (!candidate) continue;
           texture_element& el = *candidate;
-          std::vector<std::size_t> near;
+          const std::vector<std::size_t> near = alive_near(el.box, clearance + h);
           std::vector<replace_neighbour> nb;
-          const double reach = clearance + h;
-          for (std::size_t i = 0; i < elems_.size(); ++i) {
-            const aabb& b = elems_[i].box;
-            if (!alive_[i] || b.min.x > el.box.max.x + reach || b.max.x < el.box.min.x - reach ||
-                b.min.y > el.box.max.y + reach || b.max.y < el.box.min.y - reach)
-              continue;
-            near.push_back(i);
-            nb.push_back({&elems_[i].mesh, projected_area(elems_[i].mesh), removable[i] != 0});
-          }
+          for (std::size_t i : near) nb.push_back({&elems_[i].mesh, projected_area(elems_[i].mesh), removable[i] != 0});
           // below the exemplar's covered share the covered area may only grow; above, only shrink
           // (by at most a factor hole_replace_loss of the element's own area)
           const double a = projected_area(el.mesh);
@@ -664,23 +670,14 @@ class basic_quilt_engine {
   // moves (in `r` too); the caller adds `el`.
   bool place_relaxed(const texture_element& el, vec3 c, coverage_raster& r, double h, double clearance,
                      double max_push) {
-    std::vector<std::size_t> near;
+    const std::vector<std::size_t> near = alive_near(el.box, clearance + h);
     std::vector<relax_neighbour> nb;
-    const double reach = clearance + h;
-    for (std::size_t i = 0; i < elems_.size(); ++i) {
-      if (!alive_[i]) continue;
-      const aabb& b = elems_[i].box;
-      if (b.min.x > el.box.max.x + reach || b.max.x < el.box.min.x - reach || b.min.y > el.box.max.y + reach ||
-          b.max.y < el.box.min.y - reach)
-        continue;
-      near.push_back(i);
-      nb.push_back({&elems_[i].mesh, b.center(), movable_[i] != 0});
-    }
+    for (std::size_t i : near) nb.push_back({&elems_[i].mesh, elems_[i].box.center(), movable_[i] != 0});
     const auto shifts = relax_pushes(el.mesh, c, nb, h, clearance, max_push);
     if (!shifts) return false;
     std::vector<std::size_t> moved;
     std::vector<texture_element> moved_el;
-    const double band = p_.fill_border_margin + 2 * inside_margin_fraction * cell_;
+    const double band = fill_band();
     const double gap = std::max(h, hole_min_clearance_diameters * ex_.element_diameter());
     for (std::size_t k = 0; k < near.size(); ++k) {
       const vec3 sh = (*shifts)[k];

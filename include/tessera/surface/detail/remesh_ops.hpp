@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <unordered_set>
 #include <vector>
 
@@ -40,7 +41,6 @@ class remesh_mesh {
   }
   [[nodiscard]] bool is_feature(index_t a, index_t b) const { return feature_.count(key(a, b)) != 0; }
   void set_feature(index_t a, index_t b) { feature_.insert(key(a, b)); }
-  [[nodiscard]] std::size_t feature_count() const noexcept { return feature_.size(); }
   [[nodiscard]] index_t live_faces() const noexcept { return live_faces_; }
   [[nodiscard]] index_t live_vertices() const noexcept { return live_vertices_; }
 
@@ -106,19 +106,34 @@ class remesh_mesh {
   [[nodiscard]] vec3 area_normal(const std::array<index_t, 3>& t) const {
     return cross(pos[to_size(t[1])] - pos[to_size(t[0])], pos[to_size(t[2])] - pos[to_size(t[0])]);
   }
-  /// Angle-weighted-free vertex normal: the sum of the area normals around v, normalized.
+  /// Area-weighted vertex normal: the sum of the area normals around v, normalized.
   [[nodiscard]] vec3 vertex_normal(index_t v) const {
     vec3 n{0, 0, 0};
     for (index_t f : vf_[to_size(v)]) n = n + area_normal(faces[to_size(f)]);
     return normalized(n);
   }
 
+  /// Face t with vertices u and w (u may equal w) moved to p: its three corners, or nothing when it
+  /// would flatten (doubled area squared at most min_area2) or turn by more than
+  /// remesh_min_normal_cos from before. The test of every collapse and relaxation move.
+  [[nodiscard]] std::optional<std::array<vec3, 3>> moved_face(const std::array<index_t, 3>& t, index_t u, index_t w,
+                                                              vec3 p, double min_area2) const {
+    std::array<vec3, 3> q;
+    for (int k = 0; k < 3; ++k) {
+      const index_t x = t[to_size(k)];
+      q[to_size(k)] = x == u || x == w ? p : pos[to_size(x)];
+    }
+    const vec3 after = cross(q[1] - q[0], q[2] - q[0]);
+    if (squared_norm(after) <= min_area2 || dot(normalized(area_normal(t)), normalized(after)) < remesh_min_normal_cos)
+      return std::nullopt;
+    return q;
+  }
+
   /// Splits edge (a, b) at its midpoint (Botsch & Kobbelt's split); the new vertex is a crease when
   /// the edge is a feature. Returns false when the edge has not two faces.
   bool split(index_t a, index_t b) {
-    const index_t f = face_with_side(a, b), g = face_with_side(b, a);
-    if (f < 0 || g < 0) return false;
-    const index_t c = opposite(f, a, b), d = opposite(g, a, b);
+    const auto [f, g, c, d] = quad(a, b);
+    if (f < 0) return false;
     const auto m = static_cast<index_t>(pos.size());
     pos.push_back(0.5 * (pos[to_size(a)] + pos[to_size(b)]));
     const bool feat = is_feature(a, b);
@@ -147,9 +162,8 @@ class remesh_mesh {
   /// vertices joined to both are exactly the two opposite corners), no vertex left with fewer than
   /// three neighbours, no new edge longer than max_len, no face turned or degenerate.
   [[nodiscard]] bool can_collapse(index_t a, index_t b, vec3 p, double max_len, double min_area2) const {
-    const index_t f = face_with_side(a, b), g = face_with_side(b, a);
-    if (f < 0 || g < 0 || live_vertices_ <= 4) return false;
-    const index_t c = opposite(f, a, b), d = opposite(g, a, b);
+    const auto [f, g, c, d] = quad(a, b);
+    if (f < 0 || live_vertices_ <= 4) return false;
     const auto na = neighbours(a), nb = neighbours(b);
     std::vector<index_t> common;
     std::set_intersection(na.begin(), na.end(), nb.begin(), nb.end(), std::back_inserter(common));
@@ -161,18 +175,8 @@ class remesh_mesh {
         for (index_t x : *ring)
           if (x != a && x != b && squared_norm(pos[to_size(x)] - p) > max_len * max_len) return false;
     for (index_t v : {a, b})
-      for (index_t h : vf_[to_size(v)]) {
-        if (h == f || h == g) continue;
-        auto t = faces[to_size(h)];
-        const vec3 before = area_normal(t);
-        for (auto& w : t)
-          if (w == a || w == b) w = -1;  // the merged vertex, at p
-        const vec3 q[3] = {t[0] < 0 ? p : pos[to_size(t[0])], t[1] < 0 ? p : pos[to_size(t[1])],
-                           t[2] < 0 ? p : pos[to_size(t[2])]};
-        const vec3 after = cross(q[1] - q[0], q[2] - q[0]);
-        if (squared_norm(after) <= min_area2) return false;
-        if (dot(normalized(before), normalized(after)) < remesh_min_normal_cos) return false;
-      }
+      for (index_t h : vf_[to_size(v)])
+        if (h != f && h != g && !moved_face(faces[to_size(h)], a, b, p, min_area2)) return false;
     return true;
   }
 
@@ -203,9 +207,8 @@ class remesh_mesh {
   /// edge yet, a and b keep three neighbours, the two new faces not degenerate and not turned.
   [[nodiscard]] bool can_flip(index_t a, index_t b, double min_area2) const {
     if (is_feature(a, b)) return false;
-    const index_t f = face_with_side(a, b), g = face_with_side(b, a);
-    if (f < 0 || g < 0) return false;
-    const index_t c = opposite(f, a, b), d = opposite(g, a, b);
+    const auto [f, g, c, d] = quad(a, b);
+    if (f < 0) return false;
     if (c == d || valence(a) <= 3 || valence(b) <= 3) return false;
     const auto nc = neighbours(c);
     if (std::binary_search(nc.begin(), nc.end(), d)) return false;
@@ -221,8 +224,7 @@ class remesh_mesh {
 
   /// Flips edge (a, b) of faces (a, b, c) and (b, a, d) to (a, d, c) and (d, b, c).
   void flip(index_t a, index_t b) {
-    const index_t f = face_with_side(a, b), g = face_with_side(b, a);
-    const index_t c = opposite(f, a, b), d = opposite(g, a, b);
+    const auto [f, g, c, d] = quad(a, b);
     faces[to_size(f)] = {a, d, c};
     faces[to_size(g)] = {d, b, c};
     erase_incidence(b, f);
